@@ -1,0 +1,338 @@
+"""Bearing, material and operating-condition descriptions (SI, frozen dataclasses).
+
+Geometry follows Harris, *Rolling Bearing Analysis*: the pitch diameter ``d_m`` is the mean of
+the raceway (groove-bottom) diameters, and the radial clearance ``P_d`` is the diametral play
+(ISO radial internal clearance), so that ``d_o - d_i - 2 D = P_d`` for a ball bearing.
+
+Symbols used by the five source papers map onto these names as follows.
+
+============================  =========  =========  =========  ==========  ==========
+quantity                      seed 000   seed 001   seed 002   seed 003    seed 004
+============================  =========  =========  =========  ==========  ==========
+``n_elements``                Z          Z          Z          N_b         Z
+``ball_diameter`` [m]         2 r_b      d          d_b, 2r_b  d_b, 2r_b   D_w
+``pitch_diameter`` [m]        —          D          d_c, 2r_c  d_m, 2r_m   (d_i+d_e)/2
+``inner_conformity``          —          f_i        —          r_gi / d_b  —
+``radial_clearance`` [m]      —          P_d        —          γ (see §)   d_e-d_i-2D_w
+``contact_angle`` [rad]       α          α          α          α_p         0
+============================  =========  =========  =========  ==========  ==========
+
+§ seed 003 calls γ the "internal radial clearance" and makes the contact close when the radial
+approach exceeds γ; we read that γ as the radial play P_d / 2 (the dynamic model documents it).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Literal
+
+from runout.errors import GeometryError
+
+__all__ = ["BallBearing", "Bearing", "Material", "Operation", "RollerBearing"]
+
+RingName = Literal["inner", "outer"]
+
+
+def _positive(name: str, value: float) -> None:
+    if not (isinstance(value, int | float) and math.isfinite(value) and value > 0.0):
+        raise GeometryError(name, f"must be a positive finite number, got {value!r}")
+
+
+@dataclass(frozen=True)
+class Material:
+    """Elastic and inertial properties of the rings and the rolling elements.
+
+    Parameters
+    ----------
+    youngs_modulus : float
+        Young's modulus E [Pa]. Default 208 GPa (bearing steel, seed 000 Table 1).
+    poisson_ratio : float
+        Poisson's ratio ν [-]. Default 0.3.
+    density : float
+        Density ρ [kg/m^3]. Default 7850.
+    """
+
+    youngs_modulus: float = 208e9
+    poisson_ratio: float = 0.3
+    density: float = 7850.0
+
+    def __post_init__(self) -> None:
+        _positive("material.youngs_modulus", self.youngs_modulus)
+        _positive("material.density", self.density)
+        if not (-1.0 < self.poisson_ratio < 0.5):
+            raise GeometryError(
+                "material.poisson_ratio", f"must lie in (-1, 0.5), got {self.poisson_ratio!r}"
+            )
+
+    @property
+    def effective_modulus(self) -> float:
+        """Harris's E' = 2 / ((1-ν₁²)/E₁ + (1-ν₂²)/E₂) for two bodies of this material [Pa]."""
+        return self.youngs_modulus / (1.0 - self.poisson_ratio**2)
+
+
+@dataclass(frozen=True)
+class BallBearing:
+    """A deep-groove or angular-contact ball bearing.
+
+    Parameters
+    ----------
+    n_elements : int
+        Number of balls Z (>= 3).
+    ball_diameter : float
+        Ball diameter D [m].
+    pitch_diameter : float
+        Pitch diameter d_m [m], mean of the groove-bottom diameters.
+    inner_conformity : float
+        Inner groove radius over ball diameter, f_i = r_i / D (> 0.5).
+    outer_conformity : float
+        Outer groove radius over ball diameter, f_o = r_o / D (> 0.5).
+    radial_clearance : float
+        ISO radial internal clearance = Harris's diametral play P_d [m] (>= 0).
+    contact_angle : float or None
+        Fixed contact angle [rad]. ``None`` derives it from the clearance (free contact angle)
+        or from clearance and axial load (see :mod:`runout.loading`).
+    material : Material
+        Material of rings and balls.
+    """
+
+    n_elements: int
+    ball_diameter: float
+    pitch_diameter: float
+    inner_conformity: float = 0.52
+    outer_conformity: float = 0.53
+    radial_clearance: float = 0.0
+    contact_angle: float | None = None
+    material: Material = field(default_factory=Material)
+
+    kind = "ball"
+
+    def __post_init__(self) -> None:
+        if isinstance(self.n_elements, bool) or not isinstance(self.n_elements, int):
+            raise GeometryError("n_elements", f"must be an integer, got {self.n_elements!r}")
+        if self.n_elements < 3:
+            raise GeometryError("n_elements", f"must be an integer >= 3, got {self.n_elements}")
+        _positive("ball_diameter", self.ball_diameter)
+        _positive("pitch_diameter", self.pitch_diameter)
+        if self.ball_diameter >= self.pitch_diameter:
+            raise GeometryError(
+                "ball_diameter",
+                f"{self.ball_diameter * 1e3:.6g} mm is not smaller than the pitch diameter "
+                f"{self.pitch_diameter * 1e3:.6g} mm",
+            )
+        chord = self.pitch_diameter * math.sin(math.pi / self.n_elements)
+        if self.ball_diameter >= chord:
+            raise GeometryError(
+                "n_elements",
+                f"{self.n_elements} balls of {self.ball_diameter * 1e3:.6g} mm overlap on a "
+                f"{self.pitch_diameter * 1e3:.6g} mm pitch circle (centre spacing "
+                f"{chord * 1e3:.6g} mm); at most "
+                f"{_max_elements(self.ball_diameter, self.pitch_diameter)} fit",
+            )
+        for name in ("inner_conformity", "outer_conformity"):
+            value = getattr(self, name)
+            if not (isinstance(value, int | float) and math.isfinite(value) and value > 0.5):
+                raise GeometryError(
+                    name, f"must be > 0.5 (groove radius larger than the ball radius), got {value!r}"
+                )
+        if not (math.isfinite(self.radial_clearance) and self.radial_clearance >= 0.0):
+            raise GeometryError(
+                "radial_clearance", f"must be >= 0 (no negative clearance), got {self.radial_clearance!r}"
+            )
+        if self.radial_clearance >= 2.0 * self.curvature_distance:
+            raise GeometryError(
+                "radial_clearance",
+                f"{self.radial_clearance * 1e6:.6g} um exceeds twice the groove-centre distance "
+                f"A = {self.curvature_distance * 1e6:.6g} um: the balls would not stay in the grooves",
+            )
+        if self.contact_angle is not None and not (0.0 <= self.contact_angle < math.pi / 2):
+            raise GeometryError(
+                "contact_angle", f"must lie in [0, 90) deg, got {math.degrees(self.contact_angle):.6g} deg"
+            )
+
+    # --- derived geometry -------------------------------------------------------------
+    @property
+    def element_diameter(self) -> float:
+        """Alias of :attr:`ball_diameter` shared with roller bearings [m]."""
+        return self.ball_diameter
+
+    @property
+    def inner_groove_radius(self) -> float:
+        """r_i = f_i D [m]."""
+        return self.inner_conformity * self.ball_diameter
+
+    @property
+    def outer_groove_radius(self) -> float:
+        """r_o = f_o D [m]."""
+        return self.outer_conformity * self.ball_diameter
+
+    @property
+    def total_curvature(self) -> float:
+        """Harris's total conformity ratio B = f_i + f_o - 1 [-] (seed 003 eq. 2.22: A / d_b)."""
+        return self.inner_conformity + self.outer_conformity - 1.0
+
+    @property
+    def curvature_distance(self) -> float:
+        """A = r_i + r_o - D, distance between the groove curvature centres [m] (seed 003 eq. 2.22)."""
+        return self.total_curvature * self.ball_diameter
+
+    @property
+    def inner_raceway_diameter(self) -> float:
+        """Groove-bottom diameter of the inner raceway d_i = d_m - D - P_d/2 [m]."""
+        return self.pitch_diameter - self.ball_diameter - 0.5 * self.radial_clearance
+
+    @property
+    def outer_raceway_diameter(self) -> float:
+        """Groove-bottom diameter of the outer raceway d_o = d_m + D + P_d/2 [m]."""
+        return self.pitch_diameter + self.ball_diameter + 0.5 * self.radial_clearance
+
+    @property
+    def free_contact_angle(self) -> float:
+        """α⁰ = arccos(1 - P_d / (2A)) [rad] (Harris, free contact angle)."""
+        return math.acos(1.0 - self.radial_clearance / (2.0 * self.curvature_distance))
+
+    @property
+    def free_end_play(self) -> float:
+        """Axial play P_e = 2 A sin α⁰ [m] (Harris)."""
+        return 2.0 * self.curvature_distance * math.sin(self.free_contact_angle)
+
+    @property
+    def nominal_contact_angle(self) -> float:
+        """The fixed contact angle when given, else the free contact angle [rad]."""
+        return self.free_contact_angle if self.contact_angle is None else self.contact_angle
+
+
+def _max_elements(diameter: float, pitch_diameter: float) -> int:
+    """Largest number of elements of this diameter that fit on the pitch circle."""
+    return int(math.floor(math.pi / math.asin(min(1.0, diameter / pitch_diameter)) - 1e-12))
+
+
+@dataclass(frozen=True)
+class RollerBearing:
+    """A cylindrical roller bearing (line contact, contact angle 0).
+
+    Parameters
+    ----------
+    n_elements : int
+        Number of rollers Z (>= 3).
+    roller_diameter : float
+        Roller diameter D_w [m].
+    inner_raceway_diameter : float
+        Inner raceway diameter d_i [m].
+    outer_raceway_diameter : float
+        Outer raceway diameter d_e [m].
+    roller_length : float or None
+        Effective roller length l [m]; needed only for line-contact stiffness.
+    material : Material
+        Material of rings and rollers.
+    """
+
+    n_elements: int
+    roller_diameter: float
+    inner_raceway_diameter: float
+    outer_raceway_diameter: float
+    roller_length: float | None = None
+    material: Material = field(default_factory=Material)
+
+    kind = "cylindrical_roller"
+    contact_angle = 0.0
+
+    def __post_init__(self) -> None:
+        if isinstance(self.n_elements, bool) or not isinstance(self.n_elements, int):
+            raise GeometryError("n_elements", f"must be an integer, got {self.n_elements!r}")
+        if self.n_elements < 3:
+            raise GeometryError("n_elements", f"must be an integer >= 3, got {self.n_elements}")
+        _positive("roller_diameter", self.roller_diameter)
+        _positive("inner_raceway_diameter", self.inner_raceway_diameter)
+        _positive("outer_raceway_diameter", self.outer_raceway_diameter)
+        if self.roller_length is not None:
+            _positive("roller_length", self.roller_length)
+        if self.radial_clearance < 0.0:
+            raise GeometryError(
+                "outer_raceway_diameter",
+                f"d_e - d_i - 2 D_w = {self.radial_clearance * 1e6:.6g} um: negative clearance "
+                "(rollers do not fit between the raceways)",
+            )
+        chord = self.pitch_diameter * math.sin(math.pi / self.n_elements)
+        if self.roller_diameter >= chord:
+            raise GeometryError(
+                "n_elements",
+                f"{self.n_elements} rollers of {self.roller_diameter * 1e3:.6g} mm overlap on a "
+                f"{self.pitch_diameter * 1e3:.6g} mm pitch circle; at most "
+                f"{_max_elements(self.roller_diameter, self.pitch_diameter)} fit",
+            )
+
+    @property
+    def element_diameter(self) -> float:
+        """Alias of :attr:`roller_diameter` shared with ball bearings [m]."""
+        return self.roller_diameter
+
+    @property
+    def pitch_diameter(self) -> float:
+        """d_m = (d_i + d_e) / 2 [m]."""
+        return 0.5 * (self.inner_raceway_diameter + self.outer_raceway_diameter)
+
+    @property
+    def radial_clearance(self) -> float:
+        """Diametral play P_d = d_e - d_i - 2 D_w [m]."""
+        return self.outer_raceway_diameter - self.inner_raceway_diameter - 2.0 * self.roller_diameter
+
+    @property
+    def nominal_contact_angle(self) -> float:
+        """Always 0 for a cylindrical roller bearing [rad]."""
+        return 0.0
+
+
+Bearing = BallBearing | RollerBearing
+
+
+@dataclass(frozen=True)
+class Operation:
+    """How the bearing runs and what loads it.
+
+    Parameters
+    ----------
+    rotating_ring : {"inner", "outer"}
+        The ring whose revolutions define orders (waves per revolution).
+    speed : float
+        Rotation frequency of the rotating ring [Hz] (revolutions per second).
+    other_ring_speed : float
+        Rotation frequency of the other ring [Hz], signed relative to ``speed``; 0 for the
+        usual case of one stationary ring.
+    axial_load : float
+        Axial load or constant-pressure preload [N] (>= 0).
+    radial_load : float
+        Radial load magnitude [N] (>= 0).
+    radial_load_angle : float
+        Direction of the radial load, counter-clockwise from +x [rad]. Default -π/2 (along -y).
+    """
+
+    rotating_ring: RingName = "inner"
+    speed: float = 0.0
+    other_ring_speed: float = 0.0
+    axial_load: float = 0.0
+    radial_load: float = 0.0
+    radial_load_angle: float = -math.pi / 2
+
+    def __post_init__(self) -> None:
+        if self.rotating_ring not in ("inner", "outer"):
+            raise GeometryError(
+                "operation.rotating_ring", f'must be "inner" or "outer", got {self.rotating_ring!r}'
+            )
+        for name in ("speed", "other_ring_speed", "radial_load_angle"):
+            if not math.isfinite(getattr(self, name)):
+                raise GeometryError(f"operation.{name}", "must be finite")
+        for name in ("axial_load", "radial_load"):
+            value = getattr(self, name)
+            if not (math.isfinite(value) and value >= 0.0):
+                raise GeometryError(f"operation.{name}", f"must be >= 0, got {value!r}")
+
+    @property
+    def inner_speed(self) -> float:
+        """Rotation frequency of the inner ring [Hz]."""
+        return self.speed if self.rotating_ring == "inner" else self.other_ring_speed
+
+    @property
+    def outer_speed(self) -> float:
+        """Rotation frequency of the outer ring [Hz]."""
+        return self.speed if self.rotating_ring == "outer" else self.other_ring_speed

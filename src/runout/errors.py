@@ -1,0 +1,88 @@
+"""Exceptions raised by runout.
+
+Every error a user can cause or meet carries enough context to act on it: a case-file error
+names the file and the key path, a geometry error names the quantity, a numerical error names
+the instant and the cause. The command-line tool turns them into one line on stderr and exit
+status 2, never a traceback.
+"""
+
+from __future__ import annotations
+
+
+class RunoutError(Exception):
+    """Base class of every error runout raises on purpose."""
+
+
+class GeometryError(RunoutError, ValueError):
+    """An impossible or inconsistent bearing description.
+
+    Parameters
+    ----------
+    key : str
+        Name of the offending quantity, e.g. ``"ball_diameter"``.
+    message : str
+        What is wrong, in words a bearing engineer understands.
+    """
+
+    def __init__(self, key: str, message: str) -> None:
+        self.key = key
+        self.message = message
+        super().__init__(f"{key}: {message}")
+
+
+class CaseError(RunoutError):
+    """A case file that cannot be read or is invalid.
+
+    Parameters
+    ----------
+    file : str
+        Path of the case file as the user gave it.
+    key : str
+        Dotted key path inside the file (``"bearing.elements"``); empty for file-level errors.
+    message : str
+        What is wrong.
+    """
+
+    def __init__(self, file: str, key: str, message: str) -> None:
+        self.file = file
+        self.key = key
+        self.message = message
+        where = f"{file}: {key}" if key else file
+        super().__init__(f"{where}: {message}")
+
+
+class ModelNotAvailableError(RunoutError):
+    """The case asks for a model this version does not provide."""
+
+
+class NumericalError(RunoutError):
+    """A solver failed: lost contact, no convergence, singular system.
+
+    Parameters
+    ----------
+    cause : str
+        What went wrong.
+    instant : int or None
+        Index of the time instant (or rotation angle) where it happened.
+    time : float or None
+        Time [s] or angle [rad] of that instant, when known.
+    """
+
+    def __init__(self, cause: str, instant: int | None = None, time: float | None = None) -> None:
+        self.cause = cause
+        self.instant = instant
+        self.time = time
+        where = ""
+        if instant is not None:
+            where = f" at instant {instant}"
+            if time is not None:
+                where += f" (t = {time:.6g})"
+        super().__init__(f"{cause}{where}")
+
+
+class ConvergenceError(NumericalError):
+    """An iterative solver did not converge."""
+
+
+class ContactLossError(NumericalError):
+    """Too few elements carry load to hold the ring."""
