@@ -133,21 +133,24 @@ class BallBearing:
             value = getattr(self, name)
             if not (isinstance(value, int | float) and math.isfinite(value) and value > 0.5):
                 raise GeometryError(
-                    name, f"must be > 0.5 (groove radius larger than the ball radius), got {value!r}"
+                    name,
+                    f"must be > 0.5 (groove radius larger than the ball radius), got {value!r}",
                 )
         if not (math.isfinite(self.radial_clearance) and self.radial_clearance >= 0.0):
             raise GeometryError(
-                "radial_clearance", f"must be >= 0 (no negative clearance), got {self.radial_clearance!r}"
+                "radial_clearance",
+                f"must be >= 0 (no negative clearance), got {self.radial_clearance!r}",
             )
         if self.radial_clearance >= 2.0 * self.curvature_distance:
             raise GeometryError(
                 "radial_clearance",
                 f"{self.radial_clearance * 1e6:.6g} um exceeds twice the groove-centre distance "
-                f"A = {self.curvature_distance * 1e6:.6g} um: the balls would not stay in the grooves",
+                f"A = {self.curvature_distance * 1e6:.6g} um: the balls would leave the grooves",
             )
         if self.contact_angle is not None and not (0.0 <= self.contact_angle < math.pi / 2):
             raise GeometryError(
-                "contact_angle", f"must lie in [0, 90) deg, got {math.degrees(self.contact_angle):.6g} deg"
+                "contact_angle",
+                f"must lie in [0, 90) deg, got {math.degrees(self.contact_angle):.6g} deg",
             )
 
     # --- derived geometry -------------------------------------------------------------
@@ -173,7 +176,7 @@ class BallBearing:
 
     @property
     def curvature_distance(self) -> float:
-        """A = r_i + r_o - D, distance between the groove curvature centres [m] (seed 003 eq. 2.22)."""
+        """A = r_i + r_o - D between the groove curvature centres [m] (seed 003 eq. 2.22)."""
         return self.total_curvature * self.ball_diameter
 
     @property
@@ -204,7 +207,7 @@ class BallBearing:
 
 def _max_elements(diameter: float, pitch_diameter: float) -> int:
     """Largest number of elements of this diameter that fit on the pitch circle."""
-    return int(math.floor(math.pi / math.asin(min(1.0, diameter / pitch_diameter)) - 1e-12))
+    return math.floor(math.pi / math.asin(min(1.0, diameter / pitch_diameter)) - 1e-12)
 
 
 @dataclass(frozen=True)
@@ -275,7 +278,9 @@ class RollerBearing:
     @property
     def radial_clearance(self) -> float:
         """Diametral play P_d = d_e - d_i - 2 D_w [m]."""
-        return self.outer_raceway_diameter - self.inner_raceway_diameter - 2.0 * self.roller_diameter
+        return (
+            self.outer_raceway_diameter - self.inner_raceway_diameter - 2.0 * self.roller_diameter
+        )
 
     @property
     def nominal_contact_angle(self) -> float:

@@ -34,6 +34,7 @@ How each paper writes them (all agree with the above):
 from __future__ import annotations
 
 from dataclasses import asdict, dataclass
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -51,7 +52,9 @@ __all__ = [
 ]
 
 
-def pitch_ratio(ball_diameter: ArrayLike, pitch_diameter: ArrayLike, contact_angle: ArrayLike = 0.0):  # type: ignore[no-untyped-def]
+def pitch_ratio(
+    ball_diameter: ArrayLike, pitch_diameter: ArrayLike, contact_angle: ArrayLike = 0.0
+) -> Any:
     """γ = D cos α / d_m [-].
 
     Parameters
@@ -72,7 +75,7 @@ def cage_frequency(
     ball_diameter: ArrayLike,
     pitch_diameter: ArrayLike,
     contact_angle: ArrayLike = 0.0,
-):  # type: ignore[no-untyped-def]
+) -> Any:
     """Cage (ball-set orbital) frequency f_c [Hz], signed like the ring speeds.
 
     .. math:: f_c = \\tfrac12 f_i (1-γ) + \\tfrac12 f_o (1+γ)
@@ -98,7 +101,7 @@ def ball_spin_frequency(
     ball_diameter: ArrayLike,
     pitch_diameter: ArrayLike,
     contact_angle: ArrayLike = 0.0,
-):  # type: ignore[no-untyped-def]
+) -> Any:
     """Rotation frequency of an element about its own axis, seen from the cage, f_b [Hz] (>= 0).
 
     .. math:: f_b = \\frac{d_m}{2D}(1-γ^2)\\,|f_i - f_o|
@@ -118,7 +121,7 @@ def ball_pass_inner_frequency(
     ball_diameter: ArrayLike,
     pitch_diameter: ArrayLike,
     contact_angle: ArrayLike = 0.0,
-):  # type: ignore[no-untyped-def]
+) -> Any:
     """Rate at which elements pass a point of the inner raceway, Z |f_i - f_c| [Hz].
 
     Seed 002 eq. 49 (flaw pulse rate on the inner ring); Tada's f_i for a stationary inner ring.
@@ -134,7 +137,7 @@ def ball_pass_outer_frequency(
     ball_diameter: ArrayLike,
     pitch_diameter: ArrayLike,
     contact_angle: ArrayLike = 0.0,
-):  # type: ignore[no-untyped-def]
+) -> Any:
     """Rate at which elements pass a point of the outer raceway, Z |f_o - f_c| [Hz].
 
     Seed 002 eq. 53; seed 003 eq. 2.20 (ball passage frequency, stationary outer race).

@@ -9,6 +9,7 @@ second): ``"1800 rpm"`` becomes 30.0, ``"30 Hz"`` stays 30.0 and ``"188.5 rad/s"
 from __future__ import annotations
 
 import math
+import re
 from functools import lru_cache
 from typing import Any
 
@@ -22,8 +23,8 @@ class UnitError(ValueError):
 
 
 @lru_cache(maxsize=1)
-def _registry() -> pint.UnitRegistry:
-    ureg = pint.UnitRegistry()
+def _registry() -> Any:
+    ureg: Any = pint.UnitRegistry()
     ureg.define("micron = micrometer")
     return ureg
 
@@ -36,7 +37,11 @@ KINDS: dict[str, tuple[str, str, str]] = {
     "density": ("[mass] / [length] ** 3", "kg/m^3", "a density"),
     "mass": ("[mass]", "kg", "a mass"),
     "time": ("[time]", "s", "a time"),
-    "damping": ("[force] * [time] / [length]", "N*s/m", "a viscous damping (force x time / length)"),
+    "damping": (
+        "[force] * [time] / [length]",
+        "N*s/m",
+        "a viscous damping (force x time / length)",
+    ),
     "stiffness": ("[force] / [length]", "N/m", "a stiffness (force / length)"),
     "moment": ("[force] * [length]", "N*m", "a moment"),
     "mass_length": ("[mass] * [length]", "kg*m", "an unbalance (mass x length)"),
@@ -47,8 +52,13 @@ KINDS: dict[str, tuple[str, str, str]] = {
 }
 
 
+_NUMBER_FIRST = re.compile(r"^\s*[-+]?(\d|\.\d)")
+
+
 def _parse(text: str) -> Any:
     ureg = _registry()
+    if not _NUMBER_FIRST.match(text):
+        raise UnitError(f'"{text}" cannot be read as a quantity (it must start with a number)')
     try:
         return ureg.Quantity(text.strip())
     except Exception as exc:  # pint raises several unrelated types

@@ -1,0 +1,761 @@
+"""Case files: TOML in, validated frozen dataclasses out.
+
+A case file describes one bearing, how it runs, what is wrong with its parts and which analysis
+to run (the contract is in DESIGN.md; the key reference is generated from the schema below). A
+number is SI; a string carries its unit and is parsed by :mod:`runout.units`.
+
+Every problem is reported as a :class:`runout.errors.CaseError` that names the file, the key
+path (``bearing.elements``, ``waviness[2].order``; array entries are counted from 1) and what is
+wrong. Unknown keys are errors with a did-you-mean hint.
+"""
+
+from __future__ import annotations
+
+import difflib
+import math
+import tomllib
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Annotated, Any, Literal
+
+from pydantic import (
+    BaseModel,
+    BeforeValidator,
+    ConfigDict,
+    Field,
+    ValidationError,
+    field_validator,
+    model_validator,
+)
+
+from runout.bearing import BallBearing, Bearing, Material, Operation, RollerBearing
+from runout.errors import CaseError, GeometryError
+from runout.imperfections import (
+    Harmonics,
+    Imperfections,
+    Slant,
+    from_profile,
+    read_profile_csv,
+    single_harmonic,
+    spectral_law,
+)
+from runout.units import UnitError, to_si
+
+__all__ = ["MODEL_IDS", "Analysis", "Case", "CaseSpec", "load_case", "parse_case"]
+
+MODEL_IDS = (
+    "linear",
+    "quasi_static_2d",
+    "quasi_static_3d",
+    "equilibrium",
+    "dynamic",
+    "roller_constraint",
+)
+
+
+def _quantity(kind: str) -> BeforeValidator:
+    def convert(value: object) -> float:
+        try:
+            return to_si(value, kind)
+        except UnitError as exc:
+            raise ValueError(str(exc)) from None
+
+    return BeforeValidator(convert)
+
+
+Length = Annotated[float, _quantity("length")]
+Force = Annotated[float, _quantity("force")]
+Pressure = Annotated[float, _quantity("pressure")]
+Density = Annotated[float, _quantity("density")]
+Mass = Annotated[float, _quantity("mass")]
+Time = Annotated[float, _quantity("time")]
+Damping = Annotated[float, _quantity("damping")]
+AngleQ = Annotated[float, _quantity("angle")]
+Speed = Annotated[float, _quantity("speed")]
+Unbalance = Annotated[float, _quantity("mass_length")]
+Plain = Annotated[float, _quantity("dimensionless")]
+
+
+class _Table(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True, strict=True)
+
+
+class BearingSpec(_Table):
+    """``[bearing]``: the geometry of the bearing."""
+
+    type: Literal["ball", "cylindrical_roller"] = Field(
+        "ball", description='"ball" (deep-groove or angular-contact) or "cylindrical_roller".'
+    )
+    elements: int = Field(description="Number of balls or rollers Z (>= 3).")
+    element_diameter: Length = Field(description="Ball or roller diameter [m].")
+    pitch_diameter: Length | None = Field(
+        None, description="Pitch diameter d_m [m] (ball bearings; rollers derive it)."
+    )
+    inner_conformity: Plain | None = Field(
+        None, description="Inner groove radius / ball diameter f_i (> 0.5). Default 0.52."
+    )
+    outer_conformity: Plain | None = Field(
+        None, description="Outer groove radius / ball diameter f_o (> 0.5). Default 0.53."
+    )
+    inner_groove_radius: Length | None = Field(
+        None, description="Inner groove radius [m], instead of inner_conformity."
+    )
+    outer_groove_radius: Length | None = Field(
+        None, description="Outer groove radius [m], instead of outer_conformity."
+    )
+    radial_clearance: Length = Field(
+        0.0, description="ISO radial internal clearance = Harris diametral play P_d [m]."
+    )
+    contact_angle: AngleQ | None = Field(
+        None, description="Fixed contact angle [rad]; omitted: derived from clearance and load."
+    )
+    inner_raceway_diameter: Length | None = Field(
+        None, description="Inner raceway diameter d_i [m] (cylindrical roller bearings)."
+    )
+    outer_raceway_diameter: Length | None = Field(
+        None, description="Outer raceway diameter d_e [m] (cylindrical roller bearings)."
+    )
+    roller_length: Length | None = Field(
+        None, description="Effective roller length [m] (cylindrical roller bearings)."
+    )
+
+    @field_validator("elements", mode="before")
+    @classmethod
+    def _elements(cls, value: object) -> object:
+        if isinstance(value, bool) or not isinstance(value, int) or value < 3:
+            raise ValueError(f"must be an integer >= 3, got {value!r}")
+        return value
+
+    @model_validator(mode="after")
+    def _by_type(self) -> BearingSpec:
+        ball_only = (
+            "pitch_diameter",
+            "inner_conformity",
+            "outer_conformity",
+            "inner_groove_radius",
+            "outer_groove_radius",
+            "contact_angle",
+        )
+        roller_only = ("inner_raceway_diameter", "outer_raceway_diameter", "roller_length")
+        if self.type == "ball":
+            if self.pitch_diameter is None:
+                raise _KeyedError("pitch_diameter", "required for a ball bearing")
+            for key in roller_only:
+                if getattr(self, key) is not None:
+                    raise _KeyedError(key, 'only applies to type = "cylindrical_roller"')
+            for side in ("inner", "outer"):
+                if (
+                    getattr(self, f"{side}_conformity") is not None
+                    and getattr(self, f"{side}_groove_radius") is not None
+                ):
+                    raise _KeyedError(
+                        f"{side}_groove_radius",
+                        f"give {side}_conformity or {side}_groove_radius, not both",
+                    )
+        else:
+            for key in ("inner_raceway_diameter", "outer_raceway_diameter"):
+                if getattr(self, key) is None:
+                    raise _KeyedError(key, "required for a cylindrical roller bearing")
+            for key in ball_only:
+                if getattr(self, key) is not None:
+                    raise _KeyedError(key, 'only applies to type = "ball"')
+            if self.radial_clearance != 0.0:
+                raise _KeyedError(
+                    "radial_clearance",
+                    "a cylindrical roller bearing's clearance follows from its raceway "
+                    "diameters (d_e - d_i - 2 D_w); give those instead",
+                )
+        return self
+
+
+class MaterialSpec(_Table):
+    """``[material]``: elastic and inertial properties (default: bearing steel)."""
+
+    youngs_modulus: Pressure = Field(208e9, description="Young's modulus [Pa].")
+    poisson_ratio: Plain = Field(0.3, description="Poisson's ratio [-].")
+    density: Density = Field(7850.0, description="Density [kg/m^3].")
+
+
+class OperationSpec(_Table):
+    """``[operation]``: which ring turns, how fast, and the loads."""
+
+    rotating_ring: Literal["inner", "outer"] = Field(
+        "inner", description="Ring whose revolutions define orders."
+    )
+    speed: Speed = Field(0.0, description="Speed of the rotating ring [Hz] (e.g. '1800 rpm').")
+    other_ring_speed: Speed = Field(
+        0.0, description="Speed of the other ring [Hz], signed relative to speed."
+    )
+    axial_load: Force = Field(0.0, description="Axial load or constant-pressure preload [N].")
+    radial_load: Force = Field(0.0, description="Radial load [N].")
+    radial_load_direction: AngleQ = Field(
+        -math.pi / 2, description="Direction of the radial load from +x [rad]; default -y."
+    )
+
+    @field_validator("axial_load", "radial_load")
+    @classmethod
+    def _non_negative(cls, value: float) -> float:
+        if value < 0.0:
+            raise ValueError(f"must be >= 0, got {value!r} N")
+        return value
+
+
+Part = Literal["inner", "outer", "ball", "roller"]
+
+
+class WavinessSpec(_Table):
+    """``[[waviness]]``: one harmonic of one part's radius deviation."""
+
+    part: Part = Field(description='"inner", "outer", "ball" or "roller".')
+    order: int = Field(ge=0, description="Number of lobes (waves per circumference).")
+    amplitude: Length | None = Field(None, description="Zero-to-peak radius deviation [m].")
+    peak_to_peak: Length | None = Field(None, description="Peak-to-peak radius deviation [m].")
+    phase: AngleQ = Field(0.0, description="Phase φ of a cos(kθ + φ) [rad].")
+    element: int | None = Field(
+        None, ge=1, description="Ball/roller number (1-based); omitted: every element."
+    )
+
+    @model_validator(mode="after")
+    def _one_amplitude(self) -> WavinessSpec:
+        _check_amplitude(self.amplitude, self.peak_to_peak)
+        _check_element(self.part, self.element)
+        return self
+
+
+class WavinessSpectrumSpec(_Table):
+    """``[[waviness_spectrum]]``: amplitude(k) = amplitude * k**exponent for k in orders."""
+
+    part: Part = Field(description='"inner", "outer", "ball" or "roller".')
+    orders: tuple[int, int] = Field(description="First and last order, inclusive.", strict=False)
+    amplitude: Length | None = Field(None, description="Zero-to-peak amplitude at k = 1 [m].")
+    peak_to_peak: Length | None = Field(None, description="Peak-to-peak amplitude at k = 1 [m].")
+    exponent: float = Field(0.0, description="Spectral slope: amplitude ~ k**exponent.")
+    phase: AngleQ | Literal["random"] = Field(
+        "random", description='"random" (seeded) or one angle for every order.'
+    )
+    seed: int = Field(0, description="Seed of the random phases (reproducible by default).")
+    element: int | None = Field(None, ge=1, description="Ball/roller number (1-based).")
+
+    @field_validator("phase", mode="before")
+    @classmethod
+    def _phase(cls, value: object) -> object:
+        if value == "random":
+            return value
+        try:
+            return to_si(value, "angle")
+        except UnitError as exc:
+            raise ValueError(f'{exc}; expected an angle or "random"') from None
+
+    @model_validator(mode="after")
+    def _check(self) -> WavinessSpectrumSpec:
+        first, last = self.orders
+        if first < 0 or last < first:
+            raise _KeyedError(
+                "orders", f"must be [first, last] with 0 <= first <= last, got {list(self.orders)}"
+            )
+        if first == 0 and self.exponent < 0:
+            raise _KeyedError("orders", "order 0 with a negative exponent is infinite")
+        _check_amplitude(self.amplitude, self.peak_to_peak)
+        _check_element(self.part, self.element)
+        return self
+
+
+class ProfileSpec(_Table):
+    """``[[profile]]``: a measured roundness profile (CSV of angle, deviation)."""
+
+    part: Part = Field(description='"inner", "outer", "ball" or "roller".')
+    file: str = Field(description="CSV path, relative to the case file.")
+    angle_unit: Literal["deg", "rad"] = Field("deg", description="Unit of the angle column.")
+    deviation_unit: str = Field("um", description="Unit of the deviation column (e.g. 'um').")
+    orders: tuple[int, int] = Field(description="Orders kept [first, last].", strict=False)
+    element: int | None = Field(None, ge=1, description="Ball/roller number (1-based).")
+
+    @model_validator(mode="after")
+    def _check(self) -> ProfileSpec:
+        first, last = self.orders
+        if first < 0 or last < first:
+            raise _KeyedError(
+                "orders", f"must be [first, last] with 0 <= first <= last, got {list(self.orders)}"
+            )
+        try:
+            to_si(f"1 {self.deviation_unit}", "length")
+        except UnitError:
+            raise _KeyedError(
+                "deviation_unit", f'"{self.deviation_unit}" is not a length unit'
+            ) from None
+        _check_element(self.part, self.element)
+        return self
+
+
+class SlantSpec(_Table):
+    """``[slant]``: inner-raceway slant (seed 002 eq. 34)."""
+
+    part: Literal["inner"] = Field("inner", description="Only the inner raceway.")
+    amplitude: Length | None = Field(None, description="W_s [m], amplitude of the 2/rev term.")
+    angle: AngleQ | None = Field(None, description="Slant angle β [rad], instead of amplitude.")
+    phase: AngleQ = Field(0.0, description="Phase φ_s [rad].")
+
+    @model_validator(mode="after")
+    def _one(self) -> SlantSpec:
+        if (self.amplitude is None) == (self.angle is None):
+            raise _KeyedError("amplitude", "give exactly one of amplitude or angle")
+        value = self.amplitude if self.amplitude is not None else self.angle
+        if value is not None and value < 0:
+            raise _KeyedError(
+                "amplitude" if self.amplitude is not None else "angle", "must be >= 0"
+            )
+        return self
+
+
+class ElementsSpec(_Table):
+    """``[elements]``: per-element size and position errors (length Z each)."""
+
+    diameter_errors: list[Length] | None = Field(
+        None, description="Deviation of each element's diameter [m]."
+    )
+    pitch_errors: list[AngleQ] | None = Field(
+        None, description="Angular position error of each element [rad]."
+    )
+
+
+class AnalysisSpec(_Table):
+    """``[analysis]``: which model and how long."""
+
+    model: Literal[
+        "linear",
+        "quasi_static_2d",
+        "quasi_static_3d",
+        "equilibrium",
+        "dynamic",
+        "roller_constraint",
+    ] = Field("quasi_static_3d", description="Model id (see DESIGN.md).")
+    revolutions: float = Field(20.0, gt=0, description="Revolutions of the rotating ring.")
+    samples: int = Field(4096, ge=16, description="Number of instants.")
+
+
+class DynamicsSpec(_Table):
+    """``[dynamics]``: rotor for model = "dynamic"."""
+
+    mass: Mass = Field(description="Rotor mass carried by the bearing [kg].")
+    damping: Damping = Field(0.0, description="Viscous damping [N s/m].")
+    unbalance: Unbalance = Field(0.0, description="Unbalance m e [kg m].")
+    time_step: Time | None = Field(None, description="Integration step [s]; default automatic.")
+
+    @field_validator("mass")
+    @classmethod
+    def _positive_mass(cls, value: float) -> float:
+        if value <= 0:
+            raise ValueError(f"must be > 0, got {value!r} kg")
+        return value
+
+
+class StudySpec(_Table):
+    """``[study]``: for ``runout study``."""
+
+    kind: Literal["montecarlo", "sweep"] = Field(description='"montecarlo" or "sweep".')
+    samples: int = Field(100, ge=1, description="Number of Monte Carlo samples.")
+    seed: int = Field(0, description="Root seed.")
+    vary: dict[str, Any] = Field(default_factory=dict, description="Quantities to vary.")
+
+
+class CaseSpec(_Table):
+    """The whole case file."""
+
+    title: str = Field("", description="Free text shown in outputs.")
+    bearing: BearingSpec
+    material: MaterialSpec = Field(default_factory=MaterialSpec)
+    operation: OperationSpec = Field(default_factory=OperationSpec)
+    waviness: list[WavinessSpec] = Field(default_factory=list)
+    waviness_spectrum: list[WavinessSpectrumSpec] = Field(default_factory=list)
+    profile: list[ProfileSpec] = Field(default_factory=list)
+    slant: SlantSpec | None = None
+    elements: ElementsSpec | None = None
+    analysis: AnalysisSpec = Field(default_factory=AnalysisSpec)
+    dynamics: DynamicsSpec | None = None
+    study: StudySpec | None = None
+
+
+class _KeyedError(ValueError):
+    """A model-validator error that belongs to one key of the table."""
+
+    def __init__(self, key: str, message: str) -> None:
+        self.key = key
+        super().__init__(f"{key}: {message}")
+
+
+def _check_amplitude(amplitude: float | None, peak_to_peak: float | None) -> None:
+    if (amplitude is None) == (peak_to_peak is None):
+        raise _KeyedError("amplitude", "give exactly one of amplitude or peak_to_peak")
+    value = amplitude if amplitude is not None else peak_to_peak
+    if value is not None and value < 0:
+        raise _KeyedError("amplitude" if amplitude is not None else "peak_to_peak", "must be >= 0")
+
+
+def _check_element(part: str, element: int | None) -> None:
+    if element is not None and part in ("inner", "outer"):
+        raise _KeyedError("element", f'only applies to balls or rollers, not part = "{part}"')
+
+
+# --------------------------------------------------------------------------------------------
+# error formatting
+# --------------------------------------------------------------------------------------------
+def _fields_at(loc: tuple[int | str, ...]) -> list[str]:
+    """Field names of the table at ``loc`` (for did-you-mean hints)."""
+    model: Any = CaseSpec
+    for part in loc:
+        if isinstance(part, int):
+            continue
+        info = getattr(model, "model_fields", {}).get(part)
+        if info is None:
+            break
+        annotation = info.annotation
+        model = _table_type(annotation)
+        if model is None:
+            return []
+    return list(getattr(model, "model_fields", {}).keys())
+
+
+def _table_type(annotation: Any) -> Any:
+    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
+        return annotation
+    for arg in getattr(annotation, "__args__", ()):
+        found = _table_type(arg)
+        if found is not None:
+            return found
+    return None
+
+
+def _format_loc(loc: tuple[int | str, ...]) -> str:
+    text = ""
+    for part in loc:
+        if isinstance(part, int):
+            text += f"[{part + 1}]"
+        elif part.startswith("function-") or part in ("literal['random']",) or "[" in part:
+            continue
+        else:
+            text += f".{part}" if text else part
+    return text
+
+
+def _describe(error: Any) -> tuple[str, str]:
+    loc = tuple(error["loc"])
+    kind = error["type"]
+    given = error.get("input")
+    ctx = error.get("ctx") or {}
+    if kind == "extra_forbidden":
+        key = str(loc[-1])
+        hint = difflib.get_close_matches(key, _fields_at(loc[:-1]), n=1, cutoff=0.6)
+        suffix = f"; did you mean '{hint[0]}'?" if hint else ""
+        return _format_loc(loc), f"unknown key{suffix}"
+    if kind == "missing":
+        return _format_loc(loc), "required key is missing"
+    if kind == "value_error":
+        exc = ctx.get("error")
+        if isinstance(exc, _KeyedError):
+            return _format_loc((*loc, exc.key)), str(exc).split(": ", 1)[1]
+        return _format_loc(loc), str(exc) if exc is not None else error["msg"]
+    if kind == "literal_error":
+        return _format_loc(loc), f"must be one of {ctx.get('expected')}, got {given!r}"
+    if kind in ("int_type", "int_from_float", "int_parsing"):
+        return _format_loc(loc), f"must be an integer, got {given!r}"
+    if kind in ("float_type", "float_parsing"):
+        return _format_loc(loc), f"must be a number, got {given!r}"
+    if kind in ("string_type",):
+        return _format_loc(loc), f"must be a string, got {given!r}"
+    if kind in ("model_type", "model_attributes_type", "dict_type"):
+        return _format_loc(loc), f"must be a table, got {given!r}"
+    if kind in ("list_type", "tuple_type"):
+        return _format_loc(loc), f"must be an array, got {given!r}"
+    if kind == "too_short" or kind == "too_long":
+        return _format_loc(loc), f"has the wrong number of entries: {error['msg'].lower()}"
+    if kind == "greater_than_equal":
+        return _format_loc(loc), f"must be >= {ctx.get('ge')}, got {given!r}"
+    if kind == "greater_than":
+        return _format_loc(loc), f"must be > {ctx.get('gt')}, got {given!r}"
+    return _format_loc(loc), error["msg"]
+
+
+def _first_error(exc: ValidationError) -> tuple[str, str]:
+    errors = exc.errors()
+    # A union of an angle and "random" reports both branches; report the most specific one.
+    # A misspelt key also makes the right one "missing": report the misspelling first.
+    rank = {"extra_forbidden": 0}
+    errors.sort(key=lambda e: rank.get(e["type"], 1))
+    return _describe(errors[0])
+
+
+# --------------------------------------------------------------------------------------------
+# building the domain objects
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class Analysis:
+    """What to compute: model id, revolutions of the rotating ring, number of instants."""
+
+    model: str = "quasi_static_3d"
+    revolutions: float = 20.0
+    samples: int = 4096
+
+
+@dataclass(frozen=True)
+class Case:
+    """A validated case: every quantity SI, ready for the models."""
+
+    path: str
+    title: str
+    bearing: Bearing
+    operation: Operation
+    imperfections: Imperfections
+    analysis: Analysis
+    spec: CaseSpec = field(repr=False)
+
+    @property
+    def dynamics(self) -> DynamicsSpec | None:
+        """The ``[dynamics]`` table, if any."""
+        return self.spec.dynamics
+
+    @property
+    def study(self) -> StudySpec | None:
+        """The ``[study]`` table, if any."""
+        return self.spec.study
+
+
+_GEOMETRY_KEYS = {
+    "n_elements": "bearing.elements",
+    "ball_diameter": "bearing.element_diameter",
+    "roller_diameter": "bearing.element_diameter",
+    "pitch_diameter": "bearing.pitch_diameter",
+    "inner_conformity": "bearing.inner_conformity",
+    "outer_conformity": "bearing.outer_conformity",
+    "radial_clearance": "bearing.radial_clearance",
+    "contact_angle": "bearing.contact_angle",
+    "inner_raceway_diameter": "bearing.inner_raceway_diameter",
+    "outer_raceway_diameter": "bearing.outer_raceway_diameter",
+    "roller_length": "bearing.roller_length",
+    "material.youngs_modulus": "material.youngs_modulus",
+    "material.poisson_ratio": "material.poisson_ratio",
+    "material.density": "material.density",
+}
+
+
+def _build_bearing(spec: CaseSpec) -> Bearing:
+    b = spec.bearing
+    material = Material(
+        youngs_modulus=spec.material.youngs_modulus,
+        poisson_ratio=spec.material.poisson_ratio,
+        density=spec.material.density,
+    )
+    if b.type == "cylindrical_roller":
+        assert b.inner_raceway_diameter is not None and b.outer_raceway_diameter is not None
+        return RollerBearing(
+            n_elements=b.elements,
+            roller_diameter=b.element_diameter,
+            inner_raceway_diameter=b.inner_raceway_diameter,
+            outer_raceway_diameter=b.outer_raceway_diameter,
+            roller_length=b.roller_length,
+            material=material,
+        )
+    assert b.pitch_diameter is not None
+    f_i = b.inner_conformity
+    if b.inner_groove_radius is not None:
+        f_i = b.inner_groove_radius / b.element_diameter
+    f_o = b.outer_conformity
+    if b.outer_groove_radius is not None:
+        f_o = b.outer_groove_radius / b.element_diameter
+    return BallBearing(
+        n_elements=b.elements,
+        ball_diameter=b.element_diameter,
+        pitch_diameter=b.pitch_diameter,
+        inner_conformity=0.52 if f_i is None else f_i,
+        outer_conformity=0.53 if f_o is None else f_o,
+        radial_clearance=b.radial_clearance,
+        contact_angle=b.contact_angle,
+        material=material,
+    )
+
+
+def _element_part_ok(bearing: Bearing, part: str) -> bool:
+    return not (
+        (part == "ball" and isinstance(bearing, RollerBearing))
+        or (part == "roller" and isinstance(bearing, BallBearing))
+    )
+
+
+def _build_imperfections(spec: CaseSpec, bearing: Bearing, base_dir: Path) -> Imperfections:
+    z = bearing.n_elements
+    imp = Imperfections.perfect(z)
+
+    def target(part: str) -> str:
+        return "element" if part in ("ball", "roller") else part
+
+    def check(key: str, part: str, element: int | None) -> None:
+        if not _element_part_ok(bearing, part):
+            raise _CaseKeyError(
+                f"{key}.part", f'"{part}" does not match bearing.type = "{spec.bearing.type}"'
+            )
+        if element is not None and element > z:
+            raise _CaseKeyError(f"{key}.element", f"must be <= {z} (the number of elements)")
+
+    for i, w in enumerate(spec.waviness, start=1):
+        key = f"waviness[{i}]"
+        check(key, w.part, w.element)
+        amplitude = w.amplitude if w.amplitude is not None else 0.5 * (w.peak_to_peak or 0.0)
+        if w.order == 0 and w.part in ("inner", "outer"):
+            raise _CaseKeyError(
+                f"{key}.order", "order 0 of a raceway is a size change; use the raceway diameter"
+            )
+        harmonics = single_harmonic(w.order, amplitude, w.phase)
+        imp = imp.add(target(w.part), harmonics, element=w.element)
+    for i, s in enumerate(spec.waviness_spectrum, start=1):
+        key = f"waviness_spectrum[{i}]"
+        check(key, s.part, s.element)
+        amplitude = s.amplitude if s.amplitude is not None else 0.5 * (s.peak_to_peak or 0.0)
+        phase: float | str = s.phase
+        harmonics_list: list[Harmonics]
+        if s.element is None and s.part in ("ball", "roller") and phase == "random":
+            # Every element gets its own random phases, drawn from one seeded generator.
+            import numpy as np
+
+            rng = np.random.default_rng(s.seed)
+            harmonics_list = [
+                spectral_law(s.orders, amplitude, s.exponent, phase="random", rng=rng)
+                for _ in range(z)
+            ]
+            for j, h in enumerate(harmonics_list, start=1):
+                imp = imp.add("element", h, element=j)
+            continue
+        harmonics = spectral_law(s.orders, amplitude, s.exponent, phase=phase, seed=s.seed)
+        imp = imp.add(target(s.part), harmonics, element=s.element)
+    for i, p in enumerate(spec.profile, start=1):
+        key = f"profile[{i}]"
+        check(key, p.part, p.element)
+        path = (base_dir / p.file).resolve()
+        try:
+            angles, deviations = read_profile_csv(
+                path,
+                angle_unit=p.angle_unit,
+                deviation_scale=to_si(f"1 {p.deviation_unit}", "length"),
+            )
+            harmonics = from_profile(angles, deviations, orders=p.orders)
+        except (OSError, ValueError) as exc:
+            raise _CaseKeyError(f"{key}.file", str(exc)) from None
+        imp = imp.add(target(p.part), harmonics, element=p.element)
+    if spec.slant is not None:
+        if not isinstance(bearing, BallBearing):
+            raise _CaseKeyError("slant", "applies to ball bearings only")
+        if spec.slant.amplitude is not None:
+            slant = Slant(amplitude=spec.slant.amplitude, phase=spec.slant.phase)
+        else:
+            assert spec.slant.angle is not None
+            slant = Slant.from_angle(spec.slant.angle, bearing, phase=spec.slant.phase)
+        imp = imp.with_slant(slant)
+    if spec.elements is not None:
+        for name in ("diameter_errors", "pitch_errors"):
+            values = getattr(spec.elements, name)
+            if values is None:
+                continue
+            if len(values) != z:
+                raise _CaseKeyError(
+                    f"elements.{name}", f"has {len(values)} entries; the bearing has {z} elements"
+                )
+            imp = imp.with_element_errors(**{name: values})
+    return imp
+
+
+class _CaseKeyError(Exception):
+    def __init__(self, key: str, message: str) -> None:
+        self.key = key
+        self.message = message
+        super().__init__(f"{key}: {message}")
+
+
+def parse_case(data: dict[str, Any], path: str = "<case>", base_dir: Path | None = None) -> Case:
+    """Validate a parsed TOML document and build the domain objects.
+
+    Parameters
+    ----------
+    data : dict
+        The TOML document as a dictionary.
+    path : str
+        File name used in error messages.
+    base_dir : Path or None
+        Directory that relative file references (profiles) are resolved against.
+
+    Raises
+    ------
+    CaseError
+        Naming ``path``, the key path and the problem.
+    """
+    try:
+        spec = CaseSpec.model_validate(data)
+    except ValidationError as exc:
+        key, message = _first_error(exc)
+        raise CaseError(path, key, message) from None
+    try:
+        bearing = _build_bearing(spec)
+    except GeometryError as exc:
+        raise CaseError(path, _GEOMETRY_KEYS.get(exc.key, exc.key), exc.message) from None
+    try:
+        operation = Operation(
+            rotating_ring=spec.operation.rotating_ring,
+            speed=spec.operation.speed,
+            other_ring_speed=spec.operation.other_ring_speed,
+            axial_load=spec.operation.axial_load,
+            radial_load=spec.operation.radial_load,
+            radial_load_angle=spec.operation.radial_load_direction,
+        )
+    except GeometryError as exc:
+        raise CaseError(path, exc.key, exc.message) from None
+    try:
+        imperfections = _build_imperfections(spec, bearing, base_dir or Path.cwd())
+    except _CaseKeyError as exc:
+        raise CaseError(path, exc.key, exc.message) from None
+    except (GeometryError, ValueError) as exc:
+        raise CaseError(path, "", str(exc)) from None
+    analysis = Analysis(
+        model=spec.analysis.model,
+        revolutions=spec.analysis.revolutions,
+        samples=spec.analysis.samples,
+    )
+    return Case(
+        path=path,
+        title=spec.title,
+        bearing=bearing,
+        operation=operation,
+        imperfections=imperfections,
+        analysis=analysis,
+        spec=spec,
+    )
+
+
+def load_case(path: str | Path) -> Case:
+    """Read and validate a TOML case file.
+
+    Parameters
+    ----------
+    path : str or Path
+        The case file.
+
+    Returns
+    -------
+    Case
+
+    Raises
+    ------
+    CaseError
+        If the file cannot be read, is not TOML, or is invalid.
+    """
+    p = Path(path)
+    name = str(path)
+    try:
+        text = p.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise CaseError(name, "", "no such file") from None
+    except IsADirectoryError:
+        raise CaseError(name, "", "is a directory, not a case file") from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise CaseError(name, "", f"cannot be read ({exc})") from None
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise CaseError(name, "", f"is not valid TOML: {exc}") from None
+    return parse_case(data, name, p.parent)

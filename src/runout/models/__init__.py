@@ -1,0 +1,54 @@
+"""One module per model id; :func:`run_model` dispatches a validated case to it.
+
+Each model lives in ``runout/models/<id>.py`` and exposes ``run(case) -> RunResult``. A case
+that names a model this version does not provide gets a
+:class:`runout.errors.ModelNotAvailableError` saying so, never a partial answer.
+"""
+
+from __future__ import annotations
+
+import importlib
+import importlib.util
+from typing import Any
+
+from runout.errors import ModelNotAvailableError
+
+__all__ = ["MODEL_MODULES", "available_models", "run_model"]
+
+#: model id -> module that implements it (``run(case) -> RunResult``)
+MODEL_MODULES: dict[str, str] = {
+    "linear": "runout.models.linear",
+    "quasi_static_2d": "runout.models.quasi_static_2d",
+    "quasi_static_3d": "runout.models.quasi_static_3d",
+    "equilibrium": "runout.models.equilibrium",
+    "dynamic": "runout.models.dynamic",
+    "roller_constraint": "runout.models.roller_constraint",
+}
+
+
+def available_models() -> list[str]:
+    """Model ids this installation provides."""
+    return sorted(
+        model
+        for model, module in MODEL_MODULES.items()
+        if importlib.util.find_spec(module) is not None
+    )
+
+
+def run_model(case: Any) -> Any:
+    """Run the model named in ``case.analysis.model``.
+
+    Raises
+    ------
+    ModelNotAvailableError
+        If that model is not part of this version.
+    """
+    model = case.analysis.model
+    if model not in available_models():
+        available = ", ".join(available_models()) or "none yet"
+        raise ModelNotAvailableError(
+            f"{case.path}: analysis.model: model '{model}' is not available in this version "
+            f"(available: {available}); `runout check` and `runout frequencies` work for any case"
+        )
+    module = importlib.import_module(MODEL_MODULES[model])
+    return module.run(case)

@@ -1,0 +1,254 @@
+"""What every model returns: one result object with analysis methods, JSON and files.
+
+A model fills a :class:`RunResult`: the time (or angle) history of the measured ring's centre,
+the labelled spectral lines (``components``), the runout figures and model-specific extras. The
+JSON it prints follows the contract in DESIGN.md; ``write`` puts data and plots in a directory.
+Plotting is delegated to :mod:`runout.plotting` (the only module that imports matplotlib).
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from runout.kinematics import Frequencies
+
+__all__ = ["Component", "RunResult", "Runout"]
+
+Rows = list[tuple[str, str, str]]
+
+
+@dataclass(frozen=True)
+class Component:
+    """One spectral line of the output.
+
+    Attributes
+    ----------
+    direction : {"x", "y", "z"}
+        Direction of the displacement.
+    frequency_hz : float
+        Frequency [Hz].
+    order : float
+        Frequency / speed of the rotating ring [-].
+    pp_m : float
+        Peak-to-peak amplitude [m].
+    label : str
+        Which part, lobe count and formula produced it, e.g. ``"inner 8 lobes: nZ(1+γ)/2 + 1"``.
+    phase_rad : float
+        Phase of x(t) = (pp/2) cos(2π f t + φ) [rad].
+    repeatable : bool
+        True when the line is synchronous with the rotating ring (an integer order): RRO.
+    """
+
+    direction: str
+    frequency_hz: float
+    order: float
+    pp_m: float
+    label: str
+    phase_rad: float = 0.0
+    repeatable: bool = False
+
+    def to_json(self) -> dict[str, Any]:
+        """The JSON contract's component object."""
+        return {
+            "direction": self.direction,
+            "frequency_hz": self.frequency_hz,
+            "order": self.order,
+            "pp_m": self.pp_m,
+            "label": self.label,
+        }
+
+
+@dataclass(frozen=True)
+class Runout:
+    """Runout figures [m], all peak-to-peak."""
+
+    radial_pp_m: float
+    axial_pp_m: float
+    rro_pp_m: float
+    nrro_pp_m: float
+
+    def to_json(self) -> dict[str, float]:
+        """The JSON contract's ``runout`` object."""
+        return {
+            "radial_pp_m": self.radial_pp_m,
+            "axial_pp_m": self.axial_pp_m,
+            "rro_pp_m": self.rro_pp_m,
+            "nrro_pp_m": self.nrro_pp_m,
+        }
+
+
+@dataclass(frozen=True)
+class RunResult:
+    """Result of one model run on one case.
+
+    Attributes
+    ----------
+    model : str
+        Model id.
+    title : str
+        Case title.
+    frequencies : Frequencies
+        Characteristic frequencies at the operating contact angle.
+    contact_angle : float
+        Operating contact angle [rad].
+    time : ndarray
+        Instants [s] (angle-driven models: rotation angle / (2π speed)).
+    displacement : ndarray, shape (3, n)
+        x, y, z of the measured ring's centre [m] (z zero for planar models).
+    components : tuple of Component
+        Labelled spectral lines, largest first.
+    runout : Runout
+        Runout figures.
+    measuring_direction : ndarray, shape (2,)
+        Unit vector of the radial measuring direction (radial load direction, else x).
+    anderon : dict or None
+        Band values U, R, L, M, H, E, A [Anderon] where the model gives them.
+    extras : dict
+        Model-specific JSON entries (e.g. ``natural_frequencies_hz``).
+    notes : tuple of str
+        Warnings a user should read (unloaded balls, assumptions).
+    """
+
+    model: str
+    title: str
+    frequencies: Frequencies
+    contact_angle: float
+    time: NDArray[np.float64]
+    displacement: NDArray[np.float64]
+    components: tuple[Component, ...]
+    runout: Runout
+    measuring_direction: NDArray[np.float64] = field(default_factory=lambda: np.array([1.0, 0.0]))
+    anderon: dict[str, float] | None = None
+    extras: dict[str, Any] = field(default_factory=dict)
+    notes: tuple[str, ...] = ()
+
+    # ---------------------------------------------------------------- analysis
+    @property
+    def x(self) -> NDArray[np.float64]:
+        """x displacement [m]."""
+        return self.displacement[0]
+
+    @property
+    def y(self) -> NDArray[np.float64]:
+        """y displacement [m]."""
+        return self.displacement[1]
+
+    @property
+    def z(self) -> NDArray[np.float64]:
+        """Axial displacement [m]."""
+        return self.displacement[2]
+
+    def radial(self) -> NDArray[np.float64]:
+        """Displacement along the measuring direction [m]."""
+        u = self.measuring_direction
+        return u[0] * self.displacement[0] + u[1] * self.displacement[1]
+
+    def lines(self, direction: str | None = None, top: int | None = None) -> list[Component]:
+        """Components, optionally of one direction, largest first, at most ``top`` of them."""
+        chosen = [c for c in self.components if direction is None or c.direction == direction]
+        chosen.sort(key=lambda c: -c.pp_m)
+        return chosen[:top] if top is not None else chosen
+
+    # ---------------------------------------------------------------- output
+    def to_json(self) -> dict[str, Any]:
+        """One JSON object per DESIGN.md."""
+        out: dict[str, Any] = {
+            "model": self.model,
+            "title": self.title,
+            "frequencies_hz": self.frequencies.to_dict(),
+            "contact_angle_deg": math.degrees(self.contact_angle),
+            "runout": self.runout.to_json(),
+            "components": [c.to_json() for c in self.lines()],
+        }
+        if self.anderon is not None:
+            out["anderon"] = dict(self.anderon)
+        out.update(self.extras)
+        if self.notes:
+            out["notes"] = list(self.notes)
+        return out
+
+    def summary_sections(self) -> list[tuple[str, Rows]]:
+        """Readable tables: runout figures, the largest lines, band values."""
+        r = self.runout
+        sections: list[tuple[str, Rows]] = [
+            (
+                f"{self.title or self.model}: runout ({self.model} model, contact angle "
+                f"{math.degrees(self.contact_angle):.4g} deg)",
+                [
+                    ("radial p-p (measuring direction)", f"{r.radial_pp_m * 1e9:.4g}", "nm"),
+                    ("axial p-p", f"{r.axial_pp_m * 1e9:.4g}", "nm"),
+                    ("RRO p-p", f"{r.rro_pp_m * 1e9:.4g}", "nm"),
+                    ("NRRO p-p", f"{r.nrro_pp_m * 1e9:.4g}", "nm"),
+                ],
+            )
+        ]
+        rows: Rows = []
+        for c in self.lines(top=15):
+            rows.append(
+                (
+                    f"{c.direction}  {c.label}",
+                    f"{c.pp_m * 1e9:.4g} nm at {c.frequency_hz:.5g} Hz",
+                    f"order {c.order:.5g}",
+                )
+            )
+        if rows:
+            sections.append(("Largest lines (peak-to-peak)", rows))
+        if self.anderon is not None:
+            sections.append(
+                (
+                    "Anderon band values",
+                    [(band, f"{value:.4g}", "Anderon") for band, value in self.anderon.items()],
+                )
+            )
+        if self.notes:
+            sections.append(("Notes", [(note, "", "") for note in self.notes]))
+        return sections
+
+    def write(self, directory: Path) -> list[Path]:
+        """Write ``result.json``, ``history.csv``, ``lines.csv`` and plots into ``directory``.
+
+        Returns
+        -------
+        list of Path
+            The files written.
+        """
+        directory.mkdir(parents=True, exist_ok=True)
+        written: list[Path] = []
+        path = directory / "result.json"
+        path.write_text(json.dumps(self.to_json(), indent=2, allow_nan=False) + "\n")
+        written.append(path)
+        path = directory / "history.csv"
+        with path.open("w", newline="") as fh:
+            w = csv.writer(fh)
+            w.writerow(["time_s", "x_m", "y_m", "z_m"])
+            for row in zip(self.time, *self.displacement, strict=True):
+                w.writerow([f"{v:.12g}" for v in row])
+        written.append(path)
+        path = directory / "lines.csv"
+        with path.open("w", newline="") as fh:
+            w = csv.writer(fh)
+            w.writerow(["direction", "frequency_hz", "order", "pp_m", "phase_rad", "label"])
+            for c in self.lines():
+                w.writerow(
+                    [
+                        c.direction,
+                        f"{c.frequency_hz:.12g}",
+                        f"{c.order:.12g}",
+                        f"{c.pp_m:.6g}",
+                        f"{c.phase_rad:.6g}",
+                        c.label,
+                    ]
+                )
+        written.append(path)
+        from runout import plotting
+
+        written += plotting.plot_result(self, directory)
+        return written

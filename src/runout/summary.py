@@ -1,0 +1,257 @@
+"""What `runout check` and `runout frequencies` report: derived geometry, contacts, frequencies.
+
+One function, :func:`bearing_summary`, gathers the derived quantities of a bearing at an
+operating point; its result renders as JSON (SI values, unit in the key) or as tables.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+from runout.bearing import BallBearing, Bearing, Operation, RollerBearing
+from runout.contact import BallContacts, RollerContacts, ball_race_contacts, roller_race_contacts
+from runout.kinematics import Frequencies, bearing_frequencies
+from runout.loading import AxialLoading, axial_loading
+
+__all__ = ["BearingSummary", "bearing_summary", "operating_contact_angle"]
+
+Rows = list[tuple[str, str, str]]
+
+
+def operating_contact_angle(
+    bearing: Bearing, operation: Operation
+) -> tuple[float, AxialLoading | None]:
+    """Contact angle the bearing runs at, and the axial-load solution behind it.
+
+    A fixed ``contact_angle`` in the bearing description wins; otherwise a ball bearing under an
+    axial load runs at the loaded contact angle (Harris's load-angle relation,
+    :func:`runout.loading.axial_loading`), and without axial load at the free contact angle.
+    Roller bearings run at 0.
+
+    Returns
+    -------
+    contact_angle : float
+        [rad]
+    loading : AxialLoading or None
+        The static axial-load solution when one was computed.
+    """
+    if isinstance(bearing, RollerBearing):
+        return 0.0, None
+    if operation.axial_load > 0.0:
+        loading = axial_loading(bearing, operation.axial_load)
+        if bearing.contact_angle is not None:
+            return bearing.contact_angle, loading
+        return loading.contact_angle, loading
+    return bearing.nominal_contact_angle, None
+
+
+@dataclass(frozen=True)
+class BearingSummary:
+    """Derived geometry, Hertz contacts and frequencies of one bearing at one operating point."""
+
+    bearing: Bearing
+    operation: Operation
+    contact_angle: float
+    frequencies: Frequencies
+    contacts: BallContacts | RollerContacts | None
+    loading: AxialLoading | None
+
+    # ------------------------------------------------------------------------ JSON
+    def to_json(self) -> dict[str, Any]:
+        """Plain-JSON dictionary; SI values with the unit in the key name."""
+        b = self.bearing
+        out: dict[str, Any] = {"bearing": _bearing_json(b), "derived": _derived_json(b)}
+        if isinstance(self.contacts, BallContacts):
+            c = self.contacts
+            out["contact"] = {
+                "contact_angle_deg": math.degrees(c.contact_angle),
+                "inner": _point_json(c.inner),
+                "outer": _point_json(c.outer),
+                "combined_stiffness_n_per_m1_5": c.combined_stiffness,
+            }
+        elif isinstance(self.contacts, RollerContacts):
+            out["contact"] = {
+                "combined_stiffness_n_per_m10_9": self.contacts.combined_stiffness,
+            }
+        if self.loading is not None:
+            ld = self.loading
+            out["axial_loading"] = {
+                "axial_load_n": ld.axial_load,
+                "contact_angle_deg": math.degrees(ld.contact_angle),
+                "ball_load_n": ld.ball_load,
+                "inner_approach_m": ld.inner_approach,
+                "outer_approach_m": ld.outer_approach,
+                "axial_displacement_m": ld.axial_displacement,
+            }
+        out["contact_angle_deg"] = math.degrees(self.contact_angle)
+        out["frequencies_hz"] = self.frequencies.to_dict()
+        out["orders"] = self.frequencies.orders() if self.frequencies.rotation > 0 else None
+        return out
+
+    # ------------------------------------------------------------------------ tables
+    def sections(self) -> list[tuple[str, Rows]]:
+        """Titled rows (quantity, value, unit) for the readable output."""
+        b = self.bearing
+        geometry: Rows = [
+            ("type", b.kind, ""),
+            ("elements Z", str(b.n_elements), ""),
+            ("element diameter D", f"{b.element_diameter * 1e3:.6g}", "mm"),
+            ("pitch diameter d_m", f"{b.pitch_diameter * 1e3:.6g}", "mm"),
+            ("inner raceway diameter d_i", f"{b.inner_raceway_diameter * 1e3:.6g}", "mm"),
+            ("outer raceway diameter d_o", f"{b.outer_raceway_diameter * 1e3:.6g}", "mm"),
+            ("radial clearance P_d (diametral)", f"{b.radial_clearance * 1e6:.6g}", "um"),
+        ]
+        if isinstance(b, BallBearing):
+            geometry += [
+                (
+                    "inner / outer conformity f_i / f_o",
+                    f"{b.inner_conformity:.4g} / {b.outer_conformity:.4g}",
+                    "",
+                ),
+                (
+                    "groove radii r_i / r_o",
+                    f"{b.inner_groove_radius * 1e3:.6g} / {b.outer_groove_radius * 1e3:.6g}",
+                    "mm",
+                ),
+                ("total curvature B = f_i + f_o - 1", f"{b.total_curvature:.6g}", ""),
+                ("groove-centre distance A = B D", f"{b.curvature_distance * 1e6:.6g}", "um"),
+                ("free contact angle α⁰", f"{math.degrees(b.free_contact_angle):.4f}", "deg"),
+                ("free end play 2 A sin α⁰", f"{b.free_end_play * 1e6:.6g}", "um"),
+            ]
+        sections: list[tuple[str, Rows]] = [("Geometry", geometry)]
+        if isinstance(self.contacts, BallContacts):
+            c = self.contacts
+            rows: Rows = [("at contact angle", f"{math.degrees(c.contact_angle):.4f}", "deg")]
+            for name, pc in (("inner", c.inner), ("outer", c.outer)):
+                rows += [
+                    (f"{name}: curvature sum Σρ", f"{pc.curvature_sum * 1e-3:.6g}", "1/mm"),
+                    (f"{name}: curvature difference F(ρ)", f"{pc.curvature_difference:.6g}", ""),
+                    (f"{name}: ellipticity a/b", f"{pc.ellipticity:.6g}", ""),
+                    (f"{name}: K (Q = K δ^1.5)", f"{pc.stiffness:.6g}", "N/m^1.5"),
+                ]
+            rows.append(("combined K_n (seed 000 eq. 4)", f"{c.combined_stiffness:.6g}", "N/m^1.5"))
+            sections.append(("Hertz contacts", rows))
+        elif isinstance(self.contacts, RollerContacts):
+            sections.append(
+                (
+                    "Line contacts (Palmgren)",
+                    [
+                        (
+                            "combined K_n (Q = K_n δ^(10/9))",
+                            f"{self.contacts.combined_stiffness:.6g}",
+                            "N/m^(10/9)",
+                        )
+                    ],
+                )
+            )
+        if self.loading is not None:
+            ld = self.loading
+            sections.append(
+                (
+                    f"Axial load {ld.axial_load:.6g} N (static, Harris load-angle relation)",
+                    [
+                        ("loaded contact angle α", f"{math.degrees(ld.contact_angle):.4f}", "deg"),
+                        ("ball load Q", f"{ld.ball_load:.6g}", "N"),
+                        ("approach inner δ_i", f"{ld.inner_approach * 1e6:.5g}", "um"),
+                        ("approach outer δ_o", f"{ld.outer_approach * 1e6:.5g}", "um"),
+                        ("axial displacement", f"{ld.axial_displacement * 1e6:.5g}", "um"),
+                    ],
+                )
+            )
+        f = self.frequencies
+        orders = f.orders() if f.rotation > 0 else None
+        freq_rows: Rows = []
+        for key, value in f.to_dict().items():
+            order = "" if orders is None else f"   ({orders[key]:.6g} /rev)"
+            freq_rows.append((key, f"{value:.6g}{order}", "Hz"))
+        sections.append(
+            (
+                f"Frequencies ({self.operation.rotating_ring} ring rotating, contact angle "
+                f"{math.degrees(self.contact_angle):.4f} deg)",
+                freq_rows,
+            )
+        )
+        return sections
+
+
+def _bearing_json(b: Bearing) -> dict[str, Any]:
+    common = {
+        "type": b.kind,
+        "elements": b.n_elements,
+        "element_diameter_m": b.element_diameter,
+        "pitch_diameter_m": b.pitch_diameter,
+        "radial_clearance_m": b.radial_clearance,
+    }
+    if isinstance(b, BallBearing):
+        common.update(
+            inner_conformity=b.inner_conformity,
+            outer_conformity=b.outer_conformity,
+            contact_angle_deg=None if b.contact_angle is None else math.degrees(b.contact_angle),
+        )
+    else:
+        common.update(roller_length_m=b.roller_length)
+    m = b.material
+    common["material"] = {
+        "youngs_modulus_pa": m.youngs_modulus,
+        "poisson_ratio": m.poisson_ratio,
+        "density_kg_per_m3": m.density,
+    }
+    return common
+
+
+def _derived_json(b: Bearing) -> dict[str, Any]:
+    out: dict[str, Any] = {
+        "inner_raceway_diameter_m": b.inner_raceway_diameter,
+        "outer_raceway_diameter_m": b.outer_raceway_diameter,
+    }
+    if isinstance(b, BallBearing):
+        out.update(
+            inner_groove_radius_m=b.inner_groove_radius,
+            outer_groove_radius_m=b.outer_groove_radius,
+            total_curvature=b.total_curvature,
+            curvature_distance_m=b.curvature_distance,
+            free_contact_angle_deg=math.degrees(b.free_contact_angle),
+            free_end_play_m=b.free_end_play,
+        )
+    return out
+
+
+def _point_json(pc: Any) -> dict[str, float]:
+    return {
+        "curvature_sum_per_m": pc.curvature_sum,
+        "curvature_difference": pc.curvature_difference,
+        "ellipticity": pc.ellipticity,
+        "stiffness_n_per_m1_5": pc.stiffness,
+    }
+
+
+def bearing_summary(bearing: Bearing, operation: Operation) -> BearingSummary:
+    """Gather the derived geometry, contacts and frequencies of ``bearing`` at ``operation``.
+
+    Parameters
+    ----------
+    bearing : BallBearing or RollerBearing
+    operation : Operation
+
+    Returns
+    -------
+    BearingSummary
+    """
+    alpha, loading = operating_contact_angle(bearing, operation)
+    contacts: BallContacts | RollerContacts | None
+    if isinstance(bearing, BallBearing):
+        contacts = ball_race_contacts(bearing, alpha)
+    elif bearing.roller_length is not None:
+        contacts = roller_race_contacts(bearing)
+    else:
+        contacts = None
+    return BearingSummary(
+        bearing=bearing,
+        operation=operation,
+        contact_angle=alpha,
+        frequencies=bearing_frequencies(bearing, operation, alpha),
+        contacts=contacts,
+        loading=loading,
+    )

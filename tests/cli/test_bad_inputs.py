@@ -1,0 +1,183 @@
+"""Bad case files: each is refused with one line naming the file, the key and the problem.
+
+Every case here goes through the real command line (``runout check``), so the exit status and
+the absence of a traceback are checked too.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from runout.cli import app
+
+VALID = """\
+title = "valid 608"
+[bearing]
+type = "ball"
+elements = 7
+element_diameter = "3.9688 mm"
+pitch_diameter = "15 mm"
+inner_conformity = 0.52
+outer_conformity = 0.53
+radial_clearance = "10 um"
+[operation]
+rotating_ring = "inner"
+speed = "1800 rpm"
+axial_load = "20 N"
+"""
+
+runner = CliRunner()
+
+
+def _run(tmp_path: Path, text: str, name: str = "case.toml") -> tuple[int, str]:
+    path = tmp_path / name
+    path.write_text(text, encoding="utf-8")
+    result = runner.invoke(app, ["check", str(path)])
+    return result.exit_code, result.stderr
+
+
+def _replace(line: str, new: str) -> str:
+    assert line in VALID, line
+    return VALID.replace(line, new)
+
+
+BAD = {
+    "too_few_balls": (
+        _replace("elements = 7", "elements = 2"),
+        "bearing.elements: must be an integer >= 3, got 2",
+    ),
+    "fractional_balls": (
+        _replace("elements = 7", "elements = 7.5"),
+        "bearing.elements: must be an integer >= 3, got 7.5",
+    ),
+    "diameter_in_kg": (
+        _replace('element_diameter = "3.9688 mm"', 'element_diameter = "3 kg"'),
+        'bearing.element_diameter: "3 kg" is not a length',
+    ),
+    "misspelt_key": (
+        _replace('element_diameter = "3.9688 mm"', 'element_diamter = "3.9688 mm"'),
+        "bearing.element_diamter: unknown key; did you mean 'element_diameter'?",
+    ),
+    "misspelt_table": (
+        VALID.replace("[operation]", "[operations]"),
+        "operations: unknown key; did you mean 'operation'?",
+    ),
+    "misspelt_bearing_table": (
+        VALID.split("[operation]")[0].replace("[bearing]", "[bearing_x]"),
+        "bearing_x: unknown key; did you mean 'bearing'?",
+    ),
+    "missing_bearing": (
+        'title = "no bearing"\n[operation]\nspeed = "1800 rpm"\n',
+        "bearing: required key is missing",
+    ),
+    "ball_larger_than_pitch": (
+        _replace('pitch_diameter = "15 mm"', 'pitch_diameter = "3 mm"'),
+        "bearing.element_diameter: 3.9688 mm is not smaller than the pitch diameter 3 mm",
+    ),
+    "balls_overlap": (
+        _replace("elements = 7", "elements = 12"),
+        "bearing.elements: 12 balls of 3.9688 mm overlap",
+    ),
+    "conformity_half": (
+        _replace("inner_conformity = 0.52", "inner_conformity = 0.5"),
+        "bearing.inner_conformity: must be > 0.5",
+    ),
+    "negative_clearance": (
+        _replace('radial_clearance = "10 um"', 'radial_clearance = "-1 um"'),
+        "bearing.radial_clearance: must be >= 0 (no negative clearance)",
+    ),
+    "clearance_too_large": (
+        _replace('radial_clearance = "10 um"', 'radial_clearance = "1 mm"'),
+        "bearing.radial_clearance: 1000 um exceeds twice the groove-centre distance",
+    ),
+    "contact_angle_95": (
+        _replace('radial_clearance = "10 um"', 'contact_angle = "95 deg"'),
+        "bearing.contact_angle: must lie in [0, 90) deg, got 95 deg",
+    ),
+    "rotating_cage": (
+        _replace('rotating_ring = "inner"', 'rotating_ring = "cage"'),
+        "operation.rotating_ring: must be one of 'inner' or 'outer', got 'cage'",
+    ),
+    "speed_not_a_quantity": (
+        _replace('speed = "1800 rpm"', 'speed = "fast"'),
+        'operation.speed: "fast" cannot be read as a quantity',
+    ),
+    "speed_in_newton": (
+        _replace('speed = "1800 rpm"', 'speed = "1800 N"'),
+        'operation.speed: "1800 N" is not a rotational speed',
+    ),
+    "negative_axial_load": (
+        _replace('axial_load = "20 N"', 'axial_load = "-20 N"'),
+        "operation.axial_load: must be >= 0",
+    ),
+    "two_amplitudes": (
+        VALID + '[[waviness]]\npart = "inner"\norder = 8\namplitude = "10 nm"\n'
+        'peak_to_peak = "20 nm"\n',
+        "waviness[1].amplitude: give exactly one of amplitude or peak_to_peak",
+    ),
+    "element_on_a_ring": (
+        VALID + '[[waviness]]\npart = "inner"\norder = 8\namplitude = "10 nm"\nelement = 2\n',
+        'waviness[1].element: only applies to balls or rollers, not part = "inner"',
+    ),
+    "element_beyond_z": (
+        VALID + '[[waviness]]\npart = "ball"\norder = 2\namplitude = "10 nm"\nelement = 8\n',
+        "waviness[1].element: must be <= 7 (the number of elements)",
+    ),
+    "roller_on_ball_bearing": (
+        VALID + '[[waviness]]\npart = "roller"\norder = 2\namplitude = "10 nm"\n',
+        'waviness[1].part: "roller" does not match bearing.type = "ball"',
+    ),
+    "negative_order": (
+        VALID + '[[waviness]]\npart = "outer"\norder = -3\namplitude = "10 nm"\n',
+        "waviness[1].order: must be >= 0, got -3",
+    ),
+    "reversed_orders": (
+        VALID + '[[waviness_spectrum]]\npart = "outer"\norders = [50, 2]\namplitude = "1 nm"\n',
+        "waviness_spectrum[1].orders: must be [first, last] with 0 <= first <= last",
+    ),
+    "wrong_number_of_diameter_errors": (
+        VALID + '[elements]\ndiameter_errors = ["0.1 um", 0, 0]\n',
+        "elements.diameter_errors: has 3 entries; the bearing has 7 elements",
+    ),
+    "unknown_model": (
+        VALID + '[analysis]\nmodel = "finite_elements"\n',
+        "analysis.model: must be one of",
+    ),
+    "roller_missing_raceway": (
+        VALID.split("[bearing]")[0]
+        + '[bearing]\ntype = "cylindrical_roller"\nelements = 14\nelement_diameter = "10 mm"\n'
+        'outer_raceway_diameter = "75.032 mm"\n',
+        "bearing.inner_raceway_diameter: required for a cylindrical roller bearing",
+    ),
+    "not_toml": (VALID + "this is = = not toml\n", "is not valid TOML"),
+}
+
+
+@pytest.mark.parametrize("name", sorted(BAD))
+def test_bad_case_is_refused_with_a_clear_message(tmp_path: Path, name: str) -> None:
+    text, expected = BAD[name]
+    code, stderr = _run(tmp_path, text)
+    one_line = " ".join(stderr.split())
+    assert code == 2, stderr
+    assert "Traceback" not in stderr
+    assert f"case.toml: {expected}" in one_line, one_line
+
+
+def test_missing_file_is_refused(tmp_path: Path) -> None:
+    result = runner.invoke(app, ["check", str(tmp_path / "nowhere.toml")])
+    assert result.exit_code == 2
+    assert "nowhere.toml: no such file" in " ".join(result.stderr.split())
+
+
+def test_valid_case_passes(tmp_path: Path) -> None:
+    code, stderr = _run(tmp_path, VALID)
+    assert code == 0, stderr
+
+
+def test_messages_are_one_line_with_error_prefix(tmp_path: Path) -> None:
+    _, stderr = _run(tmp_path, BAD["too_few_balls"][0])
+    assert re.match(r"^error: ", stderr)
