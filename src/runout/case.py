@@ -331,6 +331,13 @@ class AnalysisSpec(_Table):
     ] = Field("quasi_static_3d", description="Model id (see DESIGN.md).")
     revolutions: float = Field(20.0, gt=0, description="Revolutions of the rotating ring.")
     samples: int = Field(4096, ge=16, description="Number of instants.")
+    linear_variant: Literal["radial_spring", "force_balance"] = Field(
+        "radial_spring",
+        description=(
+            'model = "linear" only: "radial_spring" (seed 002 eq. 13, gain cos α) or '
+            '"force_balance" (rings 1:1, element deviations 1/cos α).'
+        ),
+    )
 
 
 class DynamicsSpec(_Table):
@@ -494,6 +501,7 @@ class Analysis:
     model: str = "quasi_static_3d"
     revolutions: float = 20.0
     samples: int = 4096
+    linear_variant: str = "radial_spring"
 
 
 @dataclass(frozen=True)
@@ -715,6 +723,7 @@ def parse_case(data: dict[str, Any], path: str = "<case>", base_dir: Path | None
         model=spec.analysis.model,
         revolutions=spec.analysis.revolutions,
         samples=spec.analysis.samples,
+        linear_variant=spec.analysis.linear_variant,
     )
     return Case(
         path=path,

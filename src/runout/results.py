@@ -11,6 +11,7 @@ from __future__ import annotations
 import csv
 import json
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -115,6 +116,9 @@ class RunResult:
         Model-specific JSON entries (e.g. ``natural_frequencies_hz``).
     notes : tuple of str
         Warnings a user should read (unloaded balls, assumptions).
+    writers : tuple of callables
+        Model-specific extra outputs: each ``writer(directory) -> list[Path]`` is called by
+        :meth:`write` after the standard files (e.g. contact tables, sweeps, extra plots).
     """
 
     model: str
@@ -129,6 +133,9 @@ class RunResult:
     anderon: dict[str, float] | None = None
     extras: dict[str, Any] = field(default_factory=dict)
     notes: tuple[str, ...] = ()
+    writers: tuple[Callable[[Path], list[Path]], ...] = field(
+        default=(), repr=False, compare=False
+    )
 
     # ---------------------------------------------------------------- analysis
     @property
@@ -251,4 +258,6 @@ class RunResult:
         from runout import plotting
 
         written += plotting.plot_result(self, directory)
+        for writer in self.writers:
+            written += writer(directory)
         return written

@@ -13,7 +13,7 @@ from typing import Any
 from runout.bearing import BallBearing, Bearing, Operation, RollerBearing
 from runout.contact import BallContacts, RollerContacts, ball_race_contacts, roller_race_contacts
 from runout.kinematics import Frequencies, bearing_frequencies
-from runout.loading import AxialLoading, axial_loading
+from runout.loading import AxialLoading, axial_loading, axial_loading_fixed_angle
 
 __all__ = ["BearingSummary", "bearing_summary", "operating_contact_angle"]
 
@@ -40,9 +40,11 @@ def operating_contact_angle(
     if isinstance(bearing, RollerBearing):
         return 0.0, None
     if operation.axial_load > 0.0:
-        loading = axial_loading(bearing, operation.axial_load)
         if bearing.contact_angle is not None:
-            return bearing.contact_angle, loading
+            # A fixed angle (seed 000's model) carries the load at that angle.
+            fixed = axial_loading_fixed_angle(bearing, operation.axial_load)
+            return bearing.contact_angle, fixed
+        loading = axial_loading(bearing, operation.axial_load)
         return loading.contact_angle, loading
     return bearing.nominal_contact_angle, None
 
@@ -150,7 +152,12 @@ class BearingSummary:
             ld = self.loading
             sections.append(
                 (
-                    f"Axial load {ld.axial_load:.6g} N (static, Harris load-angle relation)",
+                    f"Axial load {ld.axial_load:.6g} N (static, "
+                    + (
+                        "at the fixed contact angle)"
+                        if isinstance(b, BallBearing) and b.contact_angle is not None
+                        else "Harris load-angle relation)"
+                    ),
                     [
                         ("loaded contact angle α", f"{math.degrees(ld.contact_angle):.4f}", "deg"),
                         ("ball load Q", f"{ld.ball_load:.6g}", "N"),
