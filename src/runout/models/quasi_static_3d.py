@@ -1,0 +1,489 @@
+r"""Three-dimensional quasi-static NRRO model with a fixed contact angle (seed 000, Tada).
+
+The inner ring's geometric centre is fixed; the outer ring's centre :math:`(x, y, z)` settles,
+at every instant, where the Hertz forces of the Z balls balance the constant axial preload
+:math:`F_a` (and a radial load, if any). The contact angle α stays at its preloaded value
+(:func:`runout.summary.operating_contact_angle`); the balls move with the cage, spin at
+:math:`f_b` relative to it and carry the raceway and ball wavinesses, size and pitch errors
+with them (seed 000 §2.1).
+
+Elastic approach of ball j (seed 000 eq. 2 and the bracket of eq. 5):
+
+.. math::
+    \delta_j = (W_{ij} - W_{oj})\cos\alpha + W_{bj} + \delta_{pl}
+               - (x\cos\theta_j + y\sin\theta_j)\cos\alpha - z\sin\alpha,
+
+with
+
+* :math:`W_{ij}` the inner-raceway radius deviation at ball j, positive when material is added
+  (a bump pushes the ball outward: more compression);
+* :math:`W_{oj}` the outer-raceway radius deviation, positive when the radius grows (material
+  removed: less compression; an inward bump, :math:`W_{oj} < 0`, compresses more);
+* :math:`W_{bj}` the diameter deviation of ball j along its contact line (seed 002 eq. 26),
+  size error included;
+* :math:`\delta_{pl}` the preload approach, :math:`K_n Z \delta_{pl}^{3/2}\sin\alpha = F_a`;
+* x, y, z the outer ring's centre relative to the inner ring's; +z opens the contacts.
+
+Load :math:`Q_j = K_n[\delta_j]_+^{3/2}` (eq. 3, K_n of eq. 4 from
+:func:`runout.contact.ball_race_contacts`); a ball with :math:`\delta_j \le 0` carries none. The
+balance (eq. 5), with the unit contact normal :math:`n_j = (\cos\alpha\cos\theta_j,
+\cos\alpha\sin\theta_j, \sin\alpha)`, is
+
+.. math:: \sum_j Q_j\,n_j = (-F_r\cos\beta,\; -F_r\sin\beta,\; F_a),
+
+where the radial load :math:`F_r` pushes the outer ring along β
+(``Operation.radial_load_angle``); Tada's eq. 5 is the case :math:`F_r = 0`.
+
+Notes
+-----
+* Tada's eq. 1 (the waviness functions :math:`W_{ij}, W_{oj}, W_{bj}`) is missing from the
+  extracted text. We derive them from the kinematics (see :mod:`runout.models._quasi_static`):
+  :math:`W_{ij} = r_i(\theta_j - 2\pi f_{inner} t)`, :math:`W_{oj} = r_o(\theta_j - 2\pi
+  f_{outer} t)`, :math:`W_{bj} = w_{bj}(2\pi f_b t)`, :math:`\theta_j = 2\pi f_c t + 2\pi j/Z +
+  \epsilon_j`. Angles run counter-clockwise (Tada: clockwise), which mirrors the orbits only.
+* Tada's text says the bracket of eq. 5 is raised to 1.5; a negative bracket is a lost contact
+  and gives zero load here (counted and reported).
+* The same equations hold for either rotating ring; only the ring speeds change. The reported
+  displacement is always the outer ring's centre relative to the inner ring's.
+* Solver: per instant, Newton's method on the convex potential
+  :math:`\Pi(q) = \sum_j \tfrac{K_n}{2.5}[\delta_j]_+^{5/2} + F\cdot q` with a closed-form 3×3
+  solve, Armijo backtracking, warm start from the previous instant (Numba kernel
+  :func:`solve_kernel`); :func:`solve_reference` is a vectorised NumPy version for tests.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numba
+import numpy as np
+from numpy.typing import NDArray
+
+from runout.bearing import BallBearing
+from runout.contact import ball_race_contacts
+from runout.errors import ContactLossError, ConvergenceError, GeometryError, NumericalError
+from runout.kinematics import ball_spin_frequency, bearing_frequencies, cage_frequency
+from runout.models._quasi_static import (
+    Kinematics,
+    contact_deviations,
+    fit_components,
+    predicted_lines,
+    runout_figures,
+    synchronous_grid,
+    time_grid,
+    unloaded_note,
+)
+from runout.results import RunResult
+from runout.summary import operating_contact_angle
+
+__all__ = [
+    "Setup",
+    "linearised_displacement",
+    "preload_approach",
+    "run",
+    "setup",
+    "solve",
+    "solve_kernel",
+    "solve_reference",
+    "time_grid_of",
+]
+
+MODEL = "quasi_static_3d"
+#: Kernel status codes.
+OK, TOO_FEW_LOADED, SINGULAR, NOT_CONVERGED = 0, 1, 2, 3
+_CAUSES = {
+    TOO_FEW_LOADED: "fewer than 3 balls carry load: the outer ring cannot be held",
+    SINGULAR: "singular stiffness matrix: the loaded balls cannot hold the outer ring",
+    NOT_CONVERGED: "Newton iteration did not converge",
+}
+#: Step tolerance of Newton's method relative to the preload approach δ_pl.
+RTOL = 1e-11
+MAX_ITER = 60
+
+
+def preload_approach(stiffness: float, n_elements: int, contact_angle: float, axial: float) -> float:
+    r"""Elastic approach under the preload, :math:`K_n Z \delta_{pl}^{3/2}\sin\alpha = F_a` [m].
+
+    Parameters
+    ----------
+    stiffness : float
+        K_n [N/m^1.5] (seed 000 eq. 4).
+    n_elements : int
+        Z.
+    contact_angle : float
+        α [rad], > 0.
+    axial : float
+        F_a [N], > 0.
+    """
+    return float((axial / (stiffness * n_elements * math.sin(contact_angle))) ** (2.0 / 3.0))
+
+
+# --------------------------------------------------------------------------------------------
+# kernel
+# --------------------------------------------------------------------------------------------
+@numba.njit(cache=True)
+def _potential(c, cth, sth, ca, sa, k, f, q0, q1, q2):  # type: ignore[no-untyped-def]
+    e = f[0] * q0 + f[1] * q1 + f[2] * q2
+    for j in range(c.size):
+        d = c[j] - (q0 * cth[j] + q1 * sth[j]) * ca - q2 * sa
+        if d > 0.0:
+            e += k / 2.5 * d * d * math.sqrt(d)
+    return e
+
+
+@numba.njit(cache=True)
+def solve_kernel(c, theta, cos_a, sin_a, k, force, q_start, tol, max_iter):  # type: ignore[no-untyped-def]
+    """Newton solve of seed 000 eq. 5 at every instant (compiled).
+
+    Parameters
+    ----------
+    c : ndarray, shape (n, Z)
+        Approach of each ball at q = 0, :math:`(W_i - W_o)\\cos\\alpha + W_b + \\delta_{pl}` [m].
+    theta : ndarray, shape (n, Z)
+        Ball angles [rad].
+    cos_a, sin_a : float
+        cos α, sin α.
+    k : float
+        K_n [N/m^1.5].
+    force : ndarray, shape (3,)
+        Right-hand side of the balance [N].
+    q_start : ndarray, shape (3,)
+        Starting point of the first instant [m].
+    tol : float
+        Step tolerance [m].
+    max_iter : int
+        Newton iterations per instant.
+
+    Returns
+    -------
+    q : ndarray, shape (n, 3)
+        Outer-ring centre [m].
+    unloaded : ndarray, shape (n,)
+        Balls without load at each instant.
+    status : int
+        0 ok, 1 too few loaded balls, 2 singular, 3 not converged.
+    instant : int
+        Instant of the failure (-1 when status is 0).
+    """
+    n, z = c.shape
+    q = np.zeros((n, 3))
+    unloaded = np.zeros(n, dtype=np.int64)
+    cth = np.empty(z)
+    sth = np.empty(z)
+    q0, q1, q2 = q_start[0], q_start[1], q_start[2]
+    for i in range(n):
+        ci = c[i]
+        for j in range(z):
+            cth[j] = math.cos(theta[i, j])
+            sth[j] = math.sin(theta[i, j])
+        converged = False
+        for _ in range(max_iter):
+            # residual r = sum Q n - F and Hessian H = sum 1.5 K d^0.5 n n^T of the potential
+            r0 = -force[0]
+            r1 = -force[1]
+            r2 = -force[2]
+            h00 = h01 = h02 = h11 = h12 = h22 = 0.0
+            loaded = 0
+            for j in range(z):
+                d = ci[j] - (q0 * cth[j] + q1 * sth[j]) * cos_a - q2 * sin_a
+                if d > 0.0:
+                    loaded += 1
+                    sd = math.sqrt(d)
+                    qj = k * d * sd
+                    kk = 1.5 * k * sd
+                    nx = cos_a * cth[j]
+                    ny = cos_a * sth[j]
+                    r0 += qj * nx
+                    r1 += qj * ny
+                    r2 += qj * sin_a
+                    h00 += kk * nx * nx
+                    h01 += kk * nx * ny
+                    h02 += kk * nx * sin_a
+                    h11 += kk * ny * ny
+                    h12 += kk * ny * sin_a
+                    h22 += kk * sin_a * sin_a
+            if loaded < 3:
+                return q, unloaded, 1, i
+            # closed-form 3x3 solve H s = r (gradient of the potential is -r)
+            a00 = h11 * h22 - h12 * h12
+            a01 = h02 * h12 - h01 * h22
+            a02 = h01 * h12 - h02 * h11
+            det = h00 * a00 + h01 * a01 + h02 * a02
+            scale = (h00 + h11 + h22) / 3.0
+            if not det > 1e-12 * scale * scale * scale:
+                return q, unloaded, 2, i
+            a11 = h00 * h22 - h02 * h02
+            a12 = h01 * h02 - h00 * h12
+            a22 = h00 * h11 - h01 * h01
+            s0 = (a00 * r0 + a01 * r1 + a02 * r2) / det
+            s1 = (a01 * r0 + a11 * r1 + a12 * r2) / det
+            s2 = (a02 * r0 + a12 * r1 + a22 * r2) / det
+            # Armijo backtracking on the convex potential
+            e0 = _potential(ci, cth, sth, cos_a, sin_a, k, force, q0, q1, q2)
+            slope = -(r0 * s0 + r1 * s1 + r2 * s2)
+            step = 1.0
+            for _ls in range(40):
+                e1 = _potential(
+                    ci, cth, sth, cos_a, sin_a, k, force, q0 + step * s0, q1 + step * s1,
+                    q2 + step * s2,
+                )
+                if e1 <= e0 + 1e-4 * step * slope or step * max(abs(s0), abs(s1), abs(s2)) < tol:
+                    break
+                step *= 0.5
+            q0 += step * s0
+            q1 += step * s1
+            q2 += step * s2
+            if step * max(abs(s0), abs(s1), abs(s2)) <= tol:
+                converged = True
+                break
+        if not converged:
+            return q, unloaded, 3, i
+        q[i, 0] = q0
+        q[i, 1] = q1
+        q[i, 2] = q2
+        count = 0
+        for j in range(z):
+            if ci[j] - (q0 * cth[j] + q1 * sth[j]) * cos_a - q2 * sin_a <= 0.0:
+                count += 1
+        if z - count < 3:
+            return q, unloaded, 1, i
+        unloaded[i] = count
+    return q, unloaded, 0, -1
+
+
+def _raise(status: int, instant: int, time: NDArray[np.float64]) -> None:
+    cause = _CAUSES[status]
+    t = float(time[instant])
+    if status == TOO_FEW_LOADED:
+        raise ContactLossError(cause, instant, t)
+    if status == NOT_CONVERGED:
+        raise ConvergenceError(cause, instant, t)
+    raise NumericalError(cause, instant, t)
+
+
+def solve_reference(
+    c: NDArray[np.float64],
+    theta: NDArray[np.float64],
+    contact_angle: float,
+    stiffness: float,
+    force: NDArray[np.float64],
+    *,
+    tol: float,
+    max_iter: int = MAX_ITER,
+) -> NDArray[np.float64]:
+    """Vectorised NumPy Newton solve of eq. 5 at all instants at once (reference for tests).
+
+    Same equations as :func:`solve_kernel`, independent code path: batched
+    :func:`numpy.linalg.solve`, damped steps (halved while the residual norm grows), every
+    instant started from q = 0.
+
+    Returns
+    -------
+    ndarray, shape (n, 3)
+        Outer-ring centre [m].
+    """
+    ca, sa = math.cos(contact_angle), math.sin(contact_angle)
+    nvec = np.stack([ca * np.cos(theta), ca * np.sin(theta), np.full_like(theta, sa)], axis=-1)
+    q = np.zeros((c.shape[0], 3))
+
+    def residual(qq: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        d = np.maximum(c - np.einsum("nzk,nk->nz", nvec, qq), 0.0)
+        r = np.einsum("nz,nzk->nk", stiffness * d**1.5, nvec) - force
+        return r, d
+
+    for _ in range(max_iter):
+        r, d = residual(q)
+        h = np.einsum("nz,nzk,nzl->nkl", 1.5 * stiffness * np.sqrt(d), nvec, nvec)
+        s = np.linalg.solve(h, r[..., None])[..., 0]
+        step = np.ones(q.shape[0])
+        norm0 = np.linalg.norm(r, axis=1)
+        for _ls in range(30):
+            r1, _ = residual(q + step[:, None] * s)
+            worse = np.linalg.norm(r1, axis=1) > norm0
+            if not worse.any():
+                break
+            step[worse] *= 0.5
+        q = q + step[:, None] * s
+        if np.max(np.abs(step[:, None] * s)) <= tol:
+            return q
+    raise ConvergenceError("reference Newton iteration did not converge")
+
+
+def linearised_displacement(
+    c: NDArray[np.float64],
+    theta: NDArray[np.float64],
+    contact_angle: float,
+    stiffness: float,
+    preload: float,
+    force: NDArray[np.float64],
+) -> NDArray[np.float64]:
+    r"""Small-amplitude solution of eq. 5 with :math:`Q` linearised about :math:`\delta_{pl}`.
+
+    :math:`Q_j \approx K_n\delta_{pl}^{3/2} + \tfrac32 K_n\delta_{pl}^{1/2}(\delta_j -
+    \delta_{pl})` (the linear equation of seed 000 §2.2.1, "index deleted"), so that
+
+    .. math:: H q = \sum_j \big(Q_0 + k_l (c_j - \delta_{pl})\big) n_j - F,
+              \qquad H = k_l \sum_j n_j n_j^T.
+
+    Returns
+    -------
+    ndarray, shape (n, 3)
+        Outer-ring centre [m].
+    """
+    ca, sa = math.cos(contact_angle), math.sin(contact_angle)
+    nvec = np.stack([ca * np.cos(theta), ca * np.sin(theta), np.full_like(theta, sa)], axis=-1)
+    kl = 1.5 * stiffness * math.sqrt(preload)
+    q0 = stiffness * preload**1.5
+    h = kl * np.einsum("nzk,nzl->nkl", nvec, nvec)
+    rhs = np.einsum("nz,nzk->nk", q0 + kl * (c - preload), nvec) - force
+    return np.linalg.solve(h, rhs[..., None])[..., 0]
+
+
+# --------------------------------------------------------------------------------------------
+# model
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class Setup:
+    """Everything the solve needs, derived from a case.
+
+    Attributes
+    ----------
+    contact_angle : float
+        α [rad].
+    stiffness : float
+        K_n [N/m^1.5].
+    preload : float
+        δ_pl [m].
+    force : ndarray, shape (3,)
+        Right-hand side of eq. 5 [N].
+    kinematics : Kinematics
+    """
+
+    contact_angle: float
+    stiffness: float
+    preload: float
+    force: NDArray[np.float64]
+    kinematics: Kinematics
+
+
+def setup(case: object) -> Setup:
+    """Contact angle, K_n, δ_pl, loads and frequencies of a case (see module docstring)."""
+    bearing = case.bearing  # type: ignore[attr-defined]
+    op = case.operation  # type: ignore[attr-defined]
+    if not isinstance(bearing, BallBearing):
+        raise GeometryError("bearing.type", "the quasi_static_3d model needs a ball bearing")
+    if op.axial_load <= 0.0:
+        raise GeometryError(
+            "operation.axial_load",
+            "the quasi_static_3d model needs an axial preload > 0 N (seed 000 eq. 5)",
+        )
+    alpha, _ = operating_contact_angle(bearing, op)
+    if not alpha > 0.0:
+        raise GeometryError("contact_angle", "the quasi_static_3d model needs a contact angle > 0")
+    kn = ball_race_contacts(bearing, alpha).combined_stiffness
+    z = bearing.n_elements
+    dpl = preload_approach(kn, z, alpha, op.axial_load)
+    beta = op.radial_load_angle
+    force = np.array(
+        [-op.radial_load * math.cos(beta), -op.radial_load * math.sin(beta), op.axial_load]
+    )
+    d, dm = bearing.element_diameter, bearing.pitch_diameter
+    kin = Kinematics(
+        inner=op.inner_speed,
+        outer=op.outer_speed,
+        cage=float(cage_frequency(op.inner_speed, op.outer_speed, d, dm, alpha)),
+        spin=float(ball_spin_frequency(op.inner_speed, op.outer_speed, d, dm, alpha)),
+        rotating_ring=op.rotating_ring,
+        n_elements=z,
+    )
+    return Setup(alpha, kn, dpl, force, kin)
+
+
+def approaches(case: object, st: Setup, time: NDArray[np.float64]) -> tuple[
+    NDArray[np.float64], NDArray[np.float64]
+]:
+    """Approach at q = 0 (eq. 2) and ball angles, shape (n, Z) each."""
+    dev = contact_deviations(case.imperfections, st.kinematics, time)  # type: ignore[attr-defined]
+    c = (dev.inner - dev.outer) * math.cos(st.contact_angle) + dev.ball + st.preload
+    return np.ascontiguousarray(c), np.ascontiguousarray(dev.theta)
+
+
+def solve(
+    case: object, time: NDArray[np.float64], st: Setup | None = None
+) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
+    """Outer-ring centre (3, n) [m] and unloaded-ball counts (n,) at ``time``.
+
+    Raises
+    ------
+    ContactLossError, ConvergenceError, NumericalError
+        When the ring cannot be held at some instant (the error names it).
+    """
+    st = setup(case) if st is None else st
+    c, theta = approaches(case, st, time)
+    q, unloaded, status, instant = solve_kernel(
+        c,
+        theta,
+        math.cos(st.contact_angle),
+        math.sin(st.contact_angle),
+        st.stiffness,
+        st.force,
+        np.zeros(3),
+        RTOL * st.preload,
+        MAX_ITER,
+    )
+    if status != OK:
+        _raise(int(status), int(instant), time)
+    return np.ascontiguousarray(q.T), unloaded
+
+
+def time_grid_of(case: object) -> NDArray[np.float64]:
+    """The instants [s] of a case's analysis (``revolutions`` turns, ``samples`` instants)."""
+    an = case.analysis  # type: ignore[attr-defined]
+    return time_grid(case.operation.speed, an.revolutions, an.samples)  # type: ignore[attr-defined]
+
+
+def run(case: object) -> RunResult:
+    """Run the quasi-static 3-D model (seed 000) on a case."""
+    st = setup(case)
+    an = case.analysis  # type: ignore[attr-defined]
+    op = case.operation  # type: ignore[attr-defined]
+    t = time_grid(op.speed, an.revolutions, an.samples)
+    disp, unloaded = solve(case, t, st)
+    u = (
+        np.array([math.cos(op.radial_load_angle), math.sin(op.radial_load_angle)])
+        if op.radial_load > 0.0
+        else np.array([1.0, 0.0])
+    )
+    grid = synchronous_grid(op.speed, an.revolutions, an.samples)
+    sync = None
+    if grid is not None:
+        ts, spr = grid
+        ds = disp if ts.size == t.size and np.array_equal(ts, t) else solve(case, ts, st)[0]
+        sync = (u[0] * ds[0] + u[1] * ds[1], spr)
+    lines = predicted_lines(case.imperfections, st.kinematics)  # type: ignore[attr-defined]
+    comps = fit_components(t, disp, lines, op.speed)
+    notes = [
+        unloaded_note(unloaded, st.kinematics.n_elements),
+        "displacement: outer-ring centre relative to the inner ring; contact angle fixed at "
+        "its preloaded value (seed 000)",
+    ]
+    if grid is None:
+        notes.append("record shorter than 2 revolutions: RRO/NRRO not separated (reported 0)")
+    bearing = case.bearing  # type: ignore[attr-defined]
+    return RunResult(
+        model=MODEL,
+        title=case.title,  # type: ignore[attr-defined]
+        frequencies=bearing_frequencies(bearing, op, st.contact_angle),
+        contact_angle=st.contact_angle,
+        time=t,
+        displacement=disp,
+        components=comps,
+        runout=runout_figures(disp, u, sync),
+        measuring_direction=u,
+        extras={
+            "preload_approach_m": st.preload,
+            "unloaded_balls_max": int(unloaded.max()),
+        },
+        notes=tuple(notes),
+    )
