@@ -133,9 +133,7 @@ class RunResult:
     anderon: dict[str, float] | None = None
     extras: dict[str, Any] = field(default_factory=dict)
     notes: tuple[str, ...] = ()
-    writers: tuple[Callable[[Path], list[Path]], ...] = field(
-        default=(), repr=False, compare=False
-    )
+    writers: tuple[Callable[[Path], list[Path]], ...] = field(default=(), repr=False, compare=False)
 
     # ---------------------------------------------------------------- analysis
     @property

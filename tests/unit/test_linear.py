@@ -99,7 +99,9 @@ def test_inner_lines_reproduce_eq33() -> None:
     z, gamma = 7, 3.9688 / 15 * math.cos(ALPHA)
     for n, sign in ((1, -1), (2, 1), (3, -1)):
         k = n * z + sign
-        imp = Imperfections(inner=Harmonics([k], [0.2 * UM], [0.4]), elements=[Harmonics.empty()] * z)
+        imp = Imperfections(
+            inner=Harmonics([k], [0.2 * UM], [0.4]), elements=[Harmonics.empty()] * z
+        )
         lines = _lines(imp, _rates())
         assert len(lines) == 1
         assert lines.order[0] == pytest.approx(n * z * (1 + gamma) / 2 + sign, rel=1e-13)
@@ -153,10 +155,14 @@ def test_ball_lines_reproduce_eq39_40() -> None:
     theta = np.linspace(0, 5, 60)
     c = math.cos(ALPHA)
     # eq. 39-40 with W_b = radius amplitudes of ball z = 2
-    expect = (2 / z) * c * (
-        2 * 0.1 * UM * np.cos(nc * theta + beta)
-        + 0.05 * UM * np.cos((4 * nb + nc) * theta + 0.9 + beta)
-        + 0.05 * UM * np.cos((4 * nb - nc) * theta + 0.9 - beta)
+    expect = (
+        (2 / z)
+        * c
+        * (
+            2 * 0.1 * UM * np.cos(nc * theta + beta)
+            + 0.05 * UM * np.cos((4 * nb + nc) * theta + 0.9 + beta)
+            + 0.05 * UM * np.cos((4 * nb - nc) * theta + 0.9 - beta)
+        )
     )
     x, _ = lines.evaluate(theta)
     np.testing.assert_allclose(x, expect, rtol=0, atol=1e-12 * UM)
@@ -229,9 +235,11 @@ def test_pitch_errors_direct_sum_solves_full_balance() -> None:
     r = _rates(z=z)
     theta = np.linspace(0, 6, 300)
     x, y = lin.direct_sum(imp, r, ALPHA, theta)
-    tz = r.cage * theta[None, :] + 2 * math.pi * np.arange(z)[:, None] / z + np.array(
-        imp.pitch_errors
-    )[:, None]
+    tz = (
+        r.cage * theta[None, :]
+        + 2 * math.pi * np.arange(z)[:, None] / z
+        + np.array(imp.pitch_errors)[:, None]
+    )
     w = np.stack([imp.inner.evaluate(t - theta) for t in tz]) * math.cos(ALPHA)
     # Σ_z (w_z - x cos θ_z - y sin θ_z) (cos θ_z, sin θ_z) = 0
     res_x = ((w - x * np.cos(tz) - y * np.sin(tz)) * np.cos(tz)).sum(0)

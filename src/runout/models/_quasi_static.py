@@ -44,6 +44,8 @@ __all__ = [
 TWO_PI = 2.0 * math.pi
 #: Highest nonlinear order j of Tada's Table 3 for which lines are predicted and fitted.
 MAX_LINE_ORDER = 3
+#: Components below this fraction of the largest one are dropped from the output.
+FLOOR = 1e-7
 
 
 @dataclass(frozen=True)
@@ -236,7 +238,9 @@ def _element_lines(index: int, h: Harmonics, kin: Kinematics, axial: bool) -> li
             )
             if axial:
                 out.append(
-                    PredictedLine("axial", kk * fb, f"ball {index + 1} {k} lobes (2n{kind}): 2n f_b")
+                    PredictedLine(
+                        "axial", kk * fb, f"ball {index + 1} {k} lobes (2n{kind}): 2n f_b"
+                    )
                 )
     return out
 
@@ -291,7 +295,8 @@ def fit_components(
     """Fit the predicted lines in each direction (leakage-free least squares).
 
     Radial lines are fitted in x and y, axial lines in z (:func:`runout.spectrum.extract_lines`).
-    Lines closer than a twentieth of the record's resolution are merged (labels joined).
+    Lines closer than a twentieth of the record's resolution are merged (labels joined); lines
+    below ``FLOOR`` times the largest are dropped.
 
     Returns
     -------
@@ -326,6 +331,10 @@ def fit_components(
                     repeatable=bool(abs(order - round(order)) < 1e-9),
                 )
             )
+    if comps:
+        # drop lines at the solver's round-off floor (predicted but absent)
+        floor = FLOOR * max(c.pp_m for c in comps)
+        comps = [c for c in comps if c.pp_m > floor]
     comps.sort(key=lambda c: -c.pp_m)
     return tuple(comps)
 

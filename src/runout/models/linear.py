@@ -64,7 +64,7 @@ from runout.bearing import Bearing, Operation
 from runout.errors import GeometryError
 from runout.imperfections import Harmonics, Imperfections
 from runout.kinematics import Frequencies, bearing_frequencies, pitch_ratio
-from runout.results import Component, Rows, RunResult, Runout
+from runout.results import Component, Rows, Runout, RunResult
 from runout.spectrum import (
     ANDERON_BANDS,
     MICROINCH,
@@ -149,9 +149,7 @@ def rates(bearing: Bearing, operation: Operation, contact_angle: float) -> Rates
     """
     speed = abs(operation.speed)
     if speed == 0.0:
-        raise GeometryError(
-            "operation.speed", "the linear model needs a rotating ring (speed > 0)"
-        )
+        raise GeometryError("operation.speed", "the linear model needs a rotating ring (speed > 0)")
     ni = operation.inner_speed / speed
     no = operation.outer_speed / speed
     g = float(pitch_ratio(bearing.element_diameter, bearing.pitch_diameter, contact_angle))
@@ -243,8 +241,14 @@ def _element_sums(
 
 
 def _ring_terms(
-    h: Harmonics, sign: float, nu_ring: float, r: Rates, gain: float, beta: NDArray[np.float64],
-    equal: bool, part: int,
+    h: Harmonics,
+    sign: float,
+    nu_ring: float,
+    r: Rates,
+    gain: float,
+    beta: NDArray[np.float64],
+    equal: bool,
+    part: int,
 ) -> list[NDArray[Any]]:
     """Terms of one ring's harmonics (seed 002 eq. 32-33 for the inner, 36-37 for the outer)."""
     z = beta.size
@@ -615,19 +619,18 @@ def synthesize(
         Displacements [m].
     """
     dtheta = TWO_PI * revolutions / samples
-    theta = np.arange(samples) * dtheta
+    theta = np.arange(samples, dtype=np.float64) * dtheta
     xc, yc = lines.x_complex, lines.y_complex
     a = np.ascontiguousarray(np.stack([xc.real, yc.real]))
     b = np.ascontiguousarray(np.stack([-xc.imag, -yc.imag]))
     out = _synthesize_uniform_kernel(
         np.zeros(2), a, b, dtheta, np.ascontiguousarray(lines.order), samples
     )
+    out = np.asarray(out, dtype=np.float64)
     return theta, out[0], out[1]
 
 
-def solve(
-    r: NDArray[np.complex128], p: NDArray[np.complex128], z: int
-) -> NDArray[np.complex128]:
+def solve(r: NDArray[np.complex128], p: NDArray[np.complex128], z: int) -> NDArray[np.complex128]:
     r"""Solve the radial balance ``(Z/2) u + (1/2) P ū = R`` for u (eq. 18 with eq. 19-20 kept).
 
     .. math:: u = \frac{R - P\bar R / Z}{Z/2 - |P|^2 / (2Z)}
@@ -768,7 +771,7 @@ class LinearResult(RunResult):
         lines = self._lines().derivative()
         if samples_per_rev is None:
             top = float(lines.order.max()) if len(lines) else 1.0
-            samples_per_rev = max(256, 1 << int(math.ceil(math.log2(2.5 * top + 1.0))))
+            samples_per_rev = max(256, 1 << math.ceil(math.log2(2.5 * top + 1.0)))
         if revolutions < 2 or samples_per_rev < 8:
             raise ValueError("need at least 2 revolutions and 8 samples per revolution")
         theta, x, y = synthesize(lines, revolutions, revolutions * samples_per_rev)
@@ -787,7 +790,7 @@ class LinearResult(RunResult):
         This is what seed 002 did (six revolutions, rectangular window): lines that are not
         multiples of 1/revolutions leak into neighbouring bins and bands.
         """
-        theta, v = self.density_waveform(revolutions, samples_per_rev, direction)
+        _, v = self.density_waveform(revolutions, samples_per_rev, direction)
         spr = v.size // revolutions
         return anderon_bands_from_waveform(v, spr, bands, window=window, density=True)
 

@@ -102,7 +102,9 @@ RTOL = 1e-11
 MAX_ITER = 60
 
 
-def preload_approach(stiffness: float, n_elements: int, contact_angle: float, axial: float) -> float:
+def preload_approach(
+    stiffness: float, n_elements: int, contact_angle: float, axial: float
+) -> float:
     r"""Elastic approach under the preload, :math:`K_n Z \delta_{pl}^{3/2}\sin\alpha = F_a` [m].
 
     Parameters
@@ -123,7 +125,7 @@ def preload_approach(stiffness: float, n_elements: int, contact_angle: float, ax
 # kernel
 # --------------------------------------------------------------------------------------------
 @numba.njit(cache=True)
-def _potential(c, cth, sth, ca, sa, k, f, q0, q1, q2):  # type: ignore[no-untyped-def]
+def _potential(c, cth, sth, ca, sa, k, f, q0, q1, q2):
     e = f[0] * q0 + f[1] * q1 + f[2] * q2
     for j in range(c.size):
         d = c[j] - (q0 * cth[j] + q1 * sth[j]) * ca - q2 * sa
@@ -133,7 +135,7 @@ def _potential(c, cth, sth, ca, sa, k, f, q0, q1, q2):  # type: ignore[no-untype
 
 
 @numba.njit(cache=True)
-def solve_kernel(c, theta, cos_a, sin_a, k, force, q_start, tol, max_iter):  # type: ignore[no-untyped-def]
+def solve_kernel(c, theta, cos_a, sin_a, k, force, q_start, d_ref, max_iter):
     """Newton solve of seed 000 eq. 5 at every instant (compiled).
 
     Parameters
@@ -150,8 +152,10 @@ def solve_kernel(c, theta, cos_a, sin_a, k, force, q_start, tol, max_iter):  # t
         Right-hand side of the balance [N].
     q_start : ndarray, shape (3,)
         Starting point of the first instant [m].
-    tol : float
-        Step tolerance [m].
+    d_ref : float
+        Reference approach δ_pl [m]: step tolerance RTOL·d_ref, line search only for steps
+        above 1e-4·d_ref (below that Newton is in its quadratic range and the potential is
+        too flat to judge a step in floating point).
     max_iter : int
         Newton iterations per instant.
 
@@ -167,6 +171,7 @@ def solve_kernel(c, theta, cos_a, sin_a, k, force, q_start, tol, max_iter):  # t
         Instant of the failure (-1 when status is 0).
     """
     n, z = c.shape
+    tol = RTOL * d_ref
     q = np.zeros((n, 3))
     unloaded = np.zeros(n, dtype=np.int64)
     cth = np.empty(z)
@@ -184,11 +189,9 @@ def solve_kernel(c, theta, cos_a, sin_a, k, force, q_start, tol, max_iter):  # t
             r1 = -force[1]
             r2 = -force[2]
             h00 = h01 = h02 = h11 = h12 = h22 = 0.0
-            loaded = 0
             for j in range(z):
                 d = ci[j] - (q0 * cth[j] + q1 * sth[j]) * cos_a - q2 * sin_a
                 if d > 0.0:
-                    loaded += 1
                     sd = math.sqrt(d)
                     qj = k * d * sd
                     kk = 1.5 * k * sd
@@ -203,15 +206,18 @@ def solve_kernel(c, theta, cos_a, sin_a, k, force, q_start, tol, max_iter):  # t
                     h11 += kk * ny * ny
                     h12 += kk * ny * sin_a
                     h22 += kk * sin_a * sin_a
-            if loaded < 3:
-                return q, unloaded, 1, i
+            # a small regularisation keeps intermediate iterates with few loaded balls moving
+            # (the final state is checked below without it)
+            reg = 1e-9 * 1.5 * k * math.sqrt(d_ref)
+            h00 += reg
+            h11 += reg
+            h22 += reg
             # closed-form 3x3 solve H s = r (gradient of the potential is -r)
             a00 = h11 * h22 - h12 * h12
             a01 = h02 * h12 - h01 * h22
             a02 = h01 * h12 - h02 * h11
             det = h00 * a00 + h01 * a01 + h02 * a02
-            scale = (h00 + h11 + h22) / 3.0
-            if not det > 1e-12 * scale * scale * scale:
+            if not det > 0.0:
                 return q, unloaded, 2, i
             a11 = h00 * h22 - h02 * h02
             a12 = h01 * h02 - h00 * h12
@@ -220,12 +226,21 @@ def solve_kernel(c, theta, cos_a, sin_a, k, force, q_start, tol, max_iter):  # t
             s1 = (a01 * r0 + a11 * r1 + a12 * r2) / det
             s2 = (a02 * r0 + a12 * r1 + a22 * r2) / det
             # Armijo backtracking on the convex potential
-            e0 = _potential(ci, cth, sth, cos_a, sin_a, k, force, q0, q1, q2)
             slope = -(r0 * s0 + r1 * s1 + r2 * s2)
             step = 1.0
-            for _ls in range(40):
+            big = max(abs(s0), abs(s1), abs(s2)) > 1e-4 * d_ref
+            e0 = _potential(ci, cth, sth, cos_a, sin_a, k, force, q0, q1, q2) if big else 0.0
+            for _ls in range(40 if big else 0):
                 e1 = _potential(
-                    ci, cth, sth, cos_a, sin_a, k, force, q0 + step * s0, q1 + step * s1,
+                    ci,
+                    cth,
+                    sth,
+                    cos_a,
+                    sin_a,
+                    k,
+                    force,
+                    q0 + step * s0,
+                    q1 + step * s1,
                     q2 + step * s2,
                 )
                 if e1 <= e0 + 1e-4 * step * slope or step * max(abs(s0), abs(s1), abs(s2)) < tol:
@@ -237,17 +252,17 @@ def solve_kernel(c, theta, cos_a, sin_a, k, force, q_start, tol, max_iter):  # t
             if step * max(abs(s0), abs(s1), abs(s2)) <= tol:
                 converged = True
                 break
-        if not converged:
-            return q, unloaded, 3, i
-        q[i, 0] = q0
-        q[i, 1] = q1
-        q[i, 2] = q2
         count = 0
         for j in range(z):
             if ci[j] - (q0 * cth[j] + q1 * sth[j]) * cos_a - q2 * sin_a <= 0.0:
                 count += 1
         if z - count < 3:
             return q, unloaded, 1, i
+        if not converged:
+            return q, unloaded, 3, i
+        q[i, 0] = q0
+        q[i, 1] = q1
+        q[i, 2] = q2
         unloaded[i] = count
     return q, unloaded, 0, -1
 
@@ -286,6 +301,7 @@ def solve_reference(
     ca, sa = math.cos(contact_angle), math.sin(contact_angle)
     nvec = np.stack([ca * np.cos(theta), ca * np.sin(theta), np.full_like(theta, sa)], axis=-1)
     q = np.zeros((c.shape[0], 3))
+    reg = 1e-9 * 1.5 * stiffness * math.sqrt(float(np.median(c)))
 
     def residual(qq: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
         d = np.maximum(c - np.einsum("nzk,nk->nz", nvec, qq), 0.0)
@@ -295,6 +311,7 @@ def solve_reference(
     for _ in range(max_iter):
         r, d = residual(q)
         h = np.einsum("nz,nzk,nzl->nkl", 1.5 * stiffness * np.sqrt(d), nvec, nvec)
+        h += reg * np.eye(3)  # as in the kernel: keeps iterates with few loaded balls moving
         s = np.linalg.solve(h, r[..., None])[..., 0]
         step = np.ones(q.shape[0])
         norm0 = np.linalg.norm(r, axis=1)
@@ -400,9 +417,9 @@ def setup(case: object) -> Setup:
     return Setup(alpha, kn, dpl, force, kin)
 
 
-def approaches(case: object, st: Setup, time: NDArray[np.float64]) -> tuple[
-    NDArray[np.float64], NDArray[np.float64]
-]:
+def approaches(
+    case: object, st: Setup, time: NDArray[np.float64]
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """Approach at q = 0 (eq. 2) and ball angles, shape (n, Z) each."""
     dev = contact_deviations(case.imperfections, st.kinematics, time)  # type: ignore[attr-defined]
     c = (dev.inner - dev.outer) * math.cos(st.contact_angle) + dev.ball + st.preload
@@ -429,7 +446,7 @@ def solve(
         st.stiffness,
         st.force,
         np.zeros(3),
-        RTOL * st.preload,
+        st.preload,
         MAX_ITER,
     )
     if status != OK:

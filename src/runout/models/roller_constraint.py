@@ -46,7 +46,10 @@ Stable position (seed 004 §5, done as an optimisation)
    touch; the stable vertex is the one whose contact normals straddle the load (KKT
    multipliers :math:`\lambda \ge 0` in :math:`u + \sum \lambda_j \nabla C_j = 0`). An active
    set walk from the two rollers either side of the load reaches it in one or two Newton
-   solves; an exhaustive search over pairs is the fall-back. The paper's stable-contact
+   solves; an exhaustive search over pairs is the fall-back. When the *outer* ring is loaded
+   (Kea) the admissible set is an intersection of convex sets and the ring hangs like a hoop:
+   it may rest on one roller alone, where the contact normal is along the load; that point is
+   explicit and is tried whenever the walk leaves a roller. The paper's stable-contact
    criteria (§5.3: no interference; a contact on each side of the load line; the bisector of
    the outermost contacts closest to the load line) are what this optimum satisfies, and the
    tests use them as an oracle.
@@ -93,7 +96,7 @@ from runout.bearing import BallBearing, Bearing, Operation, RollerBearing
 from runout.errors import ConvergenceError, GeometryError, NumericalError
 from runout.imperfections import Harmonics, Imperfections, single_harmonic
 from runout.kinematics import bearing_frequencies
-from runout.results import Component, RunResult, Runout
+from runout.results import Component, Runout, RunResult
 
 if TYPE_CHECKING:
     from runout.case import Case
@@ -133,6 +136,7 @@ _NO_STRADDLE = 1
 _NO_VERTEX = 2
 _NO_STABLE = 3
 _SETTLE_FAIL = 4
+_FAR_CONTACT = 5
 _STATUS_TEXT = {
     _NO_STRADDLE: "no roller on one side of the load line (too few rollers near the load zone)",
     _NO_VERTEX: "the two-contact Newton solve did not converge",
@@ -141,6 +145,10 @@ _STATUS_TEXT = {
         "or does not straddle the load (rollers jam: is there radial clearance?)"
     ),
     _SETTLE_FAIL: "a roller could not be settled onto the fixed raceway (Newton did not converge)",
+    _FAR_CONTACT: (
+        "a roller more than 90 deg from the load zone touches the loaded ring: the clearance is "
+        "too small for the part errors (the rigid measuring model does not apply)"
+    ),
 }
 
 
@@ -173,6 +181,10 @@ class ConstraintGeometry:
         The ring that turns and carries the measuring load.
     load_angle : float
         Direction of the measuring load from +x [rad] (default -π/2, downwards).
+    spin_ratio : float or None
+        Override of the roller rotation per unit ring rotation (counter-clockwise, fixed
+        frame) [-]; None (default) uses pure rolling, :func:`absolute_spin_ratio`. Only for
+        studying the paper's eq. 2 as printed (``-((d_i+d_e)^2 - 4D_w^2)/((d_i+d_e)D_w)``).
     """
 
     n_elements: int
@@ -187,6 +199,7 @@ class ConstraintGeometry:
     pitch_errors: FloatArray
     rotating_ring: Literal["inner", "outer"] = "inner"
     load_angle: float = -0.5 * math.pi
+    spin_ratio: float | None = None
 
     @property
     def radial_clearance(self) -> float:
@@ -310,6 +323,8 @@ def absolute_spin_ratio(geo: ConstraintGeometry) -> float:
     Pure rolling on both raceways; for the inner ring turning this is
     ``-(d_m - D_w)/(2 D_w)`` = -γ₁/α (clockwise). See the module Notes on seed 004 eq. 2.
     """
+    if geo.spin_ratio is not None:
+        return geo.spin_ratio
     dm, dw = geo.pitch_diameter, geo.element_diameter
     if geo.rotating_ring == "inner":
         return -(dm - dw) / (2.0 * dw)
@@ -367,8 +382,12 @@ def _support(
     hi = off[b + 1]
     if hi == lo:
         return r0[b], 0.0, r0[b]
+    # Newton on the support condition ρ'cos δ - ρ sin δ = 0; quadratic convergence, so once
+    # a step is below 1e-9 rad the next would be below ~1e-16 rad and we stop. h is taken at
+    # the last evaluated δ (it is stationary there, error O(step² ρ)), h' at the updated δ.
     delta = 0.0
     r = d1 = d2 = 0.0
+    h = h1 = 0.0
     for _ in range(40):
         r, d1, d2 = _profile(r0[b], k, a, p, lo, hi, psi + delta - shift)
         cd = math.cos(delta)
@@ -376,10 +395,10 @@ def _support(
         f = d1 * cd - r * sd
         fp = d2 * cd - 2.0 * d1 * sd - r * cd
         step = f / fp
-        if abs(step) < 1e-15:
-            break
+        h = r * cd
         delta -= step
-    h = r * math.cos(delta)
+        if abs(step) < 1e-9:
+            break
     h1 = r * math.sin(delta)
     rc = (r * r + d1 * d1) ** 1.5 / (r * r + 2.0 * d1 * d1 - r * d2)
     return h, h1, rc
@@ -399,7 +418,7 @@ def _pair_gap(
     p: FloatArray,
     off: NDArray[np.int64],
 ) -> tuple[float, float, float]:
-    """Signed distance between body A (centre 0) and body B (centre d), the normal angle, curvature."""
+    """Signed distance of body A (centre 0) and body B (centre d); normal angle; curvature."""
     psi = math.atan2(dy, dx)
     g = 0.0
     rk = 0.0
@@ -415,7 +434,7 @@ def _pair_gap(
         f2 = -nd + ha + hb - rca - rcb
         step = f1 / f2
         psi -= step
-        if abs(step) < 1e-15:
+        if abs(step) < 1e-9:  # quadratic convergence: g is stationary in ψ, error O(step²|d|)
             break
     return g, psi, rk
 
@@ -450,7 +469,7 @@ def _inside_gap(
         f2 = (rce - he) - (rcb - hb) + nd
         step = f1 / f2
         psi -= step
-        if abs(step) < 1e-15:
+        if abs(step) < 1e-9:  # quadratic convergence: g is stationary in ψ, error O(step²|d|)
             break
     return g, psi, rk
 
@@ -519,9 +538,100 @@ def _vertex(
         step = math.hypot(ddx, ddy)
         if step > 1e-2:
             return cx, cy, 0.0, 0.0, False
-        if step <= 1e-15:
+        if step <= 1e-10:  # quadratic convergence: remaining error ~ step² / radius
             return cx, cy, lam_a, lam_b, True
     return cx, cy, lam_a, lam_b, False
+
+
+@numba.njit(cache=True)
+def _far_bound(
+    mode: int,
+    j: int,
+    cx: float,
+    cy: float,
+    rx: FloatArray,
+    ry: FloatArray,
+    r0: FloatArray,
+    dev: FloatArray,
+) -> float:
+    """Lower bound on the gap of a roller far from the load zone (placed at its nominal radius).
+
+    Settling moves the roller by at most dev(fixed ring) + dev(roller) along its radius, so
+    the gap is at least the circle gap minus twice the deviations involved.
+    """
+    dist = math.hypot(rx[j] - cx, ry[j] - cy)
+    if mode == 0:
+        gap = dist - r0[0] - r0[2 + j]
+        slack = dev[0] + dev[1] + 2.0 * dev[2 + j]
+    else:
+        gap = r0[1] - r0[2 + j] - dist
+        slack = dev[0] + dev[1] + 2.0 * dev[2 + j]
+    return gap - slack
+
+
+@numba.njit(cache=True)
+def _worst(
+    mode: int,
+    skip1: int,
+    skip2: int,
+    cx: float,
+    cy: float,
+    rx: FloatArray,
+    ry: FloatArray,
+    far: NDArray[np.bool_],
+    dev: FloatArray,
+    s_in: float,
+    s_out: float,
+    s_rol: float,
+    r0: FloatArray,
+    k: FloatArray,
+    a: FloatArray,
+    p: FloatArray,
+    off: NDArray[np.int64],
+) -> tuple[int, float]:
+    """The roller that interferes most with the loaded ring at c (-1 if none)."""
+    worst = -1
+    wgap = -TOL_FEASIBLE
+    for j in range(rx.size):
+        if j == skip1 or j == skip2:
+            continue
+        if far[j] and _far_bound(mode, j, cx, cy, rx, ry, r0, dev) > 0.0:
+            continue
+        gj, _, _ = _constraint(mode, j, cx, cy, rx, ry, s_in, s_out, s_rol, r0, k, a, p, off)
+        if gj < wgap:
+            wgap = gj
+            worst = j
+    return worst, wgap
+
+
+@numba.njit(cache=True)
+def _single(
+    j: int,
+    wx: float,
+    wy: float,
+    rx: FloatArray,
+    ry: FloatArray,
+    s_out: float,
+    s_rol: float,
+    r0: FloatArray,
+    k: FloatArray,
+    a: FloatArray,
+    p: FloatArray,
+    off: NDArray[np.int64],
+) -> tuple[float, float]:
+    """Outer ring hanging on roller j alone: the contact normal points along w = -u.
+
+    With ψ_w the angle of w, G = 0 and stationarity in ψ give the roller centre relative to
+    the ring as d = (h_E - h_B) w + (h_E' - h_B') t, t ⊥ w, in closed form.
+    """
+    psi = math.atan2(wy, wx)
+    he, h1e, _ = _support(1, r0, k, a, p, off, s_out, psi)
+    hb, h1b, _ = _support(2 + j, r0, k, a, p, off, s_rol, psi)
+    tx = -math.sin(psi)
+    ty = math.cos(psi)
+    dx = (he - hb) * wx + (h1e - h1b) * tx
+    dy = (he - hb) * wy + (h1e - h1b) * ty
+    return rx[j] - dx, ry[j] - dy
 
 
 @numba.njit(cache=True)
@@ -559,17 +669,40 @@ def _solve_all(
     wx = ux if mode == 0 else -ux
     wy = uy if mode == 0 else -uy
     cand = np.empty(z, dtype=np.int64)
+    far = np.zeros(z, dtype=np.bool_)
+    lim = 0.5 * math.pi + 2.0 * math.pi / z
+    # largest deviation of each body from its base radius (for the far-roller bound)
+    nb = r0.size
+    dev = np.zeros(nb)
+    for b in range(nb):
+        for i in range(off[b], off[b + 1]):
+            dev[b] += abs(a[i])
     for n in range(alphas.size):
         alpha = alphas[n]
         s_in = inner_turns * alpha
         s_out = outer_turns * alpha
         s_rol = spin * alpha
         status = _OK
-        # 1. every roller settles radially onto the fixed ring (seed 004 §5.1)
+        # 1. rollers near the contact side settle radially onto the fixed ring (§5.1); the
+        #    others only need a safe lower bound on their gap (checked below)
+        nc = 0
         for j in range(z):
             beta = beta0[j] + cage * alpha
             ex = math.cos(beta)
             ey = math.sin(beta)
+            phi[j] = math.atan2(wx * ey - wy * ex, wx * ex + wy * ey)
+            if abs(phi[j]) >= lim:
+                far[j] = True
+                # nominal circle position, exact settling not needed for a bound
+                s = r0[1] - r0[2 + j] if mode == 0 else r0[0] + r0[2 + j]
+                rx[j] = s * ex
+                ry[j] = s * ey
+                out_rc[n, j, 0] = rx[j]
+                out_rc[n, j, 1] = ry[j]
+                continue
+            far[j] = False
+            cand[nc] = j
+            nc += 1
             if mode == 0:
                 s = r0[1] - r0[2 + j]
             else:
@@ -577,13 +710,15 @@ def _solve_all(
             ok = False
             for _ in range(40):
                 if mode == 0:
-                    g, psi, _ = _inside_gap(1, s_out, 2 + j, s_rol, s * ex, s * ey, r0, k, a, p, off)
+                    g, psi, _ = _inside_gap(
+                        1, s_out, 2 + j, s_rol, s * ex, s * ey, r0, k, a, p, off
+                    )
                     ds = g / (math.cos(psi) * ex + math.sin(psi) * ey)
                 else:
                     g, psi, _ = _pair_gap(0, s_in, 2 + j, s_rol, s * ex, s * ey, r0, k, a, p, off)
                     ds = -g / (math.cos(psi) * ex + math.sin(psi) * ey)
                 s += ds
-                if abs(ds) <= 1e-15:
+                if abs(ds) <= 1e-10:  # Newton on a nearly linear gap: next step < 1e-18 m
                     ok = True
                     break
             if not ok:
@@ -592,17 +727,10 @@ def _solve_all(
             ry[j] = s * ey
             out_rc[n, j, 0] = rx[j]
             out_rc[n, j, 1] = ry[j]
-            phi[j] = math.atan2(wx * ey - wy * ex, wx * ex + wy * ey)
         if status != _OK:
             out_status[n] = status
             continue
-        # 2. candidates: rollers within 90° + 2 pitches of the contact side, sorted by angle
-        nc = 0
-        lim = 0.5 * math.pi + 4.0 * math.pi / z
-        for j in range(z):
-            if abs(phi[j]) < lim:
-                cand[nc] = j
-                nc += 1
+        # 2. candidates sorted by angle from the contact side
         order = np.argsort(phi[cand[:nc]])
         sc = cand[:nc][order]
         ia = -1
@@ -615,6 +743,7 @@ def _solve_all(
             continue
         # 3. active-set walk over two-contact vertices
         found = False
+        single = -1
         bx = by = 0.0
         la = lb = 0.0
         for _ in range(4 * z):
@@ -624,27 +753,35 @@ def _solve_all(
             )  # fmt: skip
             if not conv:
                 break
-            if lam_a < -TOL_MULTIPLIER:
-                ia = ib
-                ib = ib + 1
-                if ib >= nc:
-                    break
+            if lam_a < -TOL_MULTIPLIER or lam_b < -TOL_MULTIPLIER:
+                keep = sc[ib] if lam_a < -TOL_MULTIPLIER else sc[ia]
+                if mode == 1:
+                    # the hoop may hang on the kept roller alone (convex admissible set)
+                    qx, qy = _single(keep, wx, wy, rx, ry, s_out, s_rol, r0, k, a, p, off)
+                    wj, _ = _worst(mode, keep, keep, qx, qy, rx, ry, far, dev, s_in, s_out,
+                                   s_rol, r0, k, a, p, off)  # fmt: skip
+                    if wj < 0:
+                        found = True
+                        bx, by, la, lb = qx, qy, 1.0, 0.0
+                        ia = ib = -1
+                        single = keep
+                        break
+                if lam_a < -TOL_MULTIPLIER:
+                    ia = ib
+                    ib = ib + 1
+                    if ib >= nc:
+                        break
+                else:
+                    ib = ia
+                    ia = ia - 1
+                    if ia < 0:
+                        break
                 continue
-            if lam_b < -TOL_MULTIPLIER:
-                ib = ia
-                ia = ia - 1
-                if ia < 0:
-                    break
-                continue
-            worst = -1
-            wgap = -TOL_FEASIBLE
-            for j in range(z):
-                if j == sc[ia] or j == sc[ib]:
-                    continue
-                gj, _, _ = _constraint(mode, j, vx, vy, rx, ry, s_in, s_out, s_rol, r0, k, a, p, off)
-                if gj < wgap:
-                    wgap = gj
-                    worst = j
+            worst, _ = _worst(mode, sc[ia], sc[ib], vx, vy, rx, ry, far, dev, s_in, s_out,
+                              s_rol, r0, k, a, p, off)  # fmt: skip
+            if worst >= 0 and far[worst]:
+                out_status[n] = _FAR_CONTACT
+                break
             if worst < 0:
                 found = True
                 bx, by, la, lb = vx, vy, lam_a, lam_b
@@ -663,6 +800,8 @@ def _solve_all(
                 ia, ib = ib, ia
             if ia == ib:
                 break
+        if out_status[n] == _FAR_CONTACT:
+            continue
         if not found:
             # 4. fall-back: every pair of candidates, keep the lowest admissible KKT vertex
             best = -1e300
@@ -674,20 +813,23 @@ def _solve_all(
                     )  # fmt: skip
                     if not conv or lam_a < -TOL_MULTIPLIER or lam_b < -TOL_MULTIPLIER:
                         continue
-                    feas = True
-                    for j in range(z):
-                        if j == sc[i1] or j == sc[i2]:
-                            continue
-                        gj, _, _ = _constraint(
-                            mode, j, vx, vy, rx, ry, s_in, s_out, s_rol, r0, k, a, p, off
-                        )
-                        if gj < -TOL_FEASIBLE:
-                            feas = False
-                            break
-                    if feas and ux * vx + uy * vy > best:
+                    wj, _ = _worst(mode, sc[i1], sc[i2], vx, vy, rx, ry, far, dev, s_in,
+                                   s_out, s_rol, r0, k, a, p, off)  # fmt: skip
+                    if wj < 0 and ux * vx + uy * vy > best:
                         best = ux * vx + uy * vy
                         bx, by, la, lb = vx, vy, lam_a, lam_b
                         ia, ib = i1, i2
+                        single = -1
+                        found = True
+            if mode == 1:
+                for i1 in range(nc):
+                    qx, qy = _single(sc[i1], wx, wy, rx, ry, s_out, s_rol, r0, k, a, p, off)
+                    wj, _ = _worst(mode, sc[i1], sc[i1], qx, qy, rx, ry, far, dev, s_in, s_out,
+                                   s_rol, r0, k, a, p, off)  # fmt: skip
+                    if wj < 0 and ux * qx + uy * qy > best:
+                        best = ux * qx + uy * qy
+                        bx, by, la, lb = qx, qy, 1.0, 0.0
+                        single = sc[i1]
                         found = True
         if not found:
             out_status[n] = _NO_STABLE
@@ -696,20 +838,31 @@ def _solve_all(
         cy = by
         out_c[n, 0] = cx
         out_c[n, 1] = cy
-        out_pair[n, 0] = sc[ia]
-        out_pair[n, 1] = sc[ib]
+        if single >= 0:
+            out_pair[n, 0] = single
+            out_pair[n, 1] = single
+        else:
+            out_pair[n, 0] = sc[ia]
+            out_pair[n, 1] = sc[ib]
         out_lam[n, 0] = la
         out_lam[n, 1] = lb
         for j in range(z):
+            if far[j]:
+                gj = _far_bound(mode, j, cx, cy, rx, ry, r0, dev)
+                if gj <= 0.0:
+                    out_status[n] = _FAR_CONTACT
+                out_gap[n, j] = gj
+                continue
             gj, _, _ = _constraint(mode, j, cx, cy, rx, ry, s_in, s_out, s_rol, r0, k, a, p, off)
             out_gap[n, j] = gj
-        out_status[n] = _OK
 
 
 # ============================================================================================
 # Python API
 # ============================================================================================
-def _pack(geo: ConstraintGeometry) -> tuple[FloatArray, ...]:
+def _pack(
+    geo: ConstraintGeometry,
+) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray, NDArray[np.int64]]:
     bodies = [geo.inner, geo.outer, *geo.elements]
     r0 = np.array([geo.inner_radius, geo.outer_radius, *geo.element_radii], dtype=np.float64)
     sizes = np.array([len(h) for h in bodies], dtype=np.int64)
@@ -949,7 +1102,9 @@ def inside_gap(
 # verification cases of seed 004 §6
 # --------------------------------------------------------------------------------------------
 def _straddling_pair(beta: FloatArray, w: FloatArray) -> tuple[int, int]:
-    phi = np.arctan2(w[0] * np.sin(beta) - w[1] * np.cos(beta), w[0] * np.cos(beta) + w[1] * np.sin(beta))
+    phi = np.arctan2(
+        w[0] * np.sin(beta) - w[1] * np.cos(beta), w[0] * np.cos(beta) + w[1] * np.sin(beta)
+    )
     left = np.flatnonzero(phi <= 0)
     right = np.flatnonzero(phi > 0)
     return int(left[np.argmax(phi[left])]), int(right[np.argmin(phi[right])])
@@ -1014,7 +1169,11 @@ def ellipse_harmonics(semi_major: float, semi_minor: float, n: int = 64) -> tupl
 
 
 def _roller_pair_positions(
-    inner_diameter: float, outer_diameter: float, roller_diameter: float, n_elements: int, alpha: float
+    inner_diameter: float,
+    outer_diameter: float,
+    roller_diameter: float,
+    n_elements: int,
+    alpha: float,
 ) -> tuple[FloatArray, FloatArray]:
     dm = 0.5 * (inner_diameter + outer_diameter)
     beta = 2.0 * np.pi * np.arange(n_elements) / n_elements + 0.5 * alpha * (
@@ -1252,7 +1411,7 @@ def _candidate_lines(geo: ConstraintGeometry) -> list[tuple[float, str]]:
     inner_turns, outer_turns = _turns(geo)
     spin_rel = abs(absolute_spin_ratio(geo) - c)
     passage = z * c
-    lines: list[tuple[float, str]] = []
+    lines: list[tuple[float, str]] = [(passage, "roller passage: Z f_c")]
     parts = [
         ("inner", geo.inner, abs(inner_turns - c), "k|f_i - f_c|"),
         ("outer", geo.outer, abs(outer_turns - c), "k|f_o - f_c|"),
@@ -1268,7 +1427,6 @@ def _candidate_lines(geo: ConstraintGeometry) -> list[tuple[float, str]]:
             lines.append((base, f"{name} {kk} lobes: {formula}"))
     for kk in sorted(roller_orders):
         lines.append((kk * spin_rel, f"roller {kk} lobes: k f_b"))
-    lines.append((passage, "roller passage: Z f_c"))
     for name, h, rate, _ in parts:
         for kk in h.orders:
             if kk == 0:
@@ -1281,18 +1439,18 @@ def _candidate_lines(geo: ConstraintGeometry) -> list[tuple[float, str]]:
         lines.append((kk * spin_rel + passage, f"roller {kk} lobes + roller passage"))
     lines.append((2 * passage, "roller passage: 2 Z f_c"))
     lines.append((3 * passage, "roller passage: 3 Z f_c"))
-    uneven = np.ptp(geo.element_radii) > 0 or np.any(geo.pitch_errors) or len(
-        {h for h in geo.elements}
-    ) > 1
+    uneven = (
+        np.ptp(geo.element_radii) > 0
+        or np.any(geo.pitch_errors)
+        or len({h for h in geo.elements}) > 1
+    )
     if uneven:
         for m in (1, 2, 3):
             lines.append((m * c, f"cage {m}x: uneven rollers, {m} f_c"))
     return lines
 
 
-def _components(
-    sol: Solution, rotation_hz: float, notes: list[str]
-) -> tuple[Component, ...]:
+def _components(sol: Solution, rotation_hz: float, notes: list[str]) -> tuple[Component, ...]:
     from runout.spectrum import LineResolutionWarning, extract_lines
 
     geo = sol.geometry
@@ -1329,7 +1487,8 @@ def _components(
     if dropped:
         notes.append(
             f"lines closer than 1/record = {min_gap:.3g} orders could not be separated over "
-            f"{span:.4g} revolutions and were left out: " + "; ".join(dropped[:6])
+            f"{span:.4g} revolutions and were left out: "
+            + "; ".join(dropped[:6])
             + (" ..." if len(dropped) > 6 else "")
         )
     peak = max(float(np.ptp(sol.centre[:, 0])), float(np.ptp(sol.centre[:, 1])), 1e-300)
@@ -1386,7 +1545,7 @@ def _rro_nrro(
 
 
 def run(case: Case) -> RunResult:
-    """Run the rigid geometric-constraint model on a case (``[analysis] model = "roller_constraint"``).
+    """Run the rigid constraint model on a case (``[analysis] model = "roller_constraint"``).
 
     The turning ring is the loaded one; its centre relative to the fixed ring is reported at
     ``analysis.samples`` rotation angles from 0 to ``analysis.revolutions`` turns (both ends
@@ -1451,9 +1610,7 @@ def run(case: Case) -> RunResult:
         time=time,
         displacement=disp,
         components=comps,
-        runout=Runout(
-            radial_pp_m=sol.runout, axial_pp_m=0.0, rro_pp_m=rro, nrro_pp_m=nrro
-        ),
+        runout=Runout(radial_pp_m=sol.runout, axial_pp_m=0.0, rro_pp_m=rro, nrro_pp_m=nrro),
         measuring_direction=u,
         extras=extras,
         notes=tuple(notes),
@@ -1465,7 +1622,7 @@ def write_extras(sol: Solution, directory: Path, revolutions: float) -> list[Pat
     """Write ``contacts.csv``, ``order_sweep.csv`` and the model's plots into ``directory``.
 
     The order sweep uses one revolution of the turning ring at the run's angular step (at most
-    1440 angles) and 1 µm on each part, orders 2 … 3Z.
+    720 angles) and 1 µm on each part, orders 2 … 3Z.
     """
     from runout import plotting
 
@@ -1494,7 +1651,7 @@ def write_extras(sol: Solution, directory: Path, revolutions: float) -> list[Pat
             )
     written.append(path)
     step = float(np.median(np.diff(sol.alpha))) if sol.alpha.size > 1 else math.radians(0.25)
-    n1 = int(min(1440, max(64, round(2.0 * math.pi / step)))) + 1
+    n1 = int(min(720, max(64, round(2.0 * math.pi / step)))) + 1
     sweep = order_sweep(sol.geometry, rotation_angles(1.0, n1))
     written.append(sweep.write_csv(directory / "order_sweep.csv"))
     angle_deg = np.degrees(sol.alpha)

@@ -1,0 +1,351 @@
+r"""Two-dimensional quasi-static NRRO model of the shaft centre (seed 001, Kim, Choi & Yoon).
+
+The outer raceway's centre is fixed at the origin; the inner raceway's centre (the shaft)
+settles at :math:`(x, y)` where the Hertz forces of the Z balls cancel (eq. 16-17, no external
+load, no inertia). Ball k (eq. 8, 0-based here) deforms by (eq. 10)
+
+.. math::
+    \delta_k = \delta_0 + \tfrac12\{W_{ik} + w_{bk} - W_{ok} + x\cos\theta_k + y\sin\theta_k\},
+
+with :math:`W_{ik}` the inner-raceway radius deviation at the ball (positive = material
+added), :math:`W_{ok}` the outer-raceway radius deviation (positive = radius larger),
+:math:`w_{bk}` the ball's diameter deviation along its contact line (eq. 13, read as seed 002
+eq. 26; size error included) and :math:`\delta_0 = (\delta_i + \delta_o)/2` the mean of the
+two Hertz approaches of the static axial-load solution (text after eq. 18;
+:func:`runout.loading.axial_loading` at the operating contact angle). The load is
+:math:`P_k = C_k (2\delta_k)^{3/2}` with :math:`C_k = K_n` (eq. 14-15), so a ball whose
+bracket turns negative carries none (counted and reported).
+
+Notes
+-----
+* The ½ of eq. 10 makes δ_k the mean of the inner and outer approaches; we apply eq. 14 to the
+  total approach 2δ_k. The balance (eq. 16-17) is homogeneous in C_k, so the shaft position
+  does not depend on this choice; it does make the loads physical.
+* Eq. 10 is planar: x, y and the deviations enter without the contact angle, exactly as
+  printed. The contact angle (:func:`runout.summary.operating_contact_angle`) sets the
+  kinematics (eq. 7, 9) and δ_0 only. ``element_projection="radial"`` multiplies the ball
+  deviations by cos α instead (their projection on the radial plane); see
+  docs/_fragments/validation_quasi_static.md for which reading reproduces Table 4.
+* Eq. 11-12 write the raceway radii as functions of the ball angle θ_k; for a rotating ring we
+  evaluate its profile in the ring's frame, :math:`r(\theta_k - 2\pi f_{ring} t)`.
+* The shaft is the measured body: the displacement reported is the inner ring's centre
+  relative to the outer ring's (z = 0). External radial loads are not part of eq. 16-17 and are
+  rejected.
+* Solver: Newton per instant (eq. 18) with a closed-form 2×2 solve, Armijo backtracking on the
+  convex potential and warm start (:func:`solve_kernel`); :func:`solve_reference` is the
+  vectorised NumPy version used in tests.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Literal
+
+import numba
+import numpy as np
+from numpy.typing import NDArray
+
+from runout.bearing import BallBearing
+from runout.contact import ball_race_contacts
+from runout.errors import ContactLossError, ConvergenceError, GeometryError, NumericalError
+from runout.kinematics import ball_spin_frequency, bearing_frequencies, cage_frequency
+from runout.loading import axial_loading
+from runout.models._quasi_static import (
+    Kinematics,
+    contact_deviations,
+    fit_components,
+    predicted_lines,
+    runout_figures,
+    synchronous_grid,
+    time_grid,
+    unloaded_note,
+)
+from runout.results import RunResult
+from runout.summary import operating_contact_angle
+
+__all__ = ["Setup", "approaches", "run", "setup", "solve", "solve_kernel", "solve_reference"]
+
+MODEL = "quasi_static_2d"
+OK, TOO_FEW_LOADED, SINGULAR, NOT_CONVERGED = 0, 1, 2, 3
+_CAUSES = {
+    TOO_FEW_LOADED: "fewer than 2 balls carry load: the shaft cannot be held",
+    SINGULAR: "singular stiffness matrix: the loaded balls cannot hold the shaft",
+    NOT_CONVERGED: "Newton iteration did not converge",
+}
+RTOL = 1e-11
+MAX_ITER = 60
+ElementProjection = Literal["none", "radial"]
+
+
+@numba.njit(cache=True)
+def _potential(c, cth, sth, k, q0, q1):
+    e = 0.0
+    for j in range(c.size):
+        d = 2.0 * c[j] + q0 * cth[j] + q1 * sth[j]
+        if d > 0.0:
+            e += k / 2.5 * d * d * math.sqrt(d)
+    return e
+
+
+@numba.njit(cache=True)
+def solve_kernel(c, theta, k, d_ref, max_iter):
+    """Newton solve of seed 001 eq. 16-17 at every instant (compiled).
+
+    Parameters
+    ----------
+    c : ndarray, shape (n, Z)
+        δ_k at x = y = 0 [m] (eq. 10 without the x, y terms).
+    theta : ndarray, shape (n, Z)
+        Ball angles [rad].
+    k : float
+        C_k = K_n [N/m^1.5].
+    d_ref : float
+        Reference approach δ_0 [m]: step tolerance RTOL·d_ref; line search only for steps
+        above 1e-4·d_ref (quadratic range below).
+    max_iter : int
+        Newton iterations per instant.
+
+    Returns
+    -------
+    q : ndarray, shape (n, 2)
+        Shaft centre [m].
+    unloaded : ndarray, shape (n,)
+        Balls without load at each instant.
+    status : int
+        0 ok, 1 too few loaded balls, 2 singular, 3 not converged.
+    instant : int
+        Instant of the failure (-1 when status is 0).
+    """
+    n, z = c.shape
+    tol = RTOL * d_ref
+    q = np.zeros((n, 2))
+    unloaded = np.zeros(n, dtype=np.int64)
+    cth = np.empty(z)
+    sth = np.empty(z)
+    q0 = 0.0
+    q1 = 0.0
+    for i in range(n):
+        ci = c[i]
+        for j in range(z):
+            cth[j] = math.cos(theta[i, j])
+            sth[j] = math.sin(theta[i, j])
+        converged = False
+        for _ in range(max_iter):
+            f0 = 0.0
+            f1 = 0.0
+            h00 = h01 = h11 = 0.0
+            for j in range(z):
+                d = 2.0 * ci[j] + q0 * cth[j] + q1 * sth[j]  # total approach 2 δ_k
+                if d > 0.0:
+                    sd = math.sqrt(d)
+                    p = k * d * sd
+                    kk = 1.5 * k * sd
+                    f0 += p * cth[j]
+                    f1 += p * sth[j]
+                    h00 += kk * cth[j] * cth[j]
+                    h01 += kk * cth[j] * sth[j]
+                    h11 += kk * sth[j] * sth[j]
+            reg = 1e-9 * 1.5 * k * math.sqrt(2.0 * d_ref)
+            h00 += reg
+            h11 += reg
+            det = h00 * h11 - h01 * h01
+            if not det > 0.0:
+                return q, unloaded, 2, i
+            s0 = -(h11 * f0 - h01 * f1) / det
+            s1 = -(h00 * f1 - h01 * f0) / det
+            slope = f0 * s0 + f1 * s1
+            step = 1.0
+            big = max(abs(s0), abs(s1)) > 1e-4 * d_ref
+            e0 = _potential(ci, cth, sth, k, q0, q1) if big else 0.0
+            for _ls in range(40 if big else 0):
+                e1 = _potential(ci, cth, sth, k, q0 + step * s0, q1 + step * s1)
+                if e1 <= e0 + 1e-4 * step * slope or step * max(abs(s0), abs(s1)) < tol:
+                    break
+                step *= 0.5
+            q0 += step * s0
+            q1 += step * s1
+            if step * max(abs(s0), abs(s1)) <= tol:
+                converged = True
+                break
+        count = 0
+        for j in range(z):
+            if 2.0 * ci[j] + q0 * cth[j] + q1 * sth[j] <= 0.0:
+                count += 1
+        if z - count < 2:
+            return q, unloaded, 1, i
+        if not converged:
+            return q, unloaded, 3, i
+        q[i, 0] = q0
+        q[i, 1] = q1
+        unloaded[i] = count
+    return q, unloaded, 0, -1
+
+
+def solve_reference(
+    c: NDArray[np.float64],
+    theta: NDArray[np.float64],
+    *,
+    tol: float,
+    max_iter: int = MAX_ITER,
+) -> NDArray[np.float64]:
+    """Vectorised NumPy Newton solve of eq. 16-18 at all instants (reference for tests).
+
+    Returns
+    -------
+    ndarray, shape (n, 2)
+        Shaft centre [m].
+    """
+    nvec = np.stack([np.cos(theta), np.sin(theta)], axis=-1)
+    q = np.zeros((c.shape[0], 2))
+
+    def force(qq: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        d = np.maximum(2.0 * c + np.einsum("nzk,nk->nz", nvec, qq), 0.0)
+        return np.einsum("nz,nzk->nk", d**1.5, nvec), d
+
+    for _ in range(max_iter):
+        f, d = force(q)
+        h = np.einsum("nz,nzk,nzl->nkl", 1.5 * np.sqrt(d), nvec, nvec)
+        s = -np.linalg.solve(h, f[..., None])[..., 0]
+        step = np.ones(q.shape[0])
+        norm0 = np.linalg.norm(f, axis=1)
+        for _ls in range(30):
+            f1, _ = force(q + step[:, None] * s)
+            worse = np.linalg.norm(f1, axis=1) > norm0
+            if not worse.any():
+                break
+            step[worse] *= 0.5
+        q = q + step[:, None] * s
+        if np.max(np.abs(step[:, None] * s)) <= tol:
+            return q
+    raise ConvergenceError("reference Newton iteration did not converge")
+
+
+@dataclass(frozen=True)
+class Setup:
+    """Contact angle α [rad], K_n [N/m^1.5], δ_0 [m] and frequencies of a case."""
+
+    contact_angle: float
+    stiffness: float
+    initial_approach: float
+    kinematics: Kinematics
+
+
+def setup(case: object) -> Setup:
+    """Derive α, K_n, δ_0 = (δ_i + δ_o)/2 and the kinematics (see module docstring)."""
+    bearing = case.bearing  # type: ignore[attr-defined]
+    op = case.operation  # type: ignore[attr-defined]
+    if not isinstance(bearing, BallBearing):
+        raise GeometryError("bearing.type", "the quasi_static_2d model needs a ball bearing")
+    if op.axial_load <= 0.0:
+        raise GeometryError(
+            "operation.axial_load",
+            "the quasi_static_2d model needs an axial preload > 0 N to set the initial "
+            "deflection (seed 001, text after eq. 18)",
+        )
+    if op.radial_load > 0.0:
+        raise GeometryError(
+            "operation.radial_load",
+            "the quasi_static_2d model (seed 001 eq. 16-17) has no external radial load; "
+            "use quasi_static_3d",
+        )
+    alpha, loading = operating_contact_angle(bearing, op)
+    if loading is None or bearing.contact_angle is not None:
+        loading = axial_loading(bearing, op.axial_load)
+    d0 = 0.5 * (loading.inner_approach + loading.outer_approach)
+    kn = ball_race_contacts(bearing, alpha).combined_stiffness
+    d, dm = bearing.element_diameter, bearing.pitch_diameter
+    kin = Kinematics(
+        inner=op.inner_speed,
+        outer=op.outer_speed,
+        cage=float(cage_frequency(op.inner_speed, op.outer_speed, d, dm, alpha)),
+        spin=float(ball_spin_frequency(op.inner_speed, op.outer_speed, d, dm, alpha)),
+        rotating_ring=op.rotating_ring,
+        n_elements=bearing.n_elements,
+    )
+    return Setup(alpha, kn, d0, kin)
+
+
+def approaches(
+    case: object,
+    st: Setup,
+    time: NDArray[np.float64],
+    element_projection: ElementProjection = "none",
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """δ_k at x = y = 0 (eq. 10) and ball angles, shape (n, Z) each."""
+    dev = contact_deviations(case.imperfections, st.kinematics, time)  # type: ignore[attr-defined]
+    ball = dev.ball * (math.cos(st.contact_angle) if element_projection == "radial" else 1.0)
+    c = st.initial_approach + 0.5 * (dev.inner + ball - dev.outer)
+    return np.ascontiguousarray(c), np.ascontiguousarray(dev.theta)
+
+
+def solve(
+    case: object,
+    time: NDArray[np.float64],
+    st: Setup | None = None,
+    *,
+    element_projection: ElementProjection = "none",
+) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
+    """Shaft centre (3, n) [m] (z = 0) and unloaded-ball counts (n,) at ``time``.
+
+    Raises
+    ------
+    ContactLossError, ConvergenceError, NumericalError
+        When the shaft cannot be held at some instant (the error names it).
+    """
+    st = setup(case) if st is None else st
+    c, theta = approaches(case, st, time, element_projection)
+    q, unloaded, status, instant = solve_kernel(
+        c, theta, st.stiffness, st.initial_approach, MAX_ITER
+    )
+    if status != OK:
+        cause, t = _CAUSES[int(status)], float(time[int(instant)])
+        if status == TOO_FEW_LOADED:
+            raise ContactLossError(cause, int(instant), t)
+        if status == NOT_CONVERGED:
+            raise ConvergenceError(cause, int(instant), t)
+        raise NumericalError(cause, int(instant), t)
+    disp = np.zeros((3, time.size))
+    disp[:2] = q.T
+    return disp, unloaded
+
+
+def run(case: object) -> RunResult:
+    """Run the quasi-static 2-D model (seed 001) on a case."""
+    st = setup(case)
+    an = case.analysis  # type: ignore[attr-defined]
+    op = case.operation  # type: ignore[attr-defined]
+    t = time_grid(op.speed, an.revolutions, an.samples)
+    disp, unloaded = solve(case, t, st)
+    u = np.array([1.0, 0.0])
+    grid = synchronous_grid(op.speed, an.revolutions, an.samples)
+    sync = None
+    if grid is not None:
+        ts, spr = grid
+        ds = disp if np.array_equal(ts, t) else solve(case, ts, st)[0]
+        sync = (ds[0], spr)
+    lines = predicted_lines(case.imperfections, st.kinematics, axial=False)  # type: ignore[attr-defined]
+    comps = fit_components(t, disp, lines, op.speed, directions=("x", "y"))
+    notes = [
+        unloaded_note(unloaded, st.kinematics.n_elements),
+        "displacement: shaft (inner-ring) centre relative to the outer ring, planar model "
+        "(seed 001 eq. 10-17)",
+    ]
+    if grid is None:
+        notes.append("record shorter than 2 revolutions: RRO/NRRO not separated (reported 0)")
+    return RunResult(
+        model=MODEL,
+        title=case.title,  # type: ignore[attr-defined]
+        frequencies=bearing_frequencies(case.bearing, op, st.contact_angle),  # type: ignore[attr-defined]
+        contact_angle=st.contact_angle,
+        time=t,
+        displacement=disp,
+        components=comps,
+        runout=runout_figures(disp, u, sync),
+        measuring_direction=u,
+        extras={
+            "initial_approach_m": st.initial_approach,
+            "unloaded_balls_max": int(unloaded.max()),
+        },
+        notes=tuple(notes),
+    )
