@@ -76,27 +76,51 @@ def plot_orbit(result: RunResult, ax: Any = None) -> Any:
 
 
 def plot_lines(result: RunResult, ax: Any = None, top: int = 8) -> Any:
-    """Stem plot of the labelled lines (p-p, nm) against order; the largest are annotated."""
+    """Stem plot of the labelled lines (p-p, nm) against order; the largest are annotated.
+
+    Directions are drawn side by side (a small offset in order) so that x and y lines at the
+    same frequency stay visible; labels are shortened to the part and lobe count.
+    """
     plt = pyplot()
     if ax is None:
-        _, ax = plt.subplots(figsize=(8, 3.5))
+        _, ax = plt.subplots(figsize=(9, 4))
     colours = {"x": "C0", "y": "C1", "z": "C2"}
+    all_orders = [c.order for c in result.components] or [0.0, 1.0]
+    span = max(max(all_orders) - min(all_orders), 1.0)
+    offsets = {"x": -0.004 * span, "y": 0.0, "z": 0.004 * span}
+    peak = 0.0
     for direction in ("x", "y", "z"):
         lines = result.lines(direction)
         if not lines:
             continue
-        orders = np.array([c.order for c in lines])
+        orders = np.array([c.order for c in lines]) + offsets[direction]
         pp = np.array([c.pp_m for c in lines]) * 1e9
-        ax.vlines(orders, 0, pp, colors=colours[direction], lw=1.2, label=direction)
+        peak = max(peak, float(pp.max()))
+        ax.vlines(orders, 0, pp, colors=colours[direction], lw=1.4, label=direction)
+        ax.plot(orders, pp, "o", color=colours[direction], ms=3)
+    seen: set[tuple[float, str]] = set()
     for c in result.lines(top=top):
+        short = c.label.split(":")[0].split(";")[0].strip()
+        key = (round(c.order, 3), short)
+        if key in seen:
+            continue
+        seen.add(key)
         ax.annotate(
-            c.label, (c.order, c.pp_m * 1e9), fontsize=7, rotation=30, ha="left", va="bottom"
+            f"{short} ({c.direction})",
+            (c.order + offsets.get(c.direction, 0.0), c.pp_m * 1e9),
+            xytext=(3, 3),
+            textcoords="offset points",
+            fontsize=7,
+            annotation_clip=True,
+            clip_on=True,
         )
+    ax.set_ylim(0, 1.25 * peak if peak > 0 else 1.0)
+    ax.margins(x=0.12)
     ax.set_xlabel("order [waves per revolution of the rotating ring]")
     ax.set_ylabel("peak-to-peak [nm]")
-    ax.legend(loc="upper right")
+    ax.legend(loc="best")
     ax.grid(alpha=0.3)
-    ax.set_title("spectral lines")
+    ax.set_title("spectral lines (largest labelled; full labels in lines.csv)")
     return ax
 
 
