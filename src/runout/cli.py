@@ -192,13 +192,20 @@ def run(
     out: Annotated[
         Path | None, typer.Option("--out", help="Directory for plots and data files.")
     ] = None,
+    report: Annotated[
+        bool,
+        typer.Option(
+            "--report", help="Also write a self-contained report.html (default --out out/<case>)."
+        ),
+    ] = False,
 ) -> None:
     """Run the model named in the case's [analysis] table.
 
-    Example: runout run examples/seed000_tada_fig7.toml --out out/tada
+    Example: runout run examples/seed000_tada_fig7.toml --out out/tada --report
     """
     from runout.case import load_case
     from runout.models import run_model
+    from runout.summary import bearing_summary
 
     case = load_case(case_file)
     result = run_model(case)
@@ -207,12 +214,42 @@ def run(
     else:
         for title, rows in result.summary_sections():
             _out.print(_rows_table(title, rows))
+    if report and out is None:
+        out = Path("out") / case_file.stem
     if out is not None:
         out.mkdir(parents=True, exist_ok=True)
         written = result.write(out)
+        # The inputs travel with the results, so a report can be rebuilt from the directory.
+        summary = bearing_summary(case.bearing, case.operation)
+        (out / "summary.json").write_text(
+            json.dumps({"title": case.title, **summary.to_json()}, indent=2, allow_nan=False) + "\n"
+        )
+        (out / "case.toml").write_text(case_file.read_text(encoding="utf-8"), encoding="utf-8")
+        written += [out / "summary.json", out / "case.toml"]
+        if report:
+            from runout.report import build_report
+
+            written.append(build_report(out))
         if not as_json:
             for path in written:
-                _out.print(f"wrote {path}")
+                _out.print(f"wrote {escape(str(path))}")
+
+
+@app.command("report")
+@_guard
+def report_command(
+    directory: Annotated[
+        Path, typer.Argument(help="Directory written by `runout run CASE --out DIR`.")
+    ],
+) -> None:
+    """Write DIR/report.html: one self-contained page with inputs, results and figures.
+
+    Example: runout report out/tada
+    """
+    from runout.report import build_report
+
+    path = build_report(directory)
+    _out.print(f"wrote {escape(str(path))}")
 
 
 def main() -> None:
