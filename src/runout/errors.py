@@ -48,7 +48,30 @@ class CaseError(RunoutError):
         self.key = key
         self.message = message
         where = f"{file}: {key}" if key else file
-        super().__init__(f"{where}: {message}")
+        super().__init__(f"{where}: {message}{_doc_hint(key)}")
+
+
+_DOCUMENTED_TABLES = (
+    "bearing",
+    "material",
+    "operation",
+    "waviness",
+    "waviness_spectrum",
+    "profile",
+    "slant",
+    "elements",
+    "analysis",
+    "dynamics",
+    "study",
+)
+
+
+def _doc_hint(key: str) -> str:
+    """Pointer to the case-file reference section of the table that ``key`` belongs to."""
+    table = key.split(".", 1)[0].split("[", 1)[0]
+    if table not in _DOCUMENTED_TABLES:
+        return ""
+    return f" (see docs/case-file.md#{table})"
 
 
 class ModelNotAvailableError(RunoutError):
