@@ -5,11 +5,11 @@ BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 export MPLBACKEND ?= Agg
 
-.PHONY: install demo test lint typecheck pytest bench clean
+.PHONY: install demo test lint typecheck pytest bench docs clean
 
 $(STAMP): pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install --quiet -e '.[dev]'
+	$(BIN)/python -m pip install --quiet -e '.[dev,dask]'
 	touch $(STAMP)
 
 install: $(STAMP)
@@ -31,6 +31,16 @@ demo: install
 
 bench: install
 	$(BIN)/python benchmarks/run.py
+
+# The documentation site (out/site): getting started, concepts, case-file reference (generated
+# from the schema), one theory page per model, validation, benchmarks, API reference.
+docs: install
+	$(BIN)/python -m pip install --quiet -e '.[dev,dask,docs]'
+	$(BIN)/python -m runout.schema_doc > docs/case-file.md
+	cp VALIDATION.md docs/validation.md
+	cp BENCHMARKS.md docs/benchmarks.md
+	$(BIN)/mkdocs build --strict --site-dir out/site
+	@echo "documentation: out/site/index.html"
 
 clean:
 	rm -rf $(VENV) out .pytest_cache .mypy_cache .ruff_cache

@@ -20,6 +20,7 @@ from rich.markup import escape
 from rich.table import Table
 
 from runout.case import load_case
+from runout.report import build_combined_report
 from runout.summary import bearing_summary
 
 HERE = Path(__file__).resolve().parent
@@ -64,11 +65,22 @@ def main() -> None:
         )
     console.print(table)
     out = Path("out") / "demo"
-    _runout("run", str(HERE / "seed000_tada_fig7.toml"), "--out", str(out / "tada_fig7"))
-    _runout("run", str(HERE / "seed002_608.toml"), "--out", str(out / "anderon_608"))
-    _runout("run", str(HERE / "seed004_nu209.toml"), "--out", str(out / "nu209"))
+    runs = {
+        "tada_fig7": "seed000_tada_fig7.toml",
+        "anderon_608": "seed002_608.toml",
+        "nu209": "seed004_nu209.toml",
+    }
+    for name, case_file in runs.items():
+        _runout("run", str(HERE / case_file), "--out", str(out / name), "--report")
+    report = build_combined_report(
+        [out / name for name in runs],
+        out / "report.html",
+        title="runout demo: Tada's HDD bearing, the Anderon 608, the NU209",
+    )
+    console.rule("done")
     console.print(
-        f"Orders are per revolution of the rotating ring. Plots and data are in {out}/. "
+        f"Report: {report.resolve()}  (one page, figures embedded; each run also has its own "
+        f"report.html and data in {out}/<run>/). Orders are per revolution of the rotating ring. "
         "Next: `runout check <case>` on your own bearing (see README, 'Five-minute tour')."
     )
 

@@ -18,7 +18,7 @@ from typing import Any
 from runout import __version__
 from runout.errors import RunoutError
 
-__all__ = ["build_report"]
+__all__ = ["build_combined_report", "build_report"]
 
 # Figure file name -> caption. Unknown PNGs are embedded too, captioned by their name.
 CAPTIONS = {
@@ -36,7 +36,7 @@ CAPTIONS = {
 STYLE = """
 body { font-family: -apple-system, 'Segoe UI', Helvetica, Arial, sans-serif; margin: 2em auto;
        max-width: 1100px; color: #1b1b1b; line-height: 1.4; padding: 0 1em; }
-h1 { font-size: 1.6em; border-bottom: 2px solid #2b5c8a; padding-bottom: .3em; }
+h1 { font-size: 1.6em; margin-top: 1.6em; border-bottom: 2px solid #2b5c8a; padding-bottom: .3em; }
 h2 { font-size: 1.25em; color: #2b5c8a; margin-top: 1.8em; }
 table { border-collapse: collapse; margin: .6em 0; font-size: .92em; }
 th, td { border: 1px solid #c9d3dd; padding: .25em .6em; text-align: left; vertical-align: top; }
@@ -92,7 +92,7 @@ def _kv_table(data: dict[str, Any], small_lengths_in_um: bool = False) -> str:
         name, scale, unit = _unit_of(key)
         if isinstance(value, int | float) and not isinstance(value, bool):
             shown = value * scale
-            if small_lengths_in_um and unit == "mm" and 0 < abs(shown) < 0.01:
+            if small_lengths_in_um and unit == "mm" and 0 < abs(shown) < 0.1:
                 shown, unit = value * 1e6, "µm"
             rows.append(
                 f"<tr><td>{_esc(name)}</td><td class='num'>{_fmt(shown)}</td>"
@@ -164,6 +164,51 @@ def build_report(directory: Path, output: Path | None = None) -> Path:
     RunoutError
         If the directory holds no ``result.json`` or ``study.json``.
     """
+    title, body = _report_body(Path(directory))
+    target = output or Path(directory) / "report.html"
+    target.write_text(_page(title, body), encoding="utf-8")
+    return target
+
+
+def build_combined_report(
+    directories: list[Path], output: Path, title: str = "runout report"
+) -> Path:
+    """One page holding the reports of several run directories, with a table of contents.
+
+    Parameters
+    ----------
+    directories : list of Path
+        Run directories (see :func:`build_report`).
+    output : Path
+        The HTML file to write.
+    title : str
+        Page title.
+    """
+    sections = []
+    toc = []
+    for k, directory in enumerate(directories, start=1):
+        run_title, body = _report_body(Path(directory))
+        toc.append(f"<li><a href='#run{k}'>{_esc(run_title)}</a></li>")
+        sections.append(
+            f"<section id='run{k}'>" + body.replace("<h1>", "<h1 class='run'>") + "</section>"
+        )
+    body = f"<h1>{_esc(title)}</h1><ol>{''.join(toc)}</ol>" + "".join(sections)
+    output.parent.mkdir(parents=True, exist_ok=True)
+    output.write_text(_page(title, body), encoding="utf-8")
+    return output
+
+
+def _page(title: str, body: str) -> str:
+    return (
+        "<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'>"
+        f"<title>{_esc(title)} — runout report</title><style>{STYLE}</style></head><body>\n"
+        + body
+        + "\n</body></html>\n"
+    )
+
+
+def _report_body(directory: Path) -> tuple[str, str]:
+    """Title and HTML body of the report of one run directory."""
     directory = Path(directory)
     if not directory.is_dir():
         raise RunoutError(f"{directory}: no such directory (run `runout run CASE --out DIR` first)")
@@ -187,8 +232,6 @@ def build_report(directory: Path, output: Path | None = None) -> Path:
     title = result.get("title") or study.get("title") or summary.get("title") or directory.name
     model = result.get("model") or study.get("model") or ""
     parts: list[str] = [
-        "<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'>",
-        f"<title>{_esc(title)} — runout report</title><style>{STYLE}</style></head><body>",
         f"<h1>{_esc(title)}</h1>",
         f"<p class='meta'>Model <b>{_esc(model or 'study')}</b> · runout {_esc(__version__)} · "
         f"generated {_dt.datetime.now(_dt.UTC).strftime('%Y-%m-%d %H:%M UTC')} · "
@@ -200,7 +243,7 @@ def build_report(directory: Path, output: Path | None = None) -> Path:
     if result.get("runout"):
         parts += ["<h2>Runout</h2>", _kv_table(result["runout"])]
     if summary.get("bearing"):
-        parts += ["<h2>Bearing (inputs)</h2>", _kv_table(summary["bearing"])]
+        parts += ["<h2>Bearing (inputs)</h2>", _kv_table(summary["bearing"], True)]
         material = summary["bearing"].get("material")
         if isinstance(material, dict):
             parts.append(_kv_table(material))
@@ -296,8 +339,4 @@ def build_report(directory: Path, output: Path | None = None) -> Path:
         parts += [f"<p class='note'>{_esc(n)}</p>" for n in notes]
     if case_text:
         parts += ["<h2>Case file</h2>", f"<pre>{_esc(case_text)}</pre>"]
-    parts.append("</body></html>")
-    page = "\n".join(p for p in parts if p)
-    target = output or directory / "report.html"
-    target.write_text(page, encoding="utf-8")
-    return target
+    return str(title), "\n".join(p for p in parts if p)
