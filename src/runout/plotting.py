@@ -6,6 +6,7 @@ numerics happen here.
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -15,16 +16,22 @@ if TYPE_CHECKING:
     from runout.results import RunResult
 
 __all__ = [
+    "animate_bearing",
     "plot_anderon_spectrum",
+    "plot_ball_loads",
     "plot_band_values",
     "plot_constraint_displacement",
     "plot_contact_pattern",
     "plot_density_waveform",
+    "plot_dynamic_figures",
+    "plot_dynamic_spectrum",
+    "plot_dynamic_sweep",
     "plot_linear_figures",
     "plot_lines",
     "plot_orbit",
     "plot_order_sweep",
     "plot_result",
+    "plot_study",
     "plot_time_history",
     "pyplot",
     "save_figure",
@@ -59,19 +66,170 @@ def plot_time_history(result: RunResult, ax: Any = None) -> Any:
     return ax
 
 
-def plot_orbit(result: RunResult, ax: Any = None) -> Any:
-    """Orbit (Lissajous figure) of the ring centre in the x-y plane, in nm."""
+def plot_orbit(result: RunResult, ax: Any = None, arrows: int = 6) -> Any:
+    """Orbit (Lissajous figure) of the ring centre in the x-y plane, in nm.
+
+    The look of seed 000 Figs. 4-7: equal aspect, a marker at the first instant and
+    ``arrows`` arrowheads along the path showing the sense of motion.
+    """
     plt = pyplot()
     if ax is None:
         _, ax = plt.subplots(figsize=(4.5, 4.5))
     x = (result.x - result.x.mean()) * 1e9
     y = (result.y - result.y.mean()) * 1e9
-    ax.plot(x, y, lw=0.6)
+    ax.plot(x, y, lw=0.6, color="C0")
+    if x.size >= 2:
+        ax.plot(x[0], y[0], "o", color="C3", ms=5, label="start", zorder=3)
+        n = x.size
+        for k in range(1, arrows + 1):
+            i = min(n - 2, int(k * n / (arrows + 1)))
+            ax.annotate(
+                "",
+                xy=(x[i + 1], y[i + 1]),
+                xytext=(x[i], y[i]),
+                arrowprops={"arrowstyle": "-|>", "color": "C3", "lw": 0.8, "mutation_scale": 10},
+            )
+        ax.legend(loc="upper right", fontsize=7)
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_xlabel("x [nm]")
     ax.set_ylabel("y [nm]")
     ax.grid(alpha=0.3)
     ax.set_title("orbit of the ring centre")
+    return ax
+
+
+def animate_bearing(
+    result: RunResult,
+    path: Path,
+    *,
+    n_elements: int | None = None,
+    frames: int = 120,
+    fps: int = 15,
+) -> Path:
+    """Write a GIF of the ring centre and the balls (the animation seed 000 §4 describes).
+
+    Left: the bearing seen along its axis, balls at their cage positions, a reference mark
+    turning with the rotating ring and the measured ring's centre displaced by its magnified
+    displacement; right: the orbit traced so far (nm, equal aspect). Frames are spread evenly
+    over the record (at most ``frames``, never more than 120).
+
+    Notes
+    -----
+    matplotlib draws the static parts once; the moving parts are drawn on that background
+    with Pillow (which matplotlib depends on) and the frames saved as a GIF by Pillow, the
+    library matplotlib's PillowWriter wraps. Redrawing the figure per frame through
+    PillowWriter costs about 0.15 s a frame; this takes a few milliseconds.
+
+    Parameters
+    ----------
+    result : RunResult
+        A time-history result (``time`` and ``displacement``).
+    path : Path
+        Output ``.gif`` file.
+    n_elements : int or None
+        Number of balls drawn; default ``result.extras["n_elements"]`` (else 8).
+    frames, fps : int
+        Number of frames (<= 120) and frames per second.
+
+    Returns
+    -------
+    Path
+    """
+    from PIL import Image, ImageDraw
+
+    plt = pyplot()
+    z = int(n_elements if n_elements is not None else result.extras.get("n_elements", 8))
+    n = result.time.size
+    count = max(2, min(frames, 120, n))
+    idx = np.linspace(0, n - 1, count).round().astype(int)
+    t = result.time
+    x = (result.x - result.x.mean()) * 1e9
+    y = (result.y - result.y.mean()) * 1e9
+    reach = max(float(np.hypot(x, y).max()), 1e-12)
+    magnify = 0.15 / reach  # largest excursion drawn at 15 % of the pitch radius
+    fc = result.frequencies.cage
+    fr = result.frequencies.rotation
+    fig, (ax, ax2) = plt.subplots(1, 2, figsize=(6.4, 3.2), dpi=70)
+    ax.set_xlim(-1.45, 1.45)
+    ax.set_ylim(-1.45, 1.45)
+    ax.set_aspect("equal")
+    ax.axis("off")
+    ax.add_patch(plt.Circle((0, 0), 1.3, fill=False, lw=1.5, color="0.3"))
+    ax.set_title("balls and ring centre (displacement magnified)", fontsize=7)
+    ax2.plot(x, y, lw=0.3, color="0.85")
+    ax2.set_aspect("equal", adjustable="datalim")
+    ax2.set_xlabel("x [nm]", fontsize=7)
+    ax2.set_ylabel("y [nm]", fontsize=7)
+    ax2.tick_params(labelsize=6)
+    ax2.set_title(result.title or "orbit", fontsize=7)
+    fig.tight_layout()
+    fig.canvas.draw()
+    background = np.asarray(fig.canvas.buffer_rgba())[..., :3].copy()
+    height = background.shape[0]
+
+    def px(a: Any, xs: np.ndarray, ys: np.ndarray) -> list[tuple[float, float]]:
+        pts = a.transData.transform(np.column_stack([xs, ys]))
+        return [(float(u), float(height - v)) for u, v in pts]
+
+    unit = float(ax.transData.transform((1.0, 0.0))[0] - ax.transData.transform((0.0, 0.0))[0])
+    r_ball = unit * min(0.28, 0.9 * math.sin(math.pi / z))
+    r_ring = unit * 0.7
+    plt.close(fig)
+    step = max(1, n // 1500)  # the trace is drawn with at most ~1500 points
+    images = []
+    for i in idx:
+        img = Image.fromarray(background)
+        draw = ImageDraw.Draw(img)
+        cx, cy = x[i] * magnify, y[i] * magnify
+        (c,) = px(ax, np.array([cx]), np.array([cy]))
+        draw.ellipse(
+            [c[0] - r_ring, c[1] - r_ring, c[0] + r_ring, c[1] + r_ring],
+            outline=(31, 119, 180),
+            width=2,
+        )
+        ang = 2 * math.pi * fr * t[i]
+        (m,) = px(ax, np.array([cx + 0.6 * math.cos(ang)]), np.array([cy + 0.6 * math.sin(ang)]))
+        draw.line([c, m], fill=(214, 39, 40), width=2)
+        th = 2 * np.pi * (fc * t[i] + np.arange(z) / z)
+        for b in px(ax, np.cos(th), np.sin(th)):
+            draw.ellipse(
+                [b[0] - r_ball, b[1] - r_ball, b[0] + r_ball, b[1] + r_ball],
+                fill=(150, 150, 150),
+                outline=(90, 90, 90),
+            )
+        trace = px(ax2, x[: i + 1 : step], y[: i + 1 : step]) + px(ax2, x[i : i + 1], y[i : i + 1])
+        if len(trace) >= 2:
+            draw.line(trace, fill=(31, 119, 180), width=1)
+        d = trace[-1]
+        draw.ellipse([d[0] - 3, d[1] - 3, d[0] + 3, d[1] + 3], fill=(214, 39, 40))
+        images.append(img.convert("P", palette=Image.Palette.ADAPTIVE, colors=32))
+    images[0].save(path, save_all=True, append_images=images[1:], duration=int(1000 / fps), loop=0)
+    return path
+
+
+def plot_ball_loads(
+    azimuth_deg: np.ndarray,
+    inner_load: np.ndarray,
+    outer_load: np.ndarray,
+    inner_angle_deg: np.ndarray,
+    outer_angle_deg: np.ndarray,
+    title: str = "",
+) -> Any:
+    """Ball loads [N] and contact angles [deg] against the ball's azimuth (equilibrium model)."""
+    plt = pyplot()
+    _, (ax, ax2) = plt.subplots(2, 1, figsize=(7, 5), sharex=True)
+    ax.plot(azimuth_deg, inner_load, "o-", ms=3, label="Q_i (inner)")
+    ax.plot(azimuth_deg, outer_load, "s--", ms=3, label="Q_o (outer)")
+    ax.set_ylabel("ball load [N]")
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3)
+    ax.set_title(f"{title}: ball loads and contact angles" if title else "ball loads")
+    ax2.plot(azimuth_deg, inner_angle_deg, "o-", ms=3, label="α_i")
+    ax2.plot(azimuth_deg, outer_angle_deg, "s--", ms=3, label="α_o")
+    ax2.set_xlabel("ball azimuth ψ [deg]")
+    ax2.set_ylabel("contact angle [deg]")
+    ax2.legend(fontsize=8)
+    ax2.grid(alpha=0.3)
     return ax
 
 
@@ -118,7 +276,18 @@ def plot_lines(result: RunResult, ax: Any = None, top: int = 8) -> Any:
     ax.margins(x=0.12)
     ax.set_xlabel("order [waves per revolution of the rotating ring]")
     ax.set_ylabel("peak-to-peak [nm]")
-    ax.legend(loc="best")
+    if ax.get_legend_handles_labels()[0]:
+        ax.legend(loc="best")
+    else:
+        ax.text(
+            0.5,
+            0.5,
+            "no lines above the solver's resolution",
+            transform=ax.transAxes,
+            ha="center",
+            va="center",
+            color="0.4",
+        )
     ax.grid(alpha=0.3)
     ax.set_title("spectral lines (largest labelled; full labels in lines.csv)")
     return ax
@@ -127,7 +296,9 @@ def plot_lines(result: RunResult, ax: Any = None, top: int = 8) -> Any:
 def plot_result(result: RunResult, directory: Path) -> list[Path]:
     """Save the standard figures of a result as PNG files in ``directory``."""
     plt = pyplot()
-    written = []
+    written: list[Path] = []
+    if result.time.size < 2:  # a single instant (equilibrium model): nothing to draw
+        return written
     for name, fn in (
         ("history.png", plot_time_history),
         ("orbit.png", plot_orbit),
@@ -326,3 +497,230 @@ def plot_order_sweep(
     ax.legend(loc="best", fontsize=8)
     ax.grid(alpha=0.3)
     return ax
+
+
+# --------------------------------------------------------------------------------------------
+# dynamic model (seed 003)
+# --------------------------------------------------------------------------------------------
+def plot_dynamic_spectrum(result: RunResult, ax: Any = None, f_max: float | None = None) -> Any:
+    """Hann amplitude spectrum (p-p, nm) of x and y with the largest fitted lines labelled.
+
+    The look of seed 003 Figs. 3-4 (FFT of the steady-state displacement), with our labels:
+    ball passage and its harmonics, unbalance, natural frequencies, waviness lines.
+    """
+    from runout.spectrum import amplitude_spectrum
+
+    plt = pyplot()
+    if ax is None:
+        _, ax = plt.subplots(figsize=(9, 4))
+    fs = 1.0 / float(result.time[1] - result.time[0])
+    spec = amplitude_spectrum(result.displacement[:2], sample_rate=fs)
+    fbp = float(result.extras.get("ball_passage_hz", fs / 10))
+    top = f_max if f_max is not None else min(0.5 * fs, 8.0 * fbp)
+    keep = spec.frequencies <= top
+    peak = 0.0
+    for k, name in enumerate("xy"):
+        ax.plot(spec.frequencies[keep], spec.pp[k, keep] * 1e9, lw=0.8, label=name)
+        peak = max(peak, float(spec.pp[k, keep].max()) * 1e9)
+    for c in result.lines(top=8):
+        if c.direction != "z" and c.frequency_hz <= top:
+            peak = max(peak, c.pp_m * 1e9)
+    ax.set_ylim(0.0, 1.2 * peak if peak > 0.0 else 1.0)
+    for c in result.lines(top=8):
+        if c.direction == "z" or c.frequency_hz > top:
+            continue
+        short = c.label.split(":")[0].split(";")[0].strip()
+        ax.annotate(
+            f"{short} ({c.direction})",
+            (c.frequency_hz, c.pp_m * 1e9),
+            xytext=(3, 3),
+            textcoords="offset points",
+            fontsize=7,
+        )
+    ax.set_xlabel("frequency [Hz]")
+    ax.set_ylabel("peak-to-peak [nm]")
+    ax.grid(alpha=0.3)
+    ax.legend(loc="upper right")
+    ax.set_title(f"{result.title or result.model}: spectrum of the rotor displacement")
+    return ax
+
+
+def plot_dynamic_figures(result: RunResult, directory: Path) -> list[Path]:
+    """``spectrum.png`` of a dynamic run (the standard figures are written separately)."""
+    plt = pyplot()
+    ax = plot_dynamic_spectrum(result)
+    ax.figure.tight_layout()
+    path = directory / "spectrum.png"
+    ax.figure.savefig(path, dpi=120)
+    plt.close(ax.figure)
+    return [path]
+
+
+def _sweep_panels(points: list[Any], key: str, title: str, path: Path) -> Path:
+    plt = pyplot()
+    n = len(points)
+    cols = 2 if n > 1 else 1
+    rows = (n + cols - 1) // cols
+    fig, axes = plt.subplots(rows, cols, figsize=(5.5 * cols, 2.4 * rows), squeeze=False)
+    for ax, pt in zip(axes.flat, points, strict=False):
+        f = np.asarray(pt.spectrum_hz)
+        pp = np.asarray(pt.spectrum_pp_m) * 1e9
+        ax.plot(f, pp, lw=0.8, color="C0")
+        for m in range(1, 4):
+            ax.axvline(m * pt.ball_passage_hz, color="C1", lw=0.6, ls="--")
+        for fn in pt.natural_frequencies_hz:
+            if fn <= (f.max() if f.size else 0.0):
+                ax.axvline(fn, color="C2", lw=0.6, ls=":")
+        label = f"Z = {pt.elements}" if key == "elements" else f"preload {pt.preload_n:g} N"
+        ax.set_title(
+            f"{label}: BPF {pt.ball_passage_hz:.4g} Hz, f_n "
+            + "/".join(f"{v:.4g}" for v in pt.natural_frequencies_hz)
+            + " Hz",
+            fontsize=8,
+        )
+        ax.set_ylabel("p-p [nm]", fontsize=8)
+        ax.tick_params(labelsize=7)
+        ax.grid(alpha=0.3)
+    for ax in axes.flat[n:]:
+        ax.set_visible(False)
+    for ax in axes[-1]:
+        ax.set_xlabel("frequency [Hz]", fontsize=8)
+    fig.suptitle(title + "  (dashed: 1-3 x ball passage; dotted: natural frequencies)", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def plot_dynamic_sweep(
+    points: list[Any], elements: list[int], preloads: list[float], out: Path, title: str = ""
+) -> list[Path]:
+    """Seed 003 Fig. 3/4-style panels of a sweep, and ``trend.png`` of the ball-passage line.
+
+    ``spectra_elements_P<p>N.png``: one panel per number of balls at each preload;
+    ``spectra_preload_Z<z>.png``: one panel per preload at each number of balls;
+    ``trend.png``: p-p of the ball-passage line along the measuring direction (log scale).
+    """
+    plt = pyplot()
+    written: list[Path] = []
+    if len(elements) > 1:
+        for p in preloads:
+            chosen = [pt for pt in points if pt.preload_n == p]
+            written.append(
+                _sweep_panels(
+                    chosen,
+                    "elements",
+                    f"{title}: effect of the number of balls (preload {p:g} N)",
+                    out / f"spectra_elements_P{p:g}N.png",
+                )
+            )
+    if len(preloads) > 1:
+        for z in elements:
+            chosen = [pt for pt in points if pt.elements == z]
+            written.append(
+                _sweep_panels(
+                    chosen,
+                    "preload",
+                    f"{title}: effect of the preload (Z = {z})",
+                    out / f"spectra_preload_Z{z}.png",
+                )
+            )
+    fig, axes = plt.subplots(1, 2, figsize=(10, 3.8))
+    for p in preloads:
+        chosen = [pt for pt in points if pt.preload_n == p]
+        axes[0].semilogy(
+            [pt.elements for pt in chosen],
+            [max(pt.ball_passage_pp_m, 1e-18) * 1e9 for pt in chosen],
+            "o-",
+            label=f"{p:g} N",
+        )
+    for z in elements:
+        chosen = [pt for pt in points if pt.elements == z]
+        axes[1].semilogy(
+            [pt.preload_n for pt in chosen],
+            [max(pt.ball_passage_pp_m, 1e-18) * 1e9 for pt in chosen],
+            "o-",
+            label=f"Z = {z}",
+        )
+    axes[0].set_xlabel("number of balls")
+    axes[1].set_xlabel("axial preload [N]")
+    for ax in axes:
+        ax.set_ylabel("ball-passage line p-p [nm]")
+        ax.grid(alpha=0.3, which="both")
+        ax.legend(fontsize=7)
+    fig.suptitle(f"{title}: ball-passage vibration", fontsize=10)
+    fig.tight_layout()
+    path = out / "trend.png"
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    written.append(path)
+    return written
+
+
+def plot_study(result: Any, directory: Path, top: int = 4) -> list[Path]:
+    """Figures of a :class:`runout.study.StudyResult` in ``directory``.
+
+    Monte Carlo: ``histograms.png`` (radial runout, NRRO and the ``top`` largest lines in x).
+    Sweep: ``sweep_<quantity>.png`` for each scalar swept quantity: every runout figure and the
+    ``top`` largest lines against it, one curve per model (other quantities at their points).
+    """
+    plt = pyplot()
+    written: list[Path] = []
+    lines = [row for row in result.line_table() if row[0] in ("x", "z")][:top]
+    ok = np.isfinite(result.runout["radial_pp_m"])
+    if result.kind == "montecarlo":
+        panels = [("radial runout", result.runout["radial_pp_m"][ok])]
+        panels.append(("NRRO", result.runout["nrro_pp_m"][ok]))
+        panels += [(f"{d} {f:.4g} Hz: {label}", pp[ok]) for d, f, label, pp in lines]
+        cols = 2
+        rows = (len(panels) + 1) // 2
+        fig, axes = plt.subplots(rows, cols, figsize=(10, 3.0 * rows), squeeze=False)
+        for ax, (name, values) in zip(axes.flat, panels, strict=False):
+            ax.hist(values * 1e9, bins=result.bins, color="tab:blue", alpha=0.8)
+            ax.set_title(name[:70], fontsize=8)
+            ax.set_xlabel("peak-to-peak [nm]")
+            ax.set_ylabel("bearings")
+            ax.grid(alpha=0.3)
+        for ax in list(axes.flat)[len(panels) :]:
+            ax.set_visible(False)
+        fig.suptitle(f"{result.title}: {result.samples} samples", fontsize=10)
+        fig.tight_layout()
+        path = directory / "histograms.png"
+        fig.savefig(path, dpi=110)
+        plt.close(fig)
+        return [path]
+    models = sorted(set(result.model))
+    for q in result.quantities:
+        values = result.values[q.key]
+        if q.size > 1 or not all(isinstance(v, int | float) for v in values):
+            continue
+        x = np.asarray(values, dtype=np.float64)
+        series = [(k, result.runout[k]) for k in ("radial_pp_m", "rro_pp_m", "nrro_pp_m")]
+        series += [(f"{d} {label}", pp) for d, _f, label, pp in lines]
+        fig, axes = plt.subplots(1, 2, figsize=(11, 4))
+        for m in models:
+            mask = np.array([mm == m for mm in result.model])
+            order = np.argsort(x[mask], kind="stable")
+            for k, (name, y) in enumerate(series):
+                ax = axes[0] if k < 3 else axes[1]
+                ax.plot(
+                    x[mask][order],
+                    y[mask][order] * 1e9,
+                    "o-",
+                    ms=3,
+                    label=f"{m}: {name}"[:60],
+                )
+        for ax, what in zip(axes, ("runout figures", "largest lines"), strict=True):
+            ax.set_xlabel(f"{q.key} [SI]")
+            ax.set_ylabel("peak-to-peak [nm]")
+            ax.set_title(what, fontsize=9)
+            ax.grid(alpha=0.3)
+            ax.legend(fontsize=6)
+        fig.suptitle(result.title, fontsize=10)
+        fig.tight_layout()
+        name = "".join(ch if ch.isalnum() or ch in "._-" else "_" for ch in q.key)
+        path = directory / f"sweep_{name}.png"
+        fig.savefig(path, dpi=110)
+        plt.close(fig)
+        written.append(path)
+    return written
