@@ -69,3 +69,57 @@ def bench_quasi_static_3d_tada_fig7() -> BenchResult:
         target="< 5 ms after compilation and >= 300x faster",
         met=ours_s < 5e-3 and ref_s / ours_s >= 300.0,
     )
+
+
+def bench_quasi_static_3d_cost_per_instant() -> BenchResult:
+    """Cost linear in the number of instants: time per instant at 2^12 ... 2^20 (Fig. 7 case).
+
+    Ours: the full solve (contact deviations + compiled kernel) at 2^20 instants, per instant.
+    Reference: the same at 2^12 instants, per instant. Linear cost means a ratio near 1.
+    Prints the time per instant at every size.
+    """
+    case = load_case(CASE)
+    st = qs3.setup(case)
+    per: dict[int, float] = {}
+    for p in (12, 14, 16, 18, 20):
+        n = 2**p
+        t = np.arange(n) * (0.8 / n)
+        best = best_time(lambda t=t: qs3.solve(case, t, st), repeat=3 if p < 18 else 1)
+        per[p] = best / n
+        print(f"  quasi_static_3d: 2^{p} instants, {per[p] * 1e6:.3f} us per instant")
+    ratio = per[20] / per[12]
+    return BenchResult(
+        name="quasi_static_3d per instant, 2^20 vs 2^12",
+        ours_s=per[20],
+        reference_s=per[12],
+        reference="same solve at 2^12 instants",
+        target="time per instant at 2^20 within 1.5x of 2^12 (linear cost)",
+        met=ratio < 1.5,
+    )
+
+
+def bench_cli_run_warm_start() -> BenchResult:
+    """Wall time of ``runout run examples/seed000_tada_fig7.toml --json`` on a warm cache.
+
+    Ours: the second of two calls (Numba's on-disk cache and Python's bytecode warm).
+    Reference: the first call.
+    """
+    import subprocess
+    import sys
+    import time
+
+    exe = Path(sys.executable).with_name("runout")
+    times = []
+    for _ in range(2):
+        t0 = time.perf_counter()
+        subprocess.run([str(exe), "run", str(CASE), "--json"], check=True, capture_output=True)
+        times.append(time.perf_counter() - t0)
+    print(f"  runout run --json: {times[0]:.2f} s, then {times[1]:.2f} s")
+    return BenchResult(
+        name="runout run seed000_tada_fig7 --json (warm)",
+        ours_s=times[1],
+        reference_s=times[0],
+        reference="first call",
+        target="< 2 s on a warm cache",
+        met=times[1] < 2.0,
+    )

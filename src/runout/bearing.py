@@ -310,6 +310,11 @@ class Operation:
         Radial load magnitude [N] (>= 0).
     radial_load_angle : float
         Direction of the radial load, counter-clockwise from +x [rad]. Default -π/2 (along -y).
+    moment_load : float
+        Magnitude of a tilting moment on the inner ring [N m] (>= 0); only the
+        ``equilibrium`` model uses it.
+    moment_load_angle : float
+        Direction of the moment vector in the x-y plane, counter-clockwise from +x [rad].
     """
 
     rotating_ring: RingName = "inner"
@@ -318,16 +323,18 @@ class Operation:
     axial_load: float = 0.0
     radial_load: float = 0.0
     radial_load_angle: float = -math.pi / 2
+    moment_load: float = 0.0
+    moment_load_angle: float = 0.0
 
     def __post_init__(self) -> None:
         if self.rotating_ring not in ("inner", "outer"):
             raise GeometryError(
                 "operation.rotating_ring", f'must be "inner" or "outer", got {self.rotating_ring!r}'
             )
-        for name in ("speed", "other_ring_speed", "radial_load_angle"):
+        for name in ("speed", "other_ring_speed", "radial_load_angle", "moment_load_angle"):
             if not math.isfinite(getattr(self, name)):
                 raise GeometryError(f"operation.{name}", "must be finite")
-        for name in ("axial_load", "radial_load"):
+        for name in ("axial_load", "radial_load", "moment_load"):
             value = getattr(self, name)
             if not (math.isfinite(value) and value >= 0.0):
                 raise GeometryError(f"operation.{name}", f"must be >= 0, got {value!r}")

@@ -74,6 +74,7 @@ AngleQ = Annotated[float, _quantity("angle")]
 Speed = Annotated[float, _quantity("speed")]
 Unbalance = Annotated[float, _quantity("mass_length")]
 Plain = Annotated[float, _quantity("dimensionless")]
+MomentQ = Annotated[float, _quantity("moment")]
 
 
 class _Table(BaseModel):
@@ -191,8 +192,14 @@ class OperationSpec(_Table):
     radial_load_direction: AngleQ = Field(
         -math.pi / 2, description="Direction of the radial load from +x [rad]; default -y."
     )
+    moment_load: MomentQ = Field(
+        0.0, description='Tilting moment on the inner ring [N m] (model = "equilibrium").'
+    )
+    moment_load_direction: AngleQ = Field(
+        0.0, description="Direction of the moment vector from +x [rad]; default +x."
+    )
 
-    @field_validator("axial_load", "radial_load")
+    @field_validator("axial_load", "radial_load", "moment_load")
     @classmethod
     def _non_negative(cls, value: float) -> float:
         if value < 0.0:
@@ -338,6 +345,14 @@ class AnalysisSpec(_Table):
             '"force_balance" (rings 1:1, element deviations 1/cos α).'
         ),
     )
+    race_control: Literal["outer", "inner", "none"] = Field(
+        "outer",
+        description=(
+            'model = "equilibrium" only: raceway that resists the gyroscopic moment by '
+            'friction ("outer": λ_o = 2, λ_i = 0; "inner": λ_i = 2, λ_o = 0; "none": no '
+            "gyroscopic moment in the ball balance; seed 001 eq. 3-4)."
+        ),
+    )
 
 
 class DynamicsSpec(_Table):
@@ -347,6 +362,20 @@ class DynamicsSpec(_Table):
     damping: Damping = Field(0.0, description="Viscous damping [N s/m].")
     unbalance: Unbalance = Field(0.0, description="Unbalance m e [kg m].")
     time_step: Time | None = Field(None, description="Integration step [s]; default automatic.")
+    axial_dof: bool = Field(
+        False,
+        description=(
+            "Also integrate the axial motion of the rotor under a constant axial force "
+            "(spring preload); false holds it at the preloaded position (seed 003)."
+        ),
+    )
+    contact_law: Literal["exact", "delta_star_table"] = Field(
+        "exact",
+        description=(
+            'Contact constant K_n: "exact" Hertz solution or "delta_star_table" '
+            "(δ* interpolated in seed 003 Table 1)."
+        ),
+    )
 
     @field_validator("mass")
     @classmethod
@@ -356,13 +385,228 @@ class DynamicsSpec(_Table):
         return value
 
 
+RawQuantity = int | float | str
+
+
+class VarySpec(_Table):
+    """``[study.vary]`` entry: how one case quantity is drawn (Monte Carlo) or swept.
+
+    The key is the quantity's path in the case file, quoted: ``"operation.axial_load"``,
+    ``"bearing.radial_clearance"``, ``"waviness[1].phase"``, ``"elements.diameter_errors"``
+    (an array key: every element drawn independently). Values carry units like the key they
+    replace.
+    """
+
+    distribution: Literal["normal", "uniform", "sample"] | None = Field(
+        None,
+        description=(
+            'Monte Carlo: "normal" (mean, std), "uniform" (low, high) or "sample" (draw with '
+            "replacement from the measured values)."
+        ),
+    )
+    mean: RawQuantity | None = Field(
+        None, description="Normal: mean; default the case's own value (0 if it has none)."
+    )
+    std: RawQuantity | None = Field(None, description="Normal: standard deviation (>= 0).")
+    low: RawQuantity | None = Field(None, description="Uniform: lower bound.")
+    high: RawQuantity | None = Field(None, description="Uniform: upper bound.")
+    values: list[RawQuantity] | None = Field(
+        None, description='"sample": the measured values; sweep: the list of values.'
+    )
+    start: RawQuantity | None = Field(None, description="Sweep: first value of a range.")
+    stop: RawQuantity | None = Field(None, description="Sweep: last value of a range.")
+    num: int | None = Field(None, ge=2, description="Sweep: number of values of a range.")
+    step: RawQuantity | None = Field(None, description="Sweep: step of a range (or num).")
+
+
+#: ``[study.vary]`` shorthands (Monte Carlo): key -> what it draws.
+STUDY_SHORTHANDS = {
+    "element_diameter_sigma": (
+        "standard deviation [m] of a normal error added to every element's diameter error"
+    ),
+}
+_MC_KEYS = {
+    "normal": ("mean", "std"),
+    "uniform": ("low", "high"),
+    "sample": ("values",),
+}
+_SWEEP_KEYS = ("values", "start", "stop", "num", "step")
+_VARY_KEYS = ("distribution", "mean", "std", "low", "high", *_SWEEP_KEYS)
+
+
+def study_paths() -> dict[str, list[str]]:
+    """Tables of a case file and their keys that a study may vary (for checks and hints)."""
+    out: dict[str, list[str]] = {}
+    for name, info in CaseSpec.model_fields.items():
+        table = _table_type(info.annotation)
+        if table is None or table is StudySpec:
+            continue
+        out[name] = list(table.model_fields)
+    return out
+
+
+def _array_tables() -> set[str]:
+    return {
+        name
+        for name, info in CaseSpec.model_fields.items()
+        if "list[" in str(info.annotation) and _table_type(info.annotation) is not None
+    }
+
+
+def parse_vary_key(key: str) -> tuple[str, int | None, str]:
+    """Split a ``[study.vary]`` key into (table, 1-based index or None, field); check names.
+
+    Raises
+    ------
+    ValueError
+        With a did-you-mean hint when the table or the key does not exist.
+    """
+    import re
+
+    match = re.fullmatch(r"([a-z_]+)(?:\[(\d+)\])?\.([a-z_]+)", key)
+    tables = study_paths()
+    if match is None:
+        known = [f"{t}.{f}" for t, fields in tables.items() for f in fields]
+        hint = difflib.get_close_matches(key, [*known, *STUDY_SHORTHANDS], n=1, cutoff=0.6)
+        suffix = f"; did you mean '{hint[0]}'?" if hint else ""
+        raise ValueError(
+            "not a quantity of the case: expected 'table.key' or 'table[i].key' (e.g. "
+            f"'operation.axial_load') or one of {sorted(STUDY_SHORTHANDS)}{suffix}"
+        )
+    table, index, name = match.group(1), match.group(2), match.group(3)
+    if table not in tables:
+        hint = difflib.get_close_matches(table, list(tables), n=1, cutoff=0.6)
+        suffix = f"; did you mean '{hint[0]}'?" if hint else ""
+        raise ValueError(f"the case has no table '{table}'{suffix}")
+    if name not in tables[table]:
+        hint = difflib.get_close_matches(name, tables[table], n=1, cutoff=0.6)
+        suffix = f"; did you mean '{table}.{hint[0]}'?" if hint else ""
+        raise ValueError(f"'{table}' has no key '{name}'{suffix}")
+    arrays = _array_tables()
+    if table in arrays and index is None:
+        raise ValueError(f"'{table}' is an array of tables: name one, e.g. '{table}[1].{name}'")
+    if table not in arrays and index is not None:
+        raise ValueError(f"'{table}' is a single table: write '{table}.{name}'")
+    position = int(index) if index is not None else None
+    if position is not None and position < 1:
+        raise ValueError("array entries are counted from 1")
+    return table, position, name
+
+
 class StudySpec(_Table):
-    """``[study]``: for ``runout study``."""
+    """``[study]``: for ``runout study`` (Monte Carlo over drawn quantities, or sweeps)."""
 
     kind: Literal["montecarlo", "sweep"] = Field(description='"montecarlo" or "sweep".')
-    samples: int = Field(100, ge=1, description="Number of Monte Carlo samples.")
-    seed: int = Field(0, description="Root seed.")
-    vary: dict[str, Any] = Field(default_factory=dict, description="Quantities to vary.")
+    samples: int = Field(100, ge=1, description="Number of Monte Carlo samples (bearings).")
+    seed: int = Field(
+        0, ge=0, description="Root seed: sample i draws from SeedSequence(seed, spawn_key=(i,))."
+    )
+    chunk_size: int = Field(
+        250, ge=1, description="Samples per task and per result file (--out, --resume)."
+    )
+    models: (
+        list[
+            Literal[
+                "linear",
+                "quasi_static_2d",
+                "quasi_static_3d",
+                "equilibrium",
+                "dynamic",
+                "roller_constraint",
+            ]
+        ]
+        | None
+    ) = Field(
+        None,
+        description=(
+            "Model ids to run (sweeps: one or several; Monte Carlo: one); default analysis.model."
+        ),
+    )
+    bins: int = Field(20, ge=1, description="Histogram bins of the Monte Carlo summary.")
+    vary: dict[str, VarySpec | RawQuantity] = Field(
+        default_factory=dict,
+        description=(
+            'Quantities to vary: "table.key" = {distribution = ...} (Monte Carlo) or '
+            "{values = [...]} or {start, stop, num or step} (sweep); shorthand "
+            'element_diameter_sigma = "0.1 um". Keys of each entry: docs/studies.md.'
+        ),
+    )
+
+    @model_validator(mode="after")
+    def _check_vary(self) -> StudySpec:
+        if not self.vary:
+            raise _KeyedError("vary", "name at least one quantity to vary")
+        if self.kind == "sweep" and "samples" in self.model_fields_set:
+            raise _KeyedError("samples", 'only applies to kind = "montecarlo"')
+        if self.kind == "montecarlo" and self.models is not None and len(self.models) != 1:
+            raise _KeyedError("models", "a Monte Carlo study runs one model")
+        if self.models is not None and not self.models:
+            raise _KeyedError("models", "name at least one model")
+        for key, entry in self.vary.items():
+            where = f"vary.{key}"
+            if key in STUDY_SHORTHANDS:
+                if self.kind != "montecarlo":
+                    raise _KeyedError(where, 'shorthands apply to kind = "montecarlo" only')
+                if isinstance(entry, VarySpec):
+                    raise _KeyedError(where, 'must be a length (e.g. "0.1 um"), not a table')
+                try:
+                    value = to_si(entry, "length")
+                except UnitError as exc:
+                    raise _KeyedError(where, str(exc)) from None
+                if not value >= 0.0:
+                    raise _KeyedError(where, f"must be >= 0, got {entry!r}")
+                continue
+            try:
+                parse_vary_key(key)
+            except ValueError as exc:
+                raise _KeyedError(where, str(exc)) from None
+            if not isinstance(entry, VarySpec):
+                raise _KeyedError(
+                    where,
+                    "must be a table: {distribution = ...} (Monte Carlo) or {values = [...]} "
+                    "(sweep)",
+                )
+            given = {k for k in _VARY_KEYS if getattr(entry, k) is not None}
+            if self.kind == "montecarlo":
+                _check_distribution(where, entry, given)
+            else:
+                _check_sweep(where, entry, given)
+        return self
+
+
+def _check_distribution(where: str, entry: VarySpec, given: set[str]) -> None:
+    if entry.distribution is None:
+        raise _KeyedError(f"{where}.distribution", 'required: "normal", "uniform" or "sample"')
+    allowed = {"distribution", *_MC_KEYS[entry.distribution]}
+    for extra in sorted(given - allowed):
+        raise _KeyedError(
+            f"{where}.{extra}", f'does not apply to distribution = "{entry.distribution}"'
+        )
+    required = {"normal": ("std",), "uniform": ("low", "high"), "sample": ("values",)}
+    for name in required[entry.distribution]:
+        if name not in given:
+            raise _KeyedError(
+                f"{where}.{name}", f'required for distribution = "{entry.distribution}"'
+            )
+    if entry.values is not None and not entry.values:
+        raise _KeyedError(f"{where}.values", "needs at least one value")
+
+
+def _check_sweep(where: str, entry: VarySpec, given: set[str]) -> None:
+    for extra in sorted(given - set(_SWEEP_KEYS)):
+        raise _KeyedError(f"{where}.{extra}", 'only applies to kind = "montecarlo"')
+    if "values" in given:
+        if given != {"values"}:
+            other = sorted(given - {"values"})[0]
+            raise _KeyedError(f"{where}.{other}", "give values or a range, not both")
+        if not entry.values:
+            raise _KeyedError(f"{where}.values", "needs at least one value")
+        return
+    for name in ("start", "stop"):
+        if name not in given:
+            raise _KeyedError(f"{where}.{name}", "required: give values = [...] or a range")
+    if ("num" in given) == ("step" in given):
+        raise _KeyedError(f"{where}.num", "give exactly one of num or step")
 
 
 class CaseSpec(_Table):
@@ -437,7 +681,9 @@ def _format_loc(loc: tuple[int | str, ...]) -> str:
     for part in loc:
         if isinstance(part, int):
             text += f"[{part + 1}]"
-        elif part.startswith("function-") or part in ("literal['random']",) or "[" in part:
+        elif (
+            part.startswith("function-") or part in ("literal['random']", "VarySpec") or "[" in part
+        ):
             continue
         else:
             text += f".{part}" if text else part
@@ -502,6 +748,7 @@ class Analysis:
     revolutions: float = 20.0
     samples: int = 4096
     linear_variant: str = "radial_spring"
+    race_control: str = "outer"
 
 
 @dataclass(frozen=True)
@@ -710,6 +957,8 @@ def parse_case(data: dict[str, Any], path: str = "<case>", base_dir: Path | None
             axial_load=spec.operation.axial_load,
             radial_load=spec.operation.radial_load,
             radial_load_angle=spec.operation.radial_load_direction,
+            moment_load=spec.operation.moment_load,
+            moment_load_angle=spec.operation.moment_load_direction,
         )
     except GeometryError as exc:
         raise CaseError(path, exc.key, exc.message) from None
@@ -724,6 +973,7 @@ def parse_case(data: dict[str, Any], path: str = "<case>", base_dir: Path | None
         revolutions=spec.analysis.revolutions,
         samples=spec.analysis.samples,
         linear_variant=spec.analysis.linear_variant,
+        race_control=spec.analysis.race_control,
     )
     return Case(
         path=path,

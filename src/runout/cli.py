@@ -252,6 +252,165 @@ def report_command(
     _out.print(f"wrote {escape(str(path))}")
 
 
+def _number_list(text: str | None, kind: type, name: str) -> list[Any]:
+    if text is None or not text.strip():
+        return []
+    try:
+        return [kind(part) for part in text.split(",") if part.strip()]
+    except ValueError:
+        raise typer.BadParameter(f"{name}: expected a comma-separated list, got {text!r}") from None
+
+
+@app.command("sweep-dynamic")
+@_guard
+def sweep_dynamic(
+    case_file: CaseArg,
+    elements: Annotated[
+        str | None, typer.Option("--elements", help="Numbers of balls, e.g. 5,7,8,10,12,15.")
+    ] = None,
+    preload: Annotated[
+        str | None, typer.Option("--preload", help="Axial preloads [N], e.g. 10,30,50,100.")
+    ] = None,
+    out: Annotated[
+        Path, typer.Option("--out", help="Directory for the panels, sweep.csv and points/.")
+    ] = Path("out/sweep-dynamic"),
+    as_json: JsonOpt = False,
+) -> None:
+    """Dynamic model (seed 003) over numbers of balls x preloads: Fig. 3/4-style spectra.
+
+    Finished points are kept in OUT/points/ and reused by a rerun of the same case.
+
+    Example: runout sweep-dynamic examples/seed003_purohit.toml --elements 5,7,8,10,12,15
+    --preload 10,30,50,100 --out out/purohit
+    """
+    from rich.progress import Progress
+
+    from runout.case import load_case
+    from runout.models.dynamic import sweep
+
+    case = load_case(case_file)
+    zs = _number_list(elements, int, "--elements")
+    ps = _number_list(preload, float, "--preload")
+    with Progress(console=_err, transient=True, disable=as_json) as bar:
+        task = bar.add_task("sweep", total=max(1, len(zs or [0]) * len(ps or [0])))
+
+        def tick(done: int, total: int, name: str) -> None:
+            bar.update(task, completed=done, total=total, description=name)
+
+        points = sweep(case, zs, ps, out, progress=tick)
+    if as_json:
+        _print_json({"points": [p.to_json() for p in points]})
+        return
+    table = Table(title=f"{case.title or case_file}: dynamic sweep", header_style="bold")
+    for col in ("balls", "preload [N]", "α_p [deg]", "BPF [Hz]", "f_n [Hz]", "BP line p-p [nm]"):
+        table.add_column(escape(col), justify="right")
+    for p in points:
+        table.add_row(
+            str(p.elements),
+            f"{p.preload_n:g}",
+            f"{p.contact_angle_deg:.4g}",
+            f"{p.ball_passage_hz:.5g}",
+            "/".join(f"{f:.5g}" for f in p.natural_frequencies_hz),
+            f"{p.ball_passage_pp_m * 1e9:.4g}",
+        )
+    _out.print(table)
+    _out.print(f"wrote {escape(str(out))}/ (sweep.csv, trend.png, spectra_*.png, points/)")
+
+
+@app.command("study")
+@_guard
+def study_command(
+    case_file: CaseArg,
+    as_json: JsonOpt = False,
+    out: Annotated[
+        Path | None,
+        typer.Option("--out", help="Directory for chunk files, manifest, summary, CSV and plots."),
+    ] = None,
+    workers: Annotated[
+        int, typer.Option("--workers", min=1, help="Local worker processes (1: in-process).")
+    ] = 1,
+    scheduler: Annotated[
+        str | None,
+        typer.Option(
+            "--scheduler", help="Dask scheduler tcp://HOST:PORT (or 'local' for a local cluster)."
+        ),
+    ] = None,
+    resume: Annotated[
+        bool, typer.Option("--resume", help="Continue an interrupted run recorded in --out.")
+    ] = False,
+    chunk_size: Annotated[
+        int | None, typer.Option("--chunk-size", min=1, help="Samples per task and result file.")
+    ] = None,
+) -> None:
+    """Run the case's [study]: Monte Carlo over drawn quantities or a sweep (docs/studies.md).
+
+    Example: runout study examples/seed001_kim_table9.toml --json --workers 2
+    """
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TimeRemainingColumn
+
+    from runout.case import load_case
+    from runout.study import dask_executor, run_study
+
+    if resume and out is None:
+        _fail("--resume needs --out DIR (the directory of the interrupted run)")
+    case = load_case(case_file)
+    if case.study is None:
+        _fail(f"{case_file}: study: the case has no [study] table (see docs/studies.md)")
+    executor = None
+    if scheduler is not None:
+        executor = dask_executor(None if scheduler == "local" else scheduler)
+    columns = (
+        "[progress.description]{task.description}",
+        BarColumn(),
+        MofNCompleteColumn(),
+        TimeRemainingColumn(),
+    )
+    with Progress(*columns, console=_err, transient=True, disable=not _err.is_terminal) as bar:
+        task = bar.add_task("samples", total=None)
+
+        def tick(done: int, total: int) -> None:
+            bar.update(task, completed=done, total=total)
+
+        result = run_study(
+            case,
+            executor=executor,
+            workers=workers,
+            out=out,
+            resume=resume,
+            progress=tick,
+            chunk_size=chunk_size,
+        )
+    if as_json:
+        _print_json(result.to_json())
+        return
+    summary = result.to_json()
+    table = Table(
+        title=f"{case.title or case_file}: {summary['kind']} of {summary['samples']} samples"
+        f" ({summary['failed']} failed)",
+        title_justify="left",
+        header_style="bold",
+    )
+    for col in ("quantity", "Hz", "mean [nm]", "std [nm]", "p5 [nm]", "p50 [nm]", "p95 [nm]"):
+        table.add_column(escape(col), justify="left" if col == "quantity" else "right")
+
+    def fmt(value: float | None) -> str:
+        return "-" if value is None else f"{value * 1e9:.4g}"
+
+    for name, stats in summary["runout"].items():
+        table.add_row(
+            escape(name), "", *(fmt(stats[k]) for k in ("mean", "std", "p5", "p50", "p95"))
+        )
+    for comp in summary["components"][:20]:
+        table.add_row(
+            escape(f"{comp['direction']} {comp['label']}"[:70]),
+            f"{comp['frequency_hz']:.5g}",
+            *(fmt(comp["pp_m"][k]) for k in ("mean", "std", "p5", "p50", "p95")),
+        )
+    _out.print(table)
+    if out is not None:
+        _out.print(f"wrote {escape(str(out))}/ (manifest.json, chunks/, summary.json, samples.csv)")
+
+
 def main() -> None:
     """Console-script entry point."""
     app()

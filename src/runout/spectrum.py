@@ -40,7 +40,6 @@ import numba
 import numpy as np
 import numpy.typing as npt
 import scipy.linalg
-import scipy.signal
 from numpy.typing import ArrayLike
 
 __all__ = [
@@ -210,6 +209,8 @@ def _window(window: str | tuple[object, ...] | ArrayLike | None, n: int) -> Floa
         if not np.all(np.isfinite(w)) or w.sum() <= 0:
             raise ValueError("window array must be finite with a positive sum")
         return w
+    import scipy.signal  # lazily: importing it costs about a second at start-up
+
     try:
         return np.asarray(scipy.signal.get_window(spec, n, fftbins=True), dtype=float)
     except (ValueError, TypeError) as exc:

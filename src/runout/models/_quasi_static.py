@@ -33,10 +33,12 @@ __all__ = [
     "ContactDeviations",
     "Kinematics",
     "PredictedLine",
+    "RunoutSplit",
     "contact_deviations",
     "fit_components",
     "predicted_lines",
     "runout_figures",
+    "split_runout",
     "synchronous_grid",
     "time_grid",
 ]
@@ -245,15 +247,69 @@ def _element_lines(index: int, h: Harmonics, kin: Kinematics, axial: bool) -> li
     return out
 
 
+#: Ring harmonics (largest first, per ring) paired for seed 000 eq. 7 sum/difference lines.
+MAX_PAIRED_HARMONICS = 24
+
+
+def _largest(h: Harmonics, count: int) -> list[int]:
+    keep = [(float(a), int(k)) for k, a in zip(h.orders, h.amplitudes, strict=True) if k > 0]
+    keep = [ka for ka in keep if ka[0] > 0.0]
+    keep.sort(reverse=True)
+    return sorted(k for _, k in keep[:count])
+
+
+def _pair_lines(imperfections: Imperfections, kin: Kinematics, axial: bool) -> list[PredictedLine]:
+    r"""Second-order lines of two ring harmonics (seed 000 §2.2.2, eq. 7).
+
+    The product of harmonic :math:`k_1` of part 1 (ring speed :math:`f_1`) and :math:`k_2` of
+    part 2 carries :math:`L = k_1 \pm k_2` lobes turning at :math:`k_1 f_1 \pm k_2 f_2`; the
+    ball set passes it to the radial direction when :math:`L + m = nZ` with m = ∓1 and to the
+    axial direction when m = 0, at :math:`|(L + m) f_c - (k_1 f_1 \pm k_2 f_2)|`. For an inner
+    waviness :math:`W_{ni}` and an outer :math:`W_{no}` with the outer ring rotating this is
+    Tada's eq. 7, :math:`|W_{no} f_r \mp n f_i|` (f_i = Z f_c). Pairs of two harmonics of the
+    same ring follow the same rule.
+    """
+    z = kin.n_elements
+    parts = [
+        ("inner", k, kin.inner) for k in _largest(imperfections.inner, MAX_PAIRED_HARMONICS)
+    ] + [("outer", k, kin.outer) for k in _largest(imperfections.outer, MAX_PAIRED_HARMONICS)]
+    out: list[PredictedLine] = []
+    for a in range(len(parts)):
+        for b in range(a + 1, len(parts)):
+            (p1, k1, f1), (p2, k2, f2) = parts[a], parts[b]
+            for sign in (1, -1):
+                lobes = k1 + sign * k2
+                turn = k1 * f1 + sign * k2 * f2
+                if lobes < 0:
+                    lobes, turn = -lobes, -turn
+                op = "+" if sign == 1 else "-"
+                for m in (-1, 0, 1):
+                    if (m == 0 and not axial) or (lobes + m) % z or (lobes == 0 and m != 0):
+                        continue
+                    n = (lobes + m) // z
+                    freq = abs((lobes + m) * kin.cage - turn)
+                    rule = f"nZ{'+1' if m == -1 else '-1' if m == 1 else ''}"
+                    label = (
+                        f"{p1} {k1} {op} {p2} {k2} lobes (|W {op} W|={lobes}={rule}, n={n}, "
+                        f"order 2, seed 000 eq. 7): |{lobes + m} f_c - ({k1} f_{p1[0]} {op} "
+                        f"{k2} f_{p2[0]})|"
+                    )
+                    out.append(PredictedLine("axial" if m == 0 else "radial", freq, label))
+    return out
+
+
 def predicted_lines(
-    imperfections: Imperfections, kin: Kinematics, *, axial: bool = True
+    imperfections: Imperfections,
+    kin: Kinematics,
+    *,
+    axial: bool = True,
+    second_order_pairs: bool = False,
 ) -> list[PredictedLine]:
     """Every line the single imperfections produce (first to third order), unmerged.
 
-    Notes
-    -----
-    Sum and difference lines of two ring wavinesses (seed 000 eq. 7) are not predicted; they
-    stay in the time history and in the runout figures but are not fitted as components.
+    With ``second_order_pairs`` the sum and difference lines of two ring harmonics (seed 000
+    eq. 7, :func:`_pair_lines`) are added, for the :data:`MAX_PAIRED_HARMONICS` largest
+    harmonics of each ring.
     """
     out: list[PredictedLine] = []
     for part, h in (("inner", imperfections.inner), ("outer", imperfections.outer)):
@@ -264,6 +320,8 @@ def predicted_lines(
         out += _element_lines(j, imperfections.element_diameter_deviation(j), kin, axial)
     if np.any(np.asarray(imperfections.pitch_errors) != 0.0):
         out.append(PredictedLine("radial", abs(kin.cage), "pitch errors: f_c"))
+    if second_order_pairs:
+        out += _pair_lines(imperfections, kin, axial)
     return out
 
 
@@ -337,6 +395,96 @@ def fit_components(
         comps = [c for c in comps if c.pp_m > floor]
     comps.sort(key=lambda c: -c.pp_m)
     return tuple(comps)
+
+
+#: Lines "explain" a record when the rms of what they leave is at most this fraction of the
+#: rms of the radial motion; RRO/NRRO then come from the lines (no averaging bias).
+LINE_RESIDUAL_MAX = 1e-3
+
+
+@dataclass(frozen=True)
+class RunoutSplit:
+    """Runout figures and how RRO/NRRO were separated.
+
+    Attributes
+    ----------
+    runout : Runout
+    method : {"lines", "synchronous_average", "none"}
+    residual : float
+        rms of the radial motion the fitted lines leave, over the rms of the radial motion
+        about its mean [-] (nan-free: 0 for a motionless record; 1 when no line was fitted).
+    """
+
+    runout: Runout
+    method: str
+    residual: float
+
+
+def split_runout(
+    time: NDArray[np.float64],
+    displacement: NDArray[np.float64],
+    direction: NDArray[np.float64],
+    lines: list[PredictedLine],
+    rotation_hz: float,
+    synchronous: tuple[NDArray[np.float64], int] | None,
+) -> RunoutSplit:
+    """RRO/NRRO from the labelled lines when they explain the record, else by averaging.
+
+    The radial lines are fitted to the radial signal (:func:`runout.spectrum.extract_lines`).
+    When the relative residual is at most :data:`LINE_RESIDUAL_MAX`, RRO p-p is the p-p over
+    one revolution of the sum of the integer-order lines and NRRO p-p the p-p over the record
+    of the sum of the others: exact, whereas a synchronous average over N revolutions keeps a
+    fraction of order 1/(N·dist(order, ℤ)) of every non-integer line (seed 001's cage line
+    would show up as RRO). Otherwise the synchronous average is used (:func:`runout_figures`)
+    and the residual is reported.
+    """
+    radial = direction[0] * displacement[0] + direction[1] * displacement[1]
+    base = runout_figures(displacement, direction, synchronous)
+    n = time.size
+    duration = n * (time[1] - time[0])
+    merged = _merge(lines, "radial", 0.5 / duration, 0.5 * n / duration * 0.999, 0.05 / duration)
+    centred = radial - radial.mean()
+    scale = float(np.sqrt(np.mean(centred**2)))
+    if scale == 0.0:
+        return RunoutSplit(base, "lines", 0.0)
+    if not merged:
+        return RunoutSplit(base, "synchronous_average" if synchronous else "none", 1.0)
+    freqs = np.array([f for f, _ in merged])
+    fit = extract_lines(time, radial, freqs)
+    residual = float(fit.residual_rms) / scale
+    if residual > LINE_RESIDUAL_MAX:
+        return RunoutSplit(base, "synchronous_average" if synchronous else "none", residual)
+    orders = freqs / rotation_hz
+    rep = np.abs(orders - np.round(orders)) < 1e-9
+    rro = nrro = 0.0
+    if rep.any():
+        spr = max(2048, int(16 * np.abs(orders[rep]).max()))
+        tr = np.arange(spr) / (spr * rotation_hz)
+        wr = 2.0 * math.pi * np.outer(freqs[rep], tr)
+        rro = float(np.ptp((fit.amplitude[rep, None] * np.cos(wr + fit.phase[rep, None])).sum(0)))
+    if (~rep).any():
+        wn = 2.0 * math.pi * np.outer(freqs[~rep], time)
+        nrro = float(
+            np.ptp((fit.amplitude[~rep, None] * np.cos(wn + fit.phase[~rep, None])).sum(0))
+        )
+    out = Runout(base.radial_pp_m, base.axial_pp_m, rro, nrro)
+    return RunoutSplit(out, "lines", residual)
+
+
+def runout_note(split: RunoutSplit, synchronous: bool) -> str:
+    """Readable note on how RRO/NRRO were obtained."""
+    if split.method == "lines":
+        return (
+            "RRO/NRRO from the labelled lines (integer orders = RRO); they explain the radial "
+            f"motion to {100 * split.residual:.2g} % rms"
+        )
+    if synchronous:
+        return (
+            "RRO/NRRO by synchronous averaging: the labelled lines leave "
+            f"{100 * split.residual:.3g} % rms of the radial motion unexplained (non-integer "
+            "lines bias the average by about 1/(revolutions x distance to an integer order))"
+        )
+    return "record shorter than 2 revolutions: RRO/NRRO not separated (reported 0)"
 
 
 def runout_figures(

@@ -29,8 +29,12 @@ Notes
 * Eq. 11-12 write the raceway radii as functions of the ball angle θ_k; for a rotating ring we
   evaluate its profile in the ring's frame, :math:`r(\theta_k - 2\pi f_{ring} t)`.
 * The shaft is the measured body: the displacement reported is the inner ring's centre
-  relative to the outer ring's (z = 0). External radial loads are not part of eq. 16-17 and are
-  rejected.
+  relative to the outer ring's (z = 0).
+* Extension beyond the paper: an external radial load F (``operation.radial_load`` along
+  ``radial_load_direction``) is put on the right-hand side of eq. 16-17,
+  :math:`\sum_k P_k(\cos\theta_k, \sin\theta_k) = F`, with the contact angle and δ_0 still
+  those of the axial preload (a planar model cannot change them); the measuring direction is
+  then the load's. Use ``equilibrium`` for the loaded contact angles.
 * Solver: Newton per instant (eq. 18) with a closed-form 2×2 solve, Armijo backtracking on the
   convex potential and warm start (:func:`solve_kernel`); :func:`solve_reference` is the
   vectorised NumPy version used in tests.
@@ -39,8 +43,9 @@ Notes
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
-from typing import Literal
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+from typing import Any, Literal
 
 import numba
 import numpy as np
@@ -56,7 +61,8 @@ from runout.models._quasi_static import (
     contact_deviations,
     fit_components,
     predicted_lines,
-    runout_figures,
+    runout_note,
+    split_runout,
     synchronous_grid,
     time_grid,
     unloaded_note,
@@ -64,7 +70,16 @@ from runout.models._quasi_static import (
 from runout.results import RunResult
 from runout.summary import operating_contact_angle
 
-__all__ = ["Setup", "approaches", "run", "setup", "solve", "solve_kernel", "solve_reference"]
+__all__ = [
+    "Setup",
+    "approaches",
+    "run",
+    "setup",
+    "solve",
+    "solve_kernel",
+    "solve_kernel_loaded",
+    "solve_reference",
+]
 
 MODEL = "quasi_static_2d"
 OK, TOO_FEW_LOADED, SINGULAR, NOT_CONVERGED = 0, 1, 2, 3
@@ -79,8 +94,8 @@ ElementProjection = Literal["none", "radial"]
 
 
 @numba.njit(cache=True)
-def _potential(c, cth, sth, k, q0, q1):
-    e = 0.0
+def _potential(c, cth, sth, k, q0, q1, force):
+    e = -(force[0] * q0 + force[1] * q1)
     for j in range(c.size):
         d = 2.0 * c[j] + q0 * cth[j] + q1 * sth[j]
         if d > 0.0:
@@ -90,7 +105,19 @@ def _potential(c, cth, sth, k, q0, q1):
 
 @numba.njit(cache=True)
 def solve_kernel(c, theta, k, d_ref, max_iter):
-    """Newton solve of seed 001 eq. 16-17 at every instant (compiled).
+    """Newton solve of seed 001 eq. 16-17 at every instant, no external load (compiled).
+
+    :func:`solve_kernel_loaded` with a zero force; same parameters and returns.
+    """
+    return solve_kernel_loaded(c, theta, k, d_ref, max_iter, np.zeros(2))
+
+
+@numba.njit(cache=True)
+def solve_kernel_loaded(c, theta, k, d_ref, max_iter, force):
+    r"""Newton solve of seed 001 eq. 16-17 with a radial load at every instant (compiled).
+
+    Solves :math:`\sum_k P_k(\cos\theta_k, \sin\theta_k) = F` (eq. 16-17 with the radial
+    load F on the right-hand side; F = 0 is the paper's case).
 
     Parameters
     ----------
@@ -105,6 +132,8 @@ def solve_kernel(c, theta, k, d_ref, max_iter):
         above 1e-4·d_ref (quadratic range below).
     max_iter : int
         Newton iterations per instant.
+    force : ndarray, shape (2,)
+        External radial load on the shaft (F_x, F_y) [N].
 
     Returns
     -------
@@ -132,8 +161,8 @@ def solve_kernel(c, theta, k, d_ref, max_iter):
             sth[j] = math.sin(theta[i, j])
         converged = False
         for _ in range(max_iter):
-            f0 = 0.0
-            f1 = 0.0
+            f0 = -force[0]
+            f1 = -force[1]
             h00 = h01 = h11 = 0.0
             for j in range(z):
                 d = 2.0 * ci[j] + q0 * cth[j] + q1 * sth[j]  # total approach 2 δ_k
@@ -157,9 +186,9 @@ def solve_kernel(c, theta, k, d_ref, max_iter):
             slope = f0 * s0 + f1 * s1
             step = 1.0
             big = max(abs(s0), abs(s1)) > 1e-4 * d_ref
-            e0 = _potential(ci, cth, sth, k, q0, q1) if big else 0.0
+            e0 = _potential(ci, cth, sth, k, q0, q1, force) if big else 0.0
             for _ls in range(40 if big else 0):
-                e1 = _potential(ci, cth, sth, k, q0 + step * s0, q1 + step * s1)
+                e1 = _potential(ci, cth, sth, k, q0 + step * s0, q1 + step * s1, force)
                 if e1 <= e0 + 1e-4 * step * slope or step * max(abs(s0), abs(s1)) < tol:
                     break
                 step *= 0.5
@@ -188,8 +217,13 @@ def solve_reference(
     *,
     tol: float,
     max_iter: int = MAX_ITER,
+    force: NDArray[np.float64] | None = None,
+    stiffness: float = 1.0,
 ) -> NDArray[np.float64]:
     """Vectorised NumPy Newton solve of eq. 16-18 at all instants (reference for tests).
+
+    ``force`` is the external radial load (F_x, F_y) [N] (default none) and ``stiffness``
+    C_k = K_n [N/m^1.5] (only matters with a load: without one the balance is homogeneous).
 
     Returns
     -------
@@ -199,18 +233,20 @@ def solve_reference(
     nvec = np.stack([np.cos(theta), np.sin(theta)], axis=-1)
     q = np.zeros((c.shape[0], 2))
 
-    def force(qq: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    load = np.zeros(2) if force is None else np.asarray(force, dtype=np.float64)
+
+    def residual(qq: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
         d = np.maximum(2.0 * c + np.einsum("nzk,nk->nz", nvec, qq), 0.0)
-        return np.einsum("nz,nzk->nk", d**1.5, nvec), d
+        return np.einsum("nz,nzk->nk", stiffness * d**1.5, nvec) - load, d
 
     for _ in range(max_iter):
-        f, d = force(q)
-        h = np.einsum("nz,nzk,nzl->nkl", 1.5 * np.sqrt(d), nvec, nvec)
+        f, d = residual(q)
+        h = np.einsum("nz,nzk,nzl->nkl", 1.5 * stiffness * np.sqrt(d), nvec, nvec)
         s = -np.linalg.solve(h, f[..., None])[..., 0]
         step = np.ones(q.shape[0])
         norm0 = np.linalg.norm(f, axis=1)
         for _ls in range(30):
-            f1, _ = force(q + step[:, None] * s)
+            f1, _ = residual(q + step[:, None] * s)
             worse = np.linalg.norm(f1, axis=1) > norm0
             if not worse.any():
                 break
@@ -229,6 +265,7 @@ class Setup:
     stiffness: float
     initial_approach: float
     kinematics: Kinematics
+    force: NDArray[np.float64] = field(default_factory=lambda: np.zeros(2))
 
 
 def setup(case: object) -> Setup:
@@ -242,12 +279,6 @@ def setup(case: object) -> Setup:
             "operation.axial_load",
             "the quasi_static_2d model needs an axial preload > 0 N to set the initial "
             "deflection (seed 001, text after eq. 18)",
-        )
-    if op.radial_load > 0.0:
-        raise GeometryError(
-            "operation.radial_load",
-            "the quasi_static_2d model (seed 001 eq. 16-17) has no external radial load; "
-            "use quasi_static_3d",
         )
     alpha, loading = operating_contact_angle(bearing, op)
     if loading is None or bearing.contact_angle is not None:
@@ -263,7 +294,9 @@ def setup(case: object) -> Setup:
         rotating_ring=op.rotating_ring,
         n_elements=bearing.n_elements,
     )
-    return Setup(alpha, kn, d0, kin)
+    beta = op.radial_load_angle
+    force = np.array([op.radial_load * math.cos(beta), op.radial_load * math.sin(beta)])
+    return Setup(alpha, kn, d0, kin, force)
 
 
 def approaches(
@@ -295,8 +328,8 @@ def solve(
     """
     st = setup(case) if st is None else st
     c, theta = approaches(case, st, time, element_projection)
-    q, unloaded, status, instant = solve_kernel(
-        c, theta, st.stiffness, st.initial_approach, MAX_ITER
+    q, unloaded, status, instant = solve_kernel_loaded(
+        c, theta, st.stiffness, st.initial_approach, MAX_ITER, st.force
     )
     if status != OK:
         cause, t = _CAUSES[int(status)], float(time[int(instant)])
@@ -310,6 +343,17 @@ def solve(
     return disp, unloaded
 
 
+def _animation_writer(result: RunResult) -> Any:
+    """Writer of ``bearing.gif`` (orbit and balls; :func:`runout.plotting.animate_bearing`)."""
+
+    def write(directory: Path) -> list[Path]:
+        from runout import plotting
+
+        return [plotting.animate_bearing(result, directory / "bearing.gif")]
+
+    return write
+
+
 def run(case: object) -> RunResult:
     """Run the quasi-static 2-D model (seed 001) on a case."""
     st = setup(case)
@@ -317,23 +361,32 @@ def run(case: object) -> RunResult:
     op = case.operation  # type: ignore[attr-defined]
     t = time_grid(op.speed, an.revolutions, an.samples)
     disp, unloaded = solve(case, t, st)
-    u = np.array([1.0, 0.0])
+    u = (
+        np.array([math.cos(op.radial_load_angle), math.sin(op.radial_load_angle)])
+        if op.radial_load > 0.0
+        else np.array([1.0, 0.0])
+    )
     grid = synchronous_grid(op.speed, an.revolutions, an.samples)
     sync = None
     if grid is not None:
         ts, spr = grid
         ds = disp if np.array_equal(ts, t) else solve(case, ts, st)[0]
-        sync = (ds[0], spr)
-    lines = predicted_lines(case.imperfections, st.kinematics, axial=False)  # type: ignore[attr-defined]
+        sync = (u[0] * ds[0] + u[1] * ds[1], spr)
+    lines = predicted_lines(
+        case.imperfections,  # type: ignore[attr-defined]
+        st.kinematics,
+        axial=False,
+        second_order_pairs=True,
+    )
     comps = fit_components(t, disp, lines, op.speed, directions=("x", "y"))
+    split = split_runout(t, disp, u, lines, op.speed, sync)
     notes = [
         unloaded_note(unloaded, st.kinematics.n_elements),
         "displacement: shaft (inner-ring) centre relative to the outer ring, planar model "
         "(seed 001 eq. 10-17)",
     ]
-    if grid is None:
-        notes.append("record shorter than 2 revolutions: RRO/NRRO not separated (reported 0)")
-    return RunResult(
+    notes.append(runout_note(split, grid is not None))
+    result = RunResult(
         model=MODEL,
         title=case.title,  # type: ignore[attr-defined]
         frequencies=bearing_frequencies(case.bearing, op, st.contact_angle),  # type: ignore[attr-defined]
@@ -341,11 +394,15 @@ def run(case: object) -> RunResult:
         time=t,
         displacement=disp,
         components=comps,
-        runout=runout_figures(disp, u, sync),
+        runout=split.runout,
         measuring_direction=u,
         extras={
             "initial_approach_m": st.initial_approach,
             "unloaded_balls_max": int(unloaded.max()),
+            "n_elements": st.kinematics.n_elements,
+            "rro_method": split.method,
+            "line_fit_residual": split.residual,
         },
         notes=tuple(notes),
     )
+    return replace(result, writers=(_animation_writer(result),))

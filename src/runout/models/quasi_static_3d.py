@@ -54,7 +54,9 @@ Notes
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from pathlib import Path
+from typing import Any
 
 import numba
 import numpy as np
@@ -69,7 +71,8 @@ from runout.models._quasi_static import (
     contact_deviations,
     fit_components,
     predicted_lines,
-    runout_figures,
+    runout_note,
+    split_runout,
     synchronous_grid,
     time_grid,
     unloaded_note,
@@ -460,6 +463,17 @@ def time_grid_of(case: object) -> NDArray[np.float64]:
     return time_grid(case.operation.speed, an.revolutions, an.samples)  # type: ignore[attr-defined]
 
 
+def _animation_writer(result: RunResult) -> Any:
+    """Writer of ``bearing.gif`` (orbit and balls; :func:`runout.plotting.animate_bearing`)."""
+
+    def write(directory: Path) -> list[Path]:
+        from runout import plotting
+
+        return [plotting.animate_bearing(result, directory / "bearing.gif")]
+
+    return write
+
+
 def run(case: object) -> RunResult:
     """Run the quasi-static 3-D model (seed 000) on a case."""
     st = setup(case)
@@ -478,17 +492,21 @@ def run(case: object) -> RunResult:
         ts, spr = grid
         ds = disp if ts.size == t.size and np.array_equal(ts, t) else solve(case, ts, st)[0]
         sync = (u[0] * ds[0] + u[1] * ds[1], spr)
-    lines = predicted_lines(case.imperfections, st.kinematics)  # type: ignore[attr-defined]
+    lines = predicted_lines(
+        case.imperfections,  # type: ignore[attr-defined]
+        st.kinematics,
+        second_order_pairs=True,
+    )
     comps = fit_components(t, disp, lines, op.speed)
+    split = split_runout(t, disp, u, lines, op.speed, sync)
     notes = [
         unloaded_note(unloaded, st.kinematics.n_elements),
         "displacement: outer-ring centre relative to the inner ring; contact angle fixed at "
         "its preloaded value (seed 000)",
     ]
-    if grid is None:
-        notes.append("record shorter than 2 revolutions: RRO/NRRO not separated (reported 0)")
+    notes.append(runout_note(split, grid is not None))
     bearing = case.bearing  # type: ignore[attr-defined]
-    return RunResult(
+    result = RunResult(
         model=MODEL,
         title=case.title,  # type: ignore[attr-defined]
         frequencies=bearing_frequencies(bearing, op, st.contact_angle),
@@ -496,11 +514,15 @@ def run(case: object) -> RunResult:
         time=t,
         displacement=disp,
         components=comps,
-        runout=runout_figures(disp, u, sync),
+        runout=split.runout,
         measuring_direction=u,
         extras={
             "preload_approach_m": st.preload,
             "unloaded_balls_max": int(unloaded.max()),
+            "n_elements": st.kinematics.n_elements,
+            "rro_method": split.method,
+            "line_fit_residual": split.residual,
         },
         notes=tuple(notes),
     )
+    return replace(result, writers=(_animation_writer(result),))

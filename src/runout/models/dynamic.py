@@ -1,0 +1,1613 @@
+r"""Dynamic model of a rigid rotor on the Hertz contacts of a ball bearing (seed 003).
+
+Purohit & Purohit (2006) treat the shaft and inner ring as a rigid mass m on Z massless,
+compression-only Hertz springs with radial clearance, viscous damping c, a constant radial
+load W and an unbalance force at shaft speed (seed 003 eq. 2.1–2.5, 2.16), and integrate the
+equations of motion with Newmark-β and Newton–Raphson (§3). This module implements that model
+on the product's shared descriptions, extends it with an exact contact geometry for an
+axially preloaded bearing (eq. 2.21–2.22), an optional axial degree of freedom and the
+waviness of both raceways and of the balls, and analyses the steady state like the
+quasi-static models.
+
+Contact model
+-------------
+The moving body is the inner ring with the shaft; the outer ring is fixed (seed 003
+assumption 2). Its centre is at :math:`q = (x, y, z)` from the outer ring's, z axial (z is
+held at 0 unless ``[dynamics] axial_dof = true``). Ball j sits at
+:math:`\theta_j(t) = 2\pi f_c t + 2\pi j/Z + \epsilon_j` (eq. 2.18, pitch error ε_j). In the
+plane through the bearing axis and ball j, the groove curvature centres are a distance
+
+.. math:: s_j = \sqrt{(A + g_j)^2 + (z_p + z)^2}
+
+apart, with :math:`A = (f_i + f_o - 1)D` (eq. 2.22), the radial gap
+:math:`g_j = -P_d/2 + x\cos\theta_j + y\sin\theta_j + W_{ij} - W_{oj}` and :math:`z_p` the
+axial offset of the rings under the preload alone. The contact approach and load are
+
+.. math::
+    \delta_j = s_j - A + w_{bj}, \qquad Q_j = K_n[\delta_j]_+^{3/2}
+
+(eq. 2.1), acting along the unit normal :math:`n_j = ((A+g_j)\cos\theta_j,
+(A+g_j)\sin\theta_j, z_p + z)/s_j`. :math:`W_{ij}, W_{oj}` are the raceway radius deviations
+at the ball (inner: material added positive; outer: radius larger positive) and
+:math:`w_{bj}` the ball's diameter deviation along its contact line (seed 002 eq. 26), as in
+:mod:`runout.models._quasi_static`. Without preload and waviness (:math:`z_p = z = 0`) this
+is exactly :math:`\delta_j = x\cos\theta_j + y\sin\theta_j - P_d/2`, seed 003 eq. 2.3–2.4
+with γ = P_d/2.
+
+Equations of motion (eq. 2.16, derived)
+---------------------------------------
+
+.. math::
+    m\ddot q + c\dot q + \sum_j Q_j n_j = F_r e_\beta + F_a e_z
+        + F_u (\cos\Omega t, \sin\Omega t, 0),
+
+with the radial load :math:`F_r` along :math:`e_\beta = (\cos\beta, \sin\beta, 0)`
+(``Operation.radial_load_angle``, default −y), :math:`F_u = m_u e\,\Omega^2` the unbalance
+force at the inner ring's angular speed Ω and :math:`F_a` the axial preload (axial degree of
+freedom only). With only x, y the z row is dropped.
+
+Notes
+-----
+* Extraction errors in seed 003: eq. 2.16 lost the accelerations and velocities ("m k + c k");
+  it puts W in the x equation, i.e. the paper's x axis points along the load, while our load
+  is along −y by default, so the paper's x is our −y. The contact constant of eq. 2.11–2.15 is
+  wrong in the source (see docs/_fragments/validation_contact.md); K_n comes from
+  :func:`runout.contact.ball_race_contacts` (``contact_law = "exact"``) or from the paper's
+  δ* table (``"delta_star_table"``, :func:`runout.contact.stiffness_from_delta_star_table`),
+  at the preloaded contact angle.
+* Eq. 2.21 is the zero-clearance case of Harris's load-angle relation; we solve the full
+  relation with clearance, :math:`F_a = Z K_n (A\cos\alpha^0/\cos\alpha_p - A)^{3/2}
+  \sin\alpha_p`, with K_n of the chosen law at α_p (for the exact law this is
+  :func:`runout.loading.axial_loading`). Then :math:`z_p = A\cos\alpha^0\tan\alpha_p`.
+* Departures from the paper: the contact normal turns with the motion (exact curvature-centre
+  geometry instead of a fixed angle); z is optional; waviness of both raceways and of the
+  balls, ball size and pitch errors are included; the cage and spin rates use α_p. The
+  ``[bearing] contact_angle`` key, if given, is read as the free contact angle α⁰ (the
+  clearance then follows from it).
+* Newmark-β (average acceleration, β = 1/4, γ = 1/2) with a Newton–Raphson iteration on the
+  tangent stiffness per step (:func:`newmark_kernel`, compiled; :func:`newmark_reference` is a
+  NumPy version for tests). The default step gives :data:`STEPS_PER_PERIOD` steps per period of
+  the highest linearised natural frequency and divides the output interval.
+* The transient is detected, not assumed (:func:`integrate`): blocks of whole revolutions
+  are integrated until the free vibration near the linearised natural frequencies has decayed
+  below :data:`SETTLE_TOL` of the response (or has stopped decaying).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import math
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Literal
+
+import numba
+import numpy as np
+from numpy.typing import NDArray
+from scipy.optimize import brentq
+
+from runout.bearing import BallBearing
+from runout.contact import (
+    ball_race_contacts,
+    ball_race_curvature,
+    combined_stiffness,
+    stiffness_from_delta_star_table,
+)
+from runout.errors import ConvergenceError, GeometryError, NumericalError
+from runout.imperfections import pack_harmonics
+from runout.kinematics import ball_spin_frequency, bearing_frequencies, cage_frequency
+from runout.models._quasi_static import (
+    Kinematics,
+    PredictedLine,
+    predicted_lines,
+    runout_figures,
+)
+from runout.results import Component, RunResult
+from runout.spectrum import amplitude_spectrum, extract_lines
+
+__all__ = [
+    "STEPS_PER_PERIOD",
+    "DynamicSetup",
+    "Integration",
+    "contact_forces",
+    "contact_stiffness",
+    "energy",
+    "integrate",
+    "linearised_natural_frequencies",
+    "newmark_kernel",
+    "newmark_reference",
+    "preloaded_contact_angle",
+    "rhs_first_order",
+    "run",
+    "setup",
+    "static_equilibrium",
+    "static_kernel",
+    "static_reference",
+    "sweep",
+]
+
+MODEL = "dynamic"
+TWO_PI = 2.0 * math.pi
+ContactLaw = Literal["exact", "delta_star_table"]
+
+#: Default number of Newmark steps per period of the highest linearised natural frequency.
+STEPS_PER_PERIOD = 200
+#: Transient is over when the free vibration is below this fraction of the response p-p.
+SETTLE_TOL = 1e-3
+#: Newton step tolerance relative to the reference approach.
+NEWTON_RTOL = 1e-12
+#: Lines below this fraction of the reference approach are solver noise (1000 × tolerance).
+NOISE = 1e-9
+MAX_ITER = 50
+#: Most steps a single run may take (transient + analysis) before giving up.
+MAX_STEPS = 50_000_000
+
+# kernel status codes
+OK, NOT_CONVERGED, BLOWUP, NOT_FINITE = 0, 1, 2, 3
+_CAUSES = {
+    NOT_CONVERGED: "Newton-Raphson iteration of the Newmark step did not converge",
+    BLOWUP: "the rotor left the bearing (displacement beyond half the groove-centre distance A)",
+    NOT_FINITE: "non-finite displacement (numerical blow-up)",
+}
+
+# indices of the scalar parameter vector of the kernels
+P_H, P_M, P_C, P_A, P_G0, P_ZP, P_K = 0, 1, 2, 3, 4, 5, 6
+P_WC, P_WI, P_WO, P_WB = 7, 8, 9, 10
+P_FU, P_WU, P_FX, P_FY, P_FZ, P_TOL = 11, 12, 13, 14, 15, 16
+N_PAR = 17
+
+
+# --------------------------------------------------------------------------------------------
+# set-up
+# --------------------------------------------------------------------------------------------
+def _law_stiffness(bearing: BallBearing, alpha: float, law: str) -> float:
+    """K_n [N/m^1.5] at contact angle α by the exact Hertz solution or the δ* table."""
+    if law == "exact":
+        return float(ball_race_contacts(bearing, alpha).combined_stiffness)
+    if law == "delta_star_table":
+        ep = bearing.material.effective_modulus
+        ks = []
+        for race, f in (("inner", bearing.inner_conformity), ("outer", bearing.outer_conformity)):
+            s, fr = ball_race_curvature(
+                bearing.ball_diameter,
+                bearing.pitch_diameter,
+                f,
+                alpha,
+                race,  # type: ignore[arg-type]
+            )
+            ks.append(float(stiffness_from_delta_star_table(s, fr, ep)))
+        return float(combined_stiffness(ks[0], ks[1]))
+    raise GeometryError("dynamics.contact_law", f'must be "exact" or "delta_star_table": {law!r}')
+
+
+def preloaded_contact_angle(
+    bearing: BallBearing, preload: float, free_contact_angle: float, law: str = "exact"
+) -> tuple[float, float]:
+    r"""Contact angle α_p [rad] and K_n [N/m^1.5] of a bearing under an axial preload.
+
+    Solves (seed 003 eq. 2.21–2.22 with clearance, see module Notes)
+
+    .. math:: P_l = Z K_n(\alpha_p)\,\big(A\cos\alpha^0/\cos\alpha_p - A\big)^{3/2}\sin\alpha_p
+
+    by Brent's method on :math:`[\alpha^0, 90°)`, with K_n of ``law`` at α_p.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+    preload : float
+        Axial preload P_l [N] (>= 0); 0 returns α⁰.
+    free_contact_angle : float
+        α⁰ [rad].
+    law : {"exact", "delta_star_table"}
+    """
+    a = bearing.curvature_distance
+    z = bearing.n_elements
+    if preload <= 0.0:
+        return free_contact_angle, _law_stiffness(bearing, free_contact_angle, law)
+
+    def residual(alpha: float) -> float:
+        stretch = max(math.cos(free_contact_angle) / math.cos(alpha) - 1.0, 0.0)
+        k = _law_stiffness(bearing, alpha, law)
+        return z * k * (a * stretch) ** 1.5 * math.sin(alpha) / preload - 1.0
+
+    hi = 0.5 * math.pi * (1.0 - 1e-6)
+    alpha = float(brentq(residual, free_contact_angle, hi, xtol=1e-15, rtol=8.9e-16))
+    return alpha, _law_stiffness(bearing, alpha, law)
+
+
+@dataclass(frozen=True)
+class DynamicSetup:
+    """Everything the integration needs, derived from a case (SI).
+
+    Attributes
+    ----------
+    mass, damping : float
+        m [kg], c [N s/m].
+    ndof : int
+        2 (x, y) or 3 (x, y, z).
+    curvature_distance : float
+        A [m].
+    radial_gap : float
+        g_0 = A(cos α⁰ − 1) = −(radial play) [m].
+    axial_offset : float
+        z_p [m].
+    stiffness : float
+        K_n [N/m^1.5].
+    contact_angle : float
+        α_p [rad] (kinematics).
+    free_contact_angle : float
+        α⁰ [rad].
+    force : ndarray, shape (3,)
+        Constant external force on the rotor [N].
+    unbalance_force : float
+        F_u = m_u e Ω² [N].
+    unbalance_omega : float
+        Ω [rad/s].
+    theta0 : ndarray, shape (Z,)
+        Ball angles at t = 0 [rad].
+    kinematics : Kinematics
+        Signed ring, cage and spin frequencies [Hz].
+    harmonics : tuple of ndarray
+        Packed waviness (inner k, a, φ; outer k, a, φ; ball k, a, φ, offsets).
+    contact_law : str
+    reference_approach : float
+        Approach scale for tolerances [m].
+    notes : tuple of str
+    """
+
+    mass: float
+    damping: float
+    ndof: int
+    curvature_distance: float
+    radial_gap: float
+    axial_offset: float
+    stiffness: float
+    contact_angle: float
+    free_contact_angle: float
+    force: NDArray[np.float64]
+    unbalance_force: float
+    unbalance_omega: float
+    theta0: NDArray[np.float64]
+    kinematics: Kinematics
+    harmonics: tuple[NDArray[Any], ...]
+    contact_law: str = "exact"
+    reference_approach: float = 1e-6
+    notes: tuple[str, ...] = ()
+
+    @property
+    def n_elements(self) -> int:
+        """Z."""
+        return int(self.theta0.size)
+
+    def params(self, h: float) -> NDArray[np.float64]:
+        """Scalar parameter vector of the kernels for step ``h`` [s]."""
+        p = np.zeros(N_PAR)
+        kin = self.kinematics
+        p[P_H] = h
+        p[P_M] = self.mass
+        p[P_C] = self.damping
+        p[P_A] = self.curvature_distance
+        p[P_G0] = self.radial_gap
+        p[P_ZP] = self.axial_offset
+        p[P_K] = self.stiffness
+        p[P_WC] = TWO_PI * kin.cage
+        p[P_WI] = TWO_PI * kin.inner
+        p[P_WO] = TWO_PI * kin.outer
+        p[P_WB] = TWO_PI * kin.spin
+        p[P_FU] = self.unbalance_force
+        p[P_WU] = self.unbalance_omega
+        p[P_FX], p[P_FY], p[P_FZ] = self.force
+        p[P_TOL] = NEWTON_RTOL * self.reference_approach
+        return p
+
+    def replace(self, **changes: Any) -> DynamicSetup:
+        """A copy with some fields changed (tests and benchmarks)."""
+        from dataclasses import replace
+
+        return replace(self, **changes)
+
+
+def _dyn(case: Any) -> Any:
+    spec = case.dynamics
+    if spec is None:
+        raise GeometryError("dynamics", 'model = "dynamic" needs a [dynamics] table with the mass')
+    return spec
+
+
+def setup(case: Any) -> DynamicSetup:
+    """Derive the rotor, contact and kinematic constants of a case (see module docstring)."""
+    bearing = case.bearing
+    op = case.operation
+    dyn = _dyn(case)
+    if not isinstance(bearing, BallBearing):
+        raise GeometryError("bearing.type", "the dynamic model needs a ball bearing (seed 003)")
+    if not (math.isfinite(op.speed) and op.speed > 0.0):
+        raise GeometryError("operation.speed", f"must be > 0 for the dynamic model: {op.speed!r}")
+    notes: list[str] = []
+    a = bearing.curvature_distance
+    if bearing.contact_angle is not None:
+        alpha0 = bearing.contact_angle
+        notes.append(
+            "bearing.contact_angle read as the free contact angle α⁰; radial play "
+            f"A(1 - cos α⁰) = {a * (1 - math.cos(alpha0)) * 1e6:.4g} um replaces radial_clearance"
+        )
+    else:
+        alpha0 = bearing.free_contact_angle
+    law = dyn.contact_law
+    ndof = 3 if dyn.axial_dof else 2
+    alpha_p, kn = preloaded_contact_angle(bearing, op.axial_load, alpha0, law)
+    zp = a * math.cos(alpha0) * math.tan(alpha_p) if op.axial_load > 0.0 else 0.0
+    if op.axial_load > 0.0:
+        kin_alpha = alpha_p
+    else:
+        kin_alpha = 0.0  # rings axially centred: the balls touch at the groove bottoms
+        alpha_p = 0.0
+    g0 = a * (math.cos(alpha0) - 1.0)  # = -P_d/2 for the clearance-defined α⁰
+    beta = op.radial_load_angle
+    force = np.array(
+        [
+            op.radial_load * math.cos(beta),
+            op.radial_load * math.sin(beta),
+            op.axial_load if ndof == 3 else 0.0,
+        ]
+    )
+    omega_u = TWO_PI * op.inner_speed
+    fu = dyn.unbalance * omega_u**2
+    if dyn.unbalance > 0.0 and op.inner_speed == 0.0:
+        raise GeometryError(
+            "dynamics.unbalance",
+            "the rotor of the dynamic model is the inner ring; it does not turn, so an "
+            "unbalance cannot act (seed 003 assumption 2)",
+        )
+    if ndof == 3 and op.axial_load <= 0.0 and op.radial_load <= 0.0:
+        raise GeometryError(
+            "dynamics.axial_dof",
+            "an axial degree of freedom needs an axial or radial load to hold the rotor",
+        )
+    z = bearing.n_elements
+    d, dm = bearing.element_diameter, bearing.pitch_diameter
+    kin = Kinematics(
+        inner=op.inner_speed,
+        outer=op.outer_speed,
+        cage=float(cage_frequency(op.inner_speed, op.outer_speed, d, dm, kin_alpha)),
+        spin=float(ball_spin_frequency(op.inner_speed, op.outer_speed, d, dm, kin_alpha)),
+        rotating_ring=op.rotating_ring,
+        n_elements=z,
+    )
+    imp = case.imperfections
+    theta0 = TWO_PI * np.arange(z) / z + np.asarray(imp.pitch_errors, dtype=np.float64)
+    kb, ab, pb, off = pack_harmonics(imp.element_diameter_deviations())
+    harmonics = (
+        imp.inner.orders.astype(np.float64),
+        imp.inner.amplitudes.copy(),
+        imp.inner.phases.copy(),
+        imp.outer.orders.astype(np.float64),
+        imp.outer.amplitudes.copy(),
+        imp.outer.phases.copy(),
+        kb,
+        ab,
+        pb,
+        off,
+    )
+    if imp.slant is not None and imp.slant.amplitude > 0.0:
+        notes.append("raceway slant is not part of the dynamic model and was ignored")
+    # approach scale: the preload approach, else the Hertz approach of a ball carrying the load
+    load = max(op.radial_load, op.axial_load, fu, 1e-3)
+    ref = (load / (kn * max(1, z // 4))) ** (2.0 / 3.0)
+    return DynamicSetup(
+        mass=dyn.mass,
+        damping=dyn.damping,
+        ndof=ndof,
+        curvature_distance=a,
+        radial_gap=g0,
+        axial_offset=zp,
+        stiffness=kn,
+        contact_angle=alpha_p,
+        free_contact_angle=alpha0,
+        force=force,
+        unbalance_force=fu,
+        unbalance_omega=omega_u,
+        theta0=theta0,
+        kinematics=kin,
+        harmonics=harmonics,
+        contact_law=law,
+        reference_approach=ref,
+        notes=tuple(notes),
+    )
+
+
+# --------------------------------------------------------------------------------------------
+# compiled kernels
+# --------------------------------------------------------------------------------------------
+@numba.njit(cache=True)
+def _hsum(k, a, p, lo, hi, angle):
+    s = 0.0
+    for i in range(lo, hi):
+        s += a[i] * math.cos(k[i] * angle + p[i])
+    return s
+
+
+@numba.njit(cache=True)
+def _deviations(t, par, theta0, hk, cth, sth, gap, wb):
+    """Ball angles (cos, sin), radial gap at q = 0 and ball deviation at time t."""
+    z = theta0.size
+    wc = par[P_WC]
+    wi = par[P_WI]
+    wo = par[P_WO]
+    spin = par[P_WB] * t
+    ik, ia, ip, ok, oa, op, bk, ba, bp, boff = hk
+    for j in range(z):
+        th = theta0[j] + wc * t
+        cth[j] = math.cos(th)
+        sth[j] = math.sin(th)
+        g = par[P_G0]
+        if ik.size:
+            g += _hsum(ik, ia, ip, 0, ik.size, th - wi * t)
+        if ok.size:
+            g -= _hsum(ok, oa, op, 0, ok.size, th - wo * t)
+        gap[j] = g
+        wb[j] = _hsum(bk, ba, bp, boff[j], boff[j + 1], spin) if bk.size else 0.0
+
+
+@numba.njit(cache=True)
+def _contact(q0, q1, q2, cth, sth, gap, wb, a, zp, k, ndof):
+    """Sum of Q_j n_j (force of the contacts resisting q) and its Jacobian (symmetric)."""
+    f0 = f1 = f2 = 0.0
+    k00 = k01 = k02 = k11 = k12 = k22 = 0.0
+    loaded = 0
+    sa = zp + (q2 if ndof == 3 else 0.0)
+    for j in range(cth.size):
+        g = gap[j] + q0 * cth[j] + q1 * sth[j]
+        sr = a + g
+        s = math.sqrt(sr * sr + sa * sa)
+        d = (g * (a + sr) + sa * sa) / (s + a) + wb[j]
+        if d <= 0.0:
+            continue
+        loaded += 1
+        sd = math.sqrt(d)
+        q = k * d * sd
+        dq = 1.5 * k * sd
+        nx = sr * cth[j] / s
+        ny = sr * sth[j] / s
+        nz = sa / s
+        f0 += q * nx
+        f1 += q * ny
+        f2 += q * nz
+        geo = q / s
+        kk = dq - geo
+        k00 += kk * nx * nx + geo * cth[j] * cth[j]
+        k01 += kk * nx * ny + geo * cth[j] * sth[j]
+        k11 += kk * ny * ny + geo * sth[j] * sth[j]
+        k02 += kk * nx * nz
+        k12 += kk * ny * nz
+        k22 += kk * nz * nz + geo
+    return f0, f1, f2, k00, k01, k02, k11, k12, k22, loaded
+
+
+@numba.njit(cache=True)
+def _solve3(j00, j01, j02, j11, j12, j22, r0, r1, r2, ndof):
+    """Solve the symmetric 2x2 (ndof 2) or 3x3 system J s = r in closed form."""
+    if ndof == 2:
+        det = j00 * j11 - j01 * j01
+        return (j11 * r0 - j01 * r1) / det, (j00 * r1 - j01 * r0) / det, 0.0, det
+    a00 = j11 * j22 - j12 * j12
+    a01 = j02 * j12 - j01 * j22
+    a02 = j01 * j12 - j02 * j11
+    det = j00 * a00 + j01 * a01 + j02 * a02
+    a11 = j00 * j22 - j02 * j02
+    a12 = j01 * j02 - j00 * j12
+    a22 = j00 * j11 - j01 * j01
+    s0 = (a00 * r0 + a01 * r1 + a02 * r2) / det
+    s1 = (a01 * r0 + a11 * r1 + a12 * r2) / det
+    s2 = (a02 * r0 + a12 * r1 + a22 * r2) / det
+    return s0, s1, s2, det
+
+
+@numba.njit(cache=True)
+def newmark_kernel(n_steps, stride, t_start, state, par, theta0, hk, ndof, max_iter, out):
+    """Integrate seed 003 eq. 2.16 (module form) over ``n_steps`` Newmark steps (compiled).
+
+    Average-acceleration Newmark-β (β = 1/4, γ = 1/2): with step h,
+
+    .. math::
+        a_{n+1} = \\tfrac{4}{h^2}(q_{n+1} - q_n) - \\tfrac4h v_n - a_n, \\quad
+        v_{n+1} = v_n + \\tfrac h2 (a_n + a_{n+1}),
+
+    and :math:`R(q_{n+1}) = m a_{n+1} + c v_{n+1} + \\sum_j Q_j n_j - F(t_{n+1}) = 0` solved
+    by Newton–Raphson with the Jacobian :math:`(4m/h^2 + 2c/h) I + K_t` (closed-form solve).
+
+    Parameters
+    ----------
+    n_steps : int
+        Steps to take.
+    stride : int
+        Record q every ``stride`` steps (the first record is the state after ``stride`` steps).
+    t_start : float
+        Time of ``state`` [s].
+    state : ndarray, shape (9,)
+        q, v, a (3 each) [m, m/s, m/s²]; updated in place.
+    par : ndarray
+        Scalars (:meth:`DynamicSetup.params`).
+    theta0 : ndarray, shape (Z,)
+        Ball angles at t = 0 [rad].
+    hk : tuple of ndarray
+        Packed waviness (:attr:`DynamicSetup.harmonics`).
+    ndof : int
+        2 or 3.
+    max_iter : int
+        Newton iterations per step.
+    out : ndarray, shape (n_steps // stride, 3)
+        Recorded q [m].
+
+    Returns
+    -------
+    status : int
+        0 ok, 1 not converged, 2 rotor left the bearing, 3 not finite.
+    step : int
+        Failing step (-1 if ok).
+    iterations : int
+        Newton iterations taken in total.
+    min_loaded : int
+        Fewest loaded balls at any step.
+    """
+    z = theta0.size
+    h = par[P_H]
+    m = par[P_M]
+    c = par[P_C]
+    a = par[P_A]
+    zp = par[P_ZP]
+    k = par[P_K]
+    tol = par[P_TOL]
+    c0 = 4.0 / (h * h)
+    c1 = 4.0 / h
+    jd = m * c0 + 2.0 * c / h
+    cth = np.empty(z)
+    sth = np.empty(z)
+    gap = np.empty(z)
+    wb = np.empty(z)
+    q0, q1, q2 = state[0], state[1], state[2]
+    v0, v1, v2 = state[3], state[4], state[5]
+    a0, a1, a2 = state[6], state[7], state[8]
+    if ndof == 2:
+        q2 = v2 = a2 = 0.0
+    fx, fy, fz = par[P_FX], par[P_FY], par[P_FZ]
+    fu, wu = par[P_FU], par[P_WU]
+    iters = 0
+    min_loaded = z
+    rec = 0
+    limit = 0.5 * a
+    for n in range(n_steps):
+        t1 = t_start + (n + 1) * h
+        _deviations(t1, par, theta0, hk, cth, sth, gap, wb)
+        e0 = fx + fu * math.cos(wu * t1)
+        e1 = fy + fu * math.sin(wu * t1)
+        e2 = fz
+        # predictor
+        p0 = q0 + h * v0 + 0.5 * h * h * a0
+        p1 = q1 + h * v1 + 0.5 * h * h * a1
+        p2 = q2 + h * v2 + 0.5 * h * h * a2 if ndof == 3 else 0.0
+        converged = False
+        loaded = z
+        for _ in range(max_iter):
+            iters += 1
+            f0, f1, f2, k00, k01, k02, k11, k12, k22, loaded = _contact(
+                p0, p1, p2, cth, sth, gap, wb, a, zp, k, ndof
+            )
+            na0 = c0 * (p0 - q0) - c1 * v0 - a0
+            na1 = c0 * (p1 - q1) - c1 * v1 - a1
+            na2 = c0 * (p2 - q2) - c1 * v2 - a2
+            nv0 = v0 + 0.5 * h * (a0 + na0)
+            nv1 = v1 + 0.5 * h * (a1 + na1)
+            nv2 = v2 + 0.5 * h * (a2 + na2)
+            r0 = m * na0 + c * nv0 + f0 - e0
+            r1 = m * na1 + c * nv1 + f1 - e1
+            r2 = m * na2 + c * nv2 + f2 - e2
+            s0, s1, s2, _det = _solve3(
+                jd + k00, k01, k02, jd + k11, k12, jd + k22, r0, r1, r2, ndof
+            )
+            p0 -= s0
+            p1 -= s1
+            p2 -= s2
+            if max(abs(s0), abs(s1), abs(s2)) <= tol:
+                converged = True
+                break
+        if not (math.isfinite(p0) and math.isfinite(p1) and math.isfinite(p2)):
+            state[0], state[1], state[2] = q0, q1, q2
+            return NOT_FINITE, n, iters, min_loaded
+        if not converged:
+            state[0], state[1], state[2] = q0, q1, q2
+            return NOT_CONVERGED, n, iters, min_loaded
+        if math.sqrt(p0 * p0 + p1 * p1 + p2 * p2) > limit:
+            return BLOWUP, n, iters, min_loaded
+        na0 = c0 * (p0 - q0) - c1 * v0 - a0
+        na1 = c0 * (p1 - q1) - c1 * v1 - a1
+        na2 = c0 * (p2 - q2) - c1 * v2 - a2 if ndof == 3 else 0.0
+        v0 += 0.5 * h * (a0 + na0)
+        v1 += 0.5 * h * (a1 + na1)
+        v2 += 0.5 * h * (a2 + na2)
+        a0, a1, a2 = na0, na1, na2
+        q0, q1, q2 = p0, p1, p2
+        if loaded < min_loaded:
+            min_loaded = loaded
+        if (n + 1) % stride == 0 and rec < out.shape[0]:
+            out[rec, 0] = q0
+            out[rec, 1] = q1
+            out[rec, 2] = q2
+            rec += 1
+    state[0], state[1], state[2] = q0, q1, q2
+    state[3], state[4], state[5] = v0, v1, v2
+    state[6], state[7], state[8] = a0, a1, a2
+    return OK, -1, iters, min_loaded
+
+
+@numba.njit(cache=True)
+def _potential(q0, q1, q2, cth, sth, gap, wb, a, zp, k, ndof, e0, e1, e2):
+    sa = zp + (q2 if ndof == 3 else 0.0)
+    en = -(e0 * q0 + e1 * q1 + (e2 * q2 if ndof == 3 else 0.0))
+    for j in range(cth.size):
+        g = gap[j] + q0 * cth[j] + q1 * sth[j]
+        sr = a + g
+        s = math.sqrt(sr * sr + sa * sa)
+        d = (g * (a + sr) + sa * sa) / (s + a) + wb[j]
+        if d > 0.0:
+            en += k / 2.5 * d * d * math.sqrt(d)
+    return en
+
+
+@numba.njit(cache=True)
+def static_kernel(times, q_start, par, theta0, hk, ndof, max_iter):
+    """Quasi-static solution of the same contact model at each instant (compiled).
+
+    Newton's method on the convex potential :math:`\\Pi(q) = \\sum_j \\tfrac{K_n}{2.5}
+    [\\delta_j]_+^{5/2} - F(t)\\cdot q` (inertia and damping dropped), Armijo backtracking and
+    a warm start from the previous instant.
+
+    Returns
+    -------
+    q : ndarray, shape (n, 3)
+        Rotor centre [m].
+    status : int
+        0 ok, 1 not converged.
+    instant : int
+        Failing instant (-1 if ok).
+    """
+    z = theta0.size
+    a = par[P_A]
+    zp = par[P_ZP]
+    k = par[P_K]
+    tol = par[P_TOL]
+    fx, fy, fz = par[P_FX], par[P_FY], par[P_FZ]
+    fu, wu = par[P_FU], par[P_WU]
+    cth = np.empty(z)
+    sth = np.empty(z)
+    gap = np.empty(z)
+    wb = np.empty(z)
+    n = times.size
+    q = np.zeros((n, 3))
+    p0, p1, p2 = q_start[0], q_start[1], q_start[2]
+    if ndof == 2:
+        p2 = 0.0
+    # tiny regularisation: keeps Newton moving while few balls are loaded
+    reg = 1e-9 * k * math.sqrt(par[P_TOL] / NEWTON_RTOL)
+    for i in range(n):
+        t = times[i]
+        _deviations(t, par, theta0, hk, cth, sth, gap, wb)
+        e0 = fx + fu * math.cos(wu * t)
+        e1 = fy + fu * math.sin(wu * t)
+        e2 = fz
+        converged = False
+        for _ in range(max_iter):
+            f0, f1, f2, k00, k01, k02, k11, k12, k22, _l = _contact(
+                p0, p1, p2, cth, sth, gap, wb, a, zp, k, ndof
+            )
+            r0, r1, r2 = f0 - e0, f1 - e1, f2 - e2
+            s0, s1, s2, _det = _solve3(
+                k00 + reg, k01, k02, k11 + reg, k12, k22 + reg, r0, r1, r2, ndof
+            )
+            big = max(abs(s0), abs(s1), abs(s2))
+            step = 1.0
+            if big > 1e-3 * tol / NEWTON_RTOL:
+                en0 = _potential(p0, p1, p2, cth, sth, gap, wb, a, zp, k, ndof, e0, e1, e2)
+                slope = -(r0 * s0 + r1 * s1 + r2 * s2)
+                for _ls in range(60):
+                    en1 = _potential(
+                        p0 - step * s0,
+                        p1 - step * s1,
+                        p2 - step * s2,
+                        cth,
+                        sth,
+                        gap,
+                        wb,
+                        a,
+                        zp,
+                        k,
+                        ndof,
+                        e0,
+                        e1,
+                        e2,
+                    )
+                    if en1 <= en0 + 1e-4 * step * slope:
+                        break
+                    step *= 0.5
+            p0 -= step * s0
+            p1 -= step * s1
+            p2 -= step * s2
+            if step * big <= tol:
+                converged = True
+                break
+        if not converged:
+            return q, 1, i
+        q[i, 0] = p0
+        q[i, 1] = p1
+        q[i, 2] = p2
+    return q, 0, -1
+
+
+# --------------------------------------------------------------------------------------------
+# NumPy references (tests) and helpers
+# --------------------------------------------------------------------------------------------
+def _deviations_np(
+    st: DynamicSetup, t: NDArray[np.float64]
+) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
+    """Ball angles, radial gap at q = 0 and ball deviations, shape (n, Z) each (vectorised)."""
+    ik, ia, ip, ok, oa, op, bk, ba, bp, boff = st.harmonics
+    kin = st.kinematics
+    t = np.atleast_1d(np.asarray(t, dtype=np.float64))
+    theta = st.theta0[None, :] + TWO_PI * kin.cage * t[:, None]
+
+    def hsum(k: NDArray[Any], a: NDArray[Any], p: NDArray[Any], x: NDArray[Any]) -> Any:
+        if k.size == 0:
+            return np.zeros_like(x)
+        return np.sum(a * np.cos(k * x[..., None] + p), axis=-1)
+
+    gap = (
+        st.radial_gap
+        + hsum(ik, ia, ip, theta - TWO_PI * kin.inner * t[:, None])
+        - hsum(ok, oa, op, theta - TWO_PI * kin.outer * t[:, None])
+    )
+    spin = TWO_PI * kin.spin * t
+    wb = np.zeros_like(theta)
+    for j in range(st.n_elements):
+        lo, hi = int(boff[j]), int(boff[j + 1])
+        if hi > lo:
+            wb[:, j] = hsum(bk[lo:hi], ba[lo:hi], bp[lo:hi], spin)
+    return theta, gap, wb
+
+
+def contact_forces(
+    st: DynamicSetup, t: NDArray[np.float64], q: NDArray[np.float64]
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    r"""Vectorised :math:`\sum_j Q_j n_j` [N] and approaches δ_j [m] at instants t, q (n, 3).
+
+    Returns
+    -------
+    force : ndarray, shape (n, 3)
+    approach : ndarray, shape (n, Z)
+    """
+    theta, gap, wb = _deviations_np(st, t)
+    q = np.atleast_2d(q)
+    c, s = np.cos(theta), np.sin(theta)
+    g = gap + q[:, :1] * c + q[:, 1:2] * s
+    sa = st.axial_offset + (q[:, 2:3] if st.ndof == 3 else 0.0) + np.zeros_like(g)
+    a = st.curvature_distance
+    sr = a + g
+    dist = np.hypot(sr, sa)
+    d = (g * (a + sr) + sa * sa) / (dist + a) + wb
+    load = st.stiffness * np.clip(d, 0.0, None) ** 1.5
+    n = np.stack([sr * c / dist, sr * s / dist, sa / dist], axis=-1)
+    force = np.einsum("nz,nzk->nk", load, n)
+    if st.ndof == 2:
+        force[:, 2] = 0.0
+    return force, d
+
+
+def contact_stiffness(
+    st: DynamicSetup, t: float, q: NDArray[np.float64], *, step: float | None = None
+) -> NDArray[np.float64]:
+    """Tangent stiffness K_t = ∂(Σ Q n)/∂q [N/m] at one instant, by central differences."""
+    q = np.asarray(q, dtype=np.float64)
+    ndof = st.ndof
+    h = step if step is not None else 1e-4 * st.reference_approach
+    out = np.zeros((ndof, ndof))
+    for i in range(ndof):
+        dq = np.zeros(3)
+        dq[i] = h
+        fp, _ = contact_forces(st, np.array([t]), (q + dq)[None])
+        fm, _ = contact_forces(st, np.array([t]), (q - dq)[None])
+        out[:, i] = (fp[0, :ndof] - fm[0, :ndof]) / (2.0 * h)
+    return out
+
+
+def external_force(st: DynamicSetup, t: NDArray[np.float64]) -> NDArray[np.float64]:
+    """Load + unbalance on the rotor [N], shape (n, 3)."""
+    t = np.atleast_1d(np.asarray(t, dtype=np.float64))
+    f = np.tile(st.force, (t.size, 1))
+    f[:, 0] += st.unbalance_force * np.cos(st.unbalance_omega * t)
+    f[:, 1] += st.unbalance_force * np.sin(st.unbalance_omega * t)
+    return f
+
+
+def energy(
+    st: DynamicSetup, t: NDArray[np.float64], q: NDArray[np.float64], v: NDArray[np.float64]
+) -> NDArray[np.float64]:
+    r"""Mechanical energy :math:`\tfrac12 m|v|^2 + \sum_j \tfrac{K_n}{2.5}[\delta_j]_+^{5/2}
+    - F\cdot q` [J] (constant load; conserved when c = 0, speed 0 and no unbalance)."""
+    _, d = contact_forces(st, t, q)
+    pot = (st.stiffness / 2.5 * np.clip(d, 0.0, None) ** 2.5).sum(axis=1)
+    nd = st.ndof
+    return 0.5 * st.mass * (v[:, :nd] ** 2).sum(1) + pot - (q[:, :nd] * st.force[:nd]).sum(1)
+
+
+def rhs_first_order(st: DynamicSetup) -> Callable[[float, NDArray[np.float64]], Any]:
+    """Right-hand side of the first-order form y = (q, v) for :func:`scipy.integrate.solve_ivp`."""
+    nd = st.ndof
+
+    def rhs(t: float, y: NDArray[np.float64]) -> NDArray[np.float64]:
+        q = np.zeros(3)
+        q[:nd] = y[:nd]
+        v = y[nd:]
+        f, _ = contact_forces(st, np.array([t]), q[None])
+        e = external_force(st, np.array([t]))
+        acc = (e[0, :nd] - f[0, :nd] - st.damping * v) / st.mass
+        return np.concatenate([v, acc])
+
+    return rhs
+
+
+def newmark_reference(
+    st: DynamicSetup,
+    h: float,
+    n_steps: int,
+    state: NDArray[np.float64],
+    t_start: float = 0.0,
+    max_iter: int = MAX_ITER,
+) -> NDArray[np.float64]:
+    """The Newmark scheme of :func:`newmark_kernel` in NumPy (vectorised over balls).
+
+    Independent code path for tests: Jacobian by central differences of
+    :func:`contact_forces`, matrix solve by :func:`numpy.linalg.solve`.
+
+    Returns
+    -------
+    ndarray, shape (n_steps, 3)
+        q after each step [m].
+    """
+    nd = st.ndof
+    q = state[:nd].copy()
+    v = state[3 : 3 + nd].copy()
+    a = state[6 : 6 + nd].copy()
+    out = np.zeros((n_steps, 3))
+    tol = NEWTON_RTOL * st.reference_approach
+    eye = np.eye(nd)
+    for n in range(n_steps):
+        t1 = t_start + (n + 1) * h
+        e = external_force(st, np.array([t1]))[0, :nd]
+        p = q + h * v + 0.5 * h * h * a
+        for _ in range(max_iter):
+            pq = np.zeros(3)
+            pq[:nd] = p
+            f, _ = contact_forces(st, np.array([t1]), pq[None])
+            na = 4.0 / h**2 * (p - q) - 4.0 / h * v - a
+            nv = v + 0.5 * h * (a + na)
+            r = st.mass * na + st.damping * nv + f[0, :nd] - e
+            jac = (4.0 * st.mass / h**2 + 2.0 * st.damping / h) * eye + contact_stiffness(
+                st, t1, pq
+            )
+            s = np.linalg.solve(jac, r)
+            p = p - s
+            if np.max(np.abs(s)) <= tol:
+                break
+        else:
+            raise ConvergenceError("reference Newton did not converge", n, t1)
+        na = 4.0 / h**2 * (p - q) - 4.0 / h * v - a
+        v = v + 0.5 * h * (a + na)
+        a, q = na, p
+        out[n, :nd] = q
+    return out
+
+
+def static_reference(
+    st: DynamicSetup, times: NDArray[np.float64], max_iter: int = 200
+) -> NDArray[np.float64]:
+    """Quasi-static solution at all instants at once (NumPy, damped Newton from q = 0).
+
+    Returns
+    -------
+    ndarray, shape (n, 3)
+    """
+    nd = st.ndof
+    times = np.asarray(times, dtype=np.float64)
+    n = times.size
+    q = np.zeros((n, 3))
+    e = external_force(st, times)
+    tol = NEWTON_RTOL * st.reference_approach
+    hstep = 1e-4 * st.reference_approach
+
+    def resid(qq: NDArray[np.float64]) -> NDArray[np.float64]:
+        return contact_forces(st, times, qq)[0][:, :nd] - e[:, :nd]
+
+    for _ in range(max_iter):
+        r = resid(q)
+        jac = np.zeros((n, nd, nd))
+        for i in range(nd):
+            dq = np.zeros(3)
+            dq[i] = hstep
+            jac[:, :, i] = (resid(q + dq) - resid(q - dq)) / (2 * hstep)
+        jac += 1e-9 * st.stiffness * math.sqrt(st.reference_approach) * np.eye(nd)
+        s = np.linalg.solve(jac, r[..., None])[..., 0]
+        lam = np.ones(n)
+        norm0 = np.linalg.norm(r, axis=1)
+        for _ls in range(40):
+            trial = q.copy()
+            trial[:, :nd] -= lam[:, None] * s
+            worse = np.linalg.norm(resid(trial), axis=1) > norm0 * (1 - 1e-4 * lam)
+            worse &= lam * np.max(np.abs(s), axis=1) > tol
+            if not worse.any():
+                break
+            lam[worse] *= 0.5
+        q[:, :nd] -= lam[:, None] * s
+        if np.max(lam * np.max(np.abs(s), axis=1)) <= tol:
+            return q
+    raise ConvergenceError("reference static Newton did not converge")
+
+
+def static_equilibrium(
+    st: DynamicSetup, times: NDArray[np.float64], q_start: NDArray[np.float64] | None = None
+) -> NDArray[np.float64]:
+    """Quasi-static rotor position (n, 3) [m] of the same contact model at ``times``.
+
+    Raises
+    ------
+    ConvergenceError
+        Naming the instant.
+    """
+    times = np.ascontiguousarray(np.atleast_1d(times), dtype=np.float64)
+    start = np.zeros(3) if q_start is None else np.asarray(q_start, dtype=np.float64)
+    q, status, instant = static_kernel(
+        times, start, st.params(1.0), st.theta0, st.harmonics, st.ndof, 200
+    )
+    if status != OK:
+        raise ConvergenceError(
+            "quasi-static Newton iteration did not converge", int(instant), float(times[instant])
+        )
+    return q
+
+
+def linearised_natural_frequencies(
+    st: DynamicSetup, q: NDArray[np.float64], t: float = 0.0
+) -> NDArray[np.float64]:
+    """Undamped natural frequencies sqrt(eig(K_t)/m)/2π [Hz] at rotor position q, time t."""
+    k = contact_stiffness(st, t, q)
+    lam = np.linalg.eigvalsh(0.5 * (k + k.T))
+    return np.sqrt(np.clip(lam, 0.0, None) / st.mass) / TWO_PI
+
+
+# --------------------------------------------------------------------------------------------
+# integration with transient detection
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class Integration:
+    """Steady-state record of one dynamic run.
+
+    Attributes
+    ----------
+    time : ndarray, shape (n,)
+        Instants of the analysis window, from its start [s].
+    displacement : ndarray, shape (3, n)
+        x, y and z − (preloaded position) of the rotor [m].
+    samples_per_rev : int
+        Output samples per revolution of the rotating ring.
+    time_step : float
+        Newmark step h [s].
+    transient : float
+        Detected end of the transient [s] (start of the analysis window).
+    settled : str
+        How the transient ended: "decayed", "stationary" (free vibration stopped decaying) or
+        "limit" (not settled before the step budget).
+    natural_frequencies : ndarray
+        Linearised natural frequencies at the static equilibrium [Hz].
+    static_position : ndarray, shape (3,)
+        Static equilibrium at t = 0 [m].
+    min_loaded : int
+        Fewest loaded balls at any step.
+    steps : int
+        Newmark steps taken.
+    iterations : int
+        Newton iterations taken.
+    """
+
+    time: NDArray[np.float64]
+    displacement: NDArray[np.float64]
+    samples_per_rev: int
+    time_step: float
+    transient: float
+    settled: str
+    natural_frequencies: NDArray[np.float64]
+    static_position: NDArray[np.float64]
+    min_loaded: int
+    steps: int
+    iterations: int
+    free_vibration: list[float] = field(default_factory=list)
+
+
+def _raise(status: int, step: int, t: float) -> None:
+    cause = _CAUSES.get(status, f"kernel status {status}")
+    if status == NOT_CONVERGED:
+        raise ConvergenceError(cause, step, t)
+    raise NumericalError(cause, step, t)
+
+
+def _band_amplitude(
+    block: NDArray[np.float64], dt: float, f_lo: float, f_hi: float
+) -> tuple[float, float]:
+    """Largest Hann-spectrum amplitude of x, y (, z) in [f_lo, f_hi], and the block's p-p."""
+    spec = amplitude_spectrum(block, sample_rate=1.0 / dt)
+    sel = (spec.frequencies >= f_lo) & (spec.frequencies <= f_hi)
+    amp = float(spec.amplitude[:, sel].max()) if sel.any() else 0.0
+    return amp, float(np.max(np.ptp(block, axis=1)))
+
+
+def choose_step(
+    st: DynamicSetup, f_natural: float, dt_out: float, time_step: float | None
+) -> tuple[float, int]:
+    """Newmark step h [s] and output stride (h · stride = dt_out).
+
+    Default: at least :data:`STEPS_PER_PERIOD` steps per period of ``f_natural`` (phase
+    error of the average-acceleration scheme ≈ (ωh)²/12 ≈ 8e-5 per period) and a whole
+    number of steps per output interval.
+    """
+    if time_step is not None:
+        if not (time_step > 0.0 and math.isfinite(time_step)):
+            raise GeometryError("dynamics.time_step", f"must be > 0, got {time_step!r}")
+        target = time_step
+    else:
+        target = 1.0 / (STEPS_PER_PERIOD * max(f_natural, 1e-12))
+    stride = max(1, math.ceil(dt_out / target * (1 - 1e-12)))
+    return dt_out / stride, stride
+
+
+def integrate(
+    st: DynamicSetup,
+    speed: float,
+    revolutions: int,
+    samples_per_rev: int,
+    *,
+    time_step: float | None = None,
+    progress: Callable[[float], None] | None = None,
+    max_steps: int = MAX_STEPS,
+) -> Integration:
+    """Integrate from the static equilibrium, detect the end of the transient, record.
+
+    Blocks of whole revolutions (at least 20 periods of the lowest natural frequency) are
+    integrated one after the other. After each block the largest Hann-spectrum amplitude
+    within ±15 % of the natural frequencies (the free vibration) is compared with the block's
+    p-p: the transient is over when it is below :data:`SETTLE_TOL` of the p-p ("decayed"), or
+    when it has stopped decaying ("stationary": the largest amplitude of the last three blocks
+    is above half that of the three before, whereas a block lasts at least ln 2 linear decay
+    times 2m/c, so a free vibration would have dropped eightfold; a forced line in the band, a
+    resonance or an undamped system keeps it, and the analysis then includes it).
+    ``revolutions`` whole revolutions are then recorded.
+
+    Parameters
+    ----------
+    st : DynamicSetup
+    speed : float
+        Rotating ring speed [Hz] (> 0).
+    revolutions : int
+        Revolutions in the analysis window (>= 1).
+    samples_per_rev : int
+        Output samples per revolution.
+    time_step : float or None
+        Newmark step [s]; default automatic (:func:`choose_step`).
+    progress : callable or None
+        Called with the fraction done (0..1) after each block.
+    max_steps : int
+        Step budget for the transient search.
+
+    Raises
+    ------
+    ConvergenceError, NumericalError
+        Naming the step and time of the failure.
+    """
+    q_static = static_equilibrium(st, np.array([0.0]))[0]
+    fn = linearised_natural_frequencies(st, q_static)
+    f_hi = float(fn.max())
+    positive = fn[fn > 0.0]
+    f_lo = float(positive.min()) if positive.size else f_hi
+    dt_out = 1.0 / (speed * samples_per_rev)
+    h, stride = choose_step(st, f_hi, dt_out, time_step)
+    steps_per_rev = stride * samples_per_rev
+    # a block spans >= 20 natural periods and, with damping, >= ln 2 linear decay times 2m/c
+    # (the free vibration halves per block at least), but at most 200 revolutions
+    decay = math.log(2.0) * 2.0 * st.mass / st.damping if st.damping > 0.0 else math.inf
+    rev_block = max(1, math.ceil(20.0 / max(f_lo, 1e-12) * speed))
+    rev_block = min(200, max(rev_block, math.ceil(min(decay, 1e9) * speed)))
+    par = st.params(h)
+    state = np.zeros(9)
+    state[:3] = q_static
+    # initial acceleration from the equation of motion at t = 0 (v = 0)
+    f0, _ = contact_forces(st, np.array([0.0]), q_static[None])
+    state[6 : 6 + st.ndof] = (external_force(st, np.array([0.0]))[0] - f0[0])[: st.ndof] / st.mass
+    t = 0.0
+    steps = iterations = 0
+    min_loaded = st.n_elements
+    history: list[float] = []
+    settled = "limit"
+    budget = max_steps - revolutions * steps_per_rev
+    block_steps = rev_block * steps_per_rev
+    # the transient blocks are recorded finely enough to see the free vibration
+    det_stride = max(1, math.floor(1.0 / (8.0 * f_hi * h)))
+    while block_steps % det_stride:
+        det_stride -= 1
+    dt_det = det_stride * h
+    est_blocks = 4
+    while steps + block_steps <= max(budget, block_steps):
+        out = np.zeros((block_steps // det_stride, 3))
+        status, bad, it, ml = newmark_kernel(
+            block_steps, det_stride, t, state, par, st.theta0, st.harmonics, st.ndof, MAX_ITER, out
+        )
+        if status != OK:
+            _raise(int(status), steps + int(bad), t + (int(bad) + 1) * h)
+        t += block_steps * h
+        steps += block_steps
+        iterations += int(it)
+        min_loaded = min(min_loaded, int(ml))
+        amp, pp = _band_amplitude(out[:, : st.ndof].T, dt_det, 0.85 * f_lo, 1.15 * f_hi)
+        history.append(amp)
+        floor = 1e-9 * st.reference_approach
+        if amp <= SETTLE_TOL * max(pp, floor) or amp <= floor:
+            settled = "decayed"
+            break
+        # a transient at least halves per block (block sizing above): when the largest of the
+        # last three blocks is still above half the largest of the three before, what is left
+        # in the band is part of the steady response (a forced line, a resonance, c = 0)
+        if len(history) >= 6 and max(history[-3:]) >= 0.5 * max(history[-6:-3]):
+            settled = "stationary"
+            break
+        est_blocks = max(est_blocks, len(history) + 2)
+        if progress is not None:
+            progress(0.5 * len(history) / est_blocks)
+        if steps + block_steps > budget:
+            break
+    transient = t
+    n_out = revolutions * samples_per_rev
+    out = np.zeros((n_out, 3))
+    # record in chunks of whole revolutions so that progress can be shown
+    chunk_rev = max(1, revolutions // 10)
+    done = 0
+    while done < revolutions:
+        nrev = min(chunk_rev, revolutions - done)
+        view = out[done * samples_per_rev : (done + nrev) * samples_per_rev]
+        status, bad, it, ml = newmark_kernel(
+            nrev * steps_per_rev,
+            stride,
+            t,
+            state,
+            par,
+            st.theta0,
+            st.harmonics,
+            st.ndof,
+            MAX_ITER,
+            view,
+        )
+        if status != OK:
+            _raise(int(status), steps + int(bad), t + (int(bad) + 1) * h)
+        t += nrev * steps_per_rev * h
+        steps += nrev * steps_per_rev
+        iterations += int(it)
+        min_loaded = min(min_loaded, int(ml))
+        done += nrev
+        if progress is not None:
+            progress(0.5 + 0.5 * done / revolutions)
+    if not np.all(np.isfinite(out)):
+        raise NumericalError("non-finite displacement in the analysis window")
+    time = np.arange(n_out, dtype=np.float64) * dt_out
+    return Integration(
+        time=time,
+        displacement=np.ascontiguousarray(out.T),
+        samples_per_rev=samples_per_rev,
+        time_step=h,
+        transient=transient,
+        settled=settled,
+        natural_frequencies=fn,
+        static_position=q_static,
+        min_loaded=min_loaded,
+        steps=steps,
+        iterations=iterations,
+        free_vibration=history,
+    )
+
+
+# --------------------------------------------------------------------------------------------
+# lines and result
+# --------------------------------------------------------------------------------------------
+def ball_passage_frequency(st: DynamicSetup) -> float:
+    """Rate at which balls pass a point fixed to the outer ring, Z |f_c − f_o| [Hz] (eq. 2.20)."""
+    kin = st.kinematics
+    return st.n_elements * abs(kin.cage - kin.outer)
+
+
+def candidate_lines(
+    st: DynamicSetup, imperfections: Any, natural: NDArray[np.float64]
+) -> list[tuple[PredictedLine, bool]]:
+    """Lines to fit: (line, optional). Optional lines are kept only when clearly present."""
+    kin = st.kinematics
+    fbp = ball_passage_frequency(st)
+    out: list[tuple[PredictedLine, bool]] = []
+    for n in range(1, 7):
+        name = "ball passage" if n == 1 else f"ball passage {n}x (harmonic)"
+        out.append((PredictedLine("radial", n * fbp, f"{name}: {n} Z f_c"), n > 3))
+        out.append((PredictedLine("axial", n * fbp, f"{name}: {n} Z f_c"), n > 3))
+    out.append((PredictedLine("radial", 0.5 * fbp, "ball passage 1/2 (subharmonic)"), True))
+    if st.unbalance_force > 0.0:
+        fr = abs(kin.inner)
+        out.append((PredictedLine("radial", fr, "unbalance: f_i"), False))
+        for n in range(2, 4):
+            out.append((PredictedLine("radial", n * fr, f"unbalance {n}x: {n} f_i"), True))
+        for n in range(1, 3):
+            for sgn in (1, -1):
+                f = abs(n * fbp + sgn * fr)
+                lab = f"ball passage x unbalance: {n} Z f_c {'+' if sgn > 0 else '-'} f_i"
+                out.append((PredictedLine("radial", f, lab), True))
+    for i, f in enumerate(sorted(natural), start=1):
+        if f > 0.0:
+            lab = f"natural frequency {i} (linearised): {f:.5g} Hz"
+            out.append((PredictedLine("radial", float(f), lab), True))
+            out.append((PredictedLine("axial", float(f), lab), True))
+    for ln in predicted_lines(imperfections, kin, axial=st.ndof == 3):
+        out.append((ln, False))
+    return out
+
+
+def fit_lines(
+    time: NDArray[np.float64],
+    displacement: NDArray[np.float64],
+    lines: list[tuple[PredictedLine, bool]],
+    rotation_hz: float,
+    ndof: int,
+    noise: float = 0.0,
+) -> tuple[Component, ...]:
+    """Least-squares amplitudes of the candidate lines in x, y (and z).
+
+    Lines closer than 1.5 / record of an earlier (higher-priority) line are merged into it
+    (labels joined), so that the fit stays well conditioned; optional lines below 1e-3 of the
+    largest line, every line below 1e-7 of it and every line below ``noise`` p-p [m] (the
+    solver's resolution) are dropped.
+    """
+    n = time.size
+    duration = n * (time[1] - time[0])
+    f_max = 0.5 * n / duration * 0.999
+    f_min = 1.5 / duration
+    sep = 1.5 / duration
+    comps: list[Component] = []
+    optional_labels: set[str] = set()
+    for axis, name in enumerate(("x", "y", "z")):
+        if axis == 2 and ndof == 2:
+            continue
+        kind = "axial" if name == "z" else "radial"
+        kept: list[tuple[float, list[str], bool]] = []
+        for ln, optional in lines:
+            f = ln.frequency_hz
+            if ln.directions != kind or not (f_min < f < f_max):
+                continue
+            for entry in kept:
+                if abs(entry[0] - f) < sep:
+                    if ln.label not in entry[1]:
+                        entry[1].append(ln.label)
+                    break
+            else:
+                kept.append((f, [ln.label], optional))
+        if not kept:
+            continue
+        freqs = np.array([f for f, _, _ in kept])
+        fit = extract_lines(time, displacement[axis], freqs)
+        for (f, labels, optional), amp, ph in zip(kept, fit.amplitude, fit.phase, strict=True):
+            order = f / rotation_hz
+            label = "; ".join(labels)
+            if optional:
+                optional_labels.add(label)
+            comps.append(
+                Component(
+                    direction=name,
+                    frequency_hz=float(f),
+                    order=float(order),
+                    pp_m=float(2.0 * amp),
+                    label=label,
+                    phase_rad=float(ph),
+                    repeatable=bool(abs(order - round(order)) < 1e-9),
+                )
+            )
+    if comps:
+        top = max(c.pp_m for c in comps)
+        comps = [
+            c
+            for c in comps
+            if c.pp_m > max(1e-7 * top, noise)
+            and not (c.label in optional_labels and c.pp_m < 1e-3 * top)
+        ]
+    comps.sort(key=lambda c: -c.pp_m)
+    return tuple(comps)
+
+
+def _measuring_direction(op: Any) -> NDArray[np.float64]:
+    if op.radial_load > 0.0:
+        return np.array([math.cos(op.radial_load_angle), math.sin(op.radial_load_angle)])
+    return np.array([1.0, 0.0])
+
+
+def _analysis_grid(case: Any) -> tuple[int, int, list[str]]:
+    an = case.analysis
+    notes = []
+    revs = max(2, math.floor(an.revolutions + 1e-9))
+    if revs != an.revolutions:
+        notes.append(f"analysis window rounded to {revs} whole revolutions (RRO/NRRO split)")
+    spr = max(16, math.ceil(an.samples / revs))
+    return revs, spr, notes
+
+
+def run(case: Any, progress: Callable[[float], None] | None = None) -> RunResult:
+    """Run the dynamic model (seed 003) on a case.
+
+    Parameters
+    ----------
+    case : Case
+        With ``[analysis] model = "dynamic"`` and a ``[dynamics]`` table.
+    progress : callable or None
+        Called with the fraction done (0..1).
+
+    Returns
+    -------
+    RunResult
+        Steady-state history of the rotor centre, labelled lines, runout figures; extras
+        ``mean_displacement_m`` [x, y], ``natural_frequencies_hz`` and the integration facts.
+    """
+    st = setup(case)
+    op = case.operation
+    dyn = _dyn(case)
+    revs, spr, notes = _analysis_grid(case)
+    integ = integrate(st, op.speed, revs, spr, time_step=dyn.time_step, progress=progress)
+    disp = integ.displacement
+    u = _measuring_direction(op)
+    radial = u[0] * disp[0] + u[1] * disp[1]
+    lines = candidate_lines(st, case.imperfections, integ.natural_frequencies)
+    noise = NOISE * st.reference_approach
+    comps = fit_lines(integ.time, disp, lines, op.speed, st.ndof, noise)
+    notes = list(st.notes) + notes
+    fn = integ.natural_frequencies
+    notes.append(
+        f"rotor = inner ring + shaft, displacement relative to the outer ring; transient "
+        f"detected over {integ.transient * 1e3:.4g} ms ({integ.settled}); Newmark step "
+        f"{integ.time_step * 1e6:.4g} us = {1.0 / (integ.time_step * fn.max()):.0f} steps per "
+        "period of the highest natural frequency"
+    )
+    if integ.settled == "stationary":
+        notes.append(
+            "the free vibration near the natural frequency did not decay (no or little "
+            "damping, or a resonance): it is part of the reported response"
+        )
+    elif integ.settled == "limit":
+        notes.append("no steady state detected within the step budget; the record may be biased")
+    if not comps:
+        notes.append(
+            f"no line above the solver's resolution ({noise:.2g} m p-p): the response is "
+            "steady to within it"
+        )
+    if integ.min_loaded < st.n_elements:
+        notes.append(
+            f"balls lost contact: as few as {integ.min_loaded} of {st.n_elements} loaded "
+            "(clearance / load zone)"
+        )
+    bearing = case.bearing
+    mean = disp.mean(axis=1)
+    fbp = ball_passage_frequency(st)
+    extras: dict[str, Any] = {
+        "mean_displacement_m": [float(mean[0]), float(mean[1])],
+        "natural_frequencies_hz": [float(f) for f in sorted(fn)],
+        "ball_passage_hz": fbp,
+        "time_step_s": integ.time_step,
+        "transient_s": integ.transient,
+        "transient_end": integ.settled,
+        "static_displacement_m": [float(v) for v in integ.static_position[: st.ndof]],
+        "contact_law": st.contact_law,
+        "contact_stiffness_n_per_m1_5": st.stiffness,
+        "preload_contact_angle_deg": math.degrees(st.contact_angle),
+        "axial_dof": st.ndof == 3,
+        "min_loaded_balls": integ.min_loaded,
+        "solver_resolution_m": noise,
+    }
+    if st.ndof == 3:
+        extras["mean_axial_displacement_m"] = float(mean[2])
+
+    def write_extra(directory: Path) -> list[Path]:
+        from runout import plotting
+
+        spectrum_csv = directory / "spectrum.csv"
+        spec = amplitude_spectrum(disp, sample_rate=spr * op.speed)
+        rows = np.column_stack([spec.frequencies, 2.0 * spec.amplitude.T])
+        header = "frequency_hz,x_pp_m,y_pp_m,z_pp_m"
+        np.savetxt(spectrum_csv, rows, delimiter=",", header=header, comments="", fmt="%.10g")
+        return [spectrum_csv, *plotting.plot_dynamic_figures(result, directory)]
+
+    result = RunResult(
+        model=MODEL,
+        title=case.title,
+        frequencies=bearing_frequencies(bearing, op, st.contact_angle),
+        contact_angle=st.contact_angle,
+        time=integ.time,
+        displacement=disp,
+        components=comps,
+        runout=runout_figures(disp, u, (radial, spr)),
+        measuring_direction=u,
+        extras=extras,
+        notes=tuple(notes),
+        writers=(write_extra,),
+    )
+    return result
+
+
+# --------------------------------------------------------------------------------------------
+# sweeps (seed 003 Figs. 3-4)
+# --------------------------------------------------------------------------------------------
+def _variant(case: Any, elements: int | None, preload: float | None) -> Any:
+    """The case with another number of balls and/or axial preload."""
+    from runout.case import parse_case
+
+    data = case.spec.model_dump(mode="python", exclude_none=True)
+    if elements is not None:
+        data["bearing"]["elements"] = int(elements)
+    if preload is not None:
+        data.setdefault("operation", {})["axial_load"] = float(preload)
+    data["analysis"]["model"] = MODEL
+    base = Path(case.path).parent if case.path and not case.path.startswith("<") else None
+    return parse_case(data, f"{case.path} (elements={elements}, preload={preload} N)", base)
+
+
+def _case_digest(case: Any) -> str:
+    text = json.dumps(case.spec.model_dump(mode="json"), sort_keys=True)
+    return hashlib.sha256(text.encode()).hexdigest()[:16]
+
+
+@dataclass(frozen=True)
+class SweepPoint:
+    """One point of a sweep: inputs and the figures of its steady state."""
+
+    elements: int
+    preload_n: float
+    contact_angle_deg: float
+    ball_passage_hz: float
+    natural_frequencies_hz: list[float]
+    radial_pp_m: float
+    ball_passage_pp_m: float
+    mean_displacement_m: list[float]
+    spectrum_hz: list[float]
+    spectrum_pp_m: list[float]
+    lines: list[dict[str, Any]]
+
+    def to_json(self) -> dict[str, Any]:
+        """Plain JSON."""
+        return dict(self.__dict__)
+
+
+def _point(case: Any, result: RunResult) -> SweepPoint:
+    u = result.measuring_direction
+    radial = u[0] * result.displacement[0] + u[1] * result.displacement[1]
+    fs = 1.0 / (result.time[1] - result.time[0])
+    spec = amplitude_spectrum(radial, sample_rate=fs)
+    fbp = float(result.extras["ball_passage_hz"])
+    radial_bp = float(extract_lines(result.time, radial, [fbp]).amplitude[0]) * 2.0
+    if radial_bp <= float(result.extras["solver_resolution_m"]):
+        radial_bp = 0.0
+    keep = spec.frequencies <= 8.0 * fbp
+    return SweepPoint(
+        elements=case.bearing.n_elements,
+        preload_n=case.operation.axial_load,
+        contact_angle_deg=math.degrees(result.contact_angle),
+        ball_passage_hz=fbp,
+        natural_frequencies_hz=list(result.extras["natural_frequencies_hz"]),
+        radial_pp_m=result.runout.radial_pp_m,
+        ball_passage_pp_m=radial_bp,
+        mean_displacement_m=list(result.extras["mean_displacement_m"]),
+        spectrum_hz=[float(f) for f in spec.frequencies[keep]],
+        spectrum_pp_m=[float(2.0 * a) for a in spec.amplitude[keep]],
+        lines=[c.to_json() for c in result.lines(top=12) if c.direction in ("x", "y")],
+    )
+
+
+def sweep(
+    case: Any,
+    elements: Sequence[int] = (),
+    preloads: Sequence[float] = (),
+    out: Path | None = None,
+    *,
+    progress: Callable[[int, int, str], None] | None = None,
+) -> list[SweepPoint]:
+    """Run the dynamic model over numbers of balls × axial preloads (seed 003 Figs. 3–4).
+
+    Every point is the case with ``[bearing] elements`` and ``[operation] axial_load``
+    replaced. With ``out``, each finished point is written at once to
+    ``out/points/Z<z>_P<p>N.json`` (with a digest of the case), and a rerun reuses the
+    points already there for the same case: an interrupted sweep loses nothing. The panels
+    (``spectra_elements_P<p>N.png``, ``spectra_preload_Z<z>.png``), ``trend.png`` and
+    ``sweep.csv`` are written at the end.
+
+    Parameters
+    ----------
+    case : Case
+    elements : sequence of int
+        Numbers of balls; empty = the case's.
+    preloads : sequence of float
+        Axial preloads [N]; empty = the case's.
+    out : Path or None
+        Output directory.
+    progress : callable or None
+        Called as ``progress(done, total, text)`` after each point.
+
+    Returns
+    -------
+    list of SweepPoint
+        In the order elements-major.
+    """
+    zs = list(elements) or [case.bearing.n_elements]
+    ps = list(preloads) or [case.operation.axial_load]
+    for p in ps:
+        if not (math.isfinite(p) and p >= 0.0):
+            raise GeometryError("preload", f"must be >= 0 N, got {p!r}")
+    digest = _case_digest(case)
+    points: list[SweepPoint] = []
+    total = len(zs) * len(ps)
+    if out is not None:
+        (out / "points").mkdir(parents=True, exist_ok=True)
+    for z in zs:
+        for p in ps:
+            name = f"Z{z}_P{p:g}N"
+            path = out / "points" / f"{name}.json" if out is not None else None
+            point = None
+            if path is not None and path.exists():
+                try:
+                    saved = json.loads(path.read_text())
+                    if saved.get("case_digest") == digest:
+                        saved.pop("case_digest")
+                        point = SweepPoint(**saved)
+                except (ValueError, TypeError):
+                    point = None
+            if point is None:
+                variant = _variant(case, z, p)
+                point = _point(variant, run(variant))
+                if path is not None:
+                    payload = {**point.to_json(), "case_digest": digest}
+                    tmp = path.with_suffix(".tmp")
+                    tmp.write_text(json.dumps(payload, allow_nan=False))
+                    tmp.replace(path)
+            points.append(point)
+            if progress is not None:
+                progress(len(points), total, name)
+    if out is not None:
+        _write_sweep(points, zs, ps, out, case.title)
+    return points
+
+
+def _write_sweep(
+    points: list[SweepPoint], zs: list[int], ps: list[float], out: Path, title: str
+) -> list[Path]:
+    from runout import plotting
+
+    written = []
+    path = out / "sweep.csv"
+    with path.open("w") as fh:
+        fh.write(
+            "elements,preload_n,contact_angle_deg,ball_passage_hz,natural_frequency_1_hz,"
+            "natural_frequency_2_hz,radial_pp_m,ball_passage_pp_m,mean_x_m,mean_y_m\n"
+        )
+        for pt in points:
+            fn = [*pt.natural_frequencies_hz, 0.0, 0.0]
+            fh.write(
+                f"{pt.elements},{pt.preload_n:.6g},{pt.contact_angle_deg:.6g},"
+                f"{pt.ball_passage_hz:.8g},{fn[0]:.8g},{fn[1]:.8g},{pt.radial_pp_m:.6g},"
+                f"{pt.ball_passage_pp_m:.6g},{pt.mean_displacement_m[0]:.6g},"
+                f"{pt.mean_displacement_m[1]:.6g}\n"
+            )
+    written.append(path)
+    written += plotting.plot_dynamic_sweep(points, zs, ps, out, title)
+    return written

@@ -1,0 +1,858 @@
+r"""Jones–Harris quasi-static equilibrium of a ball bearing at speed (seed 001 §2.1, Harris).
+
+Every ball is held between its two raceways by the contact loads :math:`Q_{ij}, Q_{oj}`, the
+centrifugal force :math:`F_{cj}` and the friction that resists its gyroscopic moment
+:math:`M_{gj}`; the inner ring (five degrees of freedom: axial :math:`\delta_a`, radial
+:math:`\delta_x, \delta_y`, tilts :math:`\theta_x, \theta_y`) is held by the balls against the
+external axial load, radial load and moment. The outer ring is the reference (fixed).
+
+Geometry (seed 001 eq. 5-6, Harris's notation). With the distance between the groove
+curvature centres :math:`A = (f_i + f_o - 1)D`, the free contact angle :math:`\alpha^0` and the
+radius of the locus of inner groove curvature centres
+:math:`\Re_i = d_m/2 + (f_i - 0.5)D\cos\alpha^0`, ball j at azimuth :math:`\psi_j` sees the inner
+groove centre at (axial, radial), relative to the outer groove centre,
+
+.. math::
+    A_{1j} = A\sin\alpha^0 + \delta_a + \Re_i(\theta_x\sin\psi_j - \theta_y\cos\psi_j),\qquad
+    A_{2j} = A\cos\alpha^0 + \delta_x\cos\psi_j + \delta_y\sin\psi_j .
+
+The ball centre is at :math:`(X_{1j}, X_{2j})` from the outer groove centre; eq. 5-6 give the
+approaches explicitly,
+
+.. math::
+    \delta_{oj} = \sqrt{X_{1j}^2 + X_{2j}^2} - (f_o - 0.5)D,\qquad
+    \delta_{ij} = \sqrt{(A_{1j} - X_{1j})^2 + (A_{2j} - X_{2j})^2} - (f_i - 0.5)D,
+
+and the contact angles are the directions of those two segments
+(:math:`\tan\alpha_{oj} = X_{1j}/X_{2j}`,
+:math:`\tan\alpha_{ij} = (A_{1j}-X_{1j})/(A_{2j}-X_{2j})`).
+
+Ball equilibrium (seed 001 eq. 3-4, with Harris's sign in the radial equation, see Notes):
+
+.. math::
+    Q_{ij}\sin\alpha_{ij} - Q_{oj}\sin\alpha_{oj}
+      - \frac{M_{gj}}{D}(\lambda_{ij}\cos\alpha_{ij} - \lambda_{oj}\cos\alpha_{oj}) = 0,
+
+    Q_{ij}\cos\alpha_{ij} - Q_{oj}\cos\alpha_{oj}
+      + \frac{M_{gj}}{D}(\lambda_{ij}\sin\alpha_{ij} - \lambda_{oj}\sin\alpha_{oj})
+      + F_{cj} = 0,
+
+with :math:`Q = K\delta^{3/2}` (Hertz; :math:`K_i, K_o` evaluated at each contact's own angle),
+:math:`F_c = \tfrac12 m d_m\omega_m^2`, :math:`M_g = J\omega_R\omega_m\sin\beta`
+(:math:`m = \rho\pi D^3/6`, :math:`J = mD^2/10`) and the ball orbit and spin speeds
+:math:`\omega_m, \omega_R` and spin-axis attitude β of Harris's raceway-control theory at the
+current contact angles (:func:`ball_speeds`). Outer-raceway control: λ_o = 2, λ_i = 0; inner:
+λ_i = 2, λ_o = 0 (seed 001 text after eq. 4).
+
+Ring equilibrium (seed 001 eq. 1-2), with the inner-race force on ball j split into
+:math:`P_{aj} = Q_{ij}\sin\alpha_{ij} - \lambda_{ij}(M_{gj}/D)\cos\alpha_{ij}` (axial) and
+:math:`P_{rj} = Q_{ij}\cos\alpha_{ij} + \lambda_{ij}(M_{gj}/D)\sin\alpha_{ij}` (radial), and the
+moment arm :math:`P_{mj} = P_{aj}\Re_i + \lambda_{ij} f_i M_{gj}`:
+
+.. math::
+    \sum_j P_{aj} = F_a,\quad \sum_j P_{rj}(\cos\psi_j, \sin\psi_j) = (F_x, F_y),\quad
+    \sum_j P_{mj}(\sin\psi_j, -\cos\psi_j) = (M_x, M_y).
+
+Solution (seed 001 Fig. 2: ring Newton outside, ball Newton inside). For given ring
+displacements each ball's two equations are solved for :math:`(X_{1j}, X_{2j})` by a vectorised
+2×2 Newton iteration (eq. 5-6 are eliminated exactly, so the four per-ball unknowns of the
+paper reduce to two); the ring's five equations are solved by Newton's method whose Jacobian is
+obtained by implicit differentiation of the converged ball states
+(:math:`dP/du = \partial P/\partial u - \partial P/\partial X\,(\partial g/\partial X)^{-1}
+\partial g/\partial u`, partial derivatives by complex-step differentiation, exact to
+round-off). That Jacobian at the solution *is* the bearing stiffness matrix. The speed effects
+are switched on after the static solution has converged (Newton–Raphson from the low-speed
+solution). The Hertz constants depend on the contact angles; they are linearised about the
+current angles inside the Newton iterations and re-centred until the angles stop moving, so
+their angle dependence is part of the stiffness matrix too.
+
+Notes
+-----
+* Seed 001 eq. 4 prints :math:`-\frac{M_{gj}}{d}(\lambda_{ij}\sin\alpha_{ij} -
+  \lambda_{oj}\sin\alpha_{oj})`; a friction force perpendicular to the contact line has
+  components :math:`(\mp\sin, \pm\cos)`, so the sine term must carry the opposite sign of the
+  cosine term of eq. 3. We use Harris's ``+``. The paper also prints :math:`d` (its ball
+  diameter) in eq. 5-6 where a length :math:`(f - 0.5)D` is meant.
+* Seed 001 gives λ_ij = λ_oj = 0 for inner-raceway control; that removes the gyroscopic moment
+  altogether. It is available as ``race_control = "none"``; ``"inner"`` is Harris's λ_i = 2.
+* A ball whose inner groove centre is no farther than A from the outer one (a gap) carries no
+  load on the inner race; it is pressed onto the outer groove bottom by its centrifugal force
+  (reported with Q_o = F_c, α = 0) and exerts nothing on the inner ring.
+* The ball speeds follow the rolling (no-slip) kinematics at the current angles; a signed speed
+  reverses ω_m and with it the centrifugal force's square is unchanged, while the gyroscopic
+  moment changes sign with the relative ring speed (outer ring rotating).
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from runout.bearing import BallBearing, Operation
+from runout.contact import ball_race_contacts
+from runout.errors import ConvergenceError, GeometryError, NumericalError
+from runout.kinematics import bearing_frequencies
+from runout.loading import axial_loading
+from runout.results import Runout, RunResult
+
+__all__ = [
+    "DOF_NAMES",
+    "EquilibriumResult",
+    "EquilibriumSolution",
+    "ball_speeds",
+    "run",
+    "solve_equilibrium",
+]
+
+MODEL = "equilibrium"
+TWO_PI = 2.0 * math.pi
+#: Order of the ring degrees of freedom in displacements and stiffness matrices.
+DOF_NAMES = ("axial", "x", "y", "tilt_x", "tilt_y")
+_LAMBDA = {"outer": (0.0, 2.0), "inner": (2.0, 0.0), "none": (0.0, 0.0)}
+_H = 1e-30  # complex step [m]; any tiny value is exact to round-off
+_BALL_ITER = 50
+_RING_ITER = 80
+_ANGLE_LOOPS = 12
+_H_ALPHA = 1e-6  # step of the central difference of K(α) [rad]; angles clipped to >= it
+
+
+# --------------------------------------------------------------------------------------------
+# ball speeds (Harris, raceway control)
+# --------------------------------------------------------------------------------------------
+def ball_speeds(
+    cos_i: Any,
+    sin_i: Any,
+    cos_o: Any,
+    sin_o: Any,
+    gamma: float,
+    inner: float,
+    outer: float,
+    control: str,
+) -> tuple[Any, Any, Any, Any]:
+    r"""Orbit speed, spin speed and spin-axis attitude of a ball (Harris, raceway control).
+
+    With γ' = D/d_m, the relative ring speed ω = ω_i − ω_o and the spin-axis attitude β
+    (:math:`\tan\beta = \sin\alpha_o/(\cos\alpha_o + \gamma')` for outer-raceway control,
+    :math:`\sin\alpha_i/(\cos\alpha_i - \gamma')` for inner-raceway control),
+
+    .. math::
+        \frac{\omega_m - \omega_o}{\omega} =
+          \frac{(1-\gamma'\cos\alpha_i)c_o}
+               {(1-\gamma'\cos\alpha_i)c_o + (1+\gamma'\cos\alpha_o)c_i},
+        \quad
+        \frac{\omega_R}{\omega} = \Big[\Big(\frac{c_o}{1+\gamma'\cos\alpha_o}
+          + \frac{c_i}{1-\gamma'\cos\alpha_i}\Big)\gamma'\cos\beta\Big]^{-1},
+
+    :math:`c = \cos\alpha + \tan\beta\sin\alpha`. With α_i = α_o = β = α these reduce to the
+    cage speed of seed 001 eq. 7 and the spin of eq. 9. Works on complex arrays (used for
+    complex-step derivatives).
+
+    Parameters
+    ----------
+    cos_i, sin_i, cos_o, sin_o : array_like
+        Cosine and sine of the inner and outer contact angles.
+    gamma : float
+        D / d_m [-].
+    inner, outer : float
+        Ring speeds [rad/s].
+    control : {"outer", "inner", "none"}
+        Controlling raceway ("none" uses the outer-control attitude).
+
+    Returns
+    -------
+    omega_m : array
+        Orbit (cage) speed of the ball [rad/s].
+    omega_r : array
+        Spin speed about its own axis, relative to the cage, signed with ω [rad/s].
+    sin_beta, cos_beta : array
+        Spin-axis attitude.
+    """
+    if control == "inner":
+        tb = sin_i / (cos_i - gamma)
+    else:
+        tb = sin_o / (cos_o + gamma)
+    cb = 1.0 / np.sqrt(1.0 + tb * tb)
+    sb = tb * cb
+    ci = cos_i + tb * sin_i
+    co = cos_o + tb * sin_o
+    w = inner - outer
+    a = (1.0 - gamma * cos_i) * co
+    b = (1.0 + gamma * cos_o) * ci
+    omega_m = outer + w * a / (a + b)
+    omega_r = w / ((co / (1.0 + gamma * cos_o) + ci / (1.0 - gamma * cos_i)) * gamma * cb)
+    return omega_m, omega_r, sb, cb
+
+
+# --------------------------------------------------------------------------------------------
+# per-ball problem
+# --------------------------------------------------------------------------------------------
+@dataclass
+class _Params:
+    """Constants of the per-ball equations (scalars, or arrays of shape (Z,))."""
+
+    ball_diameter: float
+    pitch_diameter: float
+    ri0: float  # (f_i - 0.5) D
+    ro0: float  # (f_o - 0.5) D
+    f_i: float
+    mass: float
+    inertia: float
+    inner: float  # [rad/s]
+    outer: float
+    control: str
+    lam_i: float
+    lam_o: float
+    # Hertz constants linearised in the contact angle about alpha_c: K = k0 + k1 (α − α_c)
+    ki0: NDArray[np.float64] = field(default_factory=lambda: np.zeros(0))
+    ki1: NDArray[np.float64] = field(default_factory=lambda: np.zeros(0))
+    ai_c: NDArray[np.float64] = field(default_factory=lambda: np.zeros(0))
+    ko0: NDArray[np.float64] = field(default_factory=lambda: np.zeros(0))
+    ko1: NDArray[np.float64] = field(default_factory=lambda: np.zeros(0))
+    ao_c: NDArray[np.float64] = field(default_factory=lambda: np.zeros(0))
+    speed_on: bool = True
+
+
+def _hertz(delta: Any, k: Any) -> Any:
+    """K δ^1.5 for δ > 0 (real part), else 0; complex-safe."""
+    pos = np.real(delta) > 0.0
+    safe = np.where(pos, delta, 1.0)
+    return np.where(pos, k * safe * np.sqrt(safe), 0.0)
+
+
+def _ball_state(x1: Any, x2: Any, a1: Any, a2: Any, p: _Params) -> dict[str, Any]:
+    """Everything about each ball at ball-centre (x1, x2) and groove-centre (a1, a2) [m]."""
+    ro = np.sqrt(x1 * x1 + x2 * x2)
+    e1, e2 = a1 - x1, a2 - x2
+    ri = np.sqrt(e1 * e1 + e2 * e2)
+    cos_o, sin_o = x2 / ro, x1 / ro
+    cos_i, sin_i = e2 / ri, e1 / ri
+    alpha_o = np.arctan(x1 / x2)
+    alpha_i = np.arctan(e1 / e2)
+    d_o = ro - p.ro0
+    d_i = ri - p.ri0
+    k_i = p.ki0 + p.ki1 * (alpha_i - p.ai_c)
+    k_o = p.ko0 + p.ko1 * (alpha_o - p.ao_c)
+    q_i = _hertz(d_i, k_i)
+    q_o = _hertz(d_o, k_o)
+    gamma = p.ball_diameter / p.pitch_diameter
+    if p.speed_on:
+        wm, wr, sb, _ = ball_speeds(cos_i, sin_i, cos_o, sin_o, gamma, p.inner, p.outer, p.control)
+        fc = 0.5 * p.mass * p.pitch_diameter * wm * wm
+        mg = p.inertia * wr * wm * sb
+    else:
+        wm = wr = 0.0 * x1
+        fc = mg = 0.0 * x1
+    md = mg / p.ball_diameter
+    g1 = q_i * sin_i - q_o * sin_o - md * (p.lam_i * cos_i - p.lam_o * cos_o)
+    g2 = q_i * cos_i - q_o * cos_o + md * (p.lam_i * sin_i - p.lam_o * sin_o) + fc
+    pa = q_i * sin_i - p.lam_i * md * cos_i
+    pr = q_i * cos_i + p.lam_i * md * sin_i
+    return {
+        "g1": g1,
+        "g2": g2,
+        "pa": pa,
+        "pr": pr,
+        "mg": mg,
+        "fc": fc,
+        "q_i": q_i,
+        "q_o": q_o,
+        "d_i": d_i,
+        "d_o": d_o,
+        "alpha_i": alpha_i,
+        "alpha_o": alpha_o,
+        "omega_m": wm,
+        "omega_r": wr,
+    }
+
+
+def _residual_and_jacobian(
+    x: NDArray[np.float64], a: NDArray[np.float64], p: _Params
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """g (Z, 2) and ∂g/∂X (Z, 2, 2) by complex step."""
+    g = np.empty((x.shape[0], 2))
+    jac = np.empty((x.shape[0], 2, 2))
+    for k in range(2):
+        xc = x.astype(complex)
+        xc[:, k] += 1j * _H
+        s = _ball_state(xc[:, 0], xc[:, 1], a[:, 0], a[:, 1], p)
+        jac[:, 0, k] = s["g1"].imag / _H
+        jac[:, 1, k] = s["g2"].imag / _H
+        if k == 0:
+            g[:, 0], g[:, 1] = s["g1"].real, s["g2"].real
+    return g, jac
+
+
+def _solve_balls(
+    a: NDArray[np.float64], x0: NDArray[np.float64], p: _Params, scale: float
+) -> tuple[NDArray[np.float64], NDArray[np.bool_]]:
+    """Newton solve of eq. 3-4 for every loaded ball; returns X (Z, 2) and the loaded mask.
+
+    Unloaded balls (inner groove centre within A of the outer one) are placed on the outer
+    groove bottom (see module Notes).
+    """
+    loaded = np.hypot(a[:, 0], a[:, 1]) > p.ri0 + p.ro0
+    x = x0.copy()
+    idx = np.flatnonzero(loaded)
+    if idx.size:
+        sub = _sub(p, idx)
+        xs, aa = x[idx], a[idx]
+        tol = 1e-13 * scale
+        for _ in range(_BALL_ITER):
+            g, jac = _residual_and_jacobian(xs, aa, sub)
+            det = jac[:, 0, 0] * jac[:, 1, 1] - jac[:, 0, 1] * jac[:, 1, 0]
+            if not np.all(np.abs(det) > 0.0):
+                raise NumericalError("ball equilibrium: singular contact stiffness")
+            s0 = -(jac[:, 1, 1] * g[:, 0] - jac[:, 0, 1] * g[:, 1]) / det
+            s1 = -(jac[:, 0, 0] * g[:, 1] - jac[:, 1, 0] * g[:, 0]) / det
+            step = np.stack([s0, s1], axis=1)
+            # keep both approaches from jumping far past zero in one step
+            big = np.abs(step).max(axis=1)
+            limit = 0.25 * (sub.ri0 + sub.ro0) * 0.05
+            factor = np.minimum(1.0, limit / np.maximum(big, 1e-300))
+            xs = xs + factor[:, None] * step
+            if np.all(big * factor <= tol):
+                break
+        else:
+            raise ConvergenceError("ball equilibrium (seed 001 eq. 3-6) did not converge")
+        x[idx] = xs
+    # unloaded balls: on the outer groove bottom
+    out = np.flatnonzero(~loaded)
+    if out.size:
+        x[out, 0] = 0.0
+        x[out, 1] = p.ro0
+    return x, loaded
+
+
+def _sub(p: _Params, idx: NDArray[np.int64]) -> _Params:
+    """The parameters of a subset of balls."""
+    q = _Params(**{k: v for k, v in p.__dict__.items()})
+    for name in ("ki0", "ki1", "ai_c", "ko0", "ko1", "ao_c"):
+        setattr(q, name, getattr(p, name)[idx])
+    return q
+
+
+def _start(a: NDArray[np.float64], p: _Params) -> NDArray[np.float64]:
+    """Zero-speed ball centre: on the line between the groove centres, Hertz split."""
+    dist = np.hypot(a[:, 0], a[:, 1])
+    s = np.maximum(dist - p.ri0 - p.ro0, 0.0)
+    ci = p.ki0 ** (-2.0 / 3.0)
+    co = p.ko0 ** (-2.0 / 3.0)
+    d_o = s * co / (ci + co)
+    r = p.ro0 + d_o
+    return np.stack([a[:, 0] / dist * r, a[:, 1] / dist * r], axis=1)
+
+
+def _local_derivatives(
+    x: NDArray[np.float64], a: NDArray[np.float64], p: _Params
+) -> tuple[dict[str, Any], NDArray[np.float64]]:
+    """Ball state and the total derivative of (P_a, P_r, M_g) w.r.t. (A_1, A_2): (Z, 3, 2)."""
+    z = x.shape[0]
+    dg_dx = np.empty((z, 2, 2))
+    dg_da = np.empty((z, 2, 2))
+    dp_dx = np.empty((z, 3, 2))
+    dp_da = np.empty((z, 3, 2))
+    state: dict[str, Any] = {}
+    for which, dg, dp in (("x", dg_dx, dp_dx), ("a", dg_da, dp_da)):
+        for k in range(2):
+            xc = x.astype(complex)
+            ac = a.astype(complex)
+            (xc if which == "x" else ac)[:, k] += 1j * _H
+            s = _ball_state(xc[:, 0], xc[:, 1], ac[:, 0], ac[:, 1], p)
+            dg[:, 0, k] = np.imag(s["g1"]) / _H
+            dg[:, 1, k] = np.imag(s["g2"]) / _H
+            dp[:, 0, k] = np.imag(s["pa"]) / _H
+            dp[:, 1, k] = np.imag(s["pr"]) / _H
+            dp[:, 2, k] = np.imag(s["mg"] + 0.0 * xc[:, 0]) / _H
+            if not state:
+                state = {key: np.real(v + 0.0 * xc[:, 0]) for key, v in s.items()}
+    # unloaded balls have no contact stiffness (∂g/∂X = 0): they contribute nothing
+    free = np.abs(dg_dx[:, 0, 0] * dg_dx[:, 1, 1] - dg_dx[:, 0, 1] * dg_dx[:, 1, 0]) == 0.0
+    dg_dx[free] = np.eye(2)
+    dg_da[free] = 0.0
+    total = dp_da - np.einsum("zij,zjk->zik", dp_dx, np.linalg.solve(dg_dx, dg_da))
+    return state, total
+
+
+# --------------------------------------------------------------------------------------------
+# ring problem
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class EquilibriumSolution:
+    """Converged Jones–Harris state of the bearing.
+
+    Attributes
+    ----------
+    displacement : ndarray, shape (5,)
+        Inner ring relative to the outer ring: δ_a [m], δ_x [m], δ_y [m], θ_x [rad],
+        θ_y [rad] (:data:`DOF_NAMES`).
+    stiffness : ndarray, shape (5, 5)
+        ∂(F_a, F_x, F_y, M_x, M_y)/∂(δ_a, δ_x, δ_y, θ_x, θ_y) at the solution [N/m, N/rad,
+        N m/m, N m/rad].
+    azimuth : ndarray, shape (Z,)
+        ψ_j [rad].
+    inner_contact_angle, outer_contact_angle : ndarray
+        α_ij, α_oj [rad].
+    inner_load, outer_load : ndarray
+        Q_ij, Q_oj [N].
+    inner_approach, outer_approach : ndarray
+        δ_ij, δ_oj [m].
+    centrifugal_force : ndarray
+        F_cj [N].
+    gyroscopic_moment : ndarray
+        M_gj [N m].
+    orbit_speed, spin_speed : ndarray
+        ω_mj, ω_Rj [rad/s].
+    loaded : ndarray of bool
+        Balls in contact with the inner race.
+    iterations : int
+        Ring Newton iterations (all stages).
+    residual : float
+        Largest ring-force residual at the solution [N or N m].
+    """
+
+    displacement: NDArray[np.float64]
+    stiffness: NDArray[np.float64]
+    azimuth: NDArray[np.float64]
+    inner_contact_angle: NDArray[np.float64]
+    outer_contact_angle: NDArray[np.float64]
+    inner_load: NDArray[np.float64]
+    outer_load: NDArray[np.float64]
+    inner_approach: NDArray[np.float64]
+    outer_approach: NDArray[np.float64]
+    centrifugal_force: NDArray[np.float64]
+    gyroscopic_moment: NDArray[np.float64]
+    orbit_speed: NDArray[np.float64]
+    spin_speed: NDArray[np.float64]
+    loaded: NDArray[np.bool_]
+    iterations: int
+    residual: float
+
+    def ball_table(self) -> list[dict[str, float]]:
+        """One row per ball, SI values with the unit in the key."""
+        rows = []
+        for j in range(self.azimuth.size):
+            rows.append(
+                {
+                    "ball": j + 1,
+                    "azimuth_deg": math.degrees(self.azimuth[j]),
+                    "inner_contact_angle_deg": math.degrees(self.inner_contact_angle[j]),
+                    "outer_contact_angle_deg": math.degrees(self.outer_contact_angle[j]),
+                    "inner_load_n": float(self.inner_load[j]),
+                    "outer_load_n": float(self.outer_load[j]),
+                    "inner_approach_m": float(self.inner_approach[j]),
+                    "outer_approach_m": float(self.outer_approach[j]),
+                    "centrifugal_force_n": float(self.centrifugal_force[j]),
+                    "gyroscopic_moment_n_m": float(self.gyroscopic_moment[j]),
+                    "orbit_speed_hz": float(self.orbit_speed[j] / TWO_PI),
+                    "spin_speed_hz": float(self.spin_speed[j] / TWO_PI),
+                }
+            )
+        return rows
+
+
+class _Ring:
+    """The 5-DOF ring problem for one bearing and operating point."""
+
+    def __init__(
+        self, bearing: BallBearing, op: Operation, control: str, speed_on: bool = True
+    ) -> None:
+        self.bearing = bearing
+        d = bearing.ball_diameter
+        self.alpha0 = bearing.free_contact_angle
+        self.a = bearing.curvature_distance
+        self.ri0 = (bearing.inner_conformity - 0.5) * d
+        self.ro0 = (bearing.outer_conformity - 0.5) * d
+        self.rad_i = 0.5 * bearing.pitch_diameter + self.ri0 * math.cos(self.alpha0)
+        z = bearing.n_elements
+        self.psi = TWO_PI * np.arange(z) / z
+        self.cos_psi, self.sin_psi = np.cos(self.psi), np.sin(self.psi)
+        mass = bearing.material.density * math.pi * d**3 / 6.0
+        lam_i, lam_o = _LAMBDA[control]
+        self.p = _Params(
+            ball_diameter=d,
+            pitch_diameter=bearing.pitch_diameter,
+            ri0=self.ri0,
+            ro0=self.ro0,
+            f_i=bearing.inner_conformity,
+            mass=mass,
+            inertia=mass * d * d / 10.0,
+            inner=TWO_PI * op.inner_speed,
+            outer=TWO_PI * op.outer_speed,
+            control=control,
+            lam_i=lam_i,
+            lam_o=lam_o,
+            speed_on=speed_on,
+        )
+        self._k_cache: dict[float, tuple[float, float]] = {}
+        self.x = np.zeros((z, 2))
+        self.have_x = False
+
+    # Hertz constants and their slope in the contact angle --------------------------------
+    def _k(self, alpha: float) -> tuple[float, float]:
+        key = round(alpha, 13)
+        if key not in self._k_cache:
+            c = ball_race_contacts(self.bearing, alpha)
+            self._k_cache[key] = (c.inner.stiffness, c.outer.stiffness)
+        return self._k_cache[key]
+
+    def set_angles(self, alpha_i: NDArray[np.float64], alpha_o: NDArray[np.float64]) -> None:
+        """Linearise K_i, K_o about these angles (central differences of the exact Hertz K)."""
+        h = _H_ALPHA
+        ki0, ki1, ko0, ko1 = (np.empty(alpha_i.size) for _ in range(4))
+        for j, (ai, ao) in enumerate(zip(alpha_i, alpha_o, strict=True)):
+            ai = min(max(float(ai), h), 0.5 * math.pi - 2 * h)
+            ao = min(max(float(ao), h), 0.5 * math.pi - 2 * h)
+            ki0[j] = self._k(ai)[0]
+            ki1[j] = (self._k(ai + h)[0] - self._k(ai - h)[0]) / (2 * h)
+            ko0[j] = self._k(ao)[1]
+            ko1[j] = (self._k(ao + h)[1] - self._k(ao - h)[1]) / (2 * h)
+        self.p.ki0, self.p.ki1, self.p.ai_c = ki0, ki1, np.clip(alpha_i, h, None)
+        self.p.ko0, self.p.ko1, self.p.ao_c = ko0, ko1, np.clip(alpha_o, h, None)
+
+    # geometry ----------------------------------------------------------------------------
+    def groove_centres(self, q: NDArray[np.float64]) -> NDArray[np.float64]:
+        """(A_1j, A_2j) for ring displacement q, shape (Z, 2) [m]."""
+        a1 = (
+            self.a * math.sin(self.alpha0)
+            + q[0]
+            + self.rad_i * (q[3] * self.sin_psi - q[4] * self.cos_psi)
+        )
+        a2 = self.a * math.cos(self.alpha0) + q[1] * self.cos_psi + q[2] * self.sin_psi
+        return np.stack([a1, a2], axis=1)
+
+    def forces(
+        self, q: NDArray[np.float64]
+    ) -> tuple[NDArray[np.float64], NDArray[np.float64], dict[str, Any], NDArray[np.bool_]]:
+        """Ring force (5,), its Jacobian (5, 5), ball states and loaded mask at q."""
+        a = self.groove_centres(q)
+        x0 = self.x if self.have_x else _start(a, self.p)
+        x, loaded = _solve_balls(a, x0, self.p, self.a)
+        self.x, self.have_x = x, True
+        state, dp = _local_derivatives(x, a, self.p)
+        pa, pr = state["pa"], state["pr"]
+        pm = pa * self.rad_i + self.p.lam_i * self.p.f_i * state["mg"]
+        pa = np.where(loaded, pa, 0.0)
+        pr = np.where(loaded, pr, 0.0)
+        pm = np.where(loaded, pm, 0.0)
+        cp, sp = self.cos_psi, self.sin_psi
+        force = np.array(
+            [pa.sum(), (pr * cp).sum(), (pr * sp).sum(), (pm * sp).sum(), -(pm * cp).sum()]
+        )
+        # dP/du per ball: rows (P_a, P_r, P_m), columns (A_1, A_2)
+        dpm = dp[:, 0, :] * self.rad_i + self.p.lam_i * self.p.f_i * dp[:, 2, :]
+        local = np.stack([dp[:, 0, :], dp[:, 1, :], dpm], axis=1)
+        local[~loaded] = 0.0
+        # C_j: (P_a, P_r, P_m) -> (F_a, F_x, F_y, M_x, M_y); B_j: q -> (A_1, A_2)
+        z = cp.size
+        c = np.zeros((z, 5, 3))
+        c[:, 0, 0] = 1.0
+        c[:, 1, 1], c[:, 2, 1] = cp, sp
+        c[:, 3, 2], c[:, 4, 2] = sp, -cp
+        b = np.zeros((z, 2, 5))
+        b[:, 0, 0] = 1.0
+        b[:, 0, 3], b[:, 0, 4] = self.rad_i * sp, -self.rad_i * cp
+        b[:, 1, 1], b[:, 1, 2] = cp, sp
+        jac = np.einsum("zij,zjk,zkl->il", c, local, b)
+        state["loaded"] = loaded
+        return force, jac, state, loaded
+
+
+def _external(op: Operation) -> NDArray[np.float64]:
+    return np.array(
+        [
+            op.axial_load,
+            op.radial_load * math.cos(op.radial_load_angle),
+            op.radial_load * math.sin(op.radial_load_angle),
+            op.moment_load * math.cos(op.moment_load_angle),
+            op.moment_load * math.sin(op.moment_load_angle),
+        ]
+    )
+
+
+def _newton(
+    ring: _Ring, q: NDArray[np.float64], load: NDArray[np.float64], stage: str
+) -> tuple[NDArray[np.float64], int]:
+    """Damped Newton on the ring equations; returns q and the iteration count."""
+    a = ring.a
+    f_scale = max(float(np.abs(load[:3]).max()), 1e-3)
+    m_scale = f_scale * ring.rad_i
+    scales = np.array([f_scale, f_scale, f_scale, m_scale, m_scale])
+    step_max = 0.05 * a
+    for it in range(1, _RING_ITER + 1):
+        force, jac, _, loaded = ring.forces(q)
+        res = force - load
+        if np.count_nonzero(loaded) < 3:
+            raise NumericalError(
+                f"{stage}: fewer than 3 balls carry load; the ring cannot be held "
+                f"(loads {load.tolist()})"
+            )
+        try:
+            dq = -np.linalg.solve(jac + 1e-12 * np.diag(np.abs(np.diag(jac)) + 1.0), res)
+        except np.linalg.LinAlgError:
+            raise NumericalError(f"{stage}: singular bearing stiffness matrix") from None
+        lin = np.array([1.0, 1.0, 1.0, ring.rad_i, ring.rad_i])
+        big = float(np.abs(dq * lin).max())
+        if big > step_max:
+            dq *= step_max / big
+            big = step_max
+        norm0 = float(np.abs(res / scales).max())
+        t = 1.0
+        for _ in range(30):
+            trial = q + t * dq
+            f1, _, _, _ = ring.forces(trial)
+            if float(np.abs((f1 - load) / scales).max()) <= max(norm0, 1e-14) or t < 1e-6:
+                break
+            t *= 0.5
+        q = q + t * dq
+        if big * t <= 1e-13 * a and norm0 <= 1e-9:
+            return q, it
+    raise ConvergenceError(f"{stage}: ring equilibrium (seed 001 eq. 1-2) did not converge")
+
+
+def _initial_displacement(bearing: BallBearing, op: Operation) -> NDArray[np.float64]:
+    q = np.zeros(5)
+    if op.axial_load > 0.0:
+        q[0] = axial_loading(bearing, op.axial_load).axial_displacement
+    if op.radial_load > 0.0:
+        z = bearing.n_elements
+        kn = ball_race_contacts(bearing, bearing.free_contact_angle).combined_stiffness
+        guess = (2.5 * op.radial_load / (z * kn)) ** (2.0 / 3.0)
+        if op.axial_load == 0.0:
+            guess += 0.5 * bearing.radial_clearance
+        q[1] = guess * math.cos(op.radial_load_angle)
+        q[2] = guess * math.sin(op.radial_load_angle)
+    if op.axial_load == 0.0 and op.radial_load == 0.0:
+        raise GeometryError(
+            "operation",
+            "the equilibrium model needs an axial or a radial load to hold the inner ring",
+        )
+    return q
+
+
+def solve_equilibrium(
+    bearing: BallBearing, op: Operation, *, race_control: str = "outer"
+) -> EquilibriumSolution:
+    """Jones–Harris equilibrium of ``bearing`` at the loads and speed of ``op``.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        Geometry and material (density for the ball mass).
+    op : Operation
+        Ring speeds [Hz], axial load, radial load and its direction, moment and its direction.
+    race_control : {"outer", "inner", "none"}
+        Raceway whose friction resists the gyroscopic moment (module docstring).
+
+    Returns
+    -------
+    EquilibriumSolution
+
+    Raises
+    ------
+    GeometryError
+        No load, or an unknown race control.
+    NumericalError, ConvergenceError
+        When the ring cannot be held; the message names the stage (static or at speed).
+    """
+    if not isinstance(bearing, BallBearing):
+        raise GeometryError("bearing.type", "the equilibrium model needs a ball bearing")
+    if race_control not in _LAMBDA:
+        raise GeometryError(
+            "analysis.race_control", f'must be "outer", "inner" or "none", got {race_control!r}'
+        )
+    load = _external(op)
+    q = _initial_displacement(bearing, op)
+    total = 0
+    ring = _Ring(bearing, op, race_control, speed_on=False)
+    stages = ["static"]
+    if op.inner_speed != 0.0 or op.outer_speed != 0.0:
+        stages.append("at speed")
+    alpha = bearing.free_contact_angle if op.axial_load == 0.0 else None
+    if alpha is None:
+        alpha = axial_loading(bearing, op.axial_load).contact_angle
+    z = bearing.n_elements
+    ring.set_angles(np.full(z, alpha), np.full(z, alpha))
+    for stage in stages:
+        ring.p.speed_on = stage == "at speed"
+        for _ in range(_ANGLE_LOOPS):
+            q, it = _newton(ring, q, load, stage)
+            total += it
+            _, _, state, loaded = ring.forces(q)
+            ai = np.clip(np.where(loaded, state["alpha_i"], ring.p.ai_c), _H_ALPHA, None)
+            ao = np.clip(np.where(loaded, state["alpha_o"], ring.p.ao_c), _H_ALPHA, None)
+            moved = max(
+                float(np.abs(ai - ring.p.ai_c).max()), float(np.abs(ao - ring.p.ao_c).max())
+            )
+            ring.set_angles(ai, ao)
+            if moved < 1e-11:
+                break
+        else:
+            raise ConvergenceError(f"{stage}: contact angles did not settle")
+    force, jac, state, loaded = ring.forces(q)
+    unl = ~loaded
+    q_o = np.where(unl, state["fc"], state["q_o"])
+    d_o = np.where(unl, (np.abs(state["fc"]) / ring.p.ko0) ** (2.0 / 3.0), state["d_o"])
+    return EquilibriumSolution(
+        displacement=q,
+        stiffness=jac,
+        azimuth=ring.psi,
+        inner_contact_angle=np.where(unl, 0.0, state["alpha_i"]),
+        outer_contact_angle=np.where(unl, 0.0, state["alpha_o"]),
+        inner_load=np.where(unl, 0.0, state["q_i"]),
+        outer_load=q_o,
+        inner_approach=np.where(unl, 0.0, state["d_i"]),
+        outer_approach=d_o,
+        centrifugal_force=np.broadcast_to(state["fc"], (z,)).copy(),
+        gyroscopic_moment=np.broadcast_to(state["mg"], (z,)).copy(),
+        orbit_speed=np.broadcast_to(state["omega_m"], (z,)).copy(),
+        spin_speed=np.broadcast_to(state["omega_r"], (z,)).copy(),
+        loaded=loaded,
+        iterations=total,
+        residual=float(np.abs(force - load).max()),
+    )
+
+
+# --------------------------------------------------------------------------------------------
+# model
+# --------------------------------------------------------------------------------------------
+Rows = list[tuple[str, str, str]]
+
+
+@dataclass(frozen=True)
+class EquilibriumResult(RunResult):
+    """A :class:`RunResult` with the per-ball table and the stiffness matrix in its output."""
+
+    solution: EquilibriumSolution | None = None
+
+    def summary_sections(self) -> list[tuple[str, Rows]]:
+        """Ring displacements, stiffness diagonal, per-ball angles and loads."""
+        s = self.solution
+        assert s is not None
+        q = s.displacement
+        sections: list[tuple[str, Rows]] = [
+            (
+                f"{self.title or self.model}: Jones-Harris equilibrium "
+                f"({self.extras['race_control']} race control)",
+                [
+                    ("axial displacement δ_a", f"{q[0] * 1e6:.6g}", "µm"),
+                    ("radial displacement δ_x", f"{q[1] * 1e6:.6g}", "µm"),
+                    ("radial displacement δ_y", f"{q[2] * 1e6:.6g}", "µm"),
+                    ("tilt θ_x", f"{q[3] * 1e3:.6g}", "mrad"),
+                    ("tilt θ_y", f"{q[4] * 1e3:.6g}", "mrad"),
+                    ("axial stiffness K_aa", f"{s.stiffness[0, 0] * 1e-6:.6g}", "N/µm"),
+                    ("radial stiffness K_xx", f"{s.stiffness[1, 1] * 1e-6:.6g}", "N/µm"),
+                    ("radial stiffness K_yy", f"{s.stiffness[2, 2] * 1e-6:.6g}", "N/µm"),
+                    ("tilt stiffness K_θxθx", f"{s.stiffness[3, 3]:.6g}", "N m/rad"),
+                    ("tilt stiffness K_θyθy", f"{s.stiffness[4, 4]:.6g}", "N m/rad"),
+                ],
+            )
+        ]
+        rows: Rows = []
+        for r in s.ball_table():
+            rows.append(
+                (
+                    f"ball {r['ball']:d} at {r['azimuth_deg']:.4g} deg",
+                    f"α_i {r['inner_contact_angle_deg']:.4f} / α_o "
+                    f"{r['outer_contact_angle_deg']:.4f} deg",
+                    f"Q_i {r['inner_load_n']:.5g} / Q_o {r['outer_load_n']:.5g} N; "
+                    f"δ_i {r['inner_approach_m'] * 1e6:.5g} / δ_o "
+                    f"{r['outer_approach_m'] * 1e6:.5g} µm",
+                )
+            )
+        sections.append(("Balls (contact angles, loads, approaches)", rows))
+        if self.notes:
+            sections.append(("Notes", [(n, "", "") for n in self.notes]))
+        return sections
+
+
+def _writer(sol: EquilibriumSolution, title: str) -> Callable[[Path], list[Path]]:
+    def write(directory: Path) -> list[Path]:
+        from runout import plotting
+
+        ax = plotting.plot_ball_loads(
+            np.degrees(sol.azimuth),
+            sol.inner_load,
+            sol.outer_load,
+            np.degrees(sol.inner_contact_angle),
+            np.degrees(sol.outer_contact_angle),
+            title,
+        )
+        png = plotting.save_figure(ax, directory / "balls.png")
+        path = directory / "balls.csv"
+        table = sol.ball_table()
+        with path.open("w", newline="") as fh:
+            w = csv.DictWriter(fh, fieldnames=list(table[0]))
+            w.writeheader()
+            for row in table:
+                w.writerow({k: f"{v:.12g}" for k, v in row.items()})
+        kpath = directory / "stiffness.csv"
+        with kpath.open("w", newline="") as fh:
+            w2 = csv.writer(fh)
+            w2.writerow(["", *DOF_NAMES])
+            for name, row in zip(DOF_NAMES, sol.stiffness, strict=True):
+                w2.writerow([name, *(f"{v:.12g}" for v in row)])
+        return [path, kpath, png]
+
+    return write
+
+
+def run(case: object) -> RunResult:
+    """Run the Jones–Harris equilibrium model (seed 001 §2.1) on a case."""
+    bearing = case.bearing  # type: ignore[attr-defined]
+    op = case.operation  # type: ignore[attr-defined]
+    control = case.analysis.race_control  # type: ignore[attr-defined]
+    sol = solve_equilibrium(bearing, op, race_control=control)
+    loaded = sol.loaded
+    mean_alpha = float(
+        0.5 * (sol.inner_contact_angle[loaded].mean() + sol.outer_contact_angle[loaded].mean())
+    )
+    q = sol.displacement
+    notes = [
+        "static equilibrium of the perfect bearing at one instant: no runout history "
+        "(components empty); displacement = inner ring relative to the outer ring",
+    ]
+    if not loaded.all():
+        notes.append(
+            f"{int((~loaded).sum())} of {loaded.size} balls carry no inner-race load "
+            "(pressed onto the outer groove by their centrifugal force only)"
+        )
+    extras: dict[str, Any] = {
+        "race_control": control,
+        "ring_displacement": {
+            "axial_m": float(q[0]),
+            "x_m": float(q[1]),
+            "y_m": float(q[2]),
+            "tilt_x_rad": float(q[3]),
+            "tilt_y_rad": float(q[4]),
+        },
+        "stiffness_matrix": {
+            "dofs": list(DOF_NAMES),
+            "units": "rows F_a, F_x, F_y [N], M_x, M_y [N m]; columns per m or per rad",
+            "matrix": [[float(v) for v in row] for row in sol.stiffness],
+        },
+        "inner_contact_angle_deg": [math.degrees(v) for v in sol.inner_contact_angle],
+        "outer_contact_angle_deg": [math.degrees(v) for v in sol.outer_contact_angle],
+        "balls": sol.ball_table(),
+        "newton_iterations": sol.iterations,
+    }
+    return EquilibriumResult(
+        model=MODEL,
+        title=case.title,  # type: ignore[attr-defined]
+        frequencies=bearing_frequencies(bearing, op, mean_alpha),
+        contact_angle=mean_alpha,
+        time=np.zeros(1),
+        displacement=np.array([[q[1]], [q[2]], [q[0]]]),
+        components=(),
+        runout=Runout(0.0, 0.0, 0.0, 0.0),
+        extras=extras,
+        notes=tuple(notes),
+        writers=(_writer(sol, case.title),),  # type: ignore[attr-defined]
+        solution=sol,
+    )

@@ -1,0 +1,167 @@
+"""`runout study`: JSON contract, interrupted run + --resume (byte for byte), Dask cluster."""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from runout.case import load_case
+from runout.study import run_study
+
+ROOT = Path(__file__).resolve().parents[2]
+CASE = """
+title = "study test"
+[bearing]
+type = "ball"
+elements = 10
+element_diameter = "1.5875 mm"
+pitch_diameter = "9.1 mm"
+inner_conformity = 0.529
+outer_conformity = 0.535
+radial_clearance = "5 um"
+[operation]
+speed = "7200 rpm"
+axial_load = "60.68 N"
+[analysis]
+model = "quasi_static_2d"
+revolutions = 4
+samples = 256
+[study]
+kind = "montecarlo"
+samples = {samples}
+seed = 3
+chunk_size = {chunk}
+[study.vary]
+element_diameter_sigma = "0.1 um"
+"operation.axial_load" = {{ distribution = "normal", std = "2 N" }}
+"""
+
+
+def write_case(tmp_path: Path, samples: int, chunk: int) -> Path:
+    path = tmp_path / "case.toml"
+    path.write_text(CASE.format(samples=samples, chunk=chunk), encoding="utf-8")
+    return path
+
+
+def cli(*args: str) -> subprocess.CompletedProcess[str]:
+    exe = [sys.executable, "-m", "runout.cli", *args]
+    return subprocess.run(exe, capture_output=True, text=True, check=False, timeout=120)
+
+
+def tree(directory: Path) -> dict[str, bytes]:
+    return {
+        str(p.relative_to(directory)): p.read_bytes()
+        for p in sorted(directory.rglob("*"))
+        if p.is_file()
+    }
+
+
+def test_study_json_contract(tmp_path: Path) -> None:
+    done = cli("study", str(write_case(tmp_path, 5, 2)), "--json")
+    assert done.returncode == 0, done.stderr
+    out = json.loads(done.stdout)
+    assert out["samples"] == 5 and out["failed"] == 0
+    stats = {"mean", "std", "p5", "p50", "p95"}
+    assert set(out["runout"]) == {"radial_pp_m", "axial_pp_m", "rro_pp_m", "nrro_pp_m"}
+    assert all(set(v) == stats for v in out["runout"].values())
+    comp = out["components"][0]
+    assert {"direction", "frequency_hz", "label", "pp_m"} <= set(comp)
+    assert set(comp["pp_m"]) == stats and comp["direction"] in ("x", "y")
+    assert comp["pp_m"]["p5"] <= comp["pp_m"]["p50"] <= comp["pp_m"]["p95"]
+
+
+def test_study_help_and_errors(tmp_path: Path) -> None:
+    done = cli("study", "--help")
+    assert done.returncode == 0 and "Example:" in done.stdout
+    plain = tmp_path / "plain.toml"
+    plain.write_text(CASE.split("[study]")[0], encoding="utf-8")
+    done = cli("study", str(plain))
+    assert done.returncode == 2 and "[study]" in done.stderr and "Traceback" not in done.stderr
+    done = cli("study", str(write_case(tmp_path, 5, 2)), "--resume")
+    assert done.returncode == 2 and "--out" in done.stderr
+
+
+def test_killed_run_resumes_to_identical_files(tmp_path: Path) -> None:
+    case = write_case(tmp_path, 120, 4)  # 30 chunks on the per-bearing path
+    fresh, killed = tmp_path / "fresh", tmp_path / "killed"
+    done = cli("study", str(case), "--out", str(fresh))
+    assert done.returncode == 0, done.stderr
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "runout.cli", "study", str(case), "--out", str(killed)],
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.DEVNULL,
+    )
+    manifest = killed / "manifest.json"
+    deadline = time.monotonic() + 60
+    written = 0
+    while time.monotonic() < deadline and proc.poll() is None:
+        try:
+            written = len(json.loads(manifest.read_text())["done"])
+        except (OSError, ValueError, KeyError):
+            written = 0
+        if written >= 3:
+            break
+        time.sleep(0.02)
+    assert proc.poll() is None, "the run ended before it could be interrupted"
+    os.kill(proc.pid, signal.SIGKILL)
+    proc.wait()
+    state = json.loads(manifest.read_text())
+    assert not state["complete"] and 3 <= len(state["done"]) < 30
+    done = cli("study", str(case), "--out", str(killed), "--resume")
+    assert done.returncode == 0, done.stderr
+    a, b = tree(fresh), tree(killed)
+    assert a.keys() == b.keys()
+    for name in a:
+        assert a[name] == b[name], name
+
+
+@pytest.fixture(scope="module")
+def cluster():  # type: ignore[no-untyped-def]
+    distributed = pytest.importorskip("distributed")
+    import dask
+
+    # Dask trims malloc aggressively by default (MALLOC_TRIM_THRESHOLD_=65536), which makes
+    # NumPy temporaries slow; restore a large threshold in the workers' environment.
+    with dask.config.set({"distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_": 2**28}):
+        with distributed.LocalCluster(
+            n_workers=2,
+            threads_per_worker=1,
+            processes=False,
+            host="127.0.0.1",
+            protocol="tcp",
+            dashboard_address=None,
+        ) as lc:
+            yield lc
+
+
+def test_dask_local_cluster_same_numbers(cluster, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
+    import distributed
+
+    case = load_case(write_case(tmp_path, 12, 3))
+    local = run_study(case)
+    with distributed.Client(cluster) as client:
+        remote = run_study(case, executor=client.get_executor())
+    for k, v in local.runout.items():
+        np.testing.assert_array_equal(v, remote.runout[k])
+    for key, (f, pp) in local.lines.items():
+        assert remote.lines[key][0] == f
+        np.testing.assert_array_equal(pp, remote.lines[key][1])
+    # and the command line, through --scheduler tcp://...
+    done = cli(
+        "study",
+        str(write_case(tmp_path, 12, 3)),
+        "--json",
+        "--scheduler",
+        cluster.scheduler_address,
+    )
+    assert done.returncode == 0, done.stderr
+    out = json.loads(done.stdout)
+    assert out["runout"]["radial_pp_m"]["mean"] == local.to_json()["runout"]["radial_pp_m"]["mean"]

@@ -1,0 +1,261 @@
+"""equilibrium (Jones-Harris): balances, stiffness matrix, loads, options, output."""
+
+from __future__ import annotations
+
+import json
+import math
+from typing import Any
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from runout.bearing import BallBearing, Operation
+from runout.case import parse_case
+from runout.errors import GeometryError, NumericalError
+from runout.loading import axial_loading
+from runout.models import equilibrium as eq
+from runout.models import run_model
+
+
+def bearing(z: int = 10) -> BallBearing:
+    return BallBearing(z, 1.5875e-3, 9.1e-3, 0.529, 0.535, 5e-6)
+
+
+def _ring_balance(b: BallBearing, op: Operation, sol: eq.EquilibriumSolution) -> np.ndarray:
+    """Loads recomputed from the per-ball outputs (outer control: λ_i = 0) minus the applied."""
+    psi = sol.azimuth
+    qa = sol.inner_load * np.sin(sol.inner_contact_angle)
+    qr = sol.inner_load * np.cos(sol.inner_contact_angle)
+    rad = 0.5 * b.pitch_diameter + (b.inner_conformity - 0.5) * b.ball_diameter * math.cos(
+        b.free_contact_angle
+    )
+    got = np.array(
+        [
+            qa.sum(),
+            (qr * np.cos(psi)).sum(),
+            (qr * np.sin(psi)).sum(),
+            (qa * rad * np.sin(psi)).sum(),
+            -(qa * rad * np.cos(psi)).sum(),
+        ]
+    )
+    want = np.array(
+        [
+            op.axial_load,
+            op.radial_load * math.cos(op.radial_load_angle),
+            op.radial_load * math.sin(op.radial_load_angle),
+            op.moment_load * math.cos(op.moment_load_angle),
+            op.moment_load * math.sin(op.moment_load_angle),
+        ]
+    )
+    return got - want
+
+
+def _ball_balance(b: BallBearing, sol: eq.EquilibriumSolution) -> np.ndarray:
+    """Seed 001 eq. 3-4 (outer control) recomputed from the outputs [N], shape (2, Z)."""
+    ai, ao = sol.inner_contact_angle, sol.outer_contact_angle
+    md = sol.gyroscopic_moment / b.ball_diameter
+    g1 = sol.inner_load * np.sin(ai) - sol.outer_load * np.sin(ao) - md * (-2.0 * np.cos(ao))
+    g2 = (
+        sol.inner_load * np.cos(ai)
+        - sol.outer_load * np.cos(ao)
+        + md * (-2.0 * np.sin(ao))
+        + sol.centrifugal_force
+    )
+    return np.stack([g1, g2])
+
+
+def _compatibility(b: BallBearing, sol: eq.EquilibriumSolution) -> np.ndarray:
+    """Distance between groove centres along the two contact lines vs A_1, A_2 [m]."""
+    d = b.ball_diameter
+    ri = (b.inner_conformity - 0.5) * d + sol.inner_approach
+    ro = (b.outer_conformity - 0.5) * d + sol.outer_approach
+    a1 = ri * np.sin(sol.inner_contact_angle) + ro * np.sin(sol.outer_contact_angle)
+    a2 = ri * np.cos(sol.inner_contact_angle) + ro * np.cos(sol.outer_contact_angle)
+    q, psi, a, a0 = sol.displacement, sol.azimuth, b.curvature_distance, b.free_contact_angle
+    rad = 0.5 * b.pitch_diameter + (b.inner_conformity - 0.5) * d * math.cos(a0)
+    want1 = a * math.sin(a0) + q[0] + rad * (q[3] * np.sin(psi) - q[4] * np.cos(psi))
+    want2 = a * math.cos(a0) + q[1] * np.cos(psi) + q[2] * np.sin(psi)
+    return np.concatenate([a1 - want1, a2 - want2])
+
+
+@settings(max_examples=12, deadline=None)
+@given(
+    axial=st.floats(20.0, 150.0),
+    radial=st.floats(0.0, 60.0),
+    moment=st.floats(0.0, 0.1),
+    direction=st.floats(0.0, 6.28),
+    speed=st.floats(0.0, 1500.0),
+    rotating=st.sampled_from(["inner", "outer"]),
+)
+def test_equilibrium_satisfies_every_equation(
+    axial: float, radial: float, moment: float, direction: float, speed: float, rotating: str
+) -> None:
+    b = bearing()
+    op = Operation(
+        rotating,  # type: ignore[arg-type]
+        speed,
+        axial_load=axial,
+        radial_load=radial,
+        radial_load_angle=direction,
+        moment_load=moment,
+        moment_load_angle=direction + 1.0,
+    )
+    sol = eq.solve_equilibrium(b, op)
+    loaded = sol.loaded
+    assert np.all(np.isfinite(sol.displacement)) and np.all(np.isfinite(sol.stiffness))
+    assert np.abs(_ring_balance(b, op, sol)[:3]).max() <= 1e-8 * axial
+    assert np.abs(_ring_balance(b, op, sol)[3:]).max() <= 1e-8 * axial * 5e-3
+    assert np.abs(_ball_balance(b, sol)[:, loaded]).max() <= 1e-8 * axial
+    assert np.abs(_compatibility(b, sol).reshape(2, -1)[:, loaded]).max() <= 1e-15
+
+
+@pytest.mark.parametrize(
+    "op",
+    [
+        Operation("inner", 0.0, axial_load=60.68),
+        Operation("inner", 120.0, axial_load=60.68, radial_load=30.0, moment_load=0.05),
+        Operation("outer", 500.0, axial_load=40.0, radial_load=50.0, radial_load_angle=0.3),
+    ],
+    ids=["axial_static", "combined_inner", "combined_outer_fast"],
+)
+def test_stiffness_matrix_matches_finite_differences(op: Operation) -> None:
+    """Implicit-differentiation stiffness vs central differences of re-solved ring forces."""
+    b = bearing()
+    sol = eq.solve_equilibrium(b, op)
+    ring = eq._Ring(b, op, "outer", speed_on=op.speed != 0.0)
+    ring.set_angles(sol.inner_contact_angle, sol.outer_contact_angle)
+    k_fd = np.zeros((5, 5))
+    for k in range(5):
+        h = 1e-10 if k < 3 else 1e-10 / ring.rad_i
+        e = np.zeros(5)
+        e[k] = h
+        k_fd[:, k] = ring.forces(sol.displacement + e)[0] - ring.forces(sol.displacement - e)[0]
+        k_fd[:, k] /= 2 * h
+    assert np.abs(k_fd - sol.stiffness).max() <= 1e-7 * np.abs(sol.stiffness).max()
+
+
+def test_axial_stiffness_matches_the_static_load_deflection_curve() -> None:
+    b = bearing()
+    sol = eq.solve_equilibrium(b, Operation("inner", 0.0, axial_load=60.68))
+    df = 1e-3
+    da = (
+        axial_loading(b, 60.68 + df).axial_displacement
+        - axial_loading(b, 60.68 - df).axial_displacement
+    )
+    assert sol.stiffness[0, 0] == pytest.approx(2 * df / da, rel=1e-7)
+    # centred axial load: no coupling to the radial and tilt directions
+    off = sol.stiffness.copy()
+    np.fill_diagonal(off, 0.0)
+    assert np.abs(off[0]).max() <= 1e-9 * sol.stiffness[0, 0]
+
+
+def test_radial_load_loads_the_balls_under_it_symmetrically() -> None:
+    b = bearing()
+    op = Operation("inner", 0.0, axial_load=20.0, radial_load=80.0)  # along -y
+    sol = eq.solve_equilibrium(b, op)
+    assert sol.displacement[2] < 0.0
+    # the ball nearest -y (ψ = 252°, 288°) carries most; mirror pairs about the y axis agree
+    j = int(np.argmax(sol.inner_load))
+    assert round(math.degrees(sol.azimuth[j])) in (252, 288)
+    mirror = (15 - np.arange(10)) % 10  # ψ -> 180° - ψ
+    np.testing.assert_allclose(sol.inner_load, sol.inner_load[mirror], rtol=1e-8, atol=1e-9)
+
+
+def test_heavy_radial_load_unloads_balls_without_nan() -> None:
+    b = bearing()
+    sol = eq.solve_equilibrium(b, Operation("inner", 300.0, axial_load=5.0, radial_load=60.0))
+    assert 0 < np.count_nonzero(~sol.loaded) < 10
+    assert np.all(sol.inner_load[~sol.loaded] == 0.0)
+    assert np.all(np.isfinite(sol.outer_load))
+    # an unloaded ball is held by its centrifugal force on the outer race only
+    assert sol.outer_load[~sol.loaded] == pytest.approx(sol.centrifugal_force[~sol.loaded])
+
+
+def test_race_control_options_differ_only_by_the_gyroscopic_friction() -> None:
+    b = bearing()
+    op = Operation("inner", 1500.0, axial_load=60.68)
+    out = eq.solve_equilibrium(b, op, race_control="outer")
+    inn = eq.solve_equilibrium(b, op, race_control="inner")
+    none = eq.solve_equilibrium(b, op, race_control="none")
+    assert out.gyroscopic_moment[0] > 0.0
+    for a, c in ((out, none), (inn, none), (out, inn)):
+        assert not np.allclose(a.outer_contact_angle, c.outer_contact_angle, rtol=0, atol=1e-9)
+    # all three keep the axial balance
+    for s in (out, none):
+        assert (s.inner_load * np.sin(s.inner_contact_angle)).sum() == pytest.approx(60.68)
+
+
+def test_ball_speeds_reduce_to_seed001_eq7_and_eq9() -> None:
+    alpha, g = 0.33, 1.5875 / 9.1
+    c, s = math.cos(alpha), math.sin(alpha)
+    wm, wr, sb, _ = eq.ball_speeds(c, s, c, s, g, 2 * math.pi * 120.0, 0.0, "outer")
+    assert wm == pytest.approx(2 * math.pi * 120.0 * 0.5 * (1 - g * c), rel=1e-12)
+    # outer-raceway control tilts the spin axis to tan β = sin α / (cos α + γ'); the spin is
+    # eq. 9 divided by cos(α − β) (eq. 9 itself is the spin about an axis at β = α)
+    beta = math.atan2(s, c + g)
+    eq9 = 2 * math.pi * 120.0 * (1 - (g * c) ** 2) / (2 * g)
+    assert wr == pytest.approx(eq9 / math.cos(alpha - beta), rel=1e-12)
+    assert sb == pytest.approx(math.sin(beta), rel=1e-12)
+
+
+def test_needs_a_load_and_a_known_control() -> None:
+    with pytest.raises(GeometryError, match="axial or a radial load"):
+        eq.solve_equilibrium(bearing(), Operation("inner", 100.0))
+    with pytest.raises(GeometryError, match="race_control"):
+        eq.solve_equilibrium(bearing(), Operation("inner", 0.0, axial_load=10.0), race_control="x")
+
+
+def test_radial_load_without_axial_on_zero_clearance_is_held() -> None:
+    b = BallBearing(10, 1.5875e-3, 9.1e-3, 0.529, 0.535, 0.0)
+    sol = eq.solve_equilibrium(b, Operation("inner", 0.0, radial_load=50.0))
+    assert sol.displacement[2] < 0.0
+    assert sol.residual <= 1e-6
+
+
+def test_moment_alone_cannot_hold_a_clearance_bearing() -> None:
+    with pytest.raises((NumericalError, GeometryError)):
+        eq.solve_equilibrium(bearing(), Operation("inner", 0.0, moment_load=0.1))
+
+
+def _case(**extra: Any) -> Any:
+    data: dict[str, Any] = {
+        "title": "eq",
+        "bearing": {
+            "elements": 10,
+            "element_diameter": "1.5875 mm",
+            "pitch_diameter": "9.1 mm",
+            "inner_conformity": 0.529,
+            "outer_conformity": 0.535,
+            "radial_clearance": "5 um",
+        },
+        "operation": {
+            "speed": "7200 rpm",
+            "axial_load": "60.68 N",
+            "radial_load": "10 N",
+            "moment_load": "20 N*mm",
+            "moment_load_direction": "90 deg",
+        },
+        "analysis": {"model": "equilibrium", "race_control": "inner"},
+    }
+    data.update(extra)
+    return parse_case(data)
+
+
+def test_case_keys_and_json_output(tmp_path: Any) -> None:
+    case = _case()
+    assert case.operation.moment_load == pytest.approx(0.02)
+    assert case.operation.moment_load_angle == pytest.approx(math.pi / 2)
+    assert case.analysis.race_control == "inner"
+    result = run_model(case)
+    out = json.loads(json.dumps(result.to_json(), allow_nan=False))
+    assert out["model"] == "equilibrium"
+    assert out["components"] == []
+    assert len(out["balls"]) == 10
+    assert len(out["stiffness_matrix"]["matrix"]) == 5
+    assert out["ring_displacement"]["tilt_x_rad"] != 0.0
+    titles = [t for t, _ in result.summary_sections()]
+    assert any("Balls" in t for t in titles)
+    written = {p.name for p in result.write(tmp_path)}
+    assert {"balls.csv", "stiffness.csv", "balls.png", "result.json"} <= written
