@@ -452,10 +452,21 @@ def evaluate_chunk(task: ChunkTask) -> dict[str, Any]:
 
 # ---------------------------------------------------------------- batched 2-D path
 def _batched(task: ChunkTask) -> bool:
-    """Ball-size Monte Carlo of the 2-D model: every bearing shares the ball angles."""
+    """Ball-size Monte Carlo of the unloaded 2-D model: every bearing shares the ball angles.
+
+    The batched kernel solves Kim's eq. 16-17 with no external force; a case with a radial
+    load (an extension of the 2-D model) goes through the model's own ``run`` instead.
+    """
+    from runout.units import UnitError, to_si
+
+    try:
+        loaded = to_si(task.data.get("operation", {}).get("radial_load", 0.0), "force") != 0.0
+    except UnitError:
+        loaded = True  # let the model's own validation report it
     return (
         task.kind == "montecarlo"
         and task.models == ("quasi_static_2d",)
+        and not loaded
         and all(q.path == ("elements", None, "diameter_errors") for q in task.quantities)
     )
 

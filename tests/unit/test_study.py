@@ -121,6 +121,24 @@ def test_batched_path_equals_per_bearing_model_runs(monkeypatch: pytest.MonkeyPa
     np.testing.assert_allclose(fast.lines[key][1], slow.lines[key][1], rtol=1e-7)
 
 
+def test_radial_load_is_not_dropped_by_the_batched_path() -> None:
+    # The batched kernel has no external force; a loaded 2-D case must take the model's path.
+    loaded = copy.deepcopy(KIM)
+    loaded["operation"]["radial_load"] = "5 N"
+    loaded["study"] = {
+        "kind": "montecarlo",
+        "samples": 2,
+        "seed": 5,
+        "vary": {"element_diameter_sigma": "0.1 um"},
+    }
+    with_load = run_study(parse_case(loaded, "kim.toml"))
+    without = run_study(mc(samples=2))
+    # Same ball sizes, but the load stiffens the loaded side: the runout changes (by ~4e-5
+    # here), far beyond the solver's 1e-12 agreement between identical runs.
+    a, b = with_load.runout["radial_pp_m"], without.runout["radial_pp_m"]
+    assert np.max(np.abs(a - b) / b) > 1e-6
+
+
 # ------------------------------------------------------------------ reproducibility
 def test_numbers_do_not_depend_on_chunking_or_workers() -> None:
     case = mc(samples=23)
