@@ -120,9 +120,16 @@ def _records_table(records: list[dict[str, Any]], columns: list[tuple[str, str]]
     return f"<table><tr>{head}</tr>{''.join(body)}</table>"
 
 
+_STATS = ("mean", "std", "two_sigma", "p5", "p50", "p95")
+
+
 def _stat_cell(value: Any, scale: float = 1e9) -> str:
     if isinstance(value, dict):
-        parts = [f"{k} {_fmt(v * scale)}" for k, v in value.items() if isinstance(v, int | float)]
+        parts = [
+            f"{k.replace('two_sigma', '2σ')} {_fmt(value[k] * scale)}"
+            for k in _STATS
+            if isinstance(value.get(k), int | float)
+        ]
         return ", ".join(parts)
     if isinstance(value, int | float):
         return _fmt(value * scale)
@@ -213,17 +220,17 @@ def _report_body(directory: Path) -> tuple[str, str]:
     if not directory.is_dir():
         raise RunoutError(f"{directory}: no such directory (run `runout run CASE --out DIR` first)")
     result_path = directory / "result.json"
-    study_path = directory / "study.json"
-    if not result_path.exists() and not study_path.exists():
+    summary_path = directory / "summary.json"
+    # `runout study --out DIR` writes manifest.json and its statistics in summary.json.
+    is_study = (directory / "manifest.json").exists()
+    if not result_path.exists() and not is_study:
         raise RunoutError(
-            f"{directory}: holds no result.json or study.json "
-            "(write one with `runout run CASE --out DIR`)"
+            f"{directory}: holds no result.json or study manifest "
+            "(write one with `runout run CASE --out DIR` or `runout study CASE --out DIR`)"
         )
     result = _read_json(result_path) if result_path.exists() else {}
-    study = _read_json(study_path) if study_path.exists() else {}
-    summary = (
-        _read_json(directory / "summary.json") if (directory / "summary.json").exists() else {}
-    )
+    study = _read_json(summary_path) if is_study and summary_path.exists() else {}
+    summary = _read_json(summary_path) if summary_path.exists() and not is_study else {}
     case_text = (
         (directory / "case.toml").read_text(encoding="utf-8")
         if (directory / "case.toml").exists()

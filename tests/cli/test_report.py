@@ -100,3 +100,18 @@ def test_report_renders_in_headless_chromium(report_608: Path, tmp_path: Path) -
     data = shot.read_bytes()
     assert data[:8] == b"\x89PNG\r\n\x1a\n"
     assert len(data) > 20_000  # a rendered page with tables and figures, not a blank one
+
+
+def test_report_of_a_study_directory(tmp_path: Path) -> None:
+    case = (EXAMPLES / "seed001_kim_table9.toml").read_text(encoding="utf-8")
+    small = tmp_path / "lot.toml"
+    small.write_text(case.replace("samples = 1000", "samples = 8"), encoding="utf-8")
+    out = tmp_path / "lot"
+    result = runner.invoke(app, ["study", str(small), "--out", str(out)])
+    assert result.exit_code == 0, result.stderr
+    result = runner.invoke(app, ["report", str(out)])
+    assert result.exit_code == 0, result.stderr
+    page = (out / "report.html").read_text(encoding="utf-8")
+    assert "Study statistics" in page
+    assert "8 samples" in page
+    assert "ball size error: f_c" in page
