@@ -1116,6 +1116,8 @@ class Imperfections:
     slant : Slant, optional
         Inner-raceway slant (seed 002 eq. 34).
 
+    Notes
+    -----
     Z is taken from ``elements``, else from ``diameter_errors`` or ``pitch_errors``; missing
     per-element data default to perfect. Use :meth:`perfect` to start from Z perfect elements.
     Element *indices* are 0-based (tuple positions, ``index`` arguments); element *numbers*
