@@ -19,14 +19,17 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from pathlib import Path
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
 
 from runout.errors import GeometryError
 from runout.imperfections import Harmonics, Imperfections
-from runout.results import Component, Runout
+from runout.kinematics import bearing_frequencies
+from runout.results import Component, Runout, RunResult
 from runout.spectrum import extract_lines, separate_rro_nrro
 
 __all__ = [
@@ -531,3 +534,98 @@ def unloaded_note(unloaded: NDArray[np.int64], n_elements: int) -> str:
 
 
 SolveFn = Callable[[NDArray[np.float64]], tuple[NDArray[np.float64], NDArray[np.int64]]]
+
+
+def measuring_direction(operation: Any) -> NDArray[np.float64]:
+    """Unit vector of the radial measuring direction: the radial load's, else +x."""
+    if operation.radial_load > 0.0:
+        angle = operation.radial_load_angle
+        return np.array([math.cos(angle), math.sin(angle)])
+    return np.array([1.0, 0.0])
+
+
+def animation_writer(result: RunResult) -> Callable[[Path], list[Path]]:
+    """Writer of ``bearing.gif`` (orbit and balls; :func:`runout.plotting.animate_bearing`)."""
+
+    def write(directory: Path) -> list[Path]:
+        from runout import plotting
+
+        return [plotting.animate_bearing(result, directory / "bearing.gif")]
+
+    return write
+
+
+def run_quasi_static(
+    case: Any,
+    setup: Any,
+    solve: Callable[[Any, NDArray[np.float64], Any], tuple[NDArray[np.float64], Any]],
+    *,
+    model: str,
+    planar: bool,
+    description: str,
+    extras: dict[str, Any],
+) -> RunResult:
+    """The run flow shared by the quasi-static models (seeds 000 and 001).
+
+    Solve on the analysis grid, fit the predicted lines, split RRO/NRRO (from the lines, or a
+    synchronous grid of whole revolutions, solved again when it differs from the analysis
+    grid), and assemble the result with its notes and the GIF writer.
+
+    Parameters
+    ----------
+    case : Case
+        The validated case.
+    setup : object
+        The model's prepared constants (with ``kinematics``, ``contact_angle``).
+    solve : callable
+        ``solve(case, time, setup) -> (displacement (3, n) [m], unloaded-ball counts)``.
+    model : str
+        Model id.
+    planar : bool
+        True for the 2-D model: no axial lines or direction.
+    description : str
+        What the displacement is, for the notes.
+    extras : dict
+        Model-specific JSON entries placed before the shared ones.
+    """
+    an, op = case.analysis, case.operation
+    t = time_grid(op.speed, an.revolutions, an.samples)
+    disp, unloaded = solve(case, t, setup)
+    u = measuring_direction(op)
+    grid = synchronous_grid(op.speed, an.revolutions, an.samples)
+    sync = None
+    if grid is not None:
+        ts, spr = grid
+        ds = disp if np.array_equal(ts, t) else solve(case, ts, setup)[0]
+        sync = (u[0] * ds[0] + u[1] * ds[1], spr)
+    lines = predicted_lines(
+        case.imperfections, setup.kinematics, axial=not planar, second_order_pairs=True
+    )
+    directions = ("x", "y") if planar else ("x", "y", "z")
+    comps = fit_components(t, disp, lines, op.speed, directions=directions)
+    split = split_runout(t, disp, u, lines, op.speed, sync)
+    notes = (
+        unloaded_note(unloaded, setup.kinematics.n_elements),
+        description,
+        runout_note(split, grid is not None),
+    )
+    result = RunResult(
+        model=model,
+        title=case.title,
+        frequencies=bearing_frequencies(case.bearing, op, setup.contact_angle),
+        contact_angle=setup.contact_angle,
+        time=t,
+        displacement=disp,
+        components=comps,
+        runout=split.runout,
+        measuring_direction=u,
+        extras={
+            **extras,
+            "unloaded_balls_max": int(unloaded.max()),
+            "n_elements": setup.kinematics.n_elements,
+            "rro_method": split.method,
+            "line_fit_residual": split.residual,
+        },
+        notes=notes,
+    )
+    return replace(result, writers=(animation_writer(result),))

@@ -25,7 +25,7 @@ Notes
   printed. The contact angle (:func:`runout.summary.operating_contact_angle`) sets the
   kinematics (eq. 7, 9) and δ_0 only. ``element_projection="radial"`` multiplies the ball
   deviations by cos α instead (their projection on the radial plane); see
-  docs/_fragments/validation_quasi_static.md for which reading reproduces Table 4.
+  VALIDATION.md for which reading reproduces Table 4.
 * Eq. 11-12 write the raceway radii as functions of the ball angle θ_k; for a rotating ring we
   evaluate its profile in the ring's frame, :math:`r(\theta_k - 2\pi f_{ring} t)`.
 * The shaft is the measured body: the displacement reported is the inner ring's centre
@@ -43,9 +43,8 @@ Notes
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field, replace
-from pathlib import Path
-from typing import Any, Literal
+from dataclasses import dataclass, field
+from typing import Literal
 
 import numba
 import numpy as np
@@ -54,18 +53,12 @@ from numpy.typing import NDArray
 from runout.bearing import BallBearing
 from runout.contact import ball_race_contacts
 from runout.errors import ContactLossError, ConvergenceError, GeometryError, NumericalError
-from runout.kinematics import ball_spin_frequency, bearing_frequencies, cage_frequency
+from runout.kinematics import ball_spin_frequency, cage_frequency
 from runout.loading import axial_loading
 from runout.models._quasi_static import (
     Kinematics,
     contact_deviations,
-    fit_components,
-    predicted_lines,
-    runout_note,
-    split_runout,
-    synchronous_grid,
-    time_grid,
-    unloaded_note,
+    run_quasi_static,
 )
 from runout.results import RunResult
 from runout.summary import operating_contact_angle
@@ -343,66 +336,16 @@ def solve(
     return disp, unloaded
 
 
-def _animation_writer(result: RunResult) -> Any:
-    """Writer of ``bearing.gif`` (orbit and balls; :func:`runout.plotting.animate_bearing`)."""
-
-    def write(directory: Path) -> list[Path]:
-        from runout import plotting
-
-        return [plotting.animate_bearing(result, directory / "bearing.gif")]
-
-    return write
-
-
 def run(case: object) -> RunResult:
     """Run the quasi-static 2-D model (seed 001) on a case."""
     st = setup(case)
-    an = case.analysis  # type: ignore[attr-defined]
-    op = case.operation  # type: ignore[attr-defined]
-    t = time_grid(op.speed, an.revolutions, an.samples)
-    disp, unloaded = solve(case, t, st)
-    u = (
-        np.array([math.cos(op.radial_load_angle), math.sin(op.radial_load_angle)])
-        if op.radial_load > 0.0
-        else np.array([1.0, 0.0])
-    )
-    grid = synchronous_grid(op.speed, an.revolutions, an.samples)
-    sync = None
-    if grid is not None:
-        ts, spr = grid
-        ds = disp if np.array_equal(ts, t) else solve(case, ts, st)[0]
-        sync = (u[0] * ds[0] + u[1] * ds[1], spr)
-    lines = predicted_lines(
-        case.imperfections,  # type: ignore[attr-defined]
-        st.kinematics,
-        axial=False,
-        second_order_pairs=True,
-    )
-    comps = fit_components(t, disp, lines, op.speed, directions=("x", "y"))
-    split = split_runout(t, disp, u, lines, op.speed, sync)
-    notes = [
-        unloaded_note(unloaded, st.kinematics.n_elements),
-        "displacement: shaft (inner-ring) centre relative to the outer ring, planar model "
-        "(seed 001 eq. 10-17)",
-    ]
-    notes.append(runout_note(split, grid is not None))
-    result = RunResult(
+    return run_quasi_static(
+        case,
+        st,
+        solve,
         model=MODEL,
-        title=case.title,  # type: ignore[attr-defined]
-        frequencies=bearing_frequencies(case.bearing, op, st.contact_angle),  # type: ignore[attr-defined]
-        contact_angle=st.contact_angle,
-        time=t,
-        displacement=disp,
-        components=comps,
-        runout=split.runout,
-        measuring_direction=u,
-        extras={
-            "initial_approach_m": st.initial_approach,
-            "unloaded_balls_max": int(unloaded.max()),
-            "n_elements": st.kinematics.n_elements,
-            "rro_method": split.method,
-            "line_fit_residual": split.residual,
-        },
-        notes=tuple(notes),
+        planar=True,
+        description="displacement: shaft (inner-ring) centre relative to the outer ring, "
+        "planar model (seed 001 eq. 10-17)",
+        extras={"initial_approach_m": st.initial_approach},
     )
-    return replace(result, writers=(_animation_writer(result),))

@@ -54,9 +54,7 @@ Notes
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
-from pathlib import Path
-from typing import Any
+from dataclasses import dataclass
 
 import numba
 import numpy as np
@@ -65,17 +63,12 @@ from numpy.typing import NDArray
 from runout.bearing import BallBearing
 from runout.contact import ball_race_contacts
 from runout.errors import ContactLossError, ConvergenceError, GeometryError, NumericalError
-from runout.kinematics import ball_spin_frequency, bearing_frequencies, cage_frequency
+from runout.kinematics import ball_spin_frequency, cage_frequency
 from runout.models._quasi_static import (
     Kinematics,
     contact_deviations,
-    fit_components,
-    predicted_lines,
-    runout_note,
-    split_runout,
-    synchronous_grid,
+    run_quasi_static,
     time_grid,
-    unloaded_note,
 )
 from runout.results import RunResult
 from runout.summary import operating_contact_angle
@@ -463,66 +456,16 @@ def time_grid_of(case: object) -> NDArray[np.float64]:
     return time_grid(case.operation.speed, an.revolutions, an.samples)  # type: ignore[attr-defined]
 
 
-def _animation_writer(result: RunResult) -> Any:
-    """Writer of ``bearing.gif`` (orbit and balls; :func:`runout.plotting.animate_bearing`)."""
-
-    def write(directory: Path) -> list[Path]:
-        from runout import plotting
-
-        return [plotting.animate_bearing(result, directory / "bearing.gif")]
-
-    return write
-
-
 def run(case: object) -> RunResult:
     """Run the quasi-static 3-D model (seed 000) on a case."""
     st = setup(case)
-    an = case.analysis  # type: ignore[attr-defined]
-    op = case.operation  # type: ignore[attr-defined]
-    t = time_grid(op.speed, an.revolutions, an.samples)
-    disp, unloaded = solve(case, t, st)
-    u = (
-        np.array([math.cos(op.radial_load_angle), math.sin(op.radial_load_angle)])
-        if op.radial_load > 0.0
-        else np.array([1.0, 0.0])
-    )
-    grid = synchronous_grid(op.speed, an.revolutions, an.samples)
-    sync = None
-    if grid is not None:
-        ts, spr = grid
-        ds = disp if ts.size == t.size and np.array_equal(ts, t) else solve(case, ts, st)[0]
-        sync = (u[0] * ds[0] + u[1] * ds[1], spr)
-    lines = predicted_lines(
-        case.imperfections,  # type: ignore[attr-defined]
-        st.kinematics,
-        second_order_pairs=True,
-    )
-    comps = fit_components(t, disp, lines, op.speed)
-    split = split_runout(t, disp, u, lines, op.speed, sync)
-    notes = [
-        unloaded_note(unloaded, st.kinematics.n_elements),
-        "displacement: outer-ring centre relative to the inner ring; contact angle fixed at "
-        "its preloaded value (seed 000)",
-    ]
-    notes.append(runout_note(split, grid is not None))
-    bearing = case.bearing  # type: ignore[attr-defined]
-    result = RunResult(
+    return run_quasi_static(
+        case,
+        st,
+        solve,
         model=MODEL,
-        title=case.title,  # type: ignore[attr-defined]
-        frequencies=bearing_frequencies(bearing, op, st.contact_angle),
-        contact_angle=st.contact_angle,
-        time=t,
-        displacement=disp,
-        components=comps,
-        runout=split.runout,
-        measuring_direction=u,
-        extras={
-            "preload_approach_m": st.preload,
-            "unloaded_balls_max": int(unloaded.max()),
-            "n_elements": st.kinematics.n_elements,
-            "rro_method": split.method,
-            "line_fit_residual": split.residual,
-        },
-        notes=tuple(notes),
+        planar=False,
+        description="displacement: outer-ring centre relative to the inner ring; contact "
+        "angle fixed at its preloaded value (seed 000)",
+        extras={"preload_approach_m": st.preload},
     )
-    return replace(result, writers=(_animation_writer(result),))
