@@ -3,61 +3,20 @@
 from __future__ import annotations
 
 import math
-from typing import Any
 
 import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from runout.case import Case, parse_case
+from cases import WAVY, dynamic_case
+from runout.case import parse_case
 from runout.errors import CaseError, ConvergenceError, GeometryError, NumericalError
 from runout.loading import axial_loading
 from runout.models import dynamic as dy
 from runout.models._quasi_static import Kinematics
 
-
-def make_case(
-    *,
-    elements: int = 8,
-    clearance: float = 0.2e-6,
-    axial: float = 0.0,
-    radial: float = 6.0,
-    speed: float = 5000.0 / 60.0,
-    waviness: list[dict[str, Any]] | None = None,
-    dynamics: dict[str, Any] | None = None,
-    revolutions: float = 4,
-    samples: int = 1024,
-    contact_angle: float | None = None,
-) -> Case:
-    bearing: dict[str, Any] = {
-        "type": "ball",
-        "elements": elements,
-        "element_diameter": 7.96e-3,
-        "pitch_diameter": 54e-3,
-        "inner_groove_radius": 4.08e-3,
-        "outer_groove_radius": 4.61e-3,
-        "radial_clearance": clearance,
-    }
-    if contact_angle is not None:
-        bearing["contact_angle"] = contact_angle
-    return parse_case(
-        {
-            "title": "test rotor",
-            "bearing": bearing,
-            "operation": {"speed": speed, "radial_load": radial, "axial_load": axial},
-            "waviness": waviness or [],
-            "dynamics": {"mass": 0.6, "damping": 200.0, **(dynamics or {})},
-            "analysis": {"model": "dynamic", "revolutions": revolutions, "samples": samples},
-        }
-    )
-
-
-WAVY = [
-    {"part": "inner", "order": 7, "amplitude": 20e-9, "phase": 0.3},
-    {"part": "outer", "order": 9, "amplitude": 15e-9},
-    {"part": "ball", "order": 2, "amplitude": 10e-9, "element": 2},
-]
+make_case = dynamic_case
 
 
 # --------------------------------------------------------------------------------------------

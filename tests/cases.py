@@ -1,0 +1,51 @@
+"""Shared test cases (importable from any test: pytest puts tests/ on the path)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from runout.case import Case, parse_case
+
+
+# The rotor of seed 003 Table 2 (8 balls by default) for the dynamic-model tests.
+def dynamic_case(
+    *,
+    elements: int = 8,
+    clearance: float = 0.2e-6,
+    axial: float = 0.0,
+    radial: float = 6.0,
+    speed: float = 5000.0 / 60.0,
+    waviness: list[dict[str, Any]] | None = None,
+    dynamics: dict[str, Any] | None = None,
+    revolutions: float = 4,
+    samples: int = 1024,
+    contact_angle: float | None = None,
+) -> Case:
+    bearing: dict[str, Any] = {
+        "type": "ball",
+        "elements": elements,
+        "element_diameter": 7.96e-3,
+        "pitch_diameter": 54e-3,
+        "inner_groove_radius": 4.08e-3,
+        "outer_groove_radius": 4.61e-3,
+        "radial_clearance": clearance,
+    }
+    if contact_angle is not None:
+        bearing["contact_angle"] = contact_angle
+    return parse_case(
+        {
+            "title": "test rotor",
+            "bearing": bearing,
+            "operation": {"speed": speed, "radial_load": radial, "axial_load": axial},
+            "waviness": waviness or [],
+            "dynamics": {"mass": 0.6, "damping": 200.0, **(dynamics or {})},
+            "analysis": {"model": "dynamic", "revolutions": revolutions, "samples": samples},
+        }
+    )
+
+
+WAVY = [
+    {"part": "inner", "order": 7, "amplitude": 20e-9, "phase": 0.3},
+    {"part": "outer", "order": 9, "amplitude": 15e-9},
+    {"part": "ball", "order": 2, "amplitude": 10e-9, "element": 2},
+]
