@@ -411,6 +411,68 @@ def study_command(
         _out.print(f"wrote {escape(str(out))}/ (manifest.json, chunks/, summary.json, samples.csv)")
 
 
+@app.command("reproduce")
+@_guard
+def reproduce_command(
+    only: Annotated[
+        str | None,
+        typer.Option(
+            "--only",
+            help="Comma-separated sections (kinematics, contact, spectrum, linear, roller, "
+            "dynamic, quasi_static, studies); default all.",
+        ),
+    ] = None,
+    out: Annotated[Path, typer.Option("--out", help="Where to write the document.")] = Path(
+        "VALIDATION.md"
+    ),
+    check_only: Annotated[
+        bool,
+        typer.Option(
+            "--check", help="Compare with the existing file instead of writing; exit 1 if stale."
+        ),
+    ] = False,
+) -> None:
+    """Run every reproducible table and figure of the seed papers and write VALIDATION.md.
+
+    Example: runout reproduce --only kinematics,contact --check
+    """
+    from rich.progress import Progress
+
+    from runout import reproduce as rp
+
+    sections = None if only is None else [s.strip() for s in only.split(",") if s.strip()]
+    with Progress(console=_err, transient=True) as bar:
+        task = bar.add_task("reproduce", total=len(sections or rp.section_keys()))
+
+        def tick(title: str, done: int, total: int) -> None:
+            bar.update(task, completed=done, total=total, description=title[:50])
+
+        doc = rp.build(sections, progress=tick)
+    if check_only:
+        if not out.exists():
+            _fail(f"{out} does not exist")
+        existing = out.read_text(encoding="utf-8")
+        if sections is not None:
+            blocks = rp.split_sections(existing)
+            fresh_blocks = rp.split_sections(doc.text)
+            existing = "\n".join(blocks.get(t, "").rstrip() for t in fresh_blocks if t)
+            fresh = "\n".join(b.rstrip() for t, b in fresh_blocks.items() if t)
+        else:
+            fresh = doc.text
+        problems = rp.compare(fresh, existing)
+        _out.print(doc.summary())
+        if problems:
+            _err.print(f"{escape(str(out))} is stale: {len(problems)} difference(s)")
+            for p in problems[:20]:
+                _err.print(escape(p), soft_wrap=True)
+            raise typer.Exit(1)
+        _out.print(f"{escape(str(out))} is up to date")
+        return
+    out.write_text(doc.text, encoding="utf-8")
+    _out.print(doc.summary())
+    _out.print(f"wrote {escape(str(out))}")
+
+
 def main() -> None:
     """Console-script entry point."""
     app()

@@ -4,7 +4,7 @@ Sources: Harris, *Rolling Bearing Analysis* (the 209 deep-groove ball bearing ex
 and the approach at 1000 N from the δ* table); seed 003 (Purohit) Table 1 (Harris's δ* table)
 and eq. 2.10 (steel constant); Hamrock & Brewe's curve fits; seed 002 (Anderon) eq. 9-11 (a
 2 mm ball on a flat at 11.039 N); Palmgren's line-contact law as quoted by Harris. Every gap is
-explained in docs/_fragments/validation_contact.md.
+explained in VALIDATION.md.
 """
 
 from __future__ import annotations

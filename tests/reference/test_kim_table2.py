@@ -5,7 +5,7 @@ P_d = 5 um, steel) runs at 7200 rpm under an axial preload the paper does not pr
 that load once, on the Z = 10 column (18.73 deg), and *predict* the other five angles with the
 static pure-axial model of runout.loading. The deflections are compared too; they are
 systematically 12-15 % below the table for a reason that cannot be speed effects (see the
-last tests and docs/_fragments/validation_contact.md).
+last tests and VALIDATION.md).
 """
 
 from __future__ import annotations

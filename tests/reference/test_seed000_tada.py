@@ -2,7 +2,7 @@
 
 Standard model of Table 1: outer ring rotating at 5400 rpm, constant-pressure preload 20 N,
 d_m = 7 mm, D = 1 mm, Z = 8, E = 208 GPa, ν = 0.3, P_d = 10 µm. The paper gives no groove
-conformities; we use 0.52 / 0.53 (stated in docs/_fragments/validation_quasi_static.md).
+conformities; we use 0.52 / 0.53 (stated in VALIDATION.md).
 Inputs are peak-to-peak ("total amplitude") as in the paper.
 """
 

@@ -1,7 +1,7 @@
 """Seed 001 (Kim, Choi & Yoon) §2.1-2.2, Table 2: Jones-Harris equilibrium at 7200 rpm.
 
 Bearing of Table 1 under the 60.68 N axial preload fitted to Table 2 at Z = 10 by the static
-solution (docs/_fragments/validation_contact.md). The Jones-Harris solution adds the
+solution (VALIDATION.md). The Jones-Harris solution adds the
 centrifugal force and the gyroscopic moment; at 7200 rpm they move the angles by a few
 thousandths of a degree, so Table 2 stays matched, and at low speed the solution must reduce
 to the static one (runout.loading.axial_loading).
@@ -73,5 +73,5 @@ def test_kim_centrifugal_force_is_the_cage_orbit() -> None:
     wm = sol.orbit_speed[0]
     assert wm / (2 * math.pi) == pytest.approx(50.0, rel=0.01)
     assert sol.centrifugal_force[0] == pytest.approx(0.5 * mass * 9.1e-3 * wm**2, rel=1e-12)
-    # 7.4 mN (docs/_fragments/validation_contact.md)
+    # 7.4 mN (VALIDATION.md)
     assert sol.centrifugal_force[0] == pytest.approx(7.4e-3, rel=0.01)

@@ -2,7 +2,7 @@
 
 Bearing of Table 1 at 7200 rpm under the 60.68 N preload fitted to Table 2 (18.73 deg at
 Z = 10, tests/reference/test_kim_table2.py). Reading that reproduces the paper (see
-docs/_fragments/validation_quasi_static.md): the 0.1 µm size error is on the *diameter*, and
+VALIDATION.md): the 0.1 µm size error is on the *diameter*, and
 the tabulated "NRRO component" is *peak-to-peak* (2 × the single amplitude).
 """
 

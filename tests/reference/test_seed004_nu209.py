@@ -2,7 +2,7 @@
 
 Published runouts are read from the text of §7 (Figs. 9-12); the paper's own check against
 its analytic cases reached 0.097 % (circle) and 0.15 % (ellipse), so 3 % is the tolerance for
-the figures. See docs/_fragments/validation_roller.md.
+the figures. See VALIDATION.md.
 """
 
 from __future__ import annotations

@@ -51,7 +51,7 @@ Notes
 * Extraction errors in seed 003: eq. 2.16 lost the accelerations and velocities ("m k + c k");
   it puts W in the x equation, i.e. the paper's x axis points along the load, while our load
   is along −y by default, so the paper's x is our −y. The contact constant of eq. 2.11–2.15 is
-  wrong in the source (see docs/_fragments/validation_contact.md); K_n comes from
+  wrong in the source (see VALIDATION.md); K_n comes from
   :func:`runout.contact.ball_race_contacts` (``contact_law = "exact"``) or from the paper's
   δ* table (``"delta_star_table"``, :func:`runout.contact.stiffness_from_delta_star_table`),
   at the preloaded contact angle.

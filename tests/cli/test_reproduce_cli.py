@@ -1,0 +1,30 @@
+"""`runout reproduce`: writes the document, --check detects a stale one (exit 1)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from typer.testing import CliRunner
+
+from runout.cli import app
+
+runner = CliRunner()
+
+
+def test_reproduce_writes_and_checks(tmp_path: Path) -> None:
+    out = tmp_path / "V.md"
+    res = runner.invoke(app, ["reproduce", "--only", "kinematics", "--out", str(out)])
+    assert res.exit_code == 0, res.output
+    assert "checks:" in res.output and "agree" in res.output
+    text = out.read_text(encoding="utf-8")
+    assert "### Kinematics" in text and "| 3.41198 |" in text
+    ok = runner.invoke(app, ["reproduce", "--only", "kinematics", "--out", str(out), "--check"])
+    assert ok.exit_code == 0, ok.output
+    out.write_text(text.replace("| 3.41198 | 3.41198 |", "| 3.41198 | 3.41298 |"), "utf-8")
+    stale = runner.invoke(app, ["reproduce", "--only", "kinematics", "--out", str(out), "--check"])
+    assert stale.exit_code == 1
+
+
+def test_reproduce_unknown_section_is_a_clean_error(tmp_path: Path) -> None:
+    res = runner.invoke(app, ["reproduce", "--only", "nope", "--out", str(tmp_path / "V.md")])
+    assert res.exit_code == 2
