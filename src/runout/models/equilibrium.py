@@ -75,9 +75,15 @@ Notes
   diameter) in eq. 5-6 where a length :math:`(f - 0.5)D` is meant.
 * Seed 001 gives λ_ij = λ_oj = 0 for inner-raceway control; that removes the gyroscopic moment
   altogether. It is available as ``race_control = "none"``; ``"inner"`` is Harris's λ_i = 2.
-* A ball whose inner groove centre is no farther than A from the outer one (a gap) carries no
-  load on the inner race; it is pressed onto the outer groove bottom by its centrifugal force
-  (reported with Q_o = F_c, α = 0) and exerts nothing on the inner ring.
+* At rest, a ball whose inner groove centre is no farther than A from the outer one (a gap)
+  carries no load. At speed, a ball carries inner-race load unless it has lifted off: with
+  Q_i = 0 the outer contact alone balances F_c and the gyroscopic friction, which puts the
+  ball centre at X* (near the outer groove bottom); the ball is unloaded only if the inner
+  groove does not overlap it there (δ_i(X*) ≤ 0). This is the limit Q_i → 0 of the loaded
+  equations, so the switch is continuous. A ball with a small gap along the line of groove
+  centres is therefore still loaded at speed: its centrifugal force wedges it between the
+  outer groove and the flank of the inner groove. An unloaded ball is reported on the outer
+  groove bottom (Q_o = F_c, α = 0) and exerts nothing on the inner ring.
 * The ball speeds follow the rolling (no-slip) kinematics at the current angles; a signed speed
   reverses ω_m and with it the centrifugal force's square is unchanged, while the gyroscopic
   moment changes sign with the relative ring speed (outer ring rotating).
@@ -289,37 +295,124 @@ def _residual_and_jacobian(
     return g, jac
 
 
+def _lifted_off(
+    a: NDArray[np.float64], p: _Params
+) -> tuple[NDArray[np.bool_], NDArray[np.float64]]:
+    """Balls whose inner contact opens at speed (module Notes), for groove centres ``a``.
+
+    With Q_i = 0 the outer contact alone balances the centrifugal force and the gyroscopic
+    friction, which fixes the ball centre X* (a short fixed point: the ball speeds depend on
+    the angles). The ball carries inner-race load only if the inner groove then still
+    overlaps it, δ_i(X*) > 0; this is the limit Q_i → 0 of the loaded equations, so the
+    switch is continuous in the ring forces.
+    """
+    gamma = p.ball_diameter / p.pitch_diameter
+    ao = np.arctan(a[:, 0] / a[:, 1])
+    ai = ao.copy()
+    d_i = np.zeros(a.shape[0])
+    x = np.zeros_like(a)
+    for _ in range(_BALL_ITER):
+        ci, si, co, so = np.cos(ai), np.sin(ai), np.cos(ao), np.sin(ao)
+        wm, wr, sb, _ = ball_speeds(ci, si, co, so, gamma, p.inner, p.outer, p.control)
+        fc = 0.5 * p.mass * p.pitch_diameter * wm * wm
+        md = p.inertia * wr * wm * sb / p.ball_diameter
+        v = md * (p.lam_i * ci - p.lam_o * co)
+        w = md * (p.lam_i * si - p.lam_o * so) + fc
+        q_o = np.hypot(v, w)
+        ao_new = np.arctan2(-v, w)
+        k_o = np.maximum(p.ko0 + p.ko1 * (ao_new - p.ao_c), 1e-300)
+        r = p.ro0 + (q_o / k_o) ** (2.0 / 3.0)
+        x = np.stack([r * np.sin(ao_new), r * np.cos(ao_new)], axis=1)
+        e1, e2 = a[:, 0] - x[:, 0], a[:, 1] - x[:, 1]
+        ai_new = np.arctan(e1 / e2)
+        d_i = np.hypot(e1, e2) - p.ri0
+        moved = max(float(np.abs(ao_new - ao).max()), float(np.abs(ai_new - ai).max()))
+        ao, ai = ao_new, ai_new
+        if moved <= 1e-14:
+            break
+    return np.asarray(d_i <= 0.0), x
+
+
+def _approaches(
+    x: NDArray[np.float64], a: NDArray[np.float64], p: _Params
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """δ_i, δ_o at ball centres x and groove centres a [m]."""
+    d_o = np.hypot(x[:, 0], x[:, 1]) - p.ro0
+    d_i = np.hypot(a[:, 0] - x[:, 0], a[:, 1] - x[:, 1]) - p.ri0
+    return d_i, d_o
+
+
+def _ball_newton(
+    xs: NDArray[np.float64], aa: NDArray[np.float64], sub: _Params, tol: float
+) -> tuple[NDArray[np.float64], NDArray[np.bool_]]:
+    """2×2 Newton on eq. 3-4 of loaded balls from ``xs``; returns X and the converged mask."""
+    xs = xs.copy()
+    done = np.zeros(xs.shape[0], dtype=bool)
+    for _ in range(_BALL_ITER):
+        g, jac = _residual_and_jacobian(xs, aa, sub)
+        det = jac[:, 0, 0] * jac[:, 1, 1] - jac[:, 0, 1] * jac[:, 1, 0]
+        ok = np.abs(det) > 0.0
+        det = np.where(ok, det, 1.0)
+        s0 = -(jac[:, 1, 1] * g[:, 0] - jac[:, 0, 1] * g[:, 1]) / det
+        s1 = -(jac[:, 0, 0] * g[:, 1] - jac[:, 1, 0] * g[:, 0]) / det
+        step = np.where(ok[:, None], np.stack([s0, s1], axis=1), 0.0)
+        # keep both approaches from jumping far past zero in one step
+        big = np.abs(step).max(axis=1)
+        limit = 0.25 * (sub.ri0 + sub.ro0) * 0.05
+        factor = np.minimum(1.0, limit / np.maximum(big, 1e-300))
+        d_i, d_o = _approaches(xs, aa, sub)
+        for _ in range(60):
+            ti, to = _approaches(xs + factor[:, None] * step, aa, sub)
+            shrink = (ti < 0.1 * d_i) | (to < 0.1 * d_o)
+            if not shrink.any():
+                break
+            factor = np.where(shrink, 0.5 * factor, factor)
+        xs = xs + factor[:, None] * step
+        done = ok & (big <= tol)  # the full Newton step, not the shortened one
+        if np.all(done):
+            break
+    return xs, done
+
+
 def _solve_balls(
     a: NDArray[np.float64], x0: NDArray[np.float64], p: _Params, scale: float
 ) -> tuple[NDArray[np.float64], NDArray[np.bool_]]:
     """Newton solve of eq. 3-4 for every loaded ball; returns X (Z, 2) and the loaded mask.
 
-    Unloaded balls (inner groove centre within A of the outer one) are placed on the outer
-    groove bottom (see module Notes).
+    Unloaded balls (inner groove centre within A of the outer one, or, at speed, lifted off
+    the inner race by their centrifugal force: :func:`_lifted_off`) are placed on the outer
+    groove bottom (see module Notes). For a loaded ball both contacts stay closed along the
+    iteration (a step may shrink an approach by at most 90 %): the Hertz law's vanishing
+    stiffness at zero approach would otherwise throw Newton across the contact opening. A
+    ball that does not converge from ``x0`` is restarted from its outer-contact-only position
+    (where the inner groove overlaps it: the iteration then unloads the inner contact).
     """
-    loaded = np.hypot(a[:, 0], a[:, 1]) > p.ri0 + p.ro0
     x = x0.copy()
+    if p.speed_on:
+        lifted, x_star = _lifted_off(a, p)
+        loaded = ~lifted
+        x_star = x_star[loaded]
+    else:
+        loaded = np.hypot(a[:, 0], a[:, 1]) > p.ri0 + p.ro0
+        x_star = x[loaded]
     idx = np.flatnonzero(loaded)
     if idx.size:
         sub = _sub(p, idx)
         xs, aa = x[idx], a[idx]
+        # start with both contacts closed (the previous state may have had one open)
+        d_i, d_o = _approaches(xs, aa, sub)
+        bad = (d_i <= 0.0) | (d_o <= 0.0)
+        if bad.any():
+            if p.speed_on:  # the inner groove overlaps X*: both contacts closed there
+                xs[bad] = x_star[bad]
+            else:
+                xs[bad] = _start(aa[bad], _sub(sub, np.flatnonzero(bad)))
         tol = 1e-13 * scale
-        for _ in range(_BALL_ITER):
-            g, jac = _residual_and_jacobian(xs, aa, sub)
-            det = jac[:, 0, 0] * jac[:, 1, 1] - jac[:, 0, 1] * jac[:, 1, 0]
-            if not np.all(np.abs(det) > 0.0):
-                raise NumericalError("ball equilibrium: singular contact stiffness")
-            s0 = -(jac[:, 1, 1] * g[:, 0] - jac[:, 0, 1] * g[:, 1]) / det
-            s1 = -(jac[:, 0, 0] * g[:, 1] - jac[:, 1, 0] * g[:, 0]) / det
-            step = np.stack([s0, s1], axis=1)
-            # keep both approaches from jumping far past zero in one step
-            big = np.abs(step).max(axis=1)
-            limit = 0.25 * (sub.ri0 + sub.ro0) * 0.05
-            factor = np.minimum(1.0, limit / np.maximum(big, 1e-300))
-            xs = xs + factor[:, None] * step
-            if np.all(big * factor <= tol):
-                break
-        else:
+        xs, done = _ball_newton(xs, aa, sub, tol)
+        if p.speed_on and not done.all():
+            redo = np.flatnonzero(~done)
+            xs[redo], done[redo] = _ball_newton(x_star[redo], aa[redo], _sub(sub, redo), tol)
+        if not done.all():
             raise ConvergenceError("ball equilibrium (seed 001 eq. 3-6) did not converge")
         x[idx] = xs
     # unloaded balls: on the outer groove bottom
@@ -350,7 +443,7 @@ def _start(a: NDArray[np.float64], p: _Params) -> NDArray[np.float64]:
 
 
 def _local_derivatives(
-    x: NDArray[np.float64], a: NDArray[np.float64], p: _Params
+    x: NDArray[np.float64], a: NDArray[np.float64], p: _Params, loaded: NDArray[np.bool_]
 ) -> tuple[dict[str, Any], NDArray[np.float64]]:
     """Ball state and the total derivative of (P_a, P_r, M_g) w.r.t. (A_1, A_2): (Z, 3, 2)."""
     z = x.shape[0]
@@ -372,8 +465,8 @@ def _local_derivatives(
             dp[:, 2, k] = np.imag(s["mg"] + 0.0 * xc[:, 0]) / _H
             if not state:
                 state = {key: np.real(v + 0.0 * xc[:, 0]) for key, v in s.items()}
-    # unloaded balls have no contact stiffness (∂g/∂X = 0): they contribute nothing
-    free = np.abs(dg_dx[:, 0, 0] * dg_dx[:, 1, 1] - dg_dx[:, 0, 1] * dg_dx[:, 1, 0]) == 0.0
+    # unloaded balls exert nothing on the inner ring: they contribute nothing
+    free = ~loaded
     dg_dx[free] = np.eye(2)
     dg_da[free] = 0.0
     total = dp_da - np.einsum("zij,zjk->zik", dp_dx, np.linalg.solve(dg_dx, dg_da))
@@ -535,7 +628,7 @@ class _Ring:
         x0 = self.x if self.have_x else _start(a, self.p)
         x, loaded = _solve_balls(a, x0, self.p, self.a)
         self.x, self.have_x = x, True
-        state, dp = _local_derivatives(x, a, self.p)
+        state, dp = _local_derivatives(x, a, self.p, loaded)
         pa, pr = state["pa"], state["pr"]
         pm = pa * self.rad_i + self.p.lam_i * self.p.f_i * state["mg"]
         pa = np.where(loaded, pa, 0.0)
