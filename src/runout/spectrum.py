@@ -19,6 +19,8 @@ Contents
 --------
 * :func:`amplitude_spectrum` -- windowed one-sided amplitude spectrum, coherent gain corrected.
 * :func:`extract_lines` -- leakage-free least-squares fit of lines at known frequencies.
+* :func:`peak_bin_gain` -- what a windowed FFT of a finite record reads for an off-bin line
+  (scalloping loss), to compare exact lines with published analyser readings.
 * :func:`separate_rro_nrro` and :func:`separate_rro_nrro_lines` -- repeatable and
   non-repeatable parts of a waveform or of a list of lines.
 * :func:`anderon_bands_from_lines`, :func:`anderon_bands_from_waveform` -- Anderon band values
@@ -64,6 +66,7 @@ __all__ = [
     "iso15242_bands_from_lines",
     "iso15242_bands_from_waveform",
     "orders",
+    "peak_bin_gain",
     "separate_rro_nrro",
     "separate_rro_nrro_lines",
     "to_peak_to_peak",
@@ -435,6 +438,62 @@ def amplitude_spectrum(
     freqs = np.fft.rfftfreq(n, 1.0 / fs).astype(np.float64)
     name = window if isinstance(window, str) else ("boxcar" if window is None else "custom")
     return Spectrum(freqs, amp, str(name), n, fs)
+
+
+def peak_bin_gain(
+    frequency: ArrayLike,
+    duration: float,
+    window: str | tuple[object, ...] | None = "hann",
+    *,
+    samples: int = 8192,
+) -> FloatArray:
+    r"""Fraction of a line's amplitude that a windowed FFT reads at the line's nearest bin.
+
+    A record of length :math:`T` has bins every :math:`1/T`; a line at :math:`f` sits
+    :math:`\delta = fT - \operatorname{round}(fT)` bins (:math:`|\delta| \le 1/2`) from its
+    nearest bin, where :func:`amplitude_spectrum` reads it as :math:`A\,G(\delta)` with
+
+    .. math:: G(\delta) = \frac{\left|\sum_{n=0}^{N-1} w_n e^{-2\pi i \delta n/N}\right|}
+              {\sum_{n=0}^{N-1} w_n}
+
+    (the scalloping loss; for the Hann window :math:`G \to \operatorname{sinc}\delta /
+    (1 - \delta^2)` as :math:`N \to \infty`, 1 on a bin and 0.849 half-way). The leakage of
+    the line's negative-frequency image is neglected: it is below 1e-3 of the amplitude once
+    the line is more than about five bins from DC (Hann window). Use it to compare an exact
+    line (:func:`extract_lines`) with a value read off a published FFT spectrum of a record
+    whose length is known or has been identified.
+
+    Parameters
+    ----------
+    frequency : array_like
+        Line frequencies [Hz], >= 0.
+    duration : float
+        Record length :math:`T = N \Delta t` [s], > 0.
+    window : str, tuple or None
+        As in :func:`amplitude_spectrum` (default ``"hann"``).
+    samples : int
+        Number of samples :math:`N` of the record (default 8192; the gain converges as
+        :math:`1/N^2`, so any realistic record is represented).
+
+    Returns
+    -------
+    ndarray
+        :math:`G` [-], same shape as ``frequency``: in (0, 1] and lowest half a bin off for
+        the Hann, Hamming, Blackman and boxcar windows (a flat-top window ripples a few 1e-4
+        above 1).
+    """
+    _check_positive("duration", duration)
+    if samples < 4:
+        raise ValueError(f"samples must be at least 4, got {samples}")
+    f = np.asarray(frequency, dtype=float)
+    if not np.all(np.isfinite(f)) or np.any(f < 0):
+        raise ValueError("frequency must be finite and >= 0")
+    w = _window(window, samples)
+    cycles = f * duration
+    offset = cycles - np.round(cycles)
+    n = np.arange(samples)
+    phasor = np.exp(-2j * np.pi * np.multiply.outer(offset, n) / samples)
+    return np.asarray(np.abs(phasor @ w) / w.sum(), dtype=np.float64)
 
 
 # --------------------------------------------------------------------------------------------

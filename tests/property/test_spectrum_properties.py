@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -11,6 +12,7 @@ from runout.spectrum import (
     anderon_bands_from_lines,
     anderon_bands_from_waveform,
     extract_lines,
+    peak_bin_gain,
     separate_rro_nrro,
 )
 
@@ -117,3 +119,20 @@ def test_rro_plus_nrro_is_the_signal(spr, revs, channels, seed) -> None:
     np.testing.assert_allclose(folded.mean(axis=1), 0.0, atol=1e-12)
     again = separate_rro_nrro(res.rro_waveform, spr)
     np.testing.assert_allclose(again.nrro, 0.0, atol=1e-12)
+
+
+@SETTINGS
+@given(
+    f=st.floats(1.0, 1e4),
+    duration=st.floats(0.01, 10.0),
+    window=st.sampled_from(["hann", "boxcar", "hamming", "blackman"]),
+)
+def test_peak_bin_gain_bounded_and_periodic_in_record_length(f, duration, window) -> None:
+    g = float(peak_bin_gain(f, duration, window, samples=512))
+    assert 0.0 < g <= 1.0 + 1e-12
+    # one more period of the line in the record puts it at the same place between bins
+    assert float(peak_bin_gain(f, duration + 1.0 / f, window, samples=512)) == pytest.approx(
+        g, rel=1e-6
+    )
+    # never worse than half a bin off
+    assert g >= float(peak_bin_gain(1.5, 1.0, window, samples=512)) - 1e-9

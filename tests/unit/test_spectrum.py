@@ -24,6 +24,7 @@ from runout.spectrum import (
     iso15242_bands_from_lines,
     iso15242_bands_from_waveform,
     orders,
+    peak_bin_gain,
     separate_rro_nrro,
     separate_rro_nrro_lines,
     to_peak_to_peak,
@@ -72,6 +73,46 @@ def test_hann_half_bin_scalloping_matches_theory() -> None:
     s = amplitude_spectrum(tone(t, 100.5, 1.0), fs, "hann")
     expected = abs(np.sinc(0.5) / (1.0 - 0.5**2))
     assert s.at(100.0) == pytest.approx(expected, rel=2e-3)
+
+
+def test_peak_bin_gain_limits_and_windows() -> None:
+    # on a bin: 1; half a bin off: sinc(1/2)/(3/4) (Hann), sinc(1/2) = 2/pi (boxcar)
+    assert peak_bin_gain(50.0, 1.0) == pytest.approx(1.0, abs=1e-12)
+    assert peak_bin_gain(50.5, 1.0) == pytest.approx(np.sinc(0.5) / 0.75, rel=1e-6)
+    assert peak_bin_gain(50.5, 1.0, "boxcar") == pytest.approx(2.0 / np.pi, rel=1e-6)
+    # symmetric about the bin, and the continuous Hann limit sinc(d)/(1 - d^2)
+    d = np.linspace(-0.5, 0.5, 11)
+    g = peak_bin_gain(100.0 + d, 1.0)
+    np.testing.assert_allclose(g, g[::-1], rtol=1e-12)
+    np.testing.assert_allclose(g, np.sinc(d) / (1.0 - d**2), rtol=1e-6)
+    assert peak_bin_gain(np.zeros((2, 3)), 2.0).shape == (2, 3)
+
+
+@pytest.mark.parametrize("window", ["hann", "boxcar", "flattop"])
+def test_peak_bin_gain_is_what_amplitude_spectrum_reads(window: str) -> None:
+    # an off-bin tone far from DC, read at its nearest bin of a real windowed FFT
+    n, duration = 4096, 1.37
+    t = np.arange(n) * (duration / n)
+    for f in (73.2, 150.05, 311.9):
+        s = amplitude_spectrum(tone(t, f, 2.0, 0.4), time=t, window=window)
+        k = round(f * duration)
+        expected = 2.0 * peak_bin_gain(f, duration, window, samples=n)
+        assert s.amplitude[k] == pytest.approx(expected, rel=2e-3)
+
+
+@pytest.mark.parametrize(
+    ("args", "kwargs", "match"),
+    [
+        ((50.0, 0.0), {}, "duration"),
+        ((-1.0, 1.0), {}, "frequency"),
+        ((np.nan, 1.0), {}, "frequency"),
+        ((50.0, 1.0), {"samples": 2}, "samples"),
+        ((50.0, 1.0, "nope"), {}, "window"),
+    ],
+)
+def test_peak_bin_gain_rejects_bad_input(args: tuple, kwargs: dict, match: str) -> None:
+    with pytest.raises(ValueError, match=match):
+        peak_bin_gain(*args, **kwargs)
 
 
 def test_dc_kept_when_asked_and_nyquist_bin() -> None:
