@@ -151,6 +151,14 @@ def test_axial_stiffness_matches_the_static_load_deflection_curve() -> None:
     assert np.abs(off[0]).max() <= 1e-9 * sol.stiffness[0, 0]
 
 
+@pytest.mark.parametrize("rpm", [0.0, 7200.0])
+def test_pure_axial_load_reports_exactly_zero_radial_displacement_and_tilt(rpm: float) -> None:
+    # the Newton round-off (~1e-21 m) used to be printed as 1e-15 µm
+    sol = eq.solve_equilibrium(bearing(), Operation("inner", rpm / 60.0, axial_load=60.68))
+    assert sol.displacement[0] > 0.0
+    assert np.all(sol.displacement[1:] == 0.0)
+
+
 def test_radial_load_loads_the_balls_under_it_symmetrically() -> None:
     b = bearing()
     op = Operation("inner", 0.0, axial_load=20.0, radial_load=80.0)  # along -y
