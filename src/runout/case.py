@@ -41,7 +41,15 @@ from runout.imperfections import (
 )
 from runout.units import UnitError, to_si
 
-__all__ = ["MODEL_IDS", "Analysis", "Case", "CaseSpec", "load_case", "parse_case"]
+__all__ = [
+    "MODEL_IDS",
+    "Analysis",
+    "Case",
+    "CaseSpec",
+    "first_validation_error",
+    "load_case",
+    "parse_case",
+]
 
 MODEL_IDS = (
     "linear",
@@ -728,7 +736,8 @@ def _describe(error: Any) -> tuple[str, str]:
     return _format_loc(loc), error["msg"]
 
 
-def _first_error(exc: ValidationError) -> tuple[str, str]:
+def first_validation_error(exc: ValidationError) -> tuple[str, str]:
+    """(key path, message) of the error a user should see first in a pydantic failure."""
     errors = exc.errors()
     # A union of an angle and "random" reports both branches; report the most specific one.
     # A misspelt key also makes the right one "missing": report the misspelling first.
@@ -943,7 +952,7 @@ def parse_case(data: dict[str, Any], path: str = "<case>", base_dir: Path | None
     try:
         spec = CaseSpec.model_validate(data)
     except ValidationError as exc:
-        key, message = _first_error(exc)
+        key, message = first_validation_error(exc)
         raise CaseError(path, key, message) from None
     try:
         bearing = _build_bearing(spec)

@@ -169,10 +169,10 @@ def _convert(
     except Exception as exc:  # pydantic ValidationError: report it on the study key
         from pydantic import ValidationError
 
-        from runout.case import _first_error
+        from runout.case import first_validation_error
 
         if isinstance(exc, ValidationError):
-            _, message = _first_error(exc)
+            _, message = first_validation_error(exc)
             raise CaseError(case.path, where, message) from None
         raise
     value = _get_at(spec, path)
@@ -661,7 +661,7 @@ def _evaluate_batched(
     radial = np.ptp(q[:, :, 0], axis=1)
     for row in range(len(points)):
         if status[row] != 0:
-            cause = qs2._CAUSES.get(int(status[row]), "solver failure")
+            cause = qs2.CAUSES.get(int(status[row]), "solver failure")
             at = int(instant[row])
             chunk["errors"][str(task.start + row)] = f"{cause} (instant {at}, t = {t[at]:.6g} s)"
             for k in RUNOUT_KEYS:

@@ -76,7 +76,8 @@ __all__ = [
 
 MODEL = "quasi_static_2d"
 OK, TOO_FEW_LOADED, SINGULAR, NOT_CONVERGED = 0, 1, 2, 3
-_CAUSES = {
+#: Message per kernel status code (errors name the instant and this cause).
+CAUSES = {
     TOO_FEW_LOADED: "fewer than 2 balls carry load: the shaft cannot be held",
     SINGULAR: "singular stiffness matrix: the loaded balls cannot hold the shaft",
     NOT_CONVERGED: "Newton iteration did not converge",
@@ -325,7 +326,7 @@ def solve(
         c, theta, st.stiffness, st.initial_approach, MAX_ITER, st.force
     )
     if status != OK:
-        cause, t = _CAUSES[int(status)], float(time[int(instant)])
+        cause, t = CAUSES[int(status)], float(time[int(instant)])
         if status == TOO_FEW_LOADED:
             raise ContactLossError(cause, int(instant), t)
         if status == NOT_CONVERGED:

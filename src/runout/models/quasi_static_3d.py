@@ -88,7 +88,8 @@ __all__ = [
 MODEL = "quasi_static_3d"
 #: Kernel status codes.
 OK, TOO_FEW_LOADED, SINGULAR, NOT_CONVERGED = 0, 1, 2, 3
-_CAUSES = {
+#: Message per kernel status code (errors name the instant and this cause).
+CAUSES = {
     TOO_FEW_LOADED: "fewer than 3 balls carry load: the outer ring cannot be held",
     SINGULAR: "singular stiffness matrix: the loaded balls cannot hold the outer ring",
     NOT_CONVERGED: "Newton iteration did not converge",
@@ -264,7 +265,7 @@ def solve_kernel(c, theta, cos_a, sin_a, k, force, q_start, d_ref, max_iter):
 
 
 def _raise(status: int, instant: int, time: NDArray[np.float64]) -> None:
-    cause = _CAUSES[status]
+    cause = CAUSES[status]
     t = float(time[instant])
     if status == TOO_FEW_LOADED:
         raise ContactLossError(cause, instant, t)
