@@ -19,7 +19,8 @@ where :math:`w_j` is ball j's diameter deviation along its contact line. With po
   **k f_b − f_c** line, p-p :math:`(2/Z)\,|\sum_j A_j \bar p_j|`.
 
 One oversize ball of 0.1 µm in Z = 10 gives 4Δ/Z = 40 nm; the nonlinear 2-D model gives
-40.20 nm and seed 001 Table 4 38.60 nm (VALIDATION.md). The
+40.20 nm, and seed 001 Table 4 prints 38.60 nm, a Hann-FFT reading of that line (the same line
+passed through the paper's reading gives 38.66 nm, VALIDATION.md). The
 optimiser minimises the sum of these line p-p values (the Σ column of seed 001 Tables 4-8)
 with the closed form, then checks the best candidates with the nonlinear model
 (:func:`verify`).

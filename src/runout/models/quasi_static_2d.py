@@ -24,8 +24,9 @@ Notes
 * Eq. 10 is planar: x, y and the deviations enter without the contact angle, exactly as
   printed. The contact angle (:func:`runout.summary.operating_contact_angle`) sets the
   kinematics (eq. 7, 9) and δ_0 only. ``element_projection="radial"`` multiplies the ball
-  deviations by cos α instead (their projection on the radial plane); see
-  VALIDATION.md for which reading reproduces Table 4.
+  deviations by cos α instead (their projection on the radial plane), an option for studies:
+  Tables 4-8 are reproduced with eq. 10 as printed once the paper's FFT reading is applied
+  (VALIDATION.md, :func:`runout.spectrum.peak_bin_gain`).
 * Eq. 11-12 write the raceway radii as functions of the ball angle θ_k; for a rotating ring we
   evaluate its profile in the ring's frame, :math:`r(\theta_k - 2\pi f_{ring} t)`.
 * The shaft is the measured body: the displacement reported is the inner ring's centre
