@@ -374,6 +374,34 @@ def _ball_newton(
     return xs, done
 
 
+def _friction_continuation(
+    x0: NDArray[np.float64], aa: NDArray[np.float64], sub: _Params, tol: float
+) -> tuple[NDArray[np.float64], NDArray[np.bool_]]:
+    """Ball Newton along the gyroscopic friction, λ → s·λ with s from 0 to 1.
+
+    The last resort of :func:`_solve_balls`: near lift-off under inner-race control the
+    friction on the inner race stays finite while that contact's stiffness vanishes, and
+    Newton from the usual starts can stall. Without friction (s = 0) the balance is the
+    well-posed centrifugal one; the solution moves continuously with s, so each step starts
+    next to its answer (step halved on failure, down to 1/1024).
+    """
+    q = _sub(sub, np.arange(x0.shape[0]))
+    q.lam_i = q.lam_o = 0.0
+    x, done = _ball_newton(x0, aa, q, tol)
+    s, ds = 0.0, 0.25
+    while done.all() and s < 1.0:
+        t = min(1.0, s + ds)
+        q.lam_i, q.lam_o = t * sub.lam_i, t * sub.lam_o
+        xt, ok = _ball_newton(x, aa, q, tol)
+        if ok.all():
+            x, s, ds = xt, t, min(2.0 * ds, 0.5)
+        elif ds > 1.0 / 1024.0:
+            ds *= 0.5
+        else:
+            return xt, ok
+    return x, done
+
+
 def _solve_balls(
     a: NDArray[np.float64], x0: NDArray[np.float64], p: _Params, scale: float
 ) -> tuple[NDArray[np.float64], NDArray[np.bool_]]:
@@ -385,7 +413,8 @@ def _solve_balls(
     iteration (a step may shrink an approach by at most 90 %): the Hertz law's vanishing
     stiffness at zero approach would otherwise throw Newton across the contact opening. A
     ball that does not converge from ``x0`` is restarted from its outer-contact-only position
-    (where the inner groove overlaps it: the iteration then unloads the inner contact).
+    (where the inner groove overlaps it: the iteration then unloads the inner contact), and
+    then by continuation in the gyroscopic friction (:func:`_friction_continuation`).
     """
     x = x0.copy()
     if p.speed_on:
@@ -412,6 +441,10 @@ def _solve_balls(
         if p.speed_on and not done.all():
             redo = np.flatnonzero(~done)
             xs[redo], done[redo] = _ball_newton(x_star[redo], aa[redo], _sub(sub, redo), tol)
+        if p.speed_on and not done.all():
+            redo = np.flatnonzero(~done)
+            start = _start(aa[redo], _sub(sub, redo))
+            xs[redo], done[redo] = _friction_continuation(start, aa[redo], _sub(sub, redo), tol)
         if not done.all():
             raise ConvergenceError("ball equilibrium (seed 001 eq. 3-6) did not converge")
         x[idx] = xs
