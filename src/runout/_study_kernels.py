@@ -19,6 +19,8 @@ import numba
 import numpy as np
 from numpy.typing import NDArray
 
+from runout.models.quasi_static_2d import FLOOR, loaded_balls_collinear
+
 __all__ = ["project_rows", "solve_batch", "solve_batch_reference"]
 
 #: Relative step tolerance of the Newton iteration (same as the per-bearing model).
@@ -57,17 +59,22 @@ def _solve_one(c_base, offset, cth, sth, k, d_ref, max_iter, q_out, unloaded):  
             h00 = 0.0
             h01 = 0.0
             h11 = 0.0
+            load_sum = 0.0
             for j in range(z):
                 d = 2.0 * ci[j] + q0 * cth[i, j] + q1 * sth[i, j]
                 if d > 0.0:
                     sd = math.sqrt(d)
                     p = k * d * sd
+                    load_sum += p
                     kk = 1.5 * k * sd
                     f0 += p * cth[i, j]
                     f1 += p * sth[i, j]
                     h00 += kk * cth[i, j] * cth[i, j]
                     h01 += kk * cth[i, j] * sth[i, j]
                     h11 += kk * sth[i, j] * sth[i, j]
+            if max(abs(f0), abs(f1)) <= FLOOR * load_sum:  # round-off floor (2-D model)
+                converged = True
+                break
             h00 += reg
             h11 += reg
             det = h00 * h11 - h01 * h01
@@ -98,6 +105,8 @@ def _solve_one(c_base, offset, cth, sth, k, d_ref, max_iter, q_out, unloaded):  
                 count += 1
         if z - count < 2:
             return 1, i
+        if loaded_balls_collinear(ci, cth[i], sth[i], q0, q1):
+            return 2, i
         if not converged:
             return 3, i
         q_out[i, 0] = q0

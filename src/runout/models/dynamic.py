@@ -88,6 +88,7 @@ import numpy as np
 from numpy.typing import NDArray
 from scipy.optimize import brentq
 
+from runout._linalg import solve_spd3
 from runout.bearing import BallBearing
 from runout.contact import (
     ball_race_contacts,
@@ -491,18 +492,9 @@ def _solve3(j00, j01, j02, j11, j12, j22, r0, r1, r2, ndof):
     """Solve the symmetric 2x2 (ndof 2) or 3x3 system J s = r in closed form."""
     if ndof == 2:
         det = j00 * j11 - j01 * j01
-        return (j11 * r0 - j01 * r1) / det, (j00 * r1 - j01 * r0) / det, 0.0, det
-    a00 = j11 * j22 - j12 * j12
-    a01 = j02 * j12 - j01 * j22
-    a02 = j01 * j12 - j02 * j11
-    det = j00 * a00 + j01 * a01 + j02 * a02
-    a11 = j00 * j22 - j02 * j02
-    a12 = j01 * j02 - j00 * j12
-    a22 = j00 * j11 - j01 * j01
-    s0 = (a00 * r0 + a01 * r1 + a02 * r2) / det
-    s1 = (a01 * r0 + a11 * r1 + a12 * r2) / det
-    s2 = (a02 * r0 + a12 * r1 + a22 * r2) / det
-    return s0, s1, s2, det
+        return (j11 * r0 - j01 * r1) / det, (j00 * r1 - j01 * r0) / det, 0.0
+    s0, s1, s2, _ok = solve_spd3(j00, j01, j02, j11, j12, j22, r0, r1, r2)
+    return s0, s1, s2
 
 
 @numba.njit(cache=True)
@@ -604,9 +596,7 @@ def newmark_kernel(n_steps, stride, t_start, state, par, theta0, hk, ndof, max_i
             r0 = m * na0 + c * nv0 + f0 - e0
             r1 = m * na1 + c * nv1 + f1 - e1
             r2 = m * na2 + c * nv2 + f2 - e2
-            s0, s1, s2, _det = _solve3(
-                jd + k00, k01, k02, jd + k11, k12, jd + k22, r0, r1, r2, ndof
-            )
+            s0, s1, s2 = _solve3(jd + k00, k01, k02, jd + k11, k12, jd + k22, r0, r1, r2, ndof)
             p0 -= s0
             p1 -= s1
             p2 -= s2
@@ -703,9 +693,7 @@ def static_kernel(times, q_start, par, theta0, hk, ndof, max_iter):
                 p0, p1, p2, cth, sth, gap, wb, a, zp, k, ndof
             )
             r0, r1, r2 = f0 - e0, f1 - e1, f2 - e2
-            s0, s1, s2, _det = _solve3(
-                k00 + reg, k01, k02, k11 + reg, k12, k22 + reg, r0, r1, r2, ndof
-            )
+            s0, s1, s2 = _solve3(k00 + reg, k01, k02, k11 + reg, k12, k22 + reg, r0, r1, r2, ndof)
             big = max(abs(s0), abs(s1), abs(s2))
             step = 1.0
             if big > 1e-3 * tol / NEWTON_RTOL:

@@ -80,11 +80,16 @@ OK, TOO_FEW_LOADED, SINGULAR, NOT_CONVERGED = 0, 1, 2, 3
 #: Message per kernel status code (errors name the instant and this cause).
 CAUSES = {
     TOO_FEW_LOADED: "fewer than 2 balls carry load: the shaft cannot be held",
-    SINGULAR: "singular stiffness matrix: the loaded balls cannot hold the shaft",
+    SINGULAR: (
+        "singular stiffness matrix: the loaded balls lie on one line (e.g. two opposite "
+        "balls) and cannot hold the shaft across it"
+    ),
     NOT_CONVERGED: "Newton iteration did not converge",
 }
 RTOL = 1e-11
 MAX_ITER = 60
+#: Residual round-off floor relative to the sum of the load magnitudes (64 ulp).
+FLOOR = 64.0 * 2.0**-52
 ElementProjection = Literal["none", "radial"]
 
 
@@ -96,6 +101,27 @@ def _potential(c, cth, sth, k, q0, q1, force):
         if d > 0.0:
             e += k / 2.5 * d * d * math.sqrt(d)
     return e
+
+
+@numba.njit(cache=True)
+def loaded_balls_collinear(c, cth, sth, q0, q1):
+    """True when the loaded balls' directions span one line only (compiled).
+
+    The stiffness of the loaded balls, Σ d_k^{1/2} n_k n_k^T (without regularisation), is
+    then singular: e.g. two opposite balls hold the shaft along their line and nothing holds
+    it across (its position there is undetermined). Relative threshold 1e-12 on
+    det / trace².
+    """
+    h00 = h01 = h11 = 0.0
+    for j in range(c.size):
+        d = 2.0 * c[j] + q0 * cth[j] + q1 * sth[j]
+        if d > 0.0:
+            sd = math.sqrt(d)
+            h00 += sd * cth[j] * cth[j]
+            h01 += sd * cth[j] * sth[j]
+            h11 += sd * sth[j] * sth[j]
+    tr = h00 + h11
+    return h00 * h11 - h01 * h01 <= 1e-12 * tr * tr
 
 
 @numba.njit(cache=True)
@@ -159,17 +185,24 @@ def solve_kernel_loaded(c, theta, k, d_ref, max_iter, force):
             f0 = -force[0]
             f1 = -force[1]
             h00 = h01 = h11 = 0.0
+            load_sum = abs(force[0]) + abs(force[1])
             for j in range(z):
                 d = 2.0 * ci[j] + q0 * cth[j] + q1 * sth[j]  # total approach 2 δ_k
                 if d > 0.0:
                     sd = math.sqrt(d)
                     p = k * d * sd
+                    load_sum += p
                     kk = 1.5 * k * sd
                     f0 += p * cth[j]
                     f1 += p * sth[j]
                     h00 += kk * cth[j] * cth[j]
                     h01 += kk * cth[j] * sth[j]
                     h11 += kk * sth[j] * sth[j]
+            # residual at its round-off floor: converged (a nearly unloaded ball makes the
+            # stiffness nearly singular and the steps then never fall below the tolerance)
+            if max(abs(f0), abs(f1)) <= FLOOR * load_sum:
+                converged = True
+                break
             reg = 1e-9 * 1.5 * k * math.sqrt(2.0 * d_ref)
             h00 += reg
             h11 += reg
@@ -198,6 +231,8 @@ def solve_kernel_loaded(c, theta, k, d_ref, max_iter, force):
                 count += 1
         if z - count < 2:
             return q, unloaded, 1, i
+        if loaded_balls_collinear(ci, cth, sth, q0, q1):
+            return q, unloaded, 2, i
         if not converged:
             return q, unloaded, 3, i
         q[i, 0] = q0

@@ -60,6 +60,7 @@ import numba
 import numpy as np
 from numpy.typing import NDArray
 
+from runout._linalg import solve_spd3
 from runout.bearing import BallBearing
 from runout.contact import ball_race_contacts
 from runout.errors import ContactLossError, ConvergenceError, GeometryError, NumericalError
@@ -97,6 +98,8 @@ CAUSES = {
 #: Step tolerance of Newton's method relative to the preload approach δ_pl.
 RTOL = 1e-11
 MAX_ITER = 60
+#: Residual round-off floor relative to the sum of the load magnitudes (64 ulp).
+_FLOOR = 64.0 * 2.0**-52
 
 
 def preload_approach(
@@ -186,11 +189,13 @@ def solve_kernel(c, theta, cos_a, sin_a, k, force, q_start, d_ref, max_iter):
             r1 = -force[1]
             r2 = -force[2]
             h00 = h01 = h02 = h11 = h12 = h22 = 0.0
+            load_sum = abs(force[0]) + abs(force[1]) + abs(force[2])
             for j in range(z):
                 d = ci[j] - (q0 * cth[j] + q1 * sth[j]) * cos_a - q2 * sin_a
                 if d > 0.0:
                     sd = math.sqrt(d)
                     qj = k * d * sd
+                    load_sum += qj
                     kk = 1.5 * k * sd
                     nx = cos_a * cth[j]
                     ny = cos_a * sth[j]
@@ -203,25 +208,21 @@ def solve_kernel(c, theta, cos_a, sin_a, k, force, q_start, d_ref, max_iter):
                     h11 += kk * ny * ny
                     h12 += kk * ny * sin_a
                     h22 += kk * sin_a * sin_a
+            # The residual is at its round-off floor: converged. A nearly unloaded ball makes the
+            # stiffness nearly singular, and the steps then never fall below the tolerance.
+            if max(abs(r0), abs(r1), abs(r2)) <= _FLOOR * load_sum:
+                converged = True
+                break
             # a small regularisation keeps intermediate iterates with few loaded balls moving
-            # (the final state is checked below without it)
+            # (three loaded balls at distinct angles always hold the ring: checked below)
             reg = 1e-9 * 1.5 * k * math.sqrt(d_ref)
             h00 += reg
             h11 += reg
             h22 += reg
             # closed-form 3x3 solve H s = r (gradient of the potential is -r)
-            a00 = h11 * h22 - h12 * h12
-            a01 = h02 * h12 - h01 * h22
-            a02 = h01 * h12 - h02 * h11
-            det = h00 * a00 + h01 * a01 + h02 * a02
-            if not det > 0.0:
+            s0, s1, s2, ok = solve_spd3(h00, h01, h02, h11, h12, h22, r0, r1, r2)
+            if not ok:
                 return q, unloaded, 2, i
-            a11 = h00 * h22 - h02 * h02
-            a12 = h01 * h02 - h00 * h12
-            a22 = h00 * h11 - h01 * h01
-            s0 = (a00 * r0 + a01 * r1 + a02 * r2) / det
-            s1 = (a01 * r0 + a11 * r1 + a12 * r2) / det
-            s2 = (a02 * r0 + a12 * r1 + a22 * r2) / det
             # Armijo backtracking on the convex potential
             slope = -(r0 * s0 + r1 * s1 + r2 * s2)
             step = 1.0
