@@ -37,8 +37,6 @@ import math
 from dataclasses import dataclass
 from typing import Literal
 
-from scipy.optimize import brentq
-
 from runout.bearing import BallBearing
 from runout.contact import BallContacts, ball_race_contacts
 from runout.errors import ConvergenceError, GeometryError
@@ -238,6 +236,8 @@ def axial_loading(
         return _load_at(bearing, alpha, alpha0, kn) / fa - 1.0
 
     try:
+        from scipy.optimize import brentq  # lazily: ~0.1 s of CLI start-up
+
         alpha, info = brentq(
             residual, alpha0, _ALPHA_MAX, xtol=xtol, rtol=8.9e-16, full_output=True
         )

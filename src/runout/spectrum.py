@@ -41,7 +41,6 @@ from typing import Literal
 import numba
 import numpy as np
 import numpy.typing as npt
-import scipy.linalg
 from numpy.typing import ArrayLike
 
 __all__ = [
@@ -874,6 +873,8 @@ def extract_lines(
             LineResolutionWarning,
             stacklevel=2,
         )
+
+    import scipy.linalg  # lazily: CLI start-up
 
     try:
         cho = scipy.linalg.cho_factor(gn, check_finite=False)

@@ -24,7 +24,12 @@ class UnitError(ValueError):
 
 @lru_cache(maxsize=1)
 def _registry() -> Any:
-    ureg: Any = pint.UnitRegistry()
+    # pint's on-disk cache of the parsed definitions cuts ~0.25 s from every CLI call; a
+    # home without a writable cache directory falls back to parsing them
+    try:
+        ureg: Any = pint.UnitRegistry(cache_folder=":auto:")
+    except OSError:
+        ureg = pint.UnitRegistry()
     ureg.define("micron = micrometer")
     return ureg
 

@@ -53,3 +53,25 @@ def test_to_si(value, kind, expected) -> None:
 def test_to_si_rejects(value, kind, words) -> None:
     with pytest.raises(UnitError, match=words):
         to_si(value, kind)
+
+
+def test_registry_falls_back_when_the_pint_cache_cannot_be_written(monkeypatch) -> None:
+    import pint
+
+    from runout import units
+
+    real = pint.UnitRegistry
+
+    def no_cache(*args, **kwargs):
+        if "cache_folder" in kwargs:
+            raise PermissionError("read-only cache directory")
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(pint, "UnitRegistry", no_cache)
+    units._registry.cache_clear()
+    try:
+        assert units.to_si("3 mm", "length") == pytest.approx(3e-3)
+        assert units.to_si("2 micron", "length") == pytest.approx(2e-6)
+    finally:
+        monkeypatch.undo()
+        units._registry.cache_clear()

@@ -86,7 +86,6 @@ from typing import Any, Literal
 import numba
 import numpy as np
 from numpy.typing import NDArray
-from scipy.optimize import brentq
 
 from runout._linalg import solve_spd3
 from runout.bearing import BallBearing
@@ -214,6 +213,8 @@ def preloaded_contact_angle(
         return z * k * (a * stretch) ** 1.5 * math.sin(alpha) / preload - 1.0
 
     hi = 0.5 * math.pi * (1.0 - 1e-6)
+    from scipy.optimize import brentq  # lazily: ~0.1 s of CLI start-up
+
     alpha = float(brentq(residual, free_contact_angle, hi, xtol=1e-15, rtol=8.9e-16))
     return alpha, _law_stiffness(bearing, alpha, law)
 
