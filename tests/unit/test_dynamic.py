@@ -6,7 +6,7 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from cases import WAVY, dynamic_case
@@ -62,12 +62,16 @@ def test_kernel_contact_jacobian_matches_finite_differences(
     out = dy._contact(
         *q, cth, sth, gap, wb, s.curvature_distance, s.axial_offset, s.stiffness, s.ndof
     )
-    f_ref, _ = dy.contact_forces(s, np.array([t]), np.array([q]))
+    f_ref, approach = dy.contact_forces(s, np.array([t]), np.array([q]))
     scale = s.stiffness * s.reference_approach**1.5 + 1e-3
     assert np.allclose(out[:3][: s.ndof], f_ref[0, : s.ndof], rtol=1e-10, atol=1e-10 * scale)
     kmat = np.array([[out[3], out[4], out[5]], [out[4], out[6], out[7]], [out[5], out[7], out[8]]])[
         : s.ndof, : s.ndof
     ]
+    # The central-difference reference (step h = 1e-4 δ_ref) is only accurate when no ball is
+    # within 100 h of opening or closing its contact: the Hertz stiffness ~ δ^1/2 bends sharply
+    # there (relative error ~ 0.04 (h/δ)^2).
+    assume(np.abs(approach).min() > 1e-2 * s.reference_approach)
     k_fd = dy.contact_stiffness(s, t, np.array(q))
     kscale = np.abs(k_fd).max() + 1.0
     assert np.allclose(kmat, k_fd, rtol=1e-5, atol=1e-5 * kscale)
