@@ -76,12 +76,12 @@ def _speed_hz(q: Any, text: str) -> float:
     if not q.check("1 / [time]"):
         raise UnitError(f'"{text}" is not a rotational speed')
     factor, root = ureg.get_root_units(q.units)
-    value = float(q.magnitude) * float(factor)
     # pint treats the radian as dimensionless: rpm and rad/s have 'radian' in their root units,
     # Hz and 1/s do not. The former are angular rates, the latter revolutions per second.
     if "radian" in str(root):
-        return value / (2.0 * math.pi)
-    return value
+        # straight to revolutions (not via rad/s and back): "7200 rpm" is exactly 120 Hz
+        return float(q.to("revolution / second").magnitude)
+    return float(q.magnitude) * float(factor)
 
 
 def to_si(value: object, kind: str) -> float:

@@ -75,3 +75,9 @@ def test_registry_falls_back_when_the_pint_cache_cannot_be_written(monkeypatch) 
     finally:
         monkeypatch.undo()
         units._registry.cache_clear()
+
+
+def test_rpm_converts_exactly() -> None:
+    # through revolutions, not rad/s and back: no 119.99999999999999 Hz in the output
+    assert to_si("7200 rpm", "speed") == 120.0
+    assert to_si("90 deg/s", "speed") == pytest.approx(0.25, rel=1e-15)
