@@ -19,7 +19,7 @@ import numba
 import numpy as np
 from numpy.typing import NDArray
 
-from runout.models.quasi_static_2d import FLOOR, loaded_balls_collinear
+from runout.models.quasi_static_2d import FLOOR, hertz_potential, loaded_balls_collinear
 
 __all__ = ["project_rows", "solve_batch", "solve_batch_reference"]
 
@@ -31,21 +31,12 @@ QUAD = 1e-6
 
 
 @numba.njit(cache=True)
-def _potential(c, cth, sth, k, q0, q1):  # pragma: no cover - compiled
-    e = 0.0
-    for j in range(c.size):
-        d = 2.0 * c[j] + q0 * cth[j] + q1 * sth[j]
-        if d > 0.0:
-            e += k / 2.5 * d * d * math.sqrt(d)
-    return e
-
-
-@numba.njit(cache=True)
 def _solve_one(c_base, offset, cth, sth, k, d_ref, max_iter, q_out, unloaded):  # pragma: no cover
     n, z = c_base.shape
     tol = RTOL * d_ref
     quad = QUAD * d_ref
     reg = 1e-9 * 1.5 * k * math.sqrt(2.0 * d_ref)
+    no_load = np.zeros(2)
     ci = np.empty(z)
     q0 = 0.0
     q1 = 0.0
@@ -86,9 +77,11 @@ def _solve_one(c_base, offset, cth, sth, k, d_ref, max_iter, q_out, unloaded):  
             step = 1.0
             big = max(abs(s0), abs(s1)) > 1e-4 * d_ref
             if big:
-                e0 = _potential(ci, cth[i], sth[i], k, q0, q1)
+                e0 = hertz_potential(ci, cth[i], sth[i], k, q0, q1, no_load)
                 for _ls in range(40):
-                    e1 = _potential(ci, cth[i], sth[i], k, q0 + step * s0, q1 + step * s1)
+                    e1 = hertz_potential(
+                        ci, cth[i], sth[i], k, q0 + step * s0, q1 + step * s1, no_load
+                    )
                     if e1 <= e0 + 1e-4 * step * slope or step * max(abs(s0), abs(s1)) < tol:
                         break
                     step *= 0.5

@@ -1566,12 +1566,20 @@ def _tada_conclusion1() -> float:
     return worst
 
 
-def _tada_conclusion3(z: int, lobes: int, direction: str) -> float:
+TADA_CONCLUSION3_AMPLITUDES = (20e-9, 40e-9)
+
+
+def tada_second_order_lines(z: int, lobes: int, direction: str) -> tuple[int, list[float]]:
+    """Seed 000 conclusion 3: the second-order line of one outer waviness at two amplitudes.
+
+    Returns the multiple of Z at which it falls, (2 lobes ± 1 or 2 lobes), and its p-p [m]
+    for :data:`TADA_CONCLUSION3_AMPLITUDES` (x for ``direction="xy"``, z for ``"z"``).
+    """
     from runout.models import quasi_static_3d as qs3
 
-    amps = (20e-9, 40e-9)
     lines = []
-    for a in amps:
+    multiple = 0
+    for a in TADA_CONCLUSION3_AMPLITUDES:
         case = _tada(
             [{"part": "outer", "order": lobes, "peak_to_peak": a}],
             z=z,
@@ -1581,9 +1589,17 @@ def _tada_conclusion3(z: int, lobes: int, direction: str) -> float:
         kin = qs3.setup(case).kinematics
         lk = 2 * lobes
         m = 0 if direction == "z" else (-1 if (lk - 1) % z == 0 else 1)
-        freq = abs((lk + m) * kin.cage - lk * kin.outer)
+        multiple = lk + m
+        freq = abs(multiple * kin.cage - lk * kin.outer)
         pp = _line_pp(case, [freq])[:, 0]
-        lines.append(pp[2] if direction == "z" else pp[0])
+        lines.append(float(pp[2] if direction == "z" else pp[0]))
+    return multiple, lines
+
+
+def _tada_conclusion3(z: int, lobes: int, direction: str) -> float:
+    """Exponent of the second-order line's growth with the waviness amplitude (2 expected)."""
+    _, lines = tada_second_order_lines(z, lobes, direction)
+    amps = TADA_CONCLUSION3_AMPLITUDES
     return math.log(lines[1] / lines[0]) / math.log(amps[1] / amps[0])
 
 
@@ -1818,6 +1834,7 @@ def kim_fc_pp_nm(name: str, z: int, balls: tuple[int, ...]) -> float:
     return float(abs(kim_lines(name, z, balls)[0]))
 
 
+@functools.cache
 def kim_cage_hz(name: str, z: int) -> float:
     """f_c [Hz] of the Table 1 bearing with ``z`` balls (eq. 7 at the loaded angle)."""
     from runout.models import quasi_static_2d as qs2

@@ -56,6 +56,29 @@ class Component:
     phase_rad: float = 0.0
     repeatable: bool = False
 
+    @classmethod
+    def fitted(
+        cls,
+        direction: str,
+        frequency_hz: float,
+        rotation_hz: float,
+        amplitude: float,
+        phase_rad: float,
+        label: str,
+    ) -> Component:
+        """A line fitted at ``frequency_hz`` with zero-to-peak ``amplitude`` [m]: p-p is twice
+        it, and it is repeatable (RRO) when its order is an integer (to 1e-9)."""
+        order = frequency_hz / rotation_hz
+        return cls(
+            direction=direction,
+            frequency_hz=float(frequency_hz),
+            order=float(order),
+            pp_m=float(2.0 * amplitude),
+            label=label,
+            phase_rad=float(phase_rad),
+            repeatable=bool(abs(order - round(order)) < 1e-9),
+        )
+
     def to_json(self) -> dict[str, Any]:
         """The JSON contract's component object."""
         return {

@@ -380,18 +380,7 @@ def fit_components(
         freqs = np.array([f for f, _ in merged])
         fit = extract_lines(time, displacement[axis], freqs)
         for (f, label), amp, ph in zip(merged, fit.amplitude, fit.phase, strict=True):
-            order = f / rotation_hz
-            comps.append(
-                Component(
-                    direction=name,
-                    frequency_hz=float(f),
-                    order=float(order),
-                    pp_m=float(2.0 * amp),
-                    label=label,
-                    phase_rad=float(ph),
-                    repeatable=bool(abs(order - round(order)) < 1e-9),
-                )
-            )
+            comps.append(Component.fitted(name, f, rotation_hz, amp, ph, label))
     if comps:
         # drop lines at the solver's round-off floor (predicted but absent)
         floor = FLOOR * max(c.pp_m for c in comps)

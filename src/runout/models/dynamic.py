@@ -1293,21 +1293,10 @@ def fit_lines(
         freqs = np.array([f for f, _, _ in kept])
         fit = extract_lines(time, displacement[axis], freqs)
         for (f, labels, optional), amp, ph in zip(kept, fit.amplitude, fit.phase, strict=True):
-            order = f / rotation_hz
             label = "; ".join(labels)
             if optional:
                 optional_labels.add(label)
-            comps.append(
-                Component(
-                    direction=name,
-                    frequency_hz=float(f),
-                    order=float(order),
-                    pp_m=float(2.0 * amp),
-                    label=label,
-                    phase_rad=float(ph),
-                    repeatable=bool(abs(order - round(order)) < 1e-9),
-                )
-            )
+            comps.append(Component.fitted(name, f, rotation_hz, amp, ph, label))
     if comps:
         top = max(c.pp_m for c in comps)
         comps = [

@@ -94,7 +94,9 @@ ElementProjection = Literal["none", "radial"]
 
 
 @numba.njit(cache=True)
-def _potential(c, cth, sth, k, q0, q1, force):
+def hertz_potential(c, cth, sth, k, q0, q1, force):
+    """Energy of the Hertz contacts minus the work of ``force`` at shaft centre q (compiled);
+    the Newton line search of eq. 16-17 descends it (also used by the Monte Carlo kernel)."""
     e = -(force[0] * q0 + force[1] * q1)
     for j in range(c.size):
         d = 2.0 * c[j] + q0 * cth[j] + q1 * sth[j]
@@ -214,9 +216,9 @@ def solve_kernel_loaded(c, theta, k, d_ref, max_iter, force):
             slope = f0 * s0 + f1 * s1
             step = 1.0
             big = max(abs(s0), abs(s1)) > 1e-4 * d_ref
-            e0 = _potential(ci, cth, sth, k, q0, q1, force) if big else 0.0
+            e0 = hertz_potential(ci, cth, sth, k, q0, q1, force) if big else 0.0
             for _ls in range(40 if big else 0):
-                e1 = _potential(ci, cth, sth, k, q0 + step * s0, q1 + step * s1, force)
+                e1 = hertz_potential(ci, cth, sth, k, q0 + step * s0, q1 + step * s1, force)
                 if e1 <= e0 + 1e-4 * step * slope or step * max(abs(s0), abs(s1)) < tol:
                     break
                 step *= 0.5

@@ -405,7 +405,7 @@ def _support(
 
 
 @numba.njit(cache=True)
-def _pair_gap(
+def _gap(
     ba: int,
     sa: float,
     bb: int,
@@ -417,56 +417,29 @@ def _pair_gap(
     a: FloatArray,
     p: FloatArray,
     off: NDArray[np.int64],
+    inside: bool,
 ) -> tuple[float, float, float]:
-    """Signed distance of body A (centre 0) and body B (centre d); normal angle; curvature."""
+    """Signed distance between body A (centre 0) and body B (centre d); normal angle; curvature.
+
+    ``inside=False``: B lies outside A (roller on the inner raceway), the gap is
+    d·n − h_A(ψ) − h_B(ψ + π). ``inside=True``: A encloses B (roller in the outer raceway), the
+    gap is h_A(ψ) − h_B(ψ) − d·n. Newton on ψ makes the gap stationary (support functions h).
+    """
+    sign = -1.0 if inside else 1.0  # B's support enters with this sign, the gap with it too
+    turn = 0.0 if inside else math.pi
     psi = math.atan2(dy, dx)
     g = 0.0
     rk = 0.0
     for _ in range(40):
         ha, h1a, rca = _support(ba, r0, k, a, p, off, sa, psi)
-        hb, h1b, rcb = _support(bb, r0, k, a, p, off, sb, psi + math.pi)
+        hb, h1b, rcb = _support(bb, r0, k, a, p, off, sb, psi + turn)
         c = math.cos(psi)
         s = math.sin(psi)
         nd = c * dx + s * dy
-        g = nd - ha - hb
-        rk = rca + rcb
-        f1 = -s * dx + c * dy - h1a - h1b
-        f2 = -nd + ha + hb - rca - rcb
-        step = f1 / f2
-        psi -= step
-        if abs(step) < 1e-9:  # quadratic convergence: g is stationary in ψ, error O(step²|d|)
-            break
-    return g, psi, rk
-
-
-@numba.njit(cache=True)
-def _inside_gap(
-    be: int,
-    se: float,
-    bb: int,
-    sb: float,
-    dx: float,
-    dy: float,
-    r0: FloatArray,
-    k: FloatArray,
-    a: FloatArray,
-    p: FloatArray,
-    off: NDArray[np.int64],
-) -> tuple[float, float, float]:
-    """Signed distance from body B (centre d) to the enclosing body E (centre 0), normal angle."""
-    psi = math.atan2(dy, dx)
-    g = 0.0
-    rk = 0.0
-    for _ in range(40):
-        he, h1e, rce = _support(be, r0, k, a, p, off, se, psi)
-        hb, h1b, rcb = _support(bb, r0, k, a, p, off, sb, psi)
-        c = math.cos(psi)
-        s = math.sin(psi)
-        nd = c * dx + s * dy
-        g = he - hb - nd
-        rk = rce - rcb
-        f1 = h1e - h1b - (-s * dx + c * dy)
-        f2 = (rce - he) - (rcb - hb) + nd
+        g = sign * (nd - ha - sign * hb)
+        rk = rca + sign * rcb
+        f1 = -s * dx + c * dy - h1a - sign * h1b
+        f2 = -nd + ha + sign * hb - rca - sign * rcb
         step = f1 / f2
         psi -= step
         if abs(step) < 1e-9:  # quadratic convergence: g is stationary in ψ, error O(step²|d|)
@@ -495,9 +468,9 @@ def _constraint(
     dx = rx[j] - cx
     dy = ry[j] - cy
     if mode == 0:
-        g, psi, _ = _pair_gap(0, s_in, 2 + j, s_rol, dx, dy, r0, k, a, p, off)
+        g, psi, _ = _gap(0, s_in, 2 + j, s_rol, dx, dy, r0, k, a, p, off, False)
         return g, -math.cos(psi), -math.sin(psi)
-    g, psi, _ = _inside_gap(1, s_out, 2 + j, s_rol, dx, dy, r0, k, a, p, off)
+    g, psi, _ = _gap(1, s_out, 2 + j, s_rol, dx, dy, r0, k, a, p, off, True)
     return g, math.cos(psi), math.sin(psi)
 
 
@@ -710,12 +683,10 @@ def _solve_all(
             ok = False
             for _ in range(40):
                 if mode == 0:
-                    g, psi, _ = _inside_gap(
-                        1, s_out, 2 + j, s_rol, s * ex, s * ey, r0, k, a, p, off
-                    )
+                    g, psi, _ = _gap(1, s_out, 2 + j, s_rol, s * ex, s * ey, r0, k, a, p, off, True)
                     ds = g / (math.cos(psi) * ex + math.sin(psi) * ey)
                 else:
-                    g, psi, _ = _pair_gap(0, s_in, 2 + j, s_rol, s * ex, s * ey, r0, k, a, p, off)
+                    g, psi, _ = _gap(0, s_in, 2 + j, s_rol, s * ex, s * ey, r0, k, a, p, off, False)
                     ds = -g / (math.cos(psi) * ex + math.sin(psi) * ey)
                 s += ds
                 if abs(ds) <= 1e-10:  # Newton on a nearly linear gap: next step < 1e-18 m
@@ -1070,9 +1041,9 @@ def pair_gap(
     and the direction ψ of the contact normal from A towards B [rad].
     """
     r0, k, a, p, off = _two(radius_a, harmonics_a, radius_b, harmonics_b)
-    g, psi, _ = _pair_gap(
+    g, psi, _ = _gap(
         0, float(turned_a), 1, float(turned_b), float(centre_b[0]), float(centre_b[1]),
-        r0, k, a, p, off,
+        r0, k, a, p, off, False,
     )  # fmt: skip
     return g, psi
 
@@ -1091,9 +1062,9 @@ def inside_gap(
     Returns the gap [m] (negative: B sticks out of E) and the normal direction ψ [rad].
     """
     r0, k, a, p, off = _two(radius_e, harmonics_e, radius_b, harmonics_b)
-    g, psi, _ = _inside_gap(
+    g, psi, _ = _gap(
         0, float(turned_e), 1, float(turned_b), float(centre_b[0]), float(centre_b[1]),
-        r0, k, a, p, off,
+        r0, k, a, p, off, True,
     )  # fmt: skip
     return g, psi
 
