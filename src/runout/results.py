@@ -206,16 +206,20 @@ class RunResult:
     def summary_sections(self) -> list[tuple[str, Rows]]:
         """Readable tables: runout figures, the largest lines, band values."""
         r = self.runout
+        figures: Rows = [("radial p-p (measuring direction)", f"{r.radial_pp_m * 1e9:.4g}", "nm")]
+        across = self.extras.get("horizontal_pp_m")  # models that move freely across the load
+        if across is not None:
+            figures.append(("radial p-p across the load", f"{across * 1e9:.4g}", "nm"))
+        figures += [
+            ("axial p-p", f"{r.axial_pp_m * 1e9:.4g}", "nm"),
+            ("RRO p-p", f"{r.rro_pp_m * 1e9:.4g}", "nm"),
+            ("NRRO p-p", f"{r.nrro_pp_m * 1e9:.4g}", "nm"),
+        ]
         sections: list[tuple[str, Rows]] = [
             (
                 f"{self.title or self.model}: runout ({self.model} model, contact angle "
                 f"{math.degrees(self.contact_angle):.4g} deg)",
-                [
-                    ("radial p-p (measuring direction)", f"{r.radial_pp_m * 1e9:.4g}", "nm"),
-                    ("axial p-p", f"{r.axial_pp_m * 1e9:.4g}", "nm"),
-                    ("RRO p-p", f"{r.rro_pp_m * 1e9:.4g}", "nm"),
-                    ("NRRO p-p", f"{r.nrro_pp_m * 1e9:.4g}", "nm"),
-                ],
+                figures,
             )
         ]
         rows: Rows = []

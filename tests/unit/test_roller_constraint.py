@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -331,3 +332,16 @@ def test_run_case_gives_a_complete_result_and_files(tmp_path, ring: str) -> None
     assert {"contacts.csv", "order_sweep.csv", "contact_pattern.png", "displacement.png"} <= written
     rows = (tmp_path / "out" / "order_sweep.csv").read_text().splitlines()
     assert rows[1].startswith("order,order_over_z,inner_pp_m") and len(rows) == 2 + 41
+
+
+def test_summary_shows_the_motion_across_the_load() -> None:
+    # the inner ring of a roller bearing moves far more across the load than along it: the
+    # readable table says so, next to the measuring-direction figure
+    from runout.case import load_case
+    from runout.models import run_model
+
+    result = run_model(load_case(Path(__file__).parents[2] / "examples" / "seed004_nu209.toml"))
+    rows = {name: value for name, value, _ in result.summary_sections()[0][1]}
+    across = result.extras["horizontal_pp_m"]
+    assert rows["radial p-p across the load"] == f"{across * 1e9:.4g}"
+    assert across > result.runout.radial_pp_m
