@@ -37,6 +37,7 @@ bench: install
 docs: install
 	$(BIN)/python -m pip install --quiet -e '.[dev,dask,docs]'
 	$(BIN)/python -m runout.schema_doc > docs/case-file.md
+	$(BIN)/python -m runout.conventions > docs/conventions.md
 	cp VALIDATION.md docs/validation.md
 	cp BENCHMARKS.md docs/benchmarks.md
 	$(BIN)/mkdocs build --strict --site-dir out/site

@@ -6,6 +6,17 @@ from typing import Any
 
 from runout.case import Case, parse_case
 
+#: Tada's standard HDD bearing (seed 000 Table 1) with 10 um clearance, as a [bearing] table.
+TADA_BEARING: dict[str, Any] = {
+    "type": "ball",
+    "elements": 8,
+    "element_diameter": 1e-3,
+    "pitch_diameter": 7e-3,
+    "inner_conformity": 0.52,
+    "outer_conformity": 0.53,
+    "radial_clearance": 10e-6,
+}
+
 
 # The rotor of seed 003 Table 2 (8 balls by default) for the dynamic-model tests.
 def dynamic_case(
@@ -19,8 +30,9 @@ def dynamic_case(
     dynamics: dict[str, Any] | None = None,
     revolutions: float = 4,
     samples: int = 1024,
-    contact_angle: float | None = None,
+    load_direction: float | None = None,
 ) -> Case:
+    """The seed 003 Table 2 rotor (SI inputs; ``load_direction`` [rad] from +x, default -y)."""
     bearing: dict[str, Any] = {
         "type": "ball",
         "elements": elements,
@@ -30,13 +42,16 @@ def dynamic_case(
         "outer_groove_radius": 4.61e-3,
         "radial_clearance": clearance,
     }
-    if contact_angle is not None:
-        bearing["contact_angle"] = contact_angle
     return parse_case(
         {
             "title": "test rotor",
             "bearing": bearing,
-            "operation": {"speed": speed, "radial_load": radial, "axial_load": axial},
+            "operation": {
+                "speed": speed,
+                "radial_load": radial,
+                "axial_load": axial,
+                **({} if load_direction is None else {"radial_load_direction": load_direction}),
+            },
             "waviness": waviness or [],
             "dynamics": {"mass": 0.6, "damping": 200.0, **(dynamics or {})},
             "analysis": {"model": "dynamic", "revolutions": revolutions, "samples": samples},

@@ -116,7 +116,18 @@ class BearingSpec(_Table):
         0.0, description="ISO radial internal clearance = Harris diametral play P_d [m]."
     )
     contact_angle: AngleQ | None = Field(
-        None, description="Fixed contact angle [rad]; omitted: derived from clearance and load."
+        None,
+        description=(
+            "Operating contact angle held fixed [rad] (seed 000); omitted: derived from the "
+            "clearance and the axial load. Not the catalogue angle: see nominal_contact_angle."
+        ),
+    )
+    nominal_contact_angle: AngleQ | None = Field(
+        None,
+        description=(
+            "Nominal (free, catalogue) contact angle α⁰ [rad]: sets the clearance "
+            "P_d = 2A(1 - cos α⁰), A = (f_i + f_o - 1) D. With radial_clearance, both must agree."
+        ),
     )
     inner_raceway_diameter: Length | None = Field(
         None, description="Inner raceway diameter d_i [m] (cylindrical roller bearings)."
@@ -144,6 +155,7 @@ class BearingSpec(_Table):
             "inner_groove_radius",
             "outer_groove_radius",
             "contact_angle",
+            "nominal_contact_angle",
         )
         roller_only = ("inner_raceway_diameter", "outer_raceway_diameter", "roller_length")
         if self.type == "ball":
@@ -248,7 +260,10 @@ class WavinessSpectrumSpec(_Table):
     phase: AngleQ | Literal["random"] = Field(
         "random", description='"random" (seeded) or one angle for every order.'
     )
-    seed: int = Field(0, description="Seed of the random phases (reproducible by default).")
+    seed: int | None = Field(
+        None,
+        description='Seed of the random phases (phase = "random" only; default 0, reproducible).',
+    )
     element: int | None = Field(None, ge=1, description="Ball/roller number (1-based).")
 
     @field_validator("phase", mode="before")
@@ -270,6 +285,10 @@ class WavinessSpectrumSpec(_Table):
             )
         if first == 0 and self.exponent < 0:
             raise _KeyedError("orders", "order 0 with a negative exponent is infinite")
+        if self.seed is not None and self.phase != "random":
+            raise _KeyedError(
+                "seed", 'only applies to phase = "random" (a fixed phase draws nothing)'
+            )
         _check_amplitude(self.amplitude, self.peak_to_peak)
         _check_element(self.part, self.element)
         return self
@@ -330,6 +349,14 @@ class ElementsSpec(_Table):
     )
     pitch_errors: list[AngleQ] | None = Field(
         None, description="Angular position error of each element [rad]."
+    )
+    phase_frame: Literal["cage", "fixed"] = Field(
+        "cage",
+        description=(
+            'Frame of the phases of element waviness: "cage" (angle 0 along the outward '
+            'radius through the element\'s centre at t = 0; seeds 001, 002) or "fixed" '
+            "(angle 0 along +x of the bearing for every element; seed 004 eq. 7)."
+        ),
     )
 
 
@@ -792,6 +819,8 @@ _GEOMETRY_KEYS = {
     "outer_conformity": "bearing.outer_conformity",
     "radial_clearance": "bearing.radial_clearance",
     "contact_angle": "bearing.contact_angle",
+    "bearing.nominal_contact_angle": "bearing.nominal_contact_angle",
+    "bearing.radial_clearance": "bearing.radial_clearance",
     "inner_raceway_diameter": "bearing.inner_raceway_diameter",
     "outer_raceway_diameter": "bearing.outer_raceway_diameter",
     "roller_length": "bearing.roller_length",
@@ -825,16 +854,44 @@ def _build_bearing(spec: CaseSpec) -> Bearing:
     f_o = b.outer_conformity
     if b.outer_groove_radius is not None:
         f_o = b.outer_groove_radius / b.element_diameter
+    f_i = 0.52 if f_i is None else f_i
+    f_o = 0.53 if f_o is None else f_o
+    clearance = b.radial_clearance
+    if b.nominal_contact_angle is not None:
+        clearance = _clearance_of_nominal_angle(
+            b, f_i, f_o, "radial_clearance" in b.model_fields_set
+        )
     return BallBearing(
         n_elements=b.elements,
         ball_diameter=b.element_diameter,
         pitch_diameter=b.pitch_diameter,
-        inner_conformity=0.52 if f_i is None else f_i,
-        outer_conformity=0.53 if f_o is None else f_o,
-        radial_clearance=b.radial_clearance,
+        inner_conformity=f_i,
+        outer_conformity=f_o,
+        radial_clearance=clearance,
         contact_angle=b.contact_angle,
         material=material,
     )
+
+
+def _clearance_of_nominal_angle(b: BearingSpec, f_i: float, f_o: float, given: bool) -> float:
+    """Diametral play of a nominal (free) contact angle, P_d = 2A(1 - cos α⁰) (Harris) [m]."""
+    alpha0 = b.nominal_contact_angle
+    assert alpha0 is not None
+    if not 0.0 <= alpha0 < 0.5 * math.pi:
+        raise GeometryError(
+            "bearing.nominal_contact_angle",
+            f"must lie in [0, 90) deg, got {math.degrees(alpha0):.6g} deg",
+        )
+    a = (f_i + f_o - 1.0) * b.element_diameter
+    clearance = 2.0 * a * (1.0 - math.cos(alpha0))
+    if given and abs(b.radial_clearance - clearance) > max(1e-9, 1e-3 * clearance):
+        raise GeometryError(
+            "bearing.radial_clearance",
+            f"{b.radial_clearance * 1e6:.6g} um disagrees with nominal_contact_angle = "
+            f"{math.degrees(alpha0):.6g} deg, which sets P_d = 2A(1 - cos a0) = "
+            f"{clearance * 1e6:.6g} um; give one of the two",
+        )
+    return clearance
 
 
 def _element_part_ok(bearing: Bearing, part: str) -> bool:
@@ -874,20 +931,26 @@ def _build_imperfections(spec: CaseSpec, bearing: Bearing, base_dir: Path) -> Im
         check(key, s.part, s.element)
         amplitude = s.amplitude if s.amplitude is not None else 0.5 * (s.peak_to_peak or 0.0)
         phase: float | str = s.phase
+        seed = (0 if s.seed is None else s.seed) if phase == "random" else None
         harmonics_list: list[Harmonics]
-        if s.element is None and s.part in ("ball", "roller") and phase == "random":
-            # Every element gets its own random phases, drawn from one seeded generator.
-            import numpy as np
+        try:
+            if s.element is None and s.part in ("ball", "roller") and phase == "random":
+                # Every element gets its own random phases, drawn from one seeded generator.
+                import numpy as np
 
-            rng = np.random.default_rng(s.seed)
-            harmonics_list = [
-                spectral_law(s.orders, amplitude, s.exponent, phase="random", rng=rng)
-                for _ in range(z)
-            ]
-            for j, h in enumerate(harmonics_list, start=1):
-                imp = imp.add("element", h, element=j)
-            continue
-        harmonics = spectral_law(s.orders, amplitude, s.exponent, phase=phase, seed=s.seed)
+                rng = np.random.default_rng(seed)
+                harmonics_list = [
+                    spectral_law(s.orders, amplitude, s.exponent, phase="random", rng=rng)
+                    for _ in range(z)
+                ]
+                for j, h in enumerate(harmonics_list, start=1):
+                    imp = imp.add("element", h, element=j)
+                continue
+            harmonics = spectral_law(s.orders, amplitude, s.exponent, phase=phase, seed=seed)
+        except GeometryError as exc:
+            # The law's own checks name the table without its index: add it.
+            field_name = exc.key.rsplit(".", 1)[-1] if "." in exc.key else ""
+            raise _CaseKeyError(f"{key}.{field_name}" if field_name else key, exc.message) from None
         imp = imp.add(target(s.part), harmonics, element=s.element)
     for i, p in enumerate(spec.profile, start=1):
         key = f"profile[{i}]"
@@ -922,6 +985,8 @@ def _build_imperfections(spec: CaseSpec, bearing: Bearing, base_dir: Path) -> Im
                     f"elements.{name}", f"has {len(values)} entries; the bearing has {z} elements"
                 )
             imp = imp.with_element_errors(**{name: values})
+        if spec.elements.phase_frame == "fixed":
+            imp = imp.element_phases_from_fixed_frame()
     return imp
 
 

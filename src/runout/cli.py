@@ -101,18 +101,27 @@ def check(case_file: CaseArg, as_json: JsonOpt = False) -> None:
     Example: runout check examples/seed001_kim_spindle.toml --json
     """
     from runout.case import load_case
-    from runout.summary import bearing_summary
+    from runout.errors import CaseError
+    from runout.summary import bearing_summary, model_use
 
     case = load_case(case_file)
     summary = bearing_summary(case.bearing, case.operation)
+    use = model_use(case)
+    if use.refusals and "model" in case.spec.analysis.model_fields_set:
+        # `check` calls a case valid only when the model it names will run it
+        key, message = use.refusals[0]
+        raise CaseError(str(case_file), key, message)
     if as_json:
-        _print_json({"title": case.title, "case": str(case_file), **summary.to_json()})
+        payload = {"title": case.title, "case": str(case_file), **summary.to_json()}
+        payload["model_use"] = use.to_json()
+        _print_json(payload)
         return
     _out.print(
         f"[bold]{escape(case.title or str(case_file))}[/]  ({escape(str(case_file))}) is valid."
     )
     for title, rows in summary.sections():
         _out.print(_rows_table(title, rows))
+    _out.print(_rows_table(f"As the {use.model} model uses it", use.rows()))
     if not case.imperfections.is_perfect:
         _out.print(_imperfection_table(case))
 

@@ -1305,6 +1305,42 @@ class Imperfections:
         """Copy with the slant replaced (None removes it)."""
         return self._replace(slant=slant)
 
+    def element_phases_from_fixed_frame(self) -> Imperfections:
+        r"""Copy with every element's waviness re-expressed from the fixed to the cage frame.
+
+        Two body frames of rolling element j (0-based) are in use; both turn with the element's
+        spin and differ only by where ψ = 0 points at t = 0 (ψ counter-clockwise in both):
+
+        * **fixed** frame (seed 004, Yu et al. 2017, eq. 7: the roller frame is parallel to the
+          bearing's): ψ = 0 along +x of the bearing;
+        * **cage** frame (seed 001 eq. 13, seed 002 eq. 25-26, the product default): ψ = 0 along
+          the outward radius through the element's centre, i.e. at the element's contact with
+          the outer raceway, at t = 0.
+
+        Element j's centre is at :math:`\beta_j = 2\pi j/Z + \epsilon_j` at t = 0
+        (:math:`\epsilon_j` = ``pitch_errors[j]`` [rad]), so a material point at
+        :math:`\psi_f` in the fixed frame is at :math:`\psi_c = \psi_f - \beta_j` in the cage
+        frame, and
+
+        .. math::
+            a_k\cos(k\psi_f + \varphi^f_k) = a_k\cos(k\psi_c + \varphi^c_k),\qquad
+            \varphi^c_k = \varphi^f_k + k\beta_j,
+
+        i.e. ``elements[j].shifted(β_j)``. Amplitudes, order-0 (size) terms, raceways,
+        diameter and pitch errors and the slant are unchanged; the inverse is
+        ``shifted(-β_j)``.
+
+        Returns
+        -------
+        Imperfections
+            The same imperfections with element phases in the cage frame [rad].
+        """
+        z = self.n_elements
+        beta = TWO_PI * np.arange(z) / z + self.pitch_errors
+        return self._replace(
+            elements=tuple(h.shifted(float(b)) for h, b in zip(self.elements, beta, strict=True))
+        )
+
     def add(
         self,
         part: Part | str,

@@ -2341,6 +2341,7 @@ def _roller_fig12_bound() -> float:
     total = 0.0
     for part, k, amp in (("roller", 15, 0.5 * UM), ("inner", 8, 1 * UM), ("outer", 18, 1 * UM)):
         imp = Imperfections.perfect(b.n_elements).add(part, single_harmonic(k, amp))
+        imp = imp.element_phases_from_fixed_frame()  # seed 004's phases (eq. 7)
         total += float(rc.solve(rc.geometry_from(b, imp), alpha).runout)
     return total / UM
 

@@ -21,7 +21,14 @@ from numpy.typing import NDArray
 
 from runout.kinematics import Frequencies
 
-__all__ = ["Component", "RunResult", "Runout"]
+__all__ = ["DISPLACEMENT_OF", "Component", "RunResult", "Runout"]
+
+#: The one displacement convention of every model's output (JSON ``displacement_of``).
+DISPLACEMENT_OF = (
+    "centre of the inner ring (shaft) relative to the centre of the outer ring (housing), "
+    "whichever ring turns; x, y radial, z axial along the axial load on the shaft, from the "
+    "rings axially centred; t = 0 at the start of the reported record"
+)
 
 Rows = list[tuple[str, str, str]]
 
@@ -87,6 +94,8 @@ class Component:
             "order": self.order,
             "pp_m": self.pp_m,
             "label": self.label,
+            "phase_rad": self.phase_rad,
+            "repeatable": self.repeatable,
         }
 
 
@@ -126,7 +135,8 @@ class RunResult:
     time : ndarray
         Instants [s] (angle-driven models: rotation angle / (2π speed)).
     displacement : ndarray, shape (3, n)
-        x, y, z of the measured ring's centre [m] (z zero for planar models).
+        x, y, z of the inner ring's centre relative to the outer ring's [m]
+        (:data:`DISPLACEMENT_OF`; z zero for planar models).
     components : tuple of Component
         Labelled spectral lines, largest first.
     runout : Runout
@@ -179,6 +189,17 @@ class RunResult:
         u = self.measuring_direction
         return u[0] * self.displacement[0] + u[1] * self.displacement[1]
 
+    @property
+    def axial_motion(self) -> bool:
+        """True when the model moves the rings axially (z is part of the output)."""
+        return bool(np.any(self.displacement[2] != 0.0))
+
+    def mean_displacement(self) -> list[float]:
+        """Mean position of the inner ring's centre relative to the outer ring's over the
+        record, [x, y] or [x, y, z] [m] (:data:`DISPLACEMENT_OF`)."""
+        mean = [float(np.mean(v)) for v in self.displacement]
+        return mean if self.axial_motion else mean[:2]
+
     def lines(self, direction: str | None = None, top: int | None = None) -> list[Component]:
         """Components, optionally of one direction, largest first, at most ``top`` of them."""
         chosen = [c for c in self.components if direction is None or c.direction == direction]
@@ -195,6 +216,8 @@ class RunResult:
             "contact_angle_deg": math.degrees(self.contact_angle),
             "runout": self.runout.to_json(),
             "components": [c.to_json() for c in self.lines()],
+            "displacement_of": DISPLACEMENT_OF,
+            "mean_displacement_m": self.mean_displacement() if self.time.size else None,
         }
         if self.anderon is not None:
             out["anderon"] = dict(self.anderon)
@@ -215,6 +238,15 @@ class RunResult:
             ("RRO p-p", f"{r.rro_pp_m * 1e9:.4g}", "nm"),
             ("NRRO p-p", f"{r.nrro_pp_m * 1e9:.4g}", "nm"),
         ]
+        if self.time.size:
+            mean = self.mean_displacement()
+            figures.append(
+                (
+                    "mean shaft position rel. outer ring (" + ", ".join("xyz"[: len(mean)]) + ")",
+                    ", ".join(f"{v * 1e9:.4g}" for v in mean),
+                    "nm",
+                )
+            )
         sections: list[tuple[str, Rows]] = [
             (
                 f"{self.title or self.model}: runout ({self.model} model, contact angle "

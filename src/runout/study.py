@@ -501,6 +501,9 @@ def _batch_base(task: ChunkTask) -> _BatchBase:
     data = copy.deepcopy(task.data)
     data.setdefault("analysis", {})["model"] = "quasi_static_2d"
     case = parse_case(data, task.path, Path(task.base_dir))
+    from runout.conventions import enforce
+
+    enforce(case, "quasi_static_2d")  # the batch shares the model's refusals
     z = case.bearing.n_elements
     base = Case(
         path=case.path,
@@ -1015,6 +1018,10 @@ def run_study(
     data = _case_data(case)
     quantities = tuple(plan_quantities(case, data))
     models = tuple(_models(case))
+    from runout.conventions import enforce
+
+    for model in models:  # a key a model refuses ends the study before any work
+        enforce(case, model)
     if study.kind == "montecarlo":
         total = study.samples
     else:

@@ -15,7 +15,7 @@ from runout.contact import BallContacts, RollerContacts, ball_race_contacts, rol
 from runout.kinematics import Frequencies, bearing_frequencies
 from runout.loading import AxialLoading, axial_loading, axial_loading_fixed_angle
 
-__all__ = ["BearingSummary", "bearing_summary", "operating_contact_angle"]
+__all__ = ["BearingSummary", "ModelUse", "bearing_summary", "model_use", "operating_contact_angle"]
 
 Rows = list[tuple[str, str, str]]
 
@@ -261,4 +261,107 @@ def bearing_summary(bearing: Bearing, operation: Operation) -> BearingSummary:
         frequencies=bearing_frequencies(bearing, operation, alpha),
         contacts=contacts,
         loading=loading,
+    )
+
+
+#: How each model arrives at its contact angle (for ``runout check``).
+_ANGLE_SOURCE = {
+    "linear": "held at bearing.contact_angle, else the static axial-load angle",
+    "quasi_static_2d": "held at bearing.contact_angle, else the static axial-load angle",
+    "quasi_static_3d": "held at bearing.contact_angle, else the static axial-load angle",
+    "equilibrium": "solved per ball at speed (static axial-load angle shown)",
+    "dynamic": "from the clearance and the axial preload (static axial-load angle shown)",
+    "roller_constraint": "0 (rigid model in the radial plane)",
+}
+
+
+@dataclass(frozen=True)
+class ModelUse:
+    """What one model will take from a case: effective inputs and each key's treatment.
+
+    Attributes
+    ----------
+    model : str
+    contact_angle : float
+        Effective contact angle [rad] (see :data:`_ANGLE_SOURCE` for how the model gets it).
+    radial_clearance : float
+        Diametral play P_d [m].
+    preload_approach : float or None
+        Elastic approach of a ball along its contact line under the axial preload [m].
+    keys : list of (key path, status)
+    notes : list of str
+    refusals : list of (key path, message)
+    """
+
+    model: str
+    contact_angle: float
+    radial_clearance: float
+    preload_approach: float | None
+    keys: list[tuple[str, str]]
+    notes: list[str]
+    refusals: list[tuple[str, str]]
+
+    def to_json(self) -> dict[str, Any]:
+        """JSON entry ``model_use`` of ``runout check --json``."""
+        return {
+            "model": self.model,
+            "contact_angle_deg": math.degrees(self.contact_angle),
+            "contact_angle_from": _ANGLE_SOURCE[self.model],
+            "radial_clearance_m": self.radial_clearance,
+            "radial_play_per_ball_m": 0.5 * self.radial_clearance,
+            "preload_approach_m": self.preload_approach,
+            "keys": [{"key": k, "status": s} for k, s in self.keys],
+            "notes": list(self.notes),
+            "refusals": [{"key": k, "message": m} for k, m in self.refusals],
+        }
+
+    def rows(self) -> Rows:
+        """Readable rows for ``runout check``."""
+        rows: Rows = [
+            ("contact angle", f"{math.degrees(self.contact_angle):.4f}", "deg"),
+            ("  how", _ANGLE_SOURCE[self.model], ""),
+            ("radial clearance P_d (diametral)", f"{self.radial_clearance * 1e6:.6g}", "um"),
+            ("radial play per ball P_d/2", f"{0.5 * self.radial_clearance * 1e6:.6g}", "um"),
+        ]
+        if self.preload_approach is not None:
+            rows.append(
+                ("preload approach (along the contact)", f"{self.preload_approach * 1e6:.5g}", "um")
+            )
+        words = {"honoured": "honoured", "refused": "REFUSED", "not_applicable": "not applied"}
+        rows += [(key, words[status], "") for key, status in self.keys]
+        # the not-applied keys are listed above; the other notes read key combinations
+        rows += [("note: " + n, "", "") for n in self.notes if ": not applied by the" not in n]
+        rows += [(f"{key}: {message}", "", "") for key, message in self.refusals]
+        return rows
+
+
+def model_use(case: Any, model: str | None = None) -> ModelUse:
+    """What ``model`` (default the case's ``[analysis] model``) takes from ``case``.
+
+    Parameters
+    ----------
+    case : runout.case.Case
+        A validated case (read from a file: the key table needs its ``spec``).
+    model : str, optional
+        Model id.
+    """
+    from runout.conventions import applicability
+
+    model = model or case.analysis.model
+    bearing, op = case.bearing, case.operation
+    alpha, loading = operating_contact_angle(bearing, op)
+    if model == "roller_constraint":
+        alpha = 0.0
+    approach = None
+    if loading is not None and model not in ("roller_constraint", "linear"):
+        approach = loading.total_approach
+    found = applicability(case.spec, model) if getattr(case, "spec", None) is not None else None
+    return ModelUse(
+        model=model,
+        contact_angle=alpha,
+        radial_clearance=bearing.radial_clearance,
+        preload_approach=approach,
+        keys=[(k, s) for k, s in found.uses] if found else [],
+        notes=list(found.notes) if found else [],
+        refusals=list(found.refusals) if found else [],
     )

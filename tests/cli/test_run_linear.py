@@ -29,7 +29,15 @@ def test_run_json_contract() -> None:
     assert p["runout"]["rro_pp_m"] == pytest.approx(2 * 2.5e-6 * 0.98481, rel=0.05)
     assert 0 < p["runout"]["nrro_pp_m"] < p["runout"]["radial_pp_m"]
     first = p["components"][0]
-    assert set(first) == {"direction", "frequency_hz", "order", "pp_m", "label"}
+    assert set(first) == {
+        "direction",
+        "frequency_hz",
+        "order",
+        "pp_m",
+        "label",
+        "phase_rad",
+        "repeatable",
+    }
     assert first["order"] == pytest.approx(1.0) and "eccentricity" in first["label"]
     assert {c["direction"] for c in p["components"]} == {"x", "y"}
     assert any(r["formula"].startswith("Z(1+γ)/2") for r in p["attribution"])

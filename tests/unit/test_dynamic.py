@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -10,6 +11,7 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from cases import WAVY, dynamic_case
+from runout.bearing import BallBearing
 from runout.case import parse_case
 from runout.errors import CaseError, ConvergenceError, GeometryError, NumericalError
 from runout.loading import axial_loading
@@ -167,12 +169,30 @@ def test_load_direction_and_natural_frequencies() -> None:
     assert np.allclose(np.sort((2 * np.pi * fn) ** 2 * 0.6), np.sort(np.linalg.eigvalsh(k)))
 
 
-def test_contact_angle_key_is_free_contact_angle() -> None:
-    case = make_case(contact_angle=math.radians(5.0), axial=20.0)
+def test_free_contact_angle_from_the_clearance_only() -> None:
+    # a free angle α⁰ = 5° given as its diametral play P_d = 2A(1 - cos α⁰), A = (f_i+f_o-1)D
+    a = 4.08e-3 + 4.61e-3 - 7.96e-3
+    clearance = 2.0 * a * (1.0 - math.cos(math.radians(5.0)))
+    case = make_case(clearance=clearance, axial=20.0)
     s = dy.setup(case)
-    assert s.free_contact_angle == pytest.approx(math.radians(5.0))
-    assert s.contact_angle > math.radians(5.0)
-    assert any("free contact angle" in n for n in s.notes)
+    assert s.curvature_distance == pytest.approx(a, rel=1e-12)
+    assert s.free_contact_angle == pytest.approx(math.radians(5.0), rel=1e-9)
+    assert s.radial_gap == -0.5 * clearance  # the user's clearance, unchanged
+    assert s.contact_angle > math.radians(5.0)  # the preload opens the angle
+    assert not s.notes
+
+
+def test_fixed_contact_angle_is_refused() -> None:
+    # an operating contact angle held fixed is not honoured by the dynamic model: refused,
+    # not read as something else
+    case = make_case(axial=20.0)
+    bearing = case.bearing
+    assert isinstance(bearing, BallBearing)
+    fixed = dataclasses.replace(
+        case, bearing=dataclasses.replace(bearing, contact_angle=math.radians(5.0))
+    )
+    with pytest.raises(GeometryError, match=r"bearing\.contact_angle"):
+        dy.setup(fixed)
 
 
 def test_missing_dynamics_and_bad_inputs() -> None:
@@ -228,3 +248,104 @@ def test_zero_speed_kinematics_for_energy_helpers() -> None:
     still = s.replace(kinematics=Kinematics(0.0, 0.0, 0.0, 0.0, "inner", s.n_elements))
     e = dy.energy(still, np.zeros(2), np.zeros((2, 3)), np.zeros((2, 3)))
     assert np.all(e == 0.0)  # no contact is closed at q = 0 (radial play)
+
+
+# --------------------------------------------------------------------------------------------
+# a single loaded ball, time origin, frame
+# --------------------------------------------------------------------------------------------
+def test_static_equilibrium_on_a_single_ball_under_the_load() -> None:
+    # 8 balls, one straight under the load along -y, its neighbours inside the 5 um play: the
+    # ball holds the rotor along y only, every x within the play is an equilibrium (singular
+    # Hessian). The static solve must still converge, to the symmetric x = 0 and, along y,
+    # to seed 003 eq. 2.1 with eq. 2.4: W = K_n (-y - P_d/2)^{3/2}.
+    s = dy.setup(make_case(elements=8, clearance=10e-6, radial=6.0))
+    assert math.degrees(s.theta0[6]) == pytest.approx(270.0)
+    q = dy.static_equilibrium(s, np.array([0.0]))[0]
+    expected_y = -(5e-6 + (6.0 / s.stiffness) ** (2.0 / 3.0))
+    assert q[1] == pytest.approx(expected_y, rel=1e-12)
+    assert abs(q[0]) < 1e-6 * abs(q[1])
+    _, approach = dy.contact_forces(s, np.zeros(1), q[None])
+    assert int((approach[0] > 0).sum()) == 1  # the neighbours really are unloaded
+    fn = dy.linearised_natural_frequencies(s, q)
+    k_yy = 1.5 * s.stiffness * math.sqrt(-expected_y - 5e-6)
+    assert fn[0] == 0.0  # no stiffness across the load
+    assert fn[1] == pytest.approx(math.sqrt(k_yy / s.mass) / (2 * math.pi), rel=1e-6)
+
+
+def test_record_starts_at_the_end_of_the_transient() -> None:
+    # reported t = 0 is the first recorded instant, after a transient integrated from the
+    # static equilibrium at t = -transient (the geometry at t = 0 is every model's): sample k
+    # is the state at k dt_out of one uninterrupted integration from that start
+    case = make_case(waviness=WAVY[:2], dynamics={"unbalance": 1e-7})
+    s = dy.setup(case)
+    speed, spr = case.operation.speed, 64
+    integ = dy.integrate(s, speed, 2, spr)
+    assert integ.time[0] == 0.0
+    assert integ.time[1] == pytest.approx(1.0 / (speed * spr), rel=1e-12)
+    first = round(integ.transient * speed * spr)
+    assert first == pytest.approx(integ.transient * speed * spr, abs=1e-6)
+    h = integ.time_step
+    stride = round(1.0 / (speed * spr) / h)
+    t0 = -integ.transient
+    q0 = dy.static_equilibrium(s, np.array([t0]))[0]
+    state = np.zeros(9)
+    state[:3] = q0
+    f0, _ = dy.contact_forces(s, np.array([t0]), q0[None])
+    state[6:8] = (dy.external_force(s, np.array([t0]))[0, :2] - f0[0, :2]) / s.mass
+    n_rec = integ.time.size
+    out = np.zeros((first + n_rec, 3))
+    status, _, _, _ = dy.newmark_kernel(
+        (first + n_rec) * stride, stride, t0, state, s.params(h), s.theta0, s.harmonics, 2,
+        dy.MAX_ITER, out,
+    )  # fmt: skip
+    assert status == dy.OK
+    # kernel row i is the state at t0 + (i + 1) dt_out
+    same = out[first - 1 : first - 1 + n_rec, :2].T
+    pp = np.ptp(integ.displacement[:2], axis=1).max()
+    assert pp > 1e-9
+    assert np.max(np.abs(same - integ.displacement[:2])) < 1e-6 * pp
+    # one sample later is clearly different
+    assert np.max(np.abs(out[first : first + n_rec, :2].T - integ.displacement[:2])) > 1e-2 * pp
+
+
+def test_unbalance_phase_is_relative_to_the_reported_time_origin() -> None:
+    # preloaded rotor (every ball loaded, nearly linear): the unbalance F_u (cos Ωt, sin Ωt)
+    # of time t gives x = Re{X e^{iΩt}}, X = (K - mΩ² + icΩ)^{-1} F_u (1, -i): the reported
+    # time is the time of the equations of motion (t = 0 after the transient), phase arg X
+    case = make_case(axial=20.0, dynamics={"unbalance": 1e-7})
+    s = dy.setup(case)
+    result = dy.run(case)
+    transient = result.extras["transient_s"]
+    assert transient > 0.0 and result.time[0] == 0.0
+    om = s.unbalance_omega
+    q0 = np.array([*result.extras["static_displacement_m"], 0.0])
+    dyn_matrix = dy.contact_stiffness(s, 0.0, q0) + (
+        -s.mass * om**2 + 1j * s.damping * om
+    ) * np.eye(2)
+    x_amp = np.linalg.solve(dyn_matrix, s.unbalance_force * np.array([1.0, -1.0j]))
+    one_sample = om * result.time[1]  # phase error of a one-sample shift of the origin
+    for axis, name in enumerate("xy"):
+        (line,) = [
+            c for c in result.components if c.direction == name and c.label == "unbalance: f_i"
+        ]
+        assert line.pp_m == pytest.approx(2 * abs(x_amp[axis]), rel=1e-4)
+        expected = np.angle(x_amp[axis])
+        error = (line.phase_rad - expected + math.pi) % (2 * math.pi) - math.pi
+        assert abs(error) < 1e-2 * one_sample
+
+
+@pytest.mark.parametrize("direction_deg", [-90.0, 30.0, 180.0])
+def test_displacement_is_the_shaft_in_the_housing_along_the_load(direction_deg: float) -> None:
+    # product frame: the inner ring's centre relative to the outer ring's, loads act on the
+    # shaft along their direction, so the mean displacement points along the radial load
+    case = make_case(
+        load_direction=math.radians(direction_deg), revolutions=2, samples=256, speed=20.0
+    )
+    result = dy.run(case)
+    mean = np.array(result.mean_displacement()[:2])
+    u = np.array([math.cos(math.radians(direction_deg)), math.sin(math.radians(direction_deg))])
+    assert mean @ u > 0.1e-6  # beyond the 0.1 um radial play
+    assert abs(mean[0] * u[1] - mean[1] * u[0]) < 1e-2 * (mean @ u)
+    assert np.allclose(result.measuring_direction, u)
+    if direction_deg == -90.0:
+        assert mean[1] < -0.1e-6

@@ -138,8 +138,16 @@ def test_equilibrium_satisfies_every_equation(
         Operation("inner", 0.0, axial_load=60.68),
         Operation("inner", 120.0, axial_load=60.68, radial_load=30.0, moment_load=0.05),
         Operation("outer", 500.0, axial_load=40.0, radial_load=50.0, radial_load_angle=0.3),
+        Operation("inner", 0.0, moment_load=0.1, moment_load_angle=0.4),
+        Operation("inner", 900.0, moment_load=0.1, moment_load_angle=0.4),
     ],
-    ids=["axial_static", "combined_inner", "combined_outer_fast"],
+    ids=[
+        "axial_static",
+        "combined_inner",
+        "combined_outer_fast",
+        "pure_moment_static",
+        "pure_moment_fast",
+    ],
 )
 def test_stiffness_matrix_matches_finite_differences(op: Operation) -> None:
     """Implicit-differentiation stiffness vs central differences of re-solved ring forces."""
@@ -234,7 +242,7 @@ def test_ball_speeds_reduce_to_seed001_eq7_and_eq9() -> None:
 
 
 def test_needs_a_load_and_a_known_control() -> None:
-    with pytest.raises(GeometryError, match="axial or a radial load"):
+    with pytest.raises(GeometryError, match="axial load, a radial load or a moment"):
         eq.solve_equilibrium(bearing(), Operation("inner", 100.0))
     with pytest.raises(GeometryError, match="race_control"):
         eq.solve_equilibrium(bearing(), Operation("inner", 0.0, axial_load=10.0), race_control="x")
@@ -247,9 +255,85 @@ def test_radial_load_without_axial_on_zero_clearance_is_held() -> None:
     assert sol.residual <= 1e-6
 
 
-def test_moment_alone_cannot_hold_a_clearance_bearing() -> None:
-    with pytest.raises((NumericalError, GeometryError)):
-        eq.solve_equilibrium(bearing(), Operation("inner", 0.0, moment_load=0.1))
+@pytest.mark.parametrize(
+    ("clearance", "rpm", "control"),
+    [
+        (0.0, 0.0, "outer"),
+        (5e-6, 0.0, "outer"),
+        (5e-6, 0.0, "inner"),
+        (0.0, 7200.0, "outer"),
+        (5e-6, 7200.0, "outer"),
+        (5e-6, 54000.0, "none"),
+        (20e-6, 54000.0, "outer"),
+    ],
+)
+def test_moment_alone_holds_the_ring(clearance: float, rpm: float, control: str) -> None:
+    # No axial and no radial force: the balls either side of the moment axis press on
+    # opposite flanks of the grooves (contact angles of both signs) and hold the ring.
+    b = BallBearing(10, 1.5875e-3, 9.1e-3, 0.529, 0.535, clearance)
+    op = Operation("inner", rpm / 60.0, moment_load=0.1)
+    sol = eq.solve_equilibrium(b, op, race_control=control)
+    q, loaded = sol.displacement, sol.loaded
+    scale = op.moment_load / (0.5 * b.pitch_diameter)
+    assert np.abs(_ring_balance(b, op, sol, control)[:3]).max() <= 1e-8 * scale
+    assert np.abs(_ring_balance(b, op, sol, control)[3:]).max() <= 1e-8 * op.moment_load
+    assert np.abs(_ball_balance(b, sol, control)[:, loaded]).max() <= 1e-8 * scale
+    assert np.abs(_compatibility(b, sol).reshape(2, -1)[:, loaded]).max() <= 1e-15
+    # tilt about the moment vector (+x); centred in the axial play (δ_a from one-flank contact)
+    assert q[3] > 0.0 and q[4] == 0.0
+    assert q[0] == pytest.approx(-0.5 * b.free_end_play, rel=1e-9, abs=1e-18)
+    # 10 balls: mirror symmetric across the moment axis, so no radial displacement either
+    assert q[1] == 0.0 and q[2] == 0.0
+    a_i = sol.inner_contact_angle[loaded]
+    assert a_i.max() > 0.0 > a_i.min()
+
+
+def test_reversed_moment_mirrors_the_solution() -> None:
+    # M -> -M is the axial mirror image: same tilt magnitude, same ball loads, contact angles
+    # of opposite sign (the Hertz constants are even in the contact angle)
+    b = BallBearing(7, 1.5875e-3, 9.1e-3, 0.529, 0.535, 5e-6)
+    fwd = eq.solve_equilibrium(b, Operation("inner", 120.0, moment_load=0.05))
+    rev = eq.solve_equilibrium(
+        b, Operation("inner", 120.0, moment_load=0.05, moment_load_angle=math.pi)
+    )
+    assert rev.displacement[3] == pytest.approx(-fwd.displacement[3], rel=1e-9)
+    assert rev.displacement[:3] == pytest.approx(fwd.displacement[:3], rel=1e-9, abs=1e-16)
+    np.testing.assert_allclose(rev.inner_load, fwd.inner_load, rtol=1e-8, atol=1e-12)
+    np.testing.assert_allclose(
+        rev.inner_contact_angle, -fwd.inner_contact_angle, rtol=1e-8, atol=1e-12
+    )
+    mg = float(np.abs(fwd.gyroscopic_moment).max())
+    np.testing.assert_allclose(
+        rev.gyroscopic_moment, -fwd.gyroscopic_moment, rtol=1e-8, atol=1e-12 * mg
+    )
+
+
+def test_pure_moment_held_by_two_balls_only_is_refused_clearly() -> None:
+    # 4 balls, moment about the axis through two of them: only the other two can be loaded,
+    # nothing holds the ring along that axis; a quarter-turned moment loads all four
+    b = BallBearing(4, 1.5875e-3, 9.1e-3, 0.529, 0.535, 5e-6)
+    with pytest.raises(NumericalError, match="fewer than 3 balls carry load"):
+        eq.solve_equilibrium(b, Operation("inner", 0.0, moment_load=0.05))
+    sol = eq.solve_equilibrium(
+        b, Operation("inner", 0.0, moment_load=0.05, moment_load_angle=math.pi / 4)
+    )
+    assert sol.loaded.all()
+
+
+def test_pure_moment_start_is_centred_and_carries_the_moment() -> None:
+    b = BallBearing(7, 1.5875e-3, 9.1e-3, 0.529, 0.535, 5e-6)
+    op = Operation("inner", 0.0, moment_load=0.05, moment_load_angle=1.0)
+    ring = eq._Ring(b, op, "outer", speed_on=False)
+    side = np.sin(ring.psi - 1.0)
+    start = np.where(side < 0.0, -b.free_contact_angle, b.free_contact_angle)
+    ring.set_angles(start, start)
+    q = eq._moment_start(ring, op)
+    assert q[0] == pytest.approx(-0.5 * b.free_end_play)
+    assert q[1] == q[2] == 0.0
+    assert math.atan2(q[4], q[3]) == pytest.approx(1.0)
+    force = ring.forces(q)[0]
+    carried = force[3] * math.cos(1.0) + force[4] * math.sin(1.0)
+    assert 0.05 <= carried <= 0.05 * 1.01  # bracketed to 0.1 % of the tilt beyond the play
 
 
 def _case(**extra: Any) -> Any:

@@ -109,7 +109,7 @@ def test_inner_lines_reproduce_eq33() -> None:
         theta = np.linspace(0, 7, 50)
         x, _ = lines.evaluate(theta)
         expect = math.cos(ALPHA) * 0.2 * UM * np.cos(lines.order[0] * theta - 0.4)
-        np.testing.assert_allclose(x, expect, rtol=0, atol=1e-12 * UM)
+        np.testing.assert_allclose(x, lin.SHAFT_FRAME * expect, rtol=0, atol=1e-12 * UM)
         assert "I_(nZ" in lines.labels[0] and f"{k} lobes" in lines.labels[0]
 
 
@@ -133,7 +133,7 @@ def test_outer_lines_reproduce_eq37_both_lobes_share_o_nz() -> None:
     o = lines.order[0]
     expect = -math.cos(ALPHA) * UM * (0.3 * np.cos(o * theta + 0.2) + 0.1 * np.cos(o * theta + 1.1))
     x, _ = lines.evaluate(theta)
-    np.testing.assert_allclose(x, expect, rtol=0, atol=1e-12 * UM)
+    np.testing.assert_allclose(x, lin.SHAFT_FRAME * expect, rtol=0, atol=1e-12 * UM)
     # forward/backward whirl: 13 lobes (nZ-1) forward, 15 lobes (nZ+1) backward
     c = math.cos(ALPHA) * UM
     assert lines.forward[0] == pytest.approx(0.3 * c, rel=1e-12)
@@ -165,7 +165,7 @@ def test_ball_lines_reproduce_eq39_40() -> None:
         )
     )
     x, _ = lines.evaluate(theta)
-    np.testing.assert_allclose(x, expect, rtol=0, atol=1e-12 * UM)
+    np.testing.assert_allclose(x, lin.SHAFT_FRAME * expect, rtol=0, atol=1e-12 * UM)
     assert "B_A0" in lines.labels[0] and "ball 3" in lines.labels[0]
 
 
@@ -184,8 +184,8 @@ def test_slant_x_is_eq35_and_y_is_the_quarter_turn_probe() -> None:
     theta = np.linspace(0, 6, 40)
     x, y = lines.evaluate(theta)
     expect = math.cos(ALPHA) * 0.05 * UM * np.cos(2 * theta - 0.6)
-    np.testing.assert_allclose(x, expect, atol=1e-12 * UM)
-    np.testing.assert_allclose(y, -expect, atol=1e-12 * UM)
+    np.testing.assert_allclose(x, lin.SHAFT_FRAME * expect, atol=1e-12 * UM)
+    np.testing.assert_allclose(y, -lin.SHAFT_FRAME * expect, atol=1e-12 * UM)
     assert lines.repeatable.all()
 
 
@@ -240,7 +240,8 @@ def test_pitch_errors_direct_sum_solves_full_balance() -> None:
         + 2 * math.pi * np.arange(z)[:, None] / z
         + np.array(imp.pitch_errors)[:, None]
     )
-    w = np.stack([imp.inner.evaluate(t - theta) for t in tz]) * math.cos(ALPHA)
+    # seed 002's balance is written for the outer ring; the result is the shaft: w_z = -g w
+    w = np.stack([imp.inner.evaluate(t - theta) for t in tz]) * math.cos(ALPHA) * lin.SHAFT_FRAME
     # Σ_z (w_z - x cos θ_z - y sin θ_z) (cos θ_z, sin θ_z) = 0
     res_x = ((w - x * np.cos(tz) - y * np.sin(tz)) * np.cos(tz)).sum(0)
     res_y = ((w - x * np.cos(tz) - y * np.sin(tz)) * np.sin(tz)).sum(0)

@@ -47,12 +47,15 @@ def _case(
 
 
 def _residual(case: Case, disp: np.ndarray) -> np.ndarray:
-    """Force balance of eq. 5 recomputed independently at each instant [N], shape (n, 3)."""
+    """Force balance of eq. 5 recomputed independently at each instant [N], shape (n, 3).
+
+    ``disp`` is the shaft relative to the outer ring: a shaft moving towards a ball
+    compresses it."""
     s = qs3.setup(case)
     c, theta = qs3.approaches(case, s, qs3.time_grid_of(case))
     ca, sa = math.cos(s.contact_angle), math.sin(s.contact_angle)
     nx, ny = ca * np.cos(theta), ca * np.sin(theta)
-    d = c - disp[0][:, None] * nx - disp[1][:, None] * ny - disp[2][:, None] * sa
+    d = c + disp[0][:, None] * nx + disp[1][:, None] * ny + disp[2][:, None] * sa
     q = s.stiffness * np.clip(d, 0.0, None) ** 1.5
     return np.stack([(q * nx).sum(1), (q * ny).sum(1), (q * sa).sum(1)], axis=1) - s.force
 
@@ -88,7 +91,8 @@ def test_kernel_matches_numpy_reference(
         c, theta, s.contact_angle, s.stiffness, s.force, tol=qs3.RTOL * s.preload
     )
     assert np.isfinite(disp).all()
-    np.testing.assert_allclose(disp, ref.T, rtol=0, atol=1e-9 * s.preload)
+    # the kernel and the reference solve in seed 000's frame (outer ring relative to inner)
+    np.testing.assert_allclose(-disp, ref.T, rtol=0, atol=1e-9 * s.preload)
     # and both satisfy the balance to a tiny fraction of the preload
     assert np.abs(_residual(case, disp)).max() <= 1e-7 * s.force[2]
 
@@ -98,15 +102,39 @@ def test_radial_load_unloads_balls_and_is_reported() -> None:
     result = qs3.run(case)
     assert result.extras["unloaded_balls_max"] > 0
     assert "lost contact" in result.notes[0]
-    assert np.abs(_residual(case, result.displacement)).max() <= 1e-7 * 12.0
-    # the ring moves along the load (default -y) and the measuring direction follows it
+    disp = result.displacement - np.array(
+        [[0.0], [0.0], [qs3.axial_position(case, qs3.setup(case))]]
+    )
+    assert np.abs(_residual(case, disp)).max() <= 1e-7 * 12.0
+    # the shaft moves along the load (default -y) and the measuring direction follows it
     assert result.measuring_direction == pytest.approx([0.0, -1.0], abs=1e-12)
     assert result.displacement[1].mean() < 0.0
 
 
+def test_radial_load_acts_on_the_shaft_and_loads_the_balls_below_it() -> None:
+    # A load along -y pushes the shaft down: the balls under it (-y side) carry more.
+    case = _case([], axial=10.0, radial=5.0, samples=64)
+    s = qs3.setup(case)
+    t = qs3.time_grid_of(case)
+    disp, _ = qs3.solve(case, t, s)
+    c, theta = qs3.approaches(case, s, t)
+    ca = math.cos(s.contact_angle)
+    d = c + (disp[0][:, None] * np.cos(theta) + disp[1][:, None] * np.sin(theta)) * ca
+    d += disp[2][:, None] * math.sin(s.contact_angle)
+    below = np.sin(theta) < -0.5
+    above = np.sin(theta) > 0.5
+    assert d[below].mean() > d[above].mean()
+
+
 def test_perfect_bearing_does_not_move() -> None:
-    result = qs3.run(_case([], samples=64))
-    assert np.abs(result.displacement).max() <= 1e-9 * qs3.setup(_case([])).preload
+    case = _case([], samples=64)
+    result = qs3.run(case)
+    st = qs3.setup(case)
+    # it sits at the preloaded position: (A + δ_pl) sin α from the rings axially centred
+    z0 = qs3.axial_position(case, st)
+    assert z0 == pytest.approx((0.05e-3 + st.preload) * math.sin(st.contact_angle), rel=1e-12)
+    moved = result.displacement - np.array([[0.0], [0.0], [z0]])
+    assert np.abs(moved).max() <= 1e-9 * st.preload
     assert result.extras["unloaded_balls_max"] == 0
 
 

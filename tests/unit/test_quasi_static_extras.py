@@ -331,8 +331,9 @@ def test_qs3_one_loaded_ball_at_the_start_of_an_instant_is_not_singular() -> Non
     # every instant balances the preload: sum Q n = F
     c, theta = qs3.approaches(case, st_, t)
     ca, sa = math.cos(st_.contact_angle), math.sin(st_.contact_angle)
-    d = c - (disp[0][:, None] * np.cos(theta) + disp[1][:, None] * np.sin(theta)) * ca
-    d = np.maximum(d - disp[2][:, None] * sa, 0.0)
+    # disp is the shaft relative to the outer ring: moving towards a ball compresses it
+    d = c + (disp[0][:, None] * np.cos(theta) + disp[1][:, None] * np.sin(theta)) * ca
+    d = np.maximum(d + disp[2][:, None] * sa, 0.0)
     qload = st_.stiffness * d**1.5
     assert np.abs((qload * sa).sum(1) - st_.force[2]).max() <= 1e-9 * st_.force[2]
     assert np.abs((qload * np.cos(theta)).sum(1)).max() <= 1e-9 * st_.force[2]

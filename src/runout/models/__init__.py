@@ -7,6 +7,7 @@ that names a model this version does not provide gets a
 
 from __future__ import annotations
 
+import dataclasses
 import importlib
 import importlib.util
 from typing import Any
@@ -38,10 +39,16 @@ def available_models() -> list[str]:
 def run_model(case: Any) -> Any:
     """Run the model named in ``case.analysis.model``.
 
+    The case is first checked against :mod:`runout.conventions`: a key the model refuses ends
+    the run with a :class:`runout.errors.CaseError`; the keys it does not apply are added to
+    the result's notes.
+
     Raises
     ------
     ModelNotAvailableError
         If that model is not part of this version.
+    CaseError
+        If the case sets a key the model refuses.
     """
     model = case.analysis.model
     if model not in available_models():
@@ -50,5 +57,12 @@ def run_model(case: Any) -> Any:
             f"{case.path}: analysis.model: model '{model}' is not available in this version "
             f"(available: {available}); `runout check` and `runout frequencies` work for any case"
         )
+    from runout.conventions import enforce
+
+    # One meaning per key: refuse what this model cannot honour, note what it does not apply.
+    notes = enforce(case, model)
     module = importlib.import_module(MODEL_MODULES[model])
-    return module.run(case)
+    result = module.run(case)
+    if notes:
+        result = dataclasses.replace(result, notes=(*result.notes, *notes))
+    return result

@@ -10,8 +10,9 @@ Conventions (both models)
   eq. 8).
 * A ring turning at :math:`f_r` [Hz] shows its raceway point :math:`\theta - 2\pi f_r t` (ring
   frame) at the fixed-frame angle θ.
-* The contact point of ball j in its own frame is at :math:`2\pi f_b t` (spin relative to the
-  cage, seed 000 §2.1, seed 001 eq. 9); the diameter deviation along the contact line is
+* The contact point of ball j in its own frame is at :math:`\pm 2\pi f_b t` (spin relative to
+  the cage, seed 000 §2.1, seed 001 eq. 9; the sign is :attr:`Kinematics.contact_rate`'s); the
+  diameter deviation along the contact line is
   :meth:`runout.imperfections.Imperfections.evaluate_element_diameters` (seed 002 eq. 26).
 """
 
@@ -81,6 +82,19 @@ class Kinematics:
     def rotation(self) -> float:
         """Speed of the rotating ring [Hz]."""
         return self.inner if self.rotating_ring == "inner" else self.outer
+
+    @property
+    def contact_rate(self) -> float:
+        r"""Signed rate of the contact-point angle in each element's own frame [Hz].
+
+        Rolling without slip, an element spins against the inner ring's motion relative to the
+        cage (:mod:`runout.kinematics`): seen from the cage, its contact point then runs over
+        its surface at :math:`+f_b` when the inner ring turns faster than the outer (ball inside
+        a stationary outer race, spinning against its orbit) and at :math:`-f_b` when the outer
+        ring is the faster (ball rolling on a stationary inner race, spinning with its orbit).
+        Seed 002 eq. 6 is the first case; the linear model uses the same signed rate.
+        """
+        return self.spin if self.inner >= self.outer else -self.spin
 
 
 def time_grid(speed: float, revolutions: float, samples: int) -> NDArray[np.float64]:
@@ -159,7 +173,7 @@ def contact_deviations(
     )
     w_in = imperfections.inner.evaluate(theta - TWO_PI * kin.inner * t[:, None])
     w_out = imperfections.outer.evaluate(theta - TWO_PI * kin.outer * t[:, None])
-    spin_angle = TWO_PI * kin.spin * t
+    spin_angle = TWO_PI * kin.contact_rate * t
     w_ball = np.ascontiguousarray(imperfections.evaluate_element_diameters(spin_angle).T)
     return ContactDeviations(theta=theta, inner=w_in, outer=w_out, ball=w_ball)
 

@@ -9,6 +9,9 @@ axially preloaded bearing (eq. 2.21–2.22), an optional axial degree of freedom
 waviness of both raceways and of the balls, and analyses the steady state like the
 quasi-static models.
 
+Reference: R.K. Purohit, K. Purohit, "Dynamic analysis of ball bearings with effect of
+preload and number of balls", 2006 (seed 003).
+
 Contact model
 -------------
 The moving body is the inner ring with the shaft; the outer ring is fixed (seed 003
@@ -61,9 +64,12 @@ Notes
   :func:`runout.loading.axial_loading`). Then :math:`z_p = A\cos\alpha^0\tan\alpha_p`.
 * Departures from the paper: the contact normal turns with the motion (exact curvature-centre
   geometry instead of a fixed angle); z is optional; waviness of both raceways and of the
-  balls, ball size and pitch errors are included; the cage and spin rates use α_p. The
-  ``[bearing] contact_angle`` key, if given, is read as the free contact angle α⁰ (the
-  clearance then follows from it).
+  balls, ball size and pitch errors are included; the cage and spin rates use α_p.
+* Clearance and contact angle: the bearing enters through ``radial_clearance`` P_d only (the
+  diametral play, :math:`P_d = 2A(1 - \cos\alpha^0)`, Harris); α⁰ follows from it. A case's
+  ``nominal_contact_angle`` α⁰ is converted into that P_d by the case builder. A fixed
+  operating ``contact_angle`` cannot be honoured (α follows from clearance, preload and the
+  motion): :func:`setup` refuses it.
 * Newmark-β (average acceleration, β = 1/4, γ = 1/2) with a Newton–Raphson iteration on the
   tangent stiffness per step (:func:`newmark_kernel`, compiled; :func:`newmark_reference` is a
   NumPy version for tests). The default step gives :data:`STEPS_PER_PERIOD` steps per period of
@@ -141,6 +147,9 @@ NEWTON_RTOL = 1e-12
 #: Lines below this fraction of the reference approach are solver noise (1000 × tolerance).
 NOISE = 1e-9
 MAX_ITER = 50
+#: A quasi-static force balance holding to this fraction of (Σ ball loads + |load|) has
+#: converged (the round-off floor of the sum over balls is ~Z × 1e-16 of it).
+FORCE_RTOL = 1e-13
 #: Most steps a single run may take (transient + analysis) before giving up.
 MAX_STEPS = 50_000_000
 
@@ -199,7 +208,7 @@ def preloaded_contact_angle(
     preload : float
         Axial preload P_l [N] (>= 0); 0 returns α⁰.
     free_contact_angle : float
-        α⁰ [rad].
+        α⁰ = arccos(1 − P_d/2A) [rad] (Harris's free contact angle of the clearance).
     law : {"exact", "delta_star_table"}
     """
     a = bearing.curvature_distance
@@ -232,7 +241,7 @@ class DynamicSetup:
     curvature_distance : float
         A [m].
     radial_gap : float
-        g_0 = A(cos α⁰ − 1) = −(radial play) [m].
+        g_0 = −P_d/2 [m], minus the radial play (seed 003's γ) of ``radial_clearance`` P_d.
     axial_offset : float
         z_p [m].
     stiffness : float
@@ -240,7 +249,7 @@ class DynamicSetup:
     contact_angle : float
         α_p [rad] (kinematics).
     free_contact_angle : float
-        α⁰ [rad].
+        α⁰ = arccos(1 − P_d/2A) [rad] (Harris's free contact angle of the clearance).
     force : ndarray, shape (3,)
         Constant external force on the rotor [N].
     unbalance_force : float
@@ -297,7 +306,7 @@ class DynamicSetup:
         p[P_WC] = TWO_PI * kin.cage
         p[P_WI] = TWO_PI * kin.inner
         p[P_WO] = TWO_PI * kin.outer
-        p[P_WB] = TWO_PI * kin.spin
+        p[P_WB] = TWO_PI * kin.contact_rate  # signed: see Kinematics.contact_rate
         p[P_FU] = self.unbalance_force
         p[P_WU] = self.unbalance_omega
         p[P_FX], p[P_FY], p[P_FZ] = self.force
@@ -319,7 +328,28 @@ def _dyn(case: Any) -> Any:
 
 
 def setup(case: Any) -> DynamicSetup:
-    """Derive the rotor, contact and kinematic constants of a case (see module docstring)."""
+    """Derive the rotor, contact and kinematic constants of a case (see module docstring).
+
+    The radial play is P_d/2 of ``bearing.radial_clearance`` (seed 003 eq. 2.3–2.4, γ);
+    with an axial preload the contact angle α_p solves eq. 2.21–2.22 with clearance
+    (:func:`preloaded_contact_angle`). No input is altered.
+
+    Parameters
+    ----------
+    case : Case
+        A ball bearing case with a ``[dynamics]`` table and a speed > 0.
+
+    Returns
+    -------
+    DynamicSetup
+
+    Raises
+    ------
+    GeometryError
+        No ``[dynamics]`` table, not a ball bearing, speed <= 0, a fixed
+        ``bearing.contact_angle`` (not honoured by this model), an unbalance on a still inner
+        ring, or an axial degree of freedom with nothing to hold the rotor.
+    """
     bearing = case.bearing
     op = case.operation
     dyn = _dyn(case)
@@ -327,16 +357,19 @@ def setup(case: Any) -> DynamicSetup:
         raise GeometryError("bearing.type", "the dynamic model needs a ball bearing (seed 003)")
     if not (math.isfinite(op.speed) and op.speed > 0.0):
         raise GeometryError("operation.speed", f"must be > 0 for the dynamic model: {op.speed!r}")
+    if bearing.contact_angle is not None:
+        # a fixed operating angle cannot be honoured: the contact angle of this model follows
+        # from the clearance, the preload and the motion (a case's nominal_contact_angle has
+        # already become radial_clearance = 2A(1 - cos α⁰))
+        raise GeometryError(
+            "bearing.contact_angle",
+            "the dynamic model does not hold a fixed (operating) contact angle: its contact "
+            "angle follows from radial_clearance and the axial load; give the free angle as "
+            "nominal_contact_angle (or radial_clearance) instead",
+        )
     notes: list[str] = []
     a = bearing.curvature_distance
-    if bearing.contact_angle is not None:
-        alpha0 = bearing.contact_angle
-        notes.append(
-            "bearing.contact_angle read as the free contact angle α⁰; radial play "
-            f"A(1 - cos α⁰) = {a * (1 - math.cos(alpha0)) * 1e6:.4g} um replaces radial_clearance"
-        )
-    else:
-        alpha0 = bearing.free_contact_angle
+    alpha0 = bearing.free_contact_angle  # cos α⁰ = 1 - P_d / 2A (Harris)
     law = dyn.contact_law
     ndof = 3 if dyn.axial_dof else 2
     alpha_p, kn = preloaded_contact_angle(bearing, op.axial_load, alpha0, law)
@@ -346,7 +379,7 @@ def setup(case: Any) -> DynamicSetup:
     else:
         kin_alpha = 0.0  # rings axially centred: the balls touch at the groove bottoms
         alpha_p = 0.0
-    g0 = a * (math.cos(alpha0) - 1.0)  # = -P_d/2 for the clearance-defined α⁰
+    g0 = -0.5 * bearing.radial_clearance  # radial play γ = P_d/2 of seed 003 eq. 2.3-2.4
     beta = op.radial_load_angle
     force = np.array(
         [
@@ -648,12 +681,38 @@ def _potential(q0, q1, q2, cth, sth, gap, wb, a, zp, k, ndof, e0, e1, e2):
 
 
 @numba.njit(cache=True)
+def _load_sum(q0, q1, q2, cth, sth, gap, wb, a, zp, k, ndof):
+    """Sum of the ball loads Σ_j Q_j [N] (scale of the round-off in the force balance)."""
+    sa = zp + (q2 if ndof == 3 else 0.0)
+    total = 0.0
+    for j in range(cth.size):
+        g = gap[j] + q0 * cth[j] + q1 * sth[j]
+        sr = a + g
+        s = math.sqrt(sr * sr + sa * sa)
+        d = (g * (a + sr) + sa * sa) / (s + a) + wb[j]
+        if d > 0.0:
+            total += k * d * math.sqrt(d)
+    return total
+
+
+@numba.njit(cache=True)
 def static_kernel(times, q_start, par, theta0, hk, ndof, max_iter):
     """Quasi-static solution of the same contact model at each instant (compiled).
 
     Newton's method on the convex potential :math:`\\Pi(q) = \\sum_j \\tfrac{K_n}{2.5}
     [\\delta_j]_+^{5/2} - F(t)\\cdot q` (inertia and damping dropped), Armijo backtracking and
     a warm start from the previous instant.
+
+    An instant has converged when the Newton correction is below the tolerance, or when the
+    force balance itself holds to round-off, :math:`\\max_i |\\sum_j Q_j n_{ji} - F_i| \\le`
+    :data:`FORCE_RTOL` :math:`(\\sum_j Q_j + |F|)`. The second test is needed when the
+    equilibrium is not unique: a single loaded ball (a ball straight under the load, its
+    neighbours inside the play, e.g. Z divisible by 4 and the load along −y) holds the rotor
+    only along its own line, so every position across it within the play is an equilibrium
+    (the Hessian of Π is singular there). The round-off force across (~1e-16 of the load)
+    then drives regularised Newton corrections that never fall below the position tolerance,
+    although the forces balance. The iterate then stays close to where it came from (from
+    q = 0: within picometres of the symmetric equilibrium across the load).
 
     Returns
     -------
@@ -689,11 +748,18 @@ def static_kernel(times, q_start, par, theta0, hk, ndof, max_iter):
         e1 = fy + fu * math.sin(wu * t)
         e2 = fz
         converged = False
+        scale = math.sqrt(e0 * e0 + e1 * e1 + (e2 * e2 if ndof == 3 else 0.0))
         for _ in range(max_iter):
             f0, f1, f2, k00, k01, k02, k11, k12, k22, _l = _contact(
                 p0, p1, p2, cth, sth, gap, wb, a, zp, k, ndof
             )
             r0, r1, r2 = f0 - e0, f1 - e1, f2 - e2
+            worst = max(abs(r0), abs(r1), abs(r2) if ndof == 3 else 0.0)
+            if worst <= FORCE_RTOL * (
+                _load_sum(p0, p1, p2, cth, sth, gap, wb, a, zp, k, ndof) + scale
+            ):
+                converged = True  # forces balance to round-off (see the docstring)
+                break
             s0, s1, s2 = _solve3(k00 + reg, k01, k02, k11 + reg, k12, k22 + reg, r0, r1, r2, ndof)
             big = max(abs(s0), abs(s1), abs(s2))
             step = 1.0
@@ -756,7 +822,7 @@ def _deviations_np(
         + hsum(ik, ia, ip, theta - TWO_PI * kin.inner * t[:, None])
         - hsum(ok, oa, op, theta - TWO_PI * kin.outer * t[:, None])
     )
-    spin = TWO_PI * kin.spin * t
+    spin = TWO_PI * kin.contact_rate * t
     wb = np.zeros_like(theta)
     for j in range(st.n_elements):
         lo, hi = int(boff[j]), int(boff[j + 1])
@@ -967,10 +1033,30 @@ def static_equilibrium(
 def linearised_natural_frequencies(
     st: DynamicSetup, q: NDArray[np.float64], t: float = 0.0
 ) -> NDArray[np.float64]:
-    """Undamped natural frequencies sqrt(eig(K_t)/m)/2π [Hz] at rotor position q, time t."""
+    """Undamped natural frequencies sqrt(eig(K_t)/m)/2π [Hz] at rotor position q, time t.
+
+    A direction without stiffness gives 0 Hz: eigenvalues below 1e-9 of the largest (the
+    central differences of :func:`contact_stiffness` resolve about 1e-12 of it) are set to 0.
+    This happens when a single ball carries the load: it holds the rotor along its own line
+    only (seed 003 eq. 2.4: δ_j depends on q through x cos θ_j + y sin θ_j).
+
+    Parameters
+    ----------
+    st : DynamicSetup
+    q : ndarray, shape (3,)
+        Rotor centre [m].
+    t : float
+        Time [s] (ball positions).
+
+    Returns
+    -------
+    ndarray, shape (ndof,)
+        Ascending [Hz].
+    """
     k = contact_stiffness(st, t, q)
     lam = np.linalg.eigvalsh(0.5 * (k + k.T))
-    return np.sqrt(np.clip(lam, 0.0, None) / st.mass) / TWO_PI
+    lam[lam < 1e-9 * max(float(lam.max()), 0.0)] = 0.0
+    return np.sqrt(lam / st.mass) / TWO_PI
 
 
 # --------------------------------------------------------------------------------------------
@@ -983,7 +1069,10 @@ class Integration:
     Attributes
     ----------
     time : ndarray, shape (n,)
-        Instants of the analysis window, from its start [s].
+        Instants of the analysis window [s], ``k / (speed · samples_per_rev)``: t = 0 is the
+        first recorded instant, the end of the transient, and the time of the equations of
+        motion (ball angles, unbalance phase), which the transient reached from the static
+        start at t = -transient.
     displacement : ndarray, shape (3, n)
         x, y and z − (preloaded position) of the rotor [m].
     samples_per_rev : int
@@ -991,14 +1080,15 @@ class Integration:
     time_step : float
         Newmark step h [s].
     transient : float
-        Detected end of the transient [s] (start of the analysis window).
+        Length of the transient before t = 0, the first recorded instant [s] (a whole number
+        of revolutions of the rotating ring).
     settled : str
         How the transient ended: "decayed", "stationary" (free vibration stopped decaying) or
         "limit" (not settled before the step budget).
     natural_frequencies : ndarray
         Linearised natural frequencies at the static equilibrium [Hz].
     static_position : ndarray, shape (3,)
-        Static equilibrium at t = 0 [m].
+        Static equilibrium at t = 0 (the geometry of the record's start) [m].
     min_loaded : int
         Fewest loaded balls at any step.
     steps : int
@@ -1057,6 +1147,42 @@ def choose_step(
     return dt_out / stride, stride
 
 
+class _Stepper:
+    """Newmark integration state and counters, advanced block by block by :func:`integrate`."""
+
+    def __init__(self, st: DynamicSetup, par: NDArray[np.float64], h: float) -> None:
+        self.st, self.par, self.h = st, par, h
+        self.state = np.zeros(9)
+        self.t = 0.0
+        self.steps = self.iterations = 0
+        self.min_loaded = st.n_elements
+
+    def start_static(self, t: float, q: NDArray[np.float64]) -> None:
+        """Start at rest at ``q`` at time ``t``, acceleration from the equation of motion."""
+        st = self.st
+        self.t = t
+        self.state = np.zeros(9)
+        self.state[:3] = q
+        f0, _ = contact_forces(st, np.array([t]), q[None])
+        self.state[6 : 6 + st.ndof] = (external_force(st, np.array([t]))[0] - f0[0])[
+            : st.ndof
+        ] / st.mass
+
+    def advance(self, n_steps: int, stride: int, out: NDArray[np.float64]) -> None:
+        """``n_steps`` steps, recording every ``stride``-th state into ``out``."""
+        st = self.st
+        status, bad, it, ml = newmark_kernel(
+            n_steps, stride, self.t, self.state, self.par, st.theta0, st.harmonics, st.ndof,
+            MAX_ITER, out,
+        )  # fmt: skip
+        if status != OK:
+            _raise(int(status), self.steps + int(bad), self.t + (int(bad) + 1) * self.h)
+        self.t += n_steps * self.h
+        self.steps += n_steps
+        self.iterations += int(it)
+        self.min_loaded = min(self.min_loaded, int(ml))
+
+
 def integrate(
     st: DynamicSetup,
     speed: float,
@@ -1077,7 +1203,12 @@ def integrate(
     is above half that of the three before, whereas a block lasts at least ln 2 linear decay
     times 2m/c, so a free vibration would have dropped eightfold; a forced line in the band, a
     resonance or an undamped system keeps it, and the analysis then includes it).
-    ``revolutions`` whole revolutions are then recorded.
+    The transient found this way is then integrated again, from the static equilibrium at
+    t = -transient, and ``revolutions`` whole revolutions are recorded from t = 0: the returned
+    ``time`` starts at 0 where the bearing's geometry (ball angles θ_j(t), ring angles,
+    unbalance phase Ωt) is the one every other model has at its t = 0 (the product's time
+    origin), and ``transient`` is the length of the transient before it. The transient is
+    integrated twice; it is usually short against the record.
 
     Parameters
     ----------
@@ -1114,14 +1245,8 @@ def integrate(
     rev_block = max(1, math.ceil(20.0 / max(f_lo, 1e-12) * speed))
     rev_block = min(200, max(rev_block, math.ceil(min(decay, 1e9) * speed)))
     par = st.params(h)
-    state = np.zeros(9)
-    state[:3] = q_static
-    # initial acceleration from the equation of motion at t = 0 (v = 0)
-    f0, _ = contact_forces(st, np.array([0.0]), q_static[None])
-    state[6 : 6 + st.ndof] = (external_force(st, np.array([0.0]))[0] - f0[0])[: st.ndof] / st.mass
-    t = 0.0
-    steps = iterations = 0
-    min_loaded = st.n_elements
+    run = _Stepper(st, par, h)
+    run.start_static(0.0, q_static)
     history: list[float] = []
     settled = "limit"
     budget = max_steps - revolutions * steps_per_rev
@@ -1132,17 +1257,9 @@ def integrate(
         det_stride -= 1
     dt_det = det_stride * h
     est_blocks = 4
-    while steps + block_steps <= max(budget, block_steps):
+    while run.steps + block_steps <= max(budget, block_steps):
         out = np.zeros((block_steps // det_stride, 3))
-        status, bad, it, ml = newmark_kernel(
-            block_steps, det_stride, t, state, par, st.theta0, st.harmonics, st.ndof, MAX_ITER, out
-        )
-        if status != OK:
-            _raise(int(status), steps + int(bad), t + (int(bad) + 1) * h)
-        t += block_steps * h
-        steps += block_steps
-        iterations += int(it)
-        min_loaded = min(min_loaded, int(ml))
+        run.advance(block_steps, det_stride, out)
         amp, pp = _band_amplitude(out[:, : st.ndof].T, dt_det, 0.85 * f_lo, 1.15 * f_hi)
         history.append(amp)
         floor = 1e-9 * st.reference_approach
@@ -1158,41 +1275,39 @@ def integrate(
         est_blocks = max(est_blocks, len(history) + 2)
         if progress is not None:
             progress(0.5 * len(history) / est_blocks)
-        if steps + block_steps > budget:
+        if run.steps + block_steps > budget:
             break
-    transient = t
+    transient = run.t
+    # One time origin for every model: the bearing's geometry (ball angles, ring angles,
+    # unbalance) at the reported t = 0 is the one every other model has at its t = 0. The
+    # search above has measured how long the transient lasts; integrate it again from the
+    # static equilibrium at t = -transient, so that the record starts at t = 0 exactly.
+    if transient > 0.0:
+        run.start_static(-transient, static_equilibrium(st, np.array([-transient]))[0])
+        for _ in range(len(history)):
+            run.advance(block_steps, det_stride, np.zeros((block_steps // det_stride, 3)))
+        run.t = 0.0  # exactly, not the rounded sum of the steps
     n_out = revolutions * samples_per_rev
-    out = np.zeros((n_out, 3))
+    # the record starts at t = 0: row 0 is the state there, row k the state k output
+    # intervals later; the kernel records after each ``stride`` steps, so it fills rows
+    # 1..n_out and the last row (the start of the next revolution) is dropped: the window is
+    # [0, revolutions / speed)
+    out = np.zeros((n_out + 1, 3))
+    out[0] = run.state[:3]
     # record in chunks of whole revolutions so that progress can be shown
     chunk_rev = max(1, revolutions // 10)
     done = 0
     while done < revolutions:
         nrev = min(chunk_rev, revolutions - done)
-        view = out[done * samples_per_rev : (done + nrev) * samples_per_rev]
-        status, bad, it, ml = newmark_kernel(
-            nrev * steps_per_rev,
-            stride,
-            t,
-            state,
-            par,
-            st.theta0,
-            st.harmonics,
-            st.ndof,
-            MAX_ITER,
-            view,
-        )
-        if status != OK:
-            _raise(int(status), steps + int(bad), t + (int(bad) + 1) * h)
-        t += nrev * steps_per_rev * h
-        steps += nrev * steps_per_rev
-        iterations += int(it)
-        min_loaded = min(min_loaded, int(ml))
+        view = out[1 + done * samples_per_rev : 1 + (done + nrev) * samples_per_rev]
+        run.advance(nrev * steps_per_rev, stride, view)
         done += nrev
         if progress is not None:
             progress(0.5 + 0.5 * done / revolutions)
+    out = out[:n_out]
     if not np.all(np.isfinite(out)):
         raise NumericalError("non-finite displacement in the analysis window")
-    time = np.arange(n_out, dtype=np.float64) * dt_out
+    time = np.arange(n_out, dtype=np.float64) * dt_out  # t = 0 after the transient
     return Integration(
         time=time,
         displacement=np.ascontiguousarray(out.T),
@@ -1202,9 +1317,9 @@ def integrate(
         settled=settled,
         natural_frequencies=fn,
         static_position=q_static,
-        min_loaded=min_loaded,
-        steps=steps,
-        iterations=iterations,
+        min_loaded=run.min_loaded,
+        steps=run.steps,
+        iterations=run.iterations,
         free_vibration=history,
     )
 
@@ -1338,8 +1453,13 @@ def run(case: Any, progress: Callable[[float], None] | None = None) -> RunResult
     Returns
     -------
     RunResult
-        Steady-state history of the rotor centre, labelled lines, runout figures; extras
-        ``mean_displacement_m`` [x, y], ``natural_frequencies_hz`` and the integration facts.
+        Steady-state history of the rotor centre (inner ring relative to the outer ring),
+        labelled lines, runout figures; extras ``natural_frequencies_hz`` and the
+        integration facts, among them ``transient_s``, the length of the transient [s].
+        ``time`` starts at 0 at the first reported instant, where the ball angles and the
+        unbalance phase are those of every model's t = 0 (the transient ran from
+        t = -``transient_s``); line phases (x = pp/2 cos(2π f t + φ)) are relative to it.
+        z is counted from the rings axially centred.
     """
     st = setup(case)
     op = case.operation
@@ -1356,10 +1476,17 @@ def run(case: Any, progress: Callable[[float], None] | None = None) -> RunResult
     fn = integ.natural_frequencies
     notes.append(
         f"rotor = inner ring + shaft, displacement relative to the outer ring; transient "
-        f"detected over {integ.transient * 1e3:.4g} ms ({integ.settled}); Newmark step "
+        f"detected over {integ.transient * 1e3:.4g} ms ({integ.settled}; t = 0 is its end, "
+        "the start of the record); Newmark step "
         f"{integ.time_step * 1e6:.4g} us = {1.0 / (integ.time_step * fn.max()):.0f} steps per "
         "period of the highest natural frequency"
     )
+    if np.any(fn == 0.0):
+        notes.append(
+            "at the static start of the integration the rotor has no stiffness across the load "
+            "(a single loaded ball: linearised natural frequency 0 Hz); of the static positions "
+            "along that direction it starts from the symmetric one"
+        )
     if integ.settled == "stationary":
         notes.append(
             "the free vibration near the natural frequency did not decay (no or little "
@@ -1381,7 +1508,6 @@ def run(case: Any, progress: Callable[[float], None] | None = None) -> RunResult
     mean = disp.mean(axis=1)
     fbp = ball_passage_frequency(st)
     extras: dict[str, Any] = {
-        "mean_displacement_m": [float(mean[0]), float(mean[1])],
         "natural_frequencies_hz": [float(f) for f in sorted(fn)],
         "ball_passage_hz": fbp,
         "time_step_s": integ.time_step,
@@ -1396,7 +1522,11 @@ def run(case: Any, progress: Callable[[float], None] | None = None) -> RunResult
         "solver_resolution_m": noise,
     }
     if st.ndof == 3:
-        extras["mean_axial_displacement_m"] = float(mean[2])
+        extras["mean_axial_displacement_m"] = float(mean[2])  # from the preloaded position
+    # The product's axial reference is the rings axially centred: the contacts see the
+    # preloaded offset z_p plus the axial degree of freedom (held at 0 without it).
+    disp = disp.copy()
+    disp[2] += st.axial_offset
 
     def write_extra(directory: Path) -> list[Path]:
         from runout import plotting
@@ -1486,7 +1616,7 @@ def _point(case: Any, result: RunResult) -> SweepPoint:
         natural_frequencies_hz=list(result.extras["natural_frequencies_hz"]),
         radial_pp_m=result.runout.radial_pp_m,
         ball_passage_pp_m=radial_bp,
-        mean_displacement_m=list(result.extras["mean_displacement_m"]),
+        mean_displacement_m=result.mean_displacement()[:2],
         spectrum_hz=[float(f) for f in spec.frequencies[keep]],
         spectrum_pp_m=[float(2.0 * a) for a in spec.amplitude[keep]],
         lines=[c.to_json() for c in result.lines(top=12) if c.direction in ("x", "y")],

@@ -87,6 +87,22 @@ Notes
 * The ball speeds follow the rolling (no-slip) kinematics at the current angles; a signed speed
   reverses ω_m and with it the centrifugal force's square is unchanged, while the gyroscopic
   moment changes sign with the relative ring speed (outer ring rotating).
+* A pure moment (no axial, no radial force) is held by the balls either side of the moment
+  axis pressing on opposite flanks of the grooves: contact angles of both signs. The Hertz
+  constants depend on α through cos α only (Harris's curvature sums, γ = D cos α/d_m), so
+  they are evaluated at |α|. The Newton start is the tilt about the moment vector that carries
+  M with the ring centred in the axial play (:func:`_moment_start`); nothing is added to the
+  loads.
+* Tilt radius and moment arm are Harris's ℜ_i. Codes that use the pitch radius d_m/2 for both
+  (e.g. the ISO/TS 16281 reference suite compared in the tests) obtain tilts larger by about
+  (ℜ_i/(d_m/2))^{5/4} under a pure moment on a zero-clearance bearing.
+
+References
+----------
+Kim, Choi & Yoon (seed 001), §2.1, eq. 1-9 and Fig. 2. T. A. Harris, *Rolling Bearing
+Analysis* (Jones's raceway-control theory, quasi-static equilibrium of high-speed ball
+bearings). ISO/TS 16281:2008, reference cases of an open implementation
+(github.com/minzhun/ISO16281, ``Test_BallBearing.py``).
 """
 
 from __future__ import annotations
@@ -126,7 +142,7 @@ _H = 1e-30  # complex step [m]; any tiny value is exact to round-off
 _BALL_ITER = 50
 _RING_ITER = 80
 _ANGLE_LOOPS = 12
-_H_ALPHA = 1e-6  # step of the central difference of K(α) [rad]; angles clipped to >= it
+_H_ALPHA = 1e-6  # step of the central difference of K(α) [rad]
 
 
 # --------------------------------------------------------------------------------------------
@@ -622,6 +638,9 @@ class _Ring:
 
     # Hertz constants and their slope in the contact angle --------------------------------
     def _k(self, alpha: float) -> tuple[float, float]:
+        # K depends on α through cos α only (γ = D cos α / d_m): even in α, so a ball pressed
+        # on the other flank of the grooves (α < 0, e.g. under a moment) has K(|α|)
+        alpha = min(abs(alpha), 0.5 * math.pi - _H_ALPHA)
         key = round(alpha, 13)
         if key not in self._k_cache:
             c = ball_race_contacts(self.bearing, alpha)
@@ -629,18 +648,23 @@ class _Ring:
         return self._k_cache[key]
 
     def set_angles(self, alpha_i: NDArray[np.float64], alpha_o: NDArray[np.float64]) -> None:
-        """Linearise K_i, K_o about these angles (central differences of the exact Hertz K)."""
+        r"""Linearise K_i, K_o about these signed angles [rad] (central differences of K).
+
+        Angles are limited to :math:`|\alpha| \le \pi/2 - 2h`; a negative angle (contact on
+        the other flank) is linearised about itself, K being even in α (:meth:`_k`).
+        """
         h = _H_ALPHA
-        ki0, ki1, ko0, ko1 = (np.empty(alpha_i.size) for _ in range(4))
-        for j, (ai, ao) in enumerate(zip(alpha_i, alpha_o, strict=True)):
-            ai = min(max(float(ai), h), 0.5 * math.pi - 2 * h)
-            ao = min(max(float(ao), h), 0.5 * math.pi - 2 * h)
+        lim = 0.5 * math.pi - 2 * h
+        ai_c = np.clip(np.asarray(alpha_i, dtype=np.float64), -lim, lim)
+        ao_c = np.clip(np.asarray(alpha_o, dtype=np.float64), -lim, lim)
+        ki0, ki1, ko0, ko1 = (np.empty(ai_c.size) for _ in range(4))
+        for j, (ai, ao) in enumerate(zip(ai_c.tolist(), ao_c.tolist(), strict=True)):
             ki0[j] = self._k(ai)[0]
             ki1[j] = (self._k(ai + h)[0] - self._k(ai - h)[0]) / (2 * h)
             ko0[j] = self._k(ao)[1]
             ko1[j] = (self._k(ao + h)[1] - self._k(ao - h)[1]) / (2 * h)
-        self.p.ki0, self.p.ki1, self.p.ai_c = ki0, ki1, np.clip(alpha_i, h, None)
-        self.p.ko0, self.p.ko1, self.p.ao_c = ko0, ko1, np.clip(alpha_o, h, None)
+        self.p.ki0, self.p.ki1, self.p.ai_c = ki0, ki1, ai_c
+        self.p.ko0, self.p.ko1, self.p.ao_c = ko0, ko1, ao_c
 
     # geometry ----------------------------------------------------------------------------
     def groove_centres(self, q: NDArray[np.float64]) -> NDArray[np.float64]:
@@ -707,7 +731,7 @@ def _newton(
 ) -> tuple[NDArray[np.float64], int]:
     """Damped Newton on the ring equations; returns q and the iteration count."""
     a = ring.a
-    f_scale = max(float(np.abs(load[:3]).max()), 1e-3)
+    f_scale = max(float(np.abs(load[:3]).max()), float(np.abs(load[3:]).max()) / ring.rad_i, 1e-3)
     m_scale = f_scale * ring.rad_i
     scales = np.array([f_scale, f_scale, f_scale, m_scale, m_scale])
     step_max = 0.05 * a
@@ -754,12 +778,79 @@ def _initial_displacement(bearing: BallBearing, op: Operation) -> NDArray[np.flo
             guess += 0.5 * bearing.radial_clearance
         q[1] = guess * math.cos(op.radial_load_angle)
         q[2] = guess * math.sin(op.radial_load_angle)
-    if op.axial_load == 0.0 and op.radial_load == 0.0:
+    if op.axial_load == 0.0 and op.radial_load == 0.0 and op.moment_load == 0.0:
         raise GeometryError(
             "operation",
-            "the equilibrium model needs an axial or a radial load to hold the inner ring",
+            "the equilibrium model needs an axial load, a radial load or a moment to hold the "
+            "inner ring",
         )
     return q
+
+
+def _pure_moment(op: Operation) -> bool:
+    """A moment with neither axial nor radial force."""
+    return op.axial_load == 0.0 and op.radial_load == 0.0 and op.moment_load > 0.0
+
+
+def _moment_start(ring: _Ring, op: Operation) -> NDArray[np.float64]:
+    r"""Start of the ring Newton for a pure moment: the tilt that carries M, ring centred.
+
+    Without an axial force the Newton start cannot be the unloaded ring: every ball is then
+    at zero approach (zero clearance) or in the play, the Hertz stiffness
+    :math:`\tfrac32 K\delta^{1/2}` vanishes and the stiffness matrix is singular. By the
+    symmetry of the load (a rotation by π about the moment vector maps the bearing onto
+    itself and turns δ_a, measured from the centre of the axial play, into −δ_a), the ring sits
+    centred in the axial play, :math:`\delta_a = -A\sin\alpha^0`, and tilts about the moment
+    vector. Along that ray the moment carried grows monotonically with the tilt θ: it is 0
+    while :math:`\Re_i\theta\,|\sin(\psi_j - \varphi_M)| \le A\sin\alpha^0` for every ball
+    (angular play) and then like a power of the excess tilt. θ is bracketed by doubling the
+    excess tilt (counting the moment only once at least 3 balls are loaded, so that the start
+    holds the ring radially too) and refined by bisection to 0.1 %; the full
+    five-degree-of-freedom Newton takes over from there (the radial displacement is free: with
+    an odd number of balls it is small but not zero). No load is added to the user's case.
+
+    Parameters
+    ----------
+    ring : _Ring
+        The ring problem, speed effects off.
+    op : Operation
+        Moment [N m] and its direction :math:`\varphi_M` [rad].
+
+    Returns
+    -------
+    ndarray, shape (5,)
+        Ring displacement (δ_a [m], δ_x [m], δ_y [m], θ_x [rad], θ_y [rad]).
+    """
+    c, s = math.cos(op.moment_load_angle), math.sin(op.moment_load_angle)
+    lever = float(np.abs(ring.sin_psi * c - ring.cos_psi * s).max())
+    offset = ring.a * math.sin(ring.alpha0)
+    play = offset / (ring.rad_i * lever)
+
+    def carried(theta: float) -> float:
+        """Moment about the moment vector at tilt θ; 0 while fewer than 3 balls are loaded."""
+        q = np.array([-offset, 0.0, 0.0, theta * c, theta * s])
+        force, _, _, loaded = ring.forces(q)
+        if np.count_nonzero(loaded) < 3:
+            return 0.0
+        return float(force[3] * c + force[4] * s)
+
+    # excess tilt beyond the play [rad], from 1e-9 A up to an approach of A at the lever
+    lo, hi = 0.0, 1e-9 * ring.a / (ring.rad_i * lever)
+    while carried(play + hi) < op.moment_load:
+        lo, hi = hi, 2.0 * hi
+        if hi * ring.rad_i * lever > ring.a:
+            raise NumericalError(
+                "static: under a pure moment about this axis fewer than 3 balls carry load "
+                f"(moment {op.moment_load:.6g} N m); the ring cannot be held"
+            )
+    while hi - lo > 1e-3 * hi:
+        mid = 0.5 * (lo + hi)
+        if carried(play + mid) >= op.moment_load:
+            hi = mid
+        else:
+            lo = mid
+    theta = play + hi
+    return np.array([-offset, 0.0, 0.0, theta * c, theta * s])
 
 
 def solve_equilibrium(
@@ -804,15 +895,22 @@ def solve_equilibrium(
     if alpha is None:
         alpha = axial_loading(bearing, op.axial_load).contact_angle
     z = bearing.n_elements
-    ring.set_angles(np.full(z, alpha), np.full(z, alpha))
+    if _pure_moment(op):
+        # balls on either side of the moment axis press on opposite flanks (α of either sign)
+        side = np.sin(ring.psi - op.moment_load_angle)
+        start = np.where(side < 0.0, -alpha, alpha)
+        ring.set_angles(start, start)
+        q = _moment_start(ring, op)
+    else:
+        ring.set_angles(np.full(z, alpha), np.full(z, alpha))
     for stage in stages:
         ring.p.speed_on = stage == "at speed"
         for _ in range(_ANGLE_LOOPS):
             q, it = _newton(ring, q, load, stage)
             total += it
             _, _, state, loaded = ring.forces(q)
-            ai = np.clip(np.where(loaded, state["alpha_i"], ring.p.ai_c), _H_ALPHA, None)
-            ao = np.clip(np.where(loaded, state["alpha_o"], ring.p.ao_c), _H_ALPHA, None)
+            ai = np.where(loaded, state["alpha_i"], ring.p.ai_c)
+            ao = np.where(loaded, state["alpha_o"], ring.p.ao_c)
             moved = max(
                 float(np.abs(ai - ring.p.ai_c).max()), float(np.abs(ao - ring.p.ao_c).max())
             )
@@ -940,13 +1038,20 @@ def run(case: object) -> RunResult:
     control = case.analysis.race_control  # type: ignore[attr-defined]
     sol = solve_equilibrium(bearing, op, race_control=control)
     loaded = sol.loaded
+    # |α|: under a moment some balls press on the other flank (negative angles)
     mean_alpha = float(
-        0.5 * (sol.inner_contact_angle[loaded].mean() + sol.outer_contact_angle[loaded].mean())
+        0.5
+        * (
+            np.abs(sol.inner_contact_angle[loaded]).mean()
+            + np.abs(sol.outer_contact_angle[loaded]).mean()
+        )
     )
     q = sol.displacement
     notes = [
         "static equilibrium of the perfect bearing at one instant: no runout history "
-        "(components empty); displacement = inner ring relative to the outer ring",
+        "(components empty); displacement = inner ring relative to the outer ring "
+        "(mean_displacement_m from the rings centred; ring_displacement.axial_m from the "
+        "contact on one groove flank, as in seed 001)",
     ]
     if not loaded.all():
         notes.append(
@@ -978,7 +1083,15 @@ def run(case: object) -> RunResult:
         frequencies=bearing_frequencies(bearing, op, mean_alpha),
         contact_angle=mean_alpha,
         time=np.zeros(1),
-        displacement=np.array([[q[1]], [q[2]], [q[0]]]),
+        # runout's axial reference is the rings axially centred; the solve counts from the
+        # contact on one flank, half the free end play A sin α⁰ away
+        displacement=np.array(
+            [
+                [q[1]],
+                [q[2]],
+                [q[0] + bearing.curvature_distance * math.sin(bearing.free_contact_angle)],
+            ]
+        ),
         components=(),
         runout=Runout(0.0, 0.0, 0.0, 0.0),
         extras=extras,

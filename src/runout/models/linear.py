@@ -47,6 +47,10 @@ derives them):
   ``P = Σ e^{2iθ_z}``; the lines use the exact element sums ``Σ e^{imθ_z}`` but neglect the
   ``P`` coupling (first order in the pitch errors); the result's notes say so.
 * Orders are waves per revolution of the rotating ring; frequencies are ``order × |speed|``.
+* **Frame.** Seed 002 gives the outer ring's centre relative to the inner ring's. The result is
+  reported as the shaft (inner ring) relative to the outer ring, as by every runout model:
+  :data:`SHAFT_FRAME` turns the sign of every term (each line's phase moves by π; amplitudes,
+  bands and orders are unchanged).
 """
 
 from __future__ import annotations
@@ -126,6 +130,11 @@ class Rates:
     cage: float
     spin: float
     rotation_hz: float
+
+
+#: Seed 002 writes the outer ring's displacement relative to the inner ring; runout reports the
+#: shaft (inner ring) relative to the outer ring, the same motion with the opposite sign.
+SHAFT_FRAME = -1.0
 
 
 def rates(bearing: Bearing, operation: Operation, contact_angle: float) -> Rates:
@@ -316,7 +325,7 @@ def closed_form_terms(
         raise GeometryError(
             "bearing.elements", f"the linear model needs at least 3 elements (eq. 19-20), got {z}"
         )
-    g_ring, g_ball = variant_gains(contact_angle, variant)
+    g_ring, g_ball = (SHAFT_FRAME * g for g in variant_gains(contact_angle, variant))
     beta = TWO_PI * np.arange(z) / z + imperfections.pitch_errors
     equal = not bool(np.any(imperfections.pitch_errors))
     parts = [
@@ -672,7 +681,7 @@ def direct_sum(
         raise GeometryError(
             "bearing.elements", f"the linear model needs at least 3 elements (eq. 19-20), got {z}"
         )
-    g_ring, g_ball = variant_gains(contact_angle, variant)
+    g_ring, g_ball = (SHAFT_FRAME * g for g in variant_gains(contact_angle, variant))
     t = np.asarray(theta, dtype=np.float64).reshape(-1)
     beta = TWO_PI * np.arange(z) / z + imperfections.pitch_errors
     rr = np.zeros(t.size, dtype=np.complex128)

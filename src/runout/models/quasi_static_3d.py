@@ -31,8 +31,9 @@ balance (eq. 5), with the unit contact normal :math:`n_j = (\cos\alpha\cos\theta
 
 .. math:: \sum_j Q_j\,n_j = (-F_r\cos\beta,\; -F_r\sin\beta,\; F_a),
 
-where the radial load :math:`F_r` pushes the outer ring along β
-(``Operation.radial_load_angle``); Tada's eq. 5 is the case :math:`F_r = 0`.
+where the radial load :math:`F_r` acts on the shaft along β (``Operation.radial_load_angle``),
+i.e. pushes the outer ring along -β relative to the inner ring; Tada's eq. 5 is the case
+:math:`F_r = 0`.
 
 Notes
 -----
@@ -43,8 +44,11 @@ Notes
   \epsilon_j`. Angles run counter-clockwise (Tada: clockwise), which mirrors the orbits only.
 * Tada's text says the bracket of eq. 5 is raised to 1.5; a negative bracket is a lost contact
   and gives zero load here (counted and reported).
-* The same equations hold for either rotating ring; only the ring speeds change. The reported
-  displacement is always the outer ring's centre relative to the inner ring's.
+* The same equations hold for either rotating ring; only the ring speeds change. The kernel
+  solves for the outer ring's centre relative to the inner ring's (Tada's frame); the reported
+  displacement (:func:`solve`, ``runout run``) is the product's: the shaft (inner-ring) centre
+  relative to the outer ring, :math:`-(x, y, z)`, so z grows along the axial load on the shaft;
+  z is then counted from the rings axially centred (:func:`axial_position`).
 * Solver: per instant, Newton's method on the convex potential
   :math:`\Pi(q) = \sum_j \tfrac{K_n}{2.5}[\delta_j]_+^{5/2} + F\cdot q` with a closed-form 3×3
   solve, Armijo backtracking, warm start from the previous instant (Numba kernel
@@ -391,7 +395,9 @@ def setup(case: object) -> Setup:
     if op.axial_load <= 0.0:
         raise GeometryError(
             "operation.axial_load",
-            "the quasi_static_3d model needs an axial preload > 0 N (seed 000 eq. 5)",
+            "the quasi_static_3d model needs an axial preload > 0 N (seed 000 eq. 5); a bearing "
+            'without preload, with its radial play, runs in model = "equilibrium" (static) or '
+            '"dynamic"',
         )
     alpha, _ = operating_contact_angle(bearing, op)
     if not alpha > 0.0:
@@ -399,9 +405,11 @@ def setup(case: object) -> Setup:
     kn = ball_race_contacts(bearing, alpha).combined_stiffness
     z = bearing.n_elements
     dpl = preload_approach(kn, z, alpha, op.axial_load)
+    # The radial load acts on the shaft along β; in the paper's frame (outer ring moving
+    # relative to the inner ring) that is the outer ring pushed along -β.
     beta = op.radial_load_angle
     force = np.array(
-        [-op.radial_load * math.cos(beta), -op.radial_load * math.sin(beta), op.axial_load]
+        [op.radial_load * math.cos(beta), op.radial_load * math.sin(beta), op.axial_load]
     )
     d, dm = bearing.element_diameter, bearing.pitch_diameter
     kin = Kinematics(
@@ -427,7 +435,8 @@ def approaches(
 def solve(
     case: object, time: NDArray[np.float64], st: Setup | None = None
 ) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
-    """Outer-ring centre (3, n) [m] and unloaded-ball counts (n,) at ``time``.
+    """Shaft (inner-ring) centre relative to the outer ring (3, n) [m] and unloaded-ball counts
+    (n,) at ``time``: the kernel's outer-ring position (seed 000's frame) with its sign turned.
 
     Raises
     ------
@@ -449,7 +458,7 @@ def solve(
     )
     if status != OK:
         _raise(int(status), int(instant), time)
-    return np.ascontiguousarray(q.T), unloaded
+    return np.ascontiguousarray(-q.T), unloaded
 
 
 def time_grid_of(case: object) -> NDArray[np.float64]:
@@ -458,16 +467,40 @@ def time_grid_of(case: object) -> NDArray[np.float64]:
     return time_grid(case.operation.speed, an.revolutions, an.samples)  # type: ignore[attr-defined]
 
 
+def axial_position(case: object, st: Setup) -> float:
+    r"""Axial position of the shaft at the preload, from the rings axially centred [m].
+
+    The groove curvature centres are :math:`A + \delta_{pl}` apart along the contact line at
+    α, so the inner ring sits :math:`(A + \delta_{pl})\sin\alpha` along the axial load (for
+    the loaded contact angle of Harris's relation this is the equilibrium model's static
+    position; with a fixed angle it is the position that angle implies).
+    """
+    a = case.bearing.curvature_distance  # type: ignore[attr-defined]
+    return float((a + st.preload) * math.sin(st.contact_angle))
+
+
 def run(case: object) -> RunResult:
-    """Run the quasi-static 3-D model (seed 000) on a case."""
+    """Run the quasi-static 3-D model (seed 000) on a case.
+
+    The reported z is measured from the rings axially centred (:func:`axial_position` plus
+    the solved motion), as in every model.
+    """
     st = setup(case)
+    offset = axial_position(case, st)
+
+    def solve_reported(
+        case: object, time: NDArray[np.float64], st: Setup | None = None
+    ) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
+        disp, unloaded = solve(case, time, st)
+        disp[2] += offset
+        return disp, unloaded
+
     return run_quasi_static(
         case,
         st,
-        solve,
+        solve_reported,
         model=MODEL,
         planar=False,
-        description="displacement: outer-ring centre relative to the inner ring; contact "
-        "angle fixed at its preloaded value (seed 000)",
+        description="contact angle fixed at its preloaded value (seed 000)",
         extras={"preload_approach_m": st.preload},
     )

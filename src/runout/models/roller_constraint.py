@@ -64,6 +64,18 @@ Notes
   :math:`\omega = [\Omega_o (d_m + D_w) - \Omega_i (d_m - D_w)]/(2 D_w)` per unit ring
   rotation (:math:`d_m = (d_i + d_e)/2`), i.e. :math:`\gamma_1 = (d_m - D_w)\alpha/(2D_w) =
   (d_m/D_w)\gamma_2` clockwise for the turning inner ring; that is what we use.
+* Roller phases. The product reads element waviness in the **cage** frame (ψ = 0 along the
+  outward radius through the element's centre, at its outer contact, at t = 0), as the linear
+  and quasi-static models do; eq. 7's roller frame is parallel to the global frame at α = 0
+  (the **fixed** frame). Both are fixed to the roller and differ by its position β_j at t = 0,
+  so :func:`geometry_from` turns each roller's phases by −kβ_j (:func:`elements_to_fixed_frame`)
+  and the kernel works in eq. 7's frame; the contact point then runs over the roller at the
+  spin relative to the cage, (γ₂ + γ₁)/α = f_b/f_r, in both readings. "Every roller, 8 lobes,
+  phase 0" thus shows the lobe's peak at every roller's outer contact at α = 0 (the paper's
+  Fig. 11 reading, all rollers alike in the fixed frame, is
+  ``Imperfections.element_phases_from_fixed_frame()``, case key ``[elements] phase_frame =
+  "fixed"``: 2.003 µm over 540°; the cage reading, every roller alike relative to the cage,
+  gives 2.551 µm).
 * Seed 004 eq. 15 and 16 write the roundness terms with sin where eq. 5, 7, 10 and 11 use cos;
   taken literally the profile would change between two steps of the method. We use cos
   everywhere (eq. 5-7).
@@ -81,6 +93,7 @@ Notes
 from __future__ import annotations
 
 import csv
+import dataclasses
 import math
 import warnings
 from collections.abc import Sequence
@@ -108,6 +121,7 @@ __all__ = [
     "absolute_spin_ratio",
     "analytic_circular",
     "cage_ratio",
+    "elements_to_fixed_frame",
     "ellipse_harmonics",
     "ellipse_position_exact",
     "ellipse_position_paper",
@@ -129,6 +143,7 @@ TOL_FEASIBLE = 1e-13
 TOL_MULTIPLIER = 1e-9
 #: Rollers closer than this to the loaded ring are reported as touching [m].
 TOL_TOUCH = 1e-11
+TWO_PI = 2.0 * math.pi
 
 # status codes of the compiled solver
 _OK = 0
@@ -174,7 +189,9 @@ class ConstraintGeometry:
     inner, outer : Harmonics
         Raceway roundness in the ring frames (eq. 5-6) [m].
     elements : tuple of Harmonics
-        Roller roundness in the roller frames (eq. 7) [m].
+        Roller roundness in the **fixed** roller frames of eq. 7 (ψ = 0 along +x of the
+        bearing at α = 0; the kernel's frame) [m]. :func:`geometry_from` converts the
+        product's cage-frame input; :attr:`cage_frame_elements` is the inverse view.
     pitch_errors : ndarray, shape (Z,)
         Angular position errors of the rollers [rad].
     rotating_ring : {"inner", "outer"}
@@ -213,11 +230,58 @@ class ConstraintGeometry:
         """Unit vector u of the measuring load."""
         return np.array([math.cos(self.load_angle), math.sin(self.load_angle)])
 
+    @property
+    def element_positions(self) -> FloatArray:
+        """Roller centres at α = 0, β_j = 2πj/Z + pitch error (j 0-based) [rad], shape (Z,)."""
+        z = self.n_elements
+        return np.asarray(2.0 * np.pi * np.arange(z) / z + self.pitch_errors, dtype=np.float64)
+
+    @property
+    def cage_frame_elements(self) -> tuple[Harmonics, ...]:
+        """:attr:`elements` in the cage frames (ψ = 0 along roller j's outward radius at α = 0).
+
+        ``elements[j].shifted(β_j)``; see :func:`elements_to_fixed_frame`.
+        """
+        return tuple(
+            h.shifted(float(b)) for h, b in zip(self.elements, self.element_positions, strict=True)
+        )
+
     def replace(self, **changes: Any) -> ConstraintGeometry:
         """Copy with some attributes replaced."""
         kw = {f: getattr(self, f) for f in self.__dataclass_fields__}
         kw.update(changes)
         return ConstraintGeometry(**kw)
+
+
+def elements_to_fixed_frame(
+    elements: Sequence[Harmonics], positions: Sequence[float] | FloatArray
+) -> tuple[Harmonics, ...]:
+    r"""Element waviness from the cage frames to the fixed frames of seed 004 eq. 7.
+
+    The product reads element waviness :math:`r(\psi) = \sum a_k\cos(k\psi + \varphi_k)` in
+    the **cage** frame: ψ counter-clockwise from the outward radius through the element's
+    centre at t = 0, i.e. from its contact with the outer raceway (seed 001 eq. 13, seed 002
+    eq. 25-26; the linear and quasi-static models). Seed 004 (Yu et al. 2017) eq. 7 writes the
+    roller profile in a frame parallel to the bearing's, ψ from +x, turned by the roller's
+    absolute spin χ = −γ₁. Both frames are fixed to the roller and turn with it; at t = 0 they
+    differ by the roller's position β_j, so :math:`\psi_f = \psi_c + \beta_j` and
+    :math:`\varphi^f_k = \varphi^c_k - k\beta_j` (``shifted(-β_j)``) at every later angle
+    too, whatever the spin. Inverse of
+    :meth:`runout.imperfections.Imperfections.element_phases_from_fixed_frame`.
+
+    Parameters
+    ----------
+    elements : sequence of Harmonics
+        Radius deviation of each element in its cage frame [m].
+    positions : array_like, shape (Z,)
+        β_j = 2πj/Z + pitch error of element j (0-based) at t = 0 [rad].
+
+    Returns
+    -------
+    tuple of Harmonics
+        The same profiles in the fixed frames [m].
+    """
+    return tuple(h.shifted(-float(b)) for h, b in zip(elements, positions, strict=True))
 
 
 def geometry_from(
@@ -232,8 +296,11 @@ def geometry_from(
         diameter, raceways at the groove bottoms); see the module Notes.
     imperfections : Imperfections
         ``inner``/``outer`` roundness (order 0 = radius error, i.e. Δd/2 of eq. 4),
-        ``elements`` roundness, ``diameter_errors`` (ΔD_j of eq. 4) and ``pitch_errors``.
-        Slant is not part of this planar model.
+        ``elements`` roundness in the cage frame (converted to the fixed frame of eq. 7 by
+        :func:`elements_to_fixed_frame`), ``diameter_errors`` (ΔD_j of eq. 4) and
+        ``pitch_errors``. Slant is not part of this planar model. Seed 004's own fixed-frame
+        phases: pass ``imperfections.element_phases_from_fixed_frame()`` (case key
+        ``[elements] phase_frame = "fixed"``).
     operation : Operation, optional
         Rotating ring and the measuring-load direction (``radial_load_angle``).
 
@@ -257,6 +324,8 @@ def geometry_from(
         raise GeometryError("bearing", f"unsupported bearing {type(bearing).__name__}")
     dw = bearing.element_diameter
     radii = 0.5 * dw + 0.5 * np.asarray(imperfections.diameter_errors, dtype=np.float64)
+    pitch = np.asarray(imperfections.pitch_errors, dtype=np.float64)
+    positions = 2.0 * np.pi * np.arange(z) / z + pitch
     geo = ConstraintGeometry(
         n_elements=z,
         element_diameter=dw,
@@ -266,8 +335,8 @@ def geometry_from(
         element_radii=radii,
         inner=imperfections.inner,
         outer=imperfections.outer,
-        elements=tuple(imperfections.elements),
-        pitch_errors=np.asarray(imperfections.pitch_errors, dtype=np.float64),
+        elements=elements_to_fixed_frame(imperfections.elements, positions),
+        pitch_errors=pitch,
         rotating_ring=op.rotating_ring,
         load_angle=op.radial_load_angle,
     )
@@ -932,7 +1001,7 @@ def solve(geo: ConstraintGeometry, alpha: Sequence[float] | FloatArray) -> Solut
         raise GeometryError("alpha", "rotation angles must be finite")
     z = geo.n_elements
     r0, k, a, p, off = _pack(geo)
-    beta0 = 2.0 * np.pi * np.arange(z) / z + geo.pitch_errors
+    beta0 = geo.element_positions
     u = geo.load_direction
     c0 = 0.5 * max(geo.radial_clearance, 0.0) * u
     inner_turns, outer_turns = _turns(geo)
@@ -1345,6 +1414,8 @@ def order_sweep(
     amplitude : float
         Zero-to-peak amplitude of the harmonic [m].
     parts : sequence of {"inner", "outer", "roller"}
+        A "roller" harmonic is the same on every roller in its cage frame (phase 0 at its outer
+        contact at α = 0), like a ``[[waviness]] part = "roller"`` entry of a case.
     """
     z = geo.n_elements
     ks = np.arange(2, 3 * z + 1) if orders is None else np.asarray(orders, dtype=np.int64)
@@ -1365,7 +1436,9 @@ def order_sweep(
             elif part == "outer":
                 g = perfect.replace(outer=h)
             elif part in ("roller", "element", "ball"):
-                g = perfect.replace(elements=(h,) * z)
+                g = perfect.replace(
+                    elements=elements_to_fixed_frame((h,) * z, perfect.element_positions)
+                )
             else:
                 raise GeometryError("order_sweep.parts", f"unknown part {part!r}")
             table[j, i] = solve(g, alpha).runout
@@ -1410,15 +1483,32 @@ def _candidate_lines(geo: ConstraintGeometry) -> list[tuple[float, str]]:
         lines.append((kk * spin_rel + passage, f"roller {kk} lobes + roller passage"))
     lines.append((2 * passage, "roller passage: 2 Z f_c"))
     lines.append((3 * passage, "roller passage: 3 Z f_c"))
+    # rollers that differ relative to the cage (identical fixed-frame profiles do, unless
+    # their orders are multiples of Z)
     uneven = (
         np.ptp(geo.element_radii) > 0
         or np.any(geo.pitch_errors)
-        or len({h for h in geo.elements}) > 1
+        or not _same_profiles(geo.cage_frame_elements)
     )
     if uneven:
         for m in (1, 2, 3):
             lines.append((m * c, f"cage {m}x: uneven rollers, {m} f_c"))
     return lines
+
+
+def _same_profiles(elements: Sequence[Harmonics]) -> bool:
+    """All profiles equal up to phase round-off (1e-9 rad after a frame change)."""
+    first = elements[0]
+    for h in elements[1:]:
+        if not (
+            np.array_equal(h.orders, first.orders)
+            and np.allclose(h.amplitudes, first.amplitudes, rtol=1e-12, atol=0.0)
+        ):
+            return False
+        dphi = np.angle(np.exp(1j * (h.phases - first.phases)))
+        if np.any(np.abs(dphi) > 1e-9):
+            return False
+    return True
 
 
 def _components(sol: Solution, rotation_hz: float, notes: list[str]) -> tuple[Component, ...]:
@@ -1477,7 +1567,7 @@ def _components(sol: Solution, rotation_hz: float, notes: list[str]) -> tuple[Co
                     pp_m=pp,
                     label=label,
                     phase_rad=float(lines.phase[axis, i]),
-                    repeatable=abs(order - round(order)) < 1e-6,
+                    repeatable=bool(abs(order - round(order)) < 1e-6),
                 )
             )
     comps.sort(key=lambda c: -c.pp_m)
@@ -1525,6 +1615,19 @@ def run(case: Case) -> RunResult:
     """
     notes: list[str] = []
     geo = geometry_from(case.bearing, case.imperfections, case.operation)
+    # runout's frame: the load key is the load on the shaft, the displacement the shaft's
+    # centre relative to the outer ring's. A turning outer ring is the loaded one here: the same
+    # relative push is the outer ring loaded the opposite way, and its centre relative to the
+    # inner ring is minus the reported displacement.
+    shaft = 1.0
+    if geo.rotating_ring == "outer":
+        shaft = -1.0
+        geo = dataclasses.replace(geo, load_angle=geo.load_angle + math.pi)
+        notes.append(
+            "outer ring turning and loaded: the measuring load acts on it opposite to "
+            "radial_load_direction (the key gives the load on the shaft); the displacement is "
+            "the shaft relative to the outer ring, as in every model"
+        )
     if isinstance(case.bearing, BallBearing):
         notes.append(
             "ball bearing taken in its radial plane: contact angle 0, balls as circles of their "
@@ -1544,14 +1647,18 @@ def run(case: Case) -> RunResult:
         notes.append("speed is 0: time is given in revolutions (1 rev/s assumed)")
     f_rot = speed if speed > 0 else 1.0
     time = alpha / (2.0 * math.pi * f_rot)
-    disp = np.vstack([sol.centre[:, 0], sol.centre[:, 1], np.zeros(alpha.size)])
+    disp = np.vstack([shaft * sol.centre[:, 0], shaft * sol.centre[:, 1], np.zeros(alpha.size)])
     comps = _components(sol, f_rot, notes)
+    if shaft < 0.0:
+        comps = tuple(
+            dataclasses.replace(c, phase_rad=float(math.remainder(c.phase_rad + math.pi, TWO_PI)))
+            for c in comps
+        )
     rro, nrro = _rro_nrro(sol, case.analysis.revolutions, comps, notes)
     pairs, counts = np.unique(np.sort(sol.pair, axis=1), axis=0, return_counts=True)
     touching = sol.touching.sum(axis=1)
     extras: dict[str, Any] = {
         "horizontal_pp_m": float(np.ptp(sol.horizontal)),
-        "mean_displacement_m": [float(sol.centre[:, 0].mean()), float(sol.centre[:, 1].mean())],
         "contacts": {
             "rollers_touched": sorted({int(j) + 1 for j in np.flatnonzero(sol.touching.any(0))}),
             "pairs": [[int(a) + 1, int(b) + 1] for a, b in pairs],
@@ -1568,7 +1675,7 @@ def run(case: Case) -> RunResult:
         )
     else:
         freqs = bearing_frequencies(case.bearing, case.operation)
-    u = geo.load_direction
+    u = shaft * geo.load_direction  # the load on the shaft
 
     def writer(directory: Path) -> list[Path]:
         return write_extras(sol, directory, case.analysis.revolutions)

@@ -1,0 +1,190 @@
+"""Every cell of the key × model matrix (runout.conventions) is what the code does.
+
+For each key and model, a base case of that model and the same case with only that key changed
+are run: an honoured key changes the result, a refused key ends with a CaseError naming it and
+the models that honour it, a key the model does not apply leaves a note naming it.
+"""
+
+from __future__ import annotations
+
+import copy
+import json
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from cases import TADA_BEARING
+from runout.case import parse_case
+from runout.conventions import KEYS, MODELS, conventions_page, honouring_models
+from runout.errors import CaseError
+from runout.models import run_model
+
+DOC = Path(__file__).resolve().parents[2] / "docs" / "conventions.md"
+
+Data = dict[str, Any]
+
+
+def _base(model: str) -> Data:
+    data: Data = {
+        "title": "matrix",
+        "bearing": dict(TADA_BEARING),
+        "operation": {"speed": 90.0, "axial_load": 20.0},
+        "waviness": [
+            {"part": "inner", "order": 9, "amplitude": 5e-9, "phase": 0.3},
+            {"part": "ball", "order": 2, "amplitude": 5e-9, "element": 1},
+            {"part": "ball", "order": 2, "amplitude": 4e-9, "element": 2, "phase": 0.7},
+        ],
+        "analysis": {"model": model, "revolutions": 4, "samples": 1024},
+    }
+    if model == "dynamic":
+        data["dynamics"] = {"mass": 0.02, "damping": 20.0}
+    return data
+
+
+def _set(path: str, value: Any) -> Callable[[Data], None]:
+    table, key = path.split(".")
+
+    def change(data: Data) -> None:
+        data.setdefault(table, {})[key] = value
+
+    return change
+
+
+def _add(table: str, entry: Data) -> Callable[[Data], None]:
+    def change(data: Data) -> None:
+        data.setdefault(table, []).append(entry)
+
+    return change
+
+
+def _roller(data: Data) -> None:
+    data["bearing"] = {
+        "type": "cylindrical_roller",
+        "elements": 14,
+        "element_diameter": 10e-3,
+        "inner_raceway_diameter": 54.991e-3,
+        "outer_raceway_diameter": 75.032e-3,
+    }
+    data["waviness"] = [w for w in data["waviness"] if w["part"] != "ball"]
+
+
+def _nominal(data: Data) -> None:
+    del data["bearing"]["radial_clearance"]
+    data["bearing"]["nominal_contact_angle"] = 0.4
+
+
+def _radial_load(data: Data) -> None:
+    data["operation"]["radial_load"] = 2.0
+
+
+def _no_patch(data: Data, model: str) -> None:
+    return None
+
+
+def _load_unless_it_is_refused(data: Data, model: str) -> None:
+    data["operation"]["radial_load"] = 2.0
+
+
+def _moment_for_equilibrium(data: Data, model: str) -> None:
+    if model == "equilibrium":
+        data["operation"]["moment_load"] = 0.01
+
+
+#: key -> (patch of the base for this key, the change of the key alone)
+CHANGES: dict[str, tuple[Callable[[Data, str], None], Callable[[Data], None]]] = {
+    'bearing.type = "cylindrical_roller"': (_no_patch, _roller),
+    "bearing.radial_clearance": (_no_patch, _set("bearing.radial_clearance", 14e-6)),
+    "bearing.nominal_contact_angle": (_no_patch, _nominal),
+    "bearing.contact_angle": (_no_patch, _set("bearing.contact_angle", 0.35)),
+    "bearing.inner_conformity, outer_conformity (or groove radii)": (
+        _no_patch,
+        _set("bearing.inner_conformity", 0.515),
+    ),
+    "material.youngs_modulus, poisson_ratio": (_no_patch, _set("material.youngs_modulus", 2e11)),
+    "material.density": (_no_patch, _set("material.density", 7000.0)),
+    "operation.rotating_ring": (_no_patch, _set("operation.rotating_ring", "outer")),
+    "operation.other_ring_speed": (_no_patch, _set("operation.other_ring_speed", 3.0)),
+    "operation.axial_load": (_no_patch, _set("operation.axial_load", 25.0)),
+    "operation.radial_load": (_no_patch, _radial_load),
+    "operation.radial_load_direction": (
+        _load_unless_it_is_refused,
+        _set("operation.radial_load_direction", -1.0),
+    ),
+    "operation.moment_load": (_no_patch, _set("operation.moment_load", 0.01)),
+    "operation.moment_load_direction": (
+        _moment_for_equilibrium,
+        _set("operation.moment_load_direction", 1.0),
+    ),
+    'waviness, waviness_spectrum, profile: part = "inner" / "outer"': (
+        _no_patch,
+        _add("waviness", {"part": "outer", "order": 7, "amplitude": 3e-9}),
+    ),
+    'waviness, waviness_spectrum, profile: part = "ball" / "roller"': (
+        _no_patch,
+        _add("waviness", {"part": "ball", "order": 2, "amplitude": 3e-9, "element": 3}),
+    ),
+    "slant": (_no_patch, lambda d: d.__setitem__("slant", {"amplitude": 5e-8})),
+    "elements.diameter_errors": (
+        _no_patch,
+        _set("elements.diameter_errors", [1e-7] + [0.0] * 7),
+    ),
+    "elements.pitch_errors": (_no_patch, _set("elements.pitch_errors", [0.0, 0.01] + [0.0] * 6)),
+    "elements.phase_frame": (_no_patch, _set("elements.phase_frame", "fixed")),
+    "analysis.revolutions, samples": (_no_patch, _set("analysis.revolutions", 3)),
+    "analysis.linear_variant": (_no_patch, _set("analysis.linear_variant", "force_balance")),
+    "analysis.race_control": (_no_patch, _set("analysis.race_control", "inner")),
+    "dynamics": (
+        _no_patch,
+        lambda d: d.__setitem__("dynamics", {"mass": 0.03, "damping": 20.0}),
+    ),
+}
+
+
+def test_every_key_has_a_change() -> None:
+    assert set(CHANGES) == {c.key for c in KEYS}
+    assert all(len(c.statuses) == len(MODELS) for c in KEYS)
+
+
+def _comparable(out: dict[str, Any]) -> str:
+    return json.dumps({k: v for k, v in out.items() if k not in ("notes", "title")}, default=str)
+
+
+CELLS = [(c.key, m) for c in KEYS for m in MODELS]
+
+
+@pytest.mark.parametrize(("key", "model"), CELLS, ids=[f"{m}|{k}" for k, m in CELLS])
+def test_matrix_cell_is_what_the_model_does(key: str, model: str) -> None:
+    convention = next(c for c in KEYS if c.key == key)
+    patch, change = CHANGES[key]
+    base = _base(model)
+    patch(base, model)
+    changed = copy.deepcopy(base)
+    change(changed)
+    status = convention.status(model)
+    case = parse_case(changed, "matrix.toml")
+    paths = convention.present(case.spec)
+    assert paths, "the change must set the key"
+    if status == "refused":
+        with pytest.raises(CaseError) as info:
+            run_model(case)
+        message = str(info.value)
+        assert "matrix.toml" in message
+        assert paths[0] in message
+        for other in honouring_models(convention):
+            assert f'"{other}"' in message
+        return
+    result = run_model(case)
+    if status == "not_applicable":
+        assert any(
+            note.startswith(f"{paths[0]}: not applied by the {model}") for note in result.notes
+        )
+        return
+    reference = run_model(parse_case(base, "matrix.toml"))
+    assert _comparable(result.to_json()) != _comparable(reference.to_json())
+
+
+def test_conventions_page_is_current() -> None:
+    # Regenerate with: python -m runout.conventions > docs/conventions.md
+    assert DOC.read_text(encoding="utf-8") == conventions_page()
