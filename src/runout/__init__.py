@@ -6,8 +6,12 @@ bearing and its operation (``bearing``), one module per model under ``runout.mod
 edges where units and files appear (``units``, ``case``, ``cli``).
 """
 
-from runout.bearing import BallBearing, Material, Operation, RollerBearing
-from runout.errors import CaseError, GeometryError, NumericalError, RunoutError
+from runout._cache import ensure_numba_cache
+
+ensure_numba_cache()  # before any kernel is compiled: a read-only install must still run
+
+from runout.bearing import BallBearing, Material, Operation, RollerBearing  # noqa: E402
+from runout.errors import CaseError, GeometryError, NumericalError, RunoutError  # noqa: E402
 
 __version__ = "0.1.0"
 

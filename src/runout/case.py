@@ -1,7 +1,7 @@
 """Case files: TOML in, validated frozen dataclasses out.
 
 A case file describes one bearing, how it runs, what is wrong with its parts and which analysis
-to run (the contract is in DESIGN.md; the key reference is generated from the schema below). A
+to run (docs/case-file.md, generated from the schema below, and docs/conventions.md). A
 number is SI; a string carries its unit and is parsed by :mod:`runout.units`.
 
 Every problem is reported as a :class:`runout.errors.CaseError` that names the file, the key
@@ -13,11 +13,13 @@ from __future__ import annotations
 
 import difflib
 import math
+import stat
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
+import numpy as np
 from pydantic import (
     BaseModel,
     BeforeValidator,
@@ -33,15 +35,38 @@ from runout.errors import CaseError, GeometryError
 from runout.imperfections import (
     Harmonics,
     Imperfections,
+    ProfileError,
     Slant,
     from_profile,
     read_profile_csv,
     single_harmonic,
     spectral_law,
 )
+from runout.limits import (
+    BYTES_PER_PROFILE_BYTE,
+    ENV_PROFILE_DIRS,
+    MAX_BINS,
+    MAX_CASE_FILE_BYTES,
+    MAX_ELEMENTS,
+    MAX_ENTRIES,
+    MAX_ORDER,
+    MAX_TOML_DEPTH,
+    Budget,
+    Estimate,
+    LimitError,
+    case_budget,
+    estimate_run,
+    estimate_study,
+    format_bytes,
+    harmonics_memory,
+    max_profile_bytes,
+    profile_allowed,
+)
+from runout.limits import check as check_estimate
 from runout.units import UnitError, to_si
 
 __all__ = [
+    "MAX_CONFORMITY",
     "MODEL_IDS",
     "Analysis",
     "Case",
@@ -50,6 +75,11 @@ __all__ = [
     "load_case",
     "parse_case",
 ]
+
+TWO_PI = 2.0 * math.pi
+#: Largest groove conformity f = r / D: a groove radius of a whole ball diameter is no longer
+#: a groove (deep-groove and angular-contact bearings have f = 0.505-0.6).
+MAX_CONFORMITY = 1.0
 
 MODEL_IDS = (
     "linear",
@@ -68,6 +98,7 @@ def _quantity(kind: str) -> BeforeValidator:
         except UnitError as exc:
             raise ValueError(str(exc)) from None
 
+    convert.kind = kind  # type: ignore[attr-defined]  # read by _field_kind (sweep ranges)
     return BeforeValidator(convert)
 
 
@@ -83,10 +114,20 @@ Speed = Annotated[float, _quantity("speed")]
 Unbalance = Annotated[float, _quantity("mass_length")]
 Plain = Annotated[float, _quantity("dimensionless")]
 MomentQ = Annotated[float, _quantity("moment")]
+MemoryQ = Annotated[float, _quantity("memory")]
+
+
+def _order_at_most(value: int, what: str = "order") -> None:
+    if value > MAX_ORDER:
+        raise ValueError(
+            f"{what} {value} exceeds the largest supported order {MAX_ORDER} (a wave of 10^6 "
+            "lobes is shorter than any contact ellipse, which filters it out)"
+        )
 
 
 class _Table(BaseModel):
-    model_config = ConfigDict(extra="forbid", frozen=True, strict=True)
+    # allow_inf_nan=False: TOML has inf and nan literals, and inf passes every "> 0" check
+    model_config = ConfigDict(extra="forbid", frozen=True, strict=True, allow_inf_nan=False)
 
 
 class BearingSpec(_Table):
@@ -95,7 +136,7 @@ class BearingSpec(_Table):
     type: Literal["ball", "cylindrical_roller"] = Field(
         "ball", description='"ball" (deep-groove or angular-contact) or "cylindrical_roller".'
     )
-    elements: int = Field(description="Number of balls or rollers Z (>= 3).")
+    elements: int = Field(description="Number of balls or rollers Z (3 to 10 000).")
     element_diameter: Length = Field(description="Ball or roller diameter [m].")
     pitch_diameter: Length | None = Field(
         None, description="Pitch diameter d_m [m] (ball bearings; rollers derive it)."
@@ -143,7 +184,12 @@ class BearingSpec(_Table):
     @classmethod
     def _elements(cls, value: object) -> object:
         if isinstance(value, bool) or not isinstance(value, int) or value < 3:
-            raise ValueError(f"must be an integer >= 3, got {value!r}")
+            raise ValueError(f"must be an integer >= 3, got {_Short(value)!r}")
+        if value > MAX_ELEMENTS:
+            raise ValueError(
+                f"must be at most {MAX_ELEMENTS} (the largest slewing bearings have a few "
+                f"hundred), got {value}"
+            )
         return value
 
     @model_validator(mode="after")
@@ -203,7 +249,14 @@ class OperationSpec(_Table):
     rotating_ring: Literal["inner", "outer"] = Field(
         "inner", description="Ring whose revolutions define orders."
     )
-    speed: Speed = Field(0.0, description="Speed of the rotating ring [Hz] (e.g. '1800 rpm').")
+    speed: Speed = Field(
+        0.0,
+        description=(
+            "Speed of the rotating ring [Hz] (e.g. '1800 rpm'), >= 0: the sense of rotation is "
+            "not a sign; rotating_ring names the ring and other_ring_speed is signed relative "
+            "to it."
+        ),
+    )
     other_ring_speed: Speed = Field(
         0.0, description="Speed of the other ring [Hz], signed relative to speed."
     )
@@ -226,6 +279,20 @@ class OperationSpec(_Table):
             raise ValueError(f"must be >= 0, got {value!r} N")
         return value
 
+    @field_validator("speed")
+    @classmethod
+    def _unsigned_speed(cls, value: float) -> float:
+        # One meaning of a speed in every model: its size. The sense of rotation is set by
+        # rotating_ring (and the sign of other_ring_speed relative to it), never by a sign
+        # here, which two models used to drop and the others refused.
+        if value < 0.0:
+            raise ValueError(
+                f"must be >= 0, got {value!r} Hz: the sense of rotation is not a sign of the "
+                "speed; name the turning ring with rotating_ring (other_ring_speed is signed "
+                "relative to it)"
+            )
+        return value
+
 
 Part = Literal["inner", "outer", "ball", "roller"]
 
@@ -241,6 +308,12 @@ class WavinessSpec(_Table):
     element: int | None = Field(
         None, ge=1, description="Ball/roller number (1-based); omitted: every element."
     )
+
+    @field_validator("order")
+    @classmethod
+    def _bounded_order(cls, value: int) -> int:
+        _order_at_most(value)
+        return value
 
     @model_validator(mode="after")
     def _one_amplitude(self) -> WavinessSpec:
@@ -262,6 +335,7 @@ class WavinessSpectrumSpec(_Table):
     )
     seed: int | None = Field(
         None,
+        ge=0,
         description='Seed of the random phases (phase = "random" only; default 0, reproducible).',
     )
     element: int | None = Field(None, ge=1, description="Ball/roller number (1-based).")
@@ -283,6 +357,10 @@ class WavinessSpectrumSpec(_Table):
             raise _KeyedError(
                 "orders", f"must be [first, last] with 0 <= first <= last, got {list(self.orders)}"
             )
+        try:
+            _order_at_most(last, "last order")
+        except ValueError as exc:
+            raise _KeyedError("orders", str(exc)) from None
         if first == 0 and self.exponent < 0:
             raise _KeyedError("orders", "order 0 with a negative exponent is infinite")
         if self.seed is not None and self.phase != "random":
@@ -298,7 +376,12 @@ class ProfileSpec(_Table):
     """``[[profile]]``: a measured roundness profile (CSV of angle, deviation)."""
 
     part: Part = Field(description='"inner", "outer", "ball" or "roller".')
-    file: str = Field(description="CSV path, relative to the case file.")
+    file: str = Field(
+        description=(
+            "CSV path, relative to the case file; a regular file inside the case file's "
+            "directory (or one named by RUNOUT_PROFILE_DIRS), within the memory budget."
+        )
+    )
     angle_unit: Literal["deg", "rad"] = Field("deg", description="Unit of the angle column.")
     deviation_unit: str = Field("um", description="Unit of the deviation column (e.g. 'um').")
     orders: tuple[int, int] = Field(description="Orders kept [first, last].", strict=False)
@@ -311,6 +394,10 @@ class ProfileSpec(_Table):
             raise _KeyedError(
                 "orders", f"must be [first, last] with 0 <= first <= last, got {list(self.orders)}"
             )
+        try:
+            _order_at_most(last, "last order")
+        except ValueError as exc:
+            raise _KeyedError("orders", str(exc)) from None
         try:
             to_si(f"1 {self.deviation_unit}", "length")
         except UnitError:
@@ -370,9 +457,25 @@ class AnalysisSpec(_Table):
         "equilibrium",
         "dynamic",
         "roller_constraint",
-    ] = Field("quasi_static_3d", description="Model id (see DESIGN.md).")
+    ] = Field(
+        "quasi_static_3d", description="Model id (docs/conventions.md: which keys each honours)."
+    )
     revolutions: float = Field(20.0, gt=0, description="Revolutions of the rotating ring.")
     samples: int = Field(4096, ge=16, description="Number of instants.")
+    max_memory: MemoryQ | None = Field(
+        None,
+        description=(
+            'Memory budget of a run or study [bytes] (e.g. "8 GiB"); default RUNOUT_MAX_MEMORY, '
+            "else 2 GiB. A case whose estimate exceeds it is refused before any work."
+        ),
+    )
+    max_time: Time | None = Field(
+        None,
+        description=(
+            'Time budget of a run or study [s] (e.g. "1 h"); default RUNOUT_MAX_TIME, else '
+            "2 min of estimated computing. A case whose estimate exceeds it is refused."
+        ),
+    )
     linear_variant: Literal["radial_spring", "force_balance"] = Field(
         "radial_spring",
         description=(
@@ -394,8 +497,8 @@ class DynamicsSpec(_Table):
     """``[dynamics]``: rotor for model = "dynamic"."""
 
     mass: Mass = Field(description="Rotor mass carried by the bearing [kg].")
-    damping: Damping = Field(0.0, description="Viscous damping [N s/m].")
-    unbalance: Unbalance = Field(0.0, description="Unbalance m e [kg m].")
+    damping: Damping = Field(0.0, description="Viscous damping [N s/m] (>= 0).")
+    unbalance: Unbalance = Field(0.0, description="Unbalance m e [kg m] (>= 0).")
     time_step: Time | None = Field(None, description="Integration step [s]; default automatic.")
     axial_dof: bool = Field(
         False,
@@ -417,6 +520,21 @@ class DynamicsSpec(_Table):
     def _positive_mass(cls, value: float) -> float:
         if value <= 0:
             raise ValueError(f"must be > 0, got {value!r} kg")
+        return value
+
+    @field_validator("damping", "unbalance")
+    @classmethod
+    def _non_negative(cls, value: float) -> float:
+        # a negative damping feeds energy in: the run ended in "the rotor left the bearing"
+        if value < 0:
+            raise ValueError(f"must be >= 0, got {value!r}")
+        return value
+
+    @field_validator("time_step")
+    @classmethod
+    def _positive_step(cls, value: float | None) -> float | None:
+        if value is not None and not value > 0:
+            raise ValueError(f"must be > 0, got {value!r} s")
         return value
 
 
@@ -557,7 +675,9 @@ class StudySpec(_Table):
             "Model ids to run (sweeps: one or several; Monte Carlo: one); default analysis.model."
         ),
     )
-    bins: int = Field(20, ge=1, description="Histogram bins of the Monte Carlo summary.")
+    bins: int = Field(
+        20, ge=1, le=MAX_BINS, description="Histogram bins of the Monte Carlo summary."
+    )
     vary: dict[str, VarySpec | RawQuantity] = Field(
         default_factory=dict,
         description=(
@@ -660,6 +780,18 @@ class CaseSpec(_Table):
     dynamics: DynamicsSpec | None = None
     study: StudySpec | None = None
 
+    @field_validator("waviness", "waviness_spectrum", "profile", mode="before")
+    @classmethod
+    def _few_entries(cls, value: object) -> object:
+        # each entry is added to the parts one at a time (quadratic in the number of entries):
+        # many harmonics belong in one spectrum or profile, not in thousands of entries
+        if isinstance(value, list) and len(value) > MAX_ENTRIES:
+            raise ValueError(
+                f"has {len(value)} entries, at most {MAX_ENTRIES}: give many orders as one "
+                "[[waviness_spectrum]] or [[profile]]"
+            )
+        return value
+
 
 class _KeyedError(ValueError):
     """A model-validator error that belongs to one key of the table."""
@@ -725,10 +857,25 @@ def _format_loc(loc: tuple[int | str, ...]) -> str:
     return text
 
 
+#: Longest echo of a value in an error message: the line stays one readable line.
+_ECHO_CHARS = 60
+
+
+class _Short:
+    """A value whose repr is cut to :data:`_ECHO_CHARS` characters."""
+
+    def __init__(self, value: object) -> None:
+        self.value = value
+
+    def __repr__(self) -> str:
+        text = repr(self.value)
+        return text if len(text) <= _ECHO_CHARS else text[: _ECHO_CHARS - 3] + "..."
+
+
 def _describe(error: Any) -> tuple[str, str]:
     loc = tuple(error["loc"])
     kind = error["type"]
-    given = error.get("input")
+    given = _Short(error.get("input"))
     ctx = error.get("ctx") or {}
     if kind == "extra_forbidden":
         key = str(loc[-1])
@@ -760,6 +907,12 @@ def _describe(error: Any) -> tuple[str, str]:
         return _format_loc(loc), f"must be >= {ctx.get('ge')}, got {given!r}"
     if kind == "greater_than":
         return _format_loc(loc), f"must be > {ctx.get('gt')}, got {given!r}"
+    if kind == "less_than_equal":
+        return _format_loc(loc), f"must be <= {ctx.get('le')}, got {given!r}"
+    if kind == "finite_number":
+        return _format_loc(loc), f"must be a finite number, got {given!r}"
+    if kind in ("recursion_loop",):
+        return _format_loc(loc), "is nested too deeply"
     return _format_loc(loc), error["msg"]
 
 
@@ -856,6 +1009,19 @@ def _build_bearing(spec: CaseSpec) -> Bearing:
         f_o = b.outer_groove_radius / b.element_diameter
     f_i = 0.52 if f_i is None else f_i
     f_o = 0.53 if f_o is None else f_o
+    for side, f in (("inner", f_i), ("outer", f_o)):
+        if f >= MAX_CONFORMITY:
+            given = (
+                f"{side}_groove_radius"
+                if getattr(b, f"{side}_groove_radius") is not None
+                else f"{side}_conformity"
+            )
+            raise GeometryError(
+                f"bearing.{given}",
+                f"conformity f = {f:.6g} is not below {MAX_CONFORMITY:g}: a groove radius of a "
+                "whole ball diameter or more is no groove (deep-groove and angular-contact "
+                "bearings have f = 0.505-0.6)",
+            )
     clearance = b.radial_clearance
     if b.nominal_contact_angle is not None:
         clearance = _clearance_of_nominal_angle(
@@ -901,8 +1067,178 @@ def _element_part_ok(bearing: Bearing, part: str) -> bool:
     )
 
 
-def _build_imperfections(spec: CaseSpec, bearing: Bearing, base_dir: Path) -> Imperfections:
+def harmonic_counts(spec: CaseSpec, z: int) -> list[tuple[str, int]]:
+    """(key, number of harmonics it creates) of every waviness entry, before any is built.
+
+    An element entry without an element number counts once per element (it is copied onto
+    each); the key is the one to change (``"waviness_spectrum[2].orders"``).
+    """
+    counts: list[tuple[str, int]] = []
+    tables: list[tuple[str, list[Any]]] = [
+        ("waviness", list(spec.waviness)),
+        ("waviness_spectrum", list(spec.waviness_spectrum)),
+        ("profile", list(spec.profile)),
+    ]
+    for table, entries in tables:
+        for i, entry in enumerate(entries, start=1):
+            per = 1 if table == "waviness" else entry.orders[1] - entry.orders[0] + 1
+            # an element entry without an element number is copied onto every element
+            copies = z if entry.part in ("ball", "roller") and entry.element is None else 1
+            key = f"{table}[{i}].order" if table == "waviness" else f"{table}[{i}].orders"
+            counts.append((key, per * copies))
+    return counts
+
+
+def _check_harmonics_budget(spec: CaseSpec, z: int, limits: Budget) -> None:
+    """Refuse, before building any, more harmonics than the memory budget holds."""
+    counts = harmonic_counts(spec, z)
+    total = sum(n for _, n in counts)
+    if not counts:
+        return
+    key = max(counts, key=lambda c: c[1])[0]
+    memory = harmonics_memory(total)
+    check_estimate(
+        Estimate(memory, 0.0, key, key, f"{total} harmonics", f"{total} harmonics"), limits
+    )
+
+
+def _radius_bound(bearing: Bearing, part: str) -> tuple[float, str]:
+    """Radius [m] a part's radius deviation must stay below, and the part in words."""
+    if part in ("ball", "roller"):
+        return 0.5 * bearing.element_diameter, f"the {part} radius"
+    if part == "inner":
+        return 0.5 * bearing.inner_raceway_diameter, "the inner raceway radius"
+    return 0.5 * bearing.outer_raceway_diameter, "the outer raceway radius"
+
+
+def _check_amplitude_exists(key: str, part: str, harmonics: Harmonics, bearing: Bearing) -> None:
+    """A radius deviation whose peaks reach the part's own radius describes no real part."""
+    peak = float(np.sum(harmonics.amplitudes)) if len(harmonics) else 0.0
+    radius, words = _radius_bound(bearing, part)
+    if peak >= radius:
+        raise _CaseKeyError(
+            key,
+            f"the deviation reaches {peak * 1e3:.6g} mm, not less than {words} "
+            f"{radius * 1e3:.6g} mm: no such part can exist",
+        )
+
+
+def _check_element_errors(bearing: Bearing, imp: Imperfections) -> None:
+    """Diameter and pitch errors of elements that could not be assembled.
+
+    * a diameter D + Δd_j <= 0 is no element;
+    * a ball smaller than the others by more than 2A - P_d has more play than the groove
+      depth it sits in (the radial_clearance rule for the whole set, per ball);
+    * neighbouring elements, with their pitch and diameter errors, must not overlap on the
+      pitch circle (and must stay in their order).
+    Too large a ball (interference) is judged by the Hertz checks of the models.
+    """
+    d = bearing.element_diameter
+    errors = np.asarray(imp.diameter_errors, dtype=np.float64)
+    word = "ball" if isinstance(bearing, BallBearing) else "roller"
+    for j, err in enumerate(errors):
+        key = f"elements.diameter_errors[{j + 1}]"
+        if d + err <= 0.0:
+            raise _CaseKeyError(
+                key,
+                f"{err * 1e3:.6g} mm on a {d * 1e3:.6g} mm {word} leaves a diameter of "
+                f"{(d + err) * 1e3:.6g} mm: no such {word} exists",
+            )
+        if isinstance(bearing, BallBearing):
+            play = bearing.radial_clearance - err
+            limit = 2.0 * bearing.curvature_distance
+            if play >= limit:
+                raise _CaseKeyError(
+                    key,
+                    f"a ball {-err * 1e6:.6g} um smaller than nominal has a diametral play of "
+                    f"{play * 1e6:.6g} um, beyond twice the groove-centre distance "
+                    f"2A = {limit * 1e6:.6g} um: it would leave the grooves",
+                )
+    pitch = np.asarray(imp.pitch_errors, dtype=np.float64)
+    if not (pitch.any() or errors.any()):
+        return
+    z = errors.size
+    radius = 0.5 * bearing.pitch_diameter
+    for j in range(z):
+        nxt = (j + 1) % z
+        gap_angle = TWO_PI / z + pitch[nxt] - pitch[j]
+        key = "elements.pitch_errors" if pitch.any() else "elements.diameter_errors"
+        key += f"[{nxt + 1}]"
+        if not 0.0 < gap_angle < math.pi:
+            raise _CaseKeyError(
+                key,
+                f"the pitch errors put {word} {nxt + 1} {math.degrees(gap_angle):.4g} deg from "
+                f"{word} {j + 1}: the {word}s would pass through each other",
+            )
+        spacing = 2.0 * radius * math.sin(0.5 * gap_angle)
+        needed = 0.5 * (2.0 * d + errors[j] + errors[nxt])
+        if spacing < needed:
+            raise _CaseKeyError(
+                key,
+                f"{word}s {j + 1} and {nxt + 1} overlap on the pitch circle (centre spacing "
+                f"{spacing * 1e3:.6g} mm < {needed * 1e3:.6g} mm)",
+            )
+
+
+def _read_profile(p: ProfileSpec, key: str, base_dir: Path, limits: Budget) -> Harmonics:
+    """Harmonics of a ``[[profile]]`` entry, read within the budget and the case's directory.
+
+    Only a regular file inside the case file's directory (or a directory named by
+    RUNOUT_PROFILE_DIRS) is opened: /dev/zero, a FIFO or ../../etc/passwd never are. Errors name
+    the file and the line, never echo its contents.
+    """
+    path = base_dir / p.file
+    if not profile_allowed(path, base_dir):
+        raise _CaseKeyError(
+            f"{key}.file",
+            f'"{p.file}" lies outside the case file\'s directory; copy the profile next to the '
+            f"case, or name its directory in {ENV_PROFILE_DIRS}",
+        )
+    try:
+        info = path.stat()
+    except FileNotFoundError:
+        raise _CaseKeyError(f"{key}.file", f'"{p.file}": no such file') from None
+    except OSError as exc:
+        raise _CaseKeyError(
+            f"{key}.file", f'"{p.file}" cannot be read ({exc.strerror or exc})'
+        ) from None
+    if not stat.S_ISREG(info.st_mode):
+        raise _CaseKeyError(
+            f"{key}.file",
+            f'"{p.file}" is not a regular file (a device, FIFO or directory is not a profile)',
+        )
+    largest = max_profile_bytes(limits)
+    if info.st_size > largest:
+        raise LimitError(
+            f"{key}.file",
+            f'"{p.file}" is {format_bytes(info.st_size)}; reading it would need about '
+            f"{format_bytes(info.st_size * BYTES_PER_PROFILE_BYTE)} of memory (profiles up to "
+            f"{format_bytes(largest)}); resample the profile {limits.raise_hint('memory')}",
+        )
+    try:
+        angles, deviations = read_profile_csv(
+            path,
+            angle_unit=p.angle_unit,
+            deviation_scale=to_si(f"1 {p.deviation_unit}", "length"),
+            max_bytes=largest,
+        )
+        harmonics = from_profile(angles, deviations, orders=p.orders)
+    except ProfileError as exc:
+        message = exc.message
+        field_name = "orders" if "order" in message and exc.line is None else "file"
+        where = f'"{p.file}"' if exc.line is None else f'"{p.file}" line {exc.line}'
+        raise _CaseKeyError(f"{key}.{field_name}", f"{where}: {message}") from None
+    except (OSError, ValueError) as exc:
+        raise _CaseKeyError(f"{key}.file", f'"{p.file}": {exc}') from None
+    return harmonics
+
+
+def _build_imperfections(
+    spec: CaseSpec, bearing: Bearing, base_dir: Path, limits: Budget | None = None
+) -> Imperfections:
     z = bearing.n_elements
+    limits = case_budget(spec) if limits is None else limits
+    _check_harmonics_budget(spec, z, limits)
     imp = Imperfections.perfect(z)
 
     def target(part: str) -> str:
@@ -916,6 +1252,11 @@ def _build_imperfections(spec: CaseSpec, bearing: Bearing, base_dir: Path) -> Im
         if element is not None and element > z:
             raise _CaseKeyError(f"{key}.element", f"must be <= {z} (the number of elements)")
 
+    def keyed(key: str, exc: GeometryError) -> _CaseKeyError:
+        # the builders name the table without its index ("waviness.order"): add it
+        field_name = exc.key.rsplit(".", 1)[-1] if "." in exc.key else ""
+        return _CaseKeyError(f"{key}.{field_name}" if field_name else key, exc.message)
+
     for i, w in enumerate(spec.waviness, start=1):
         key = f"waviness[{i}]"
         check(key, w.part, w.element)
@@ -924,56 +1265,61 @@ def _build_imperfections(spec: CaseSpec, bearing: Bearing, base_dir: Path) -> Im
             raise _CaseKeyError(
                 f"{key}.order", "order 0 of a raceway is a size change; use the raceway diameter"
             )
-        harmonics = single_harmonic(w.order, amplitude, w.phase)
+        try:
+            harmonics = single_harmonic(w.order, amplitude, w.phase)
+        except GeometryError as exc:
+            raise keyed(key, exc) from None
+        amp_key = f"{key}.amplitude" if w.amplitude is not None else f"{key}.peak_to_peak"
+        _check_amplitude_exists(amp_key, w.part, harmonics, bearing)
         imp = imp.add(target(w.part), harmonics, element=w.element)
     for i, s in enumerate(spec.waviness_spectrum, start=1):
         key = f"waviness_spectrum[{i}]"
         check(key, s.part, s.element)
         amplitude = s.amplitude if s.amplitude is not None else 0.5 * (s.peak_to_peak or 0.0)
+        amp_key = f"{key}.amplitude" if s.amplitude is not None else f"{key}.peak_to_peak"
         phase: float | str = s.phase
         seed = (0 if s.seed is None else s.seed) if phase == "random" else None
         harmonics_list: list[Harmonics]
         try:
             if s.element is None and s.part in ("ball", "roller") and phase == "random":
                 # Every element gets its own random phases, drawn from one seeded generator.
-                import numpy as np
-
                 rng = np.random.default_rng(seed)
                 harmonics_list = [
                     spectral_law(s.orders, amplitude, s.exponent, phase="random", rng=rng)
                     for _ in range(z)
                 ]
+                _check_amplitude_exists(amp_key, s.part, harmonics_list[0], bearing)
                 for j, h in enumerate(harmonics_list, start=1):
                     imp = imp.add("element", h, element=j)
                 continue
             harmonics = spectral_law(s.orders, amplitude, s.exponent, phase=phase, seed=seed)
         except GeometryError as exc:
-            # The law's own checks name the table without its index: add it.
-            field_name = exc.key.rsplit(".", 1)[-1] if "." in exc.key else ""
-            raise _CaseKeyError(f"{key}.{field_name}" if field_name else key, exc.message) from None
+            raise keyed(key, exc) from None
+        _check_amplitude_exists(amp_key, s.part, harmonics, bearing)
         imp = imp.add(target(s.part), harmonics, element=s.element)
     for i, p in enumerate(spec.profile, start=1):
         key = f"profile[{i}]"
         check(key, p.part, p.element)
-        path = (base_dir / p.file).resolve()
-        try:
-            angles, deviations = read_profile_csv(
-                path,
-                angle_unit=p.angle_unit,
-                deviation_scale=to_si(f"1 {p.deviation_unit}", "length"),
-            )
-            harmonics = from_profile(angles, deviations, orders=p.orders)
-        except (OSError, ValueError) as exc:
-            raise _CaseKeyError(f"{key}.file", str(exc)) from None
+        harmonics = _read_profile(p, key, base_dir, limits)
+        _check_amplitude_exists(f"{key}.file", p.part, harmonics, bearing)
         imp = imp.add(target(p.part), harmonics, element=p.element)
     if spec.slant is not None:
         if not isinstance(bearing, BallBearing):
             raise _CaseKeyError("slant", "applies to ball bearings only")
-        if spec.slant.amplitude is not None:
-            slant = Slant(amplitude=spec.slant.amplitude, phase=spec.slant.phase)
-        else:
-            assert spec.slant.angle is not None
-            slant = Slant.from_angle(spec.slant.angle, bearing, phase=spec.slant.phase)
+        try:
+            if spec.slant.amplitude is not None:
+                slant = Slant(amplitude=spec.slant.amplitude, phase=spec.slant.phase)
+            else:
+                assert spec.slant.angle is not None
+                slant = Slant.from_angle(spec.slant.angle, bearing, phase=spec.slant.phase)
+        except GeometryError as exc:
+            raise keyed("slant", exc) from None
+        if not slant.amplitude < 0.5 * bearing.inner_raceway_diameter:
+            raise _CaseKeyError(
+                "slant.amplitude" if spec.slant.amplitude is not None else "slant.angle",
+                f"a slant of {slant.amplitude * 1e3:.6g} mm is not less than the inner raceway "
+                f"radius {0.5e3 * bearing.inner_raceway_diameter:.6g} mm",
+            )
         imp = imp.with_slant(slant)
     if spec.elements is not None:
         for name in ("diameter_errors", "pitch_errors"):
@@ -985,6 +1331,7 @@ def _build_imperfections(spec: CaseSpec, bearing: Bearing, base_dir: Path) -> Im
                     f"elements.{name}", f"has {len(values)} entries; the bearing has {z} elements"
                 )
             imp = imp.with_element_errors(**{name: values})
+        _check_element_errors(bearing, imp)
         if spec.elements.phase_frame == "fixed":
             imp = imp.element_phases_from_fixed_frame()
     return imp
@@ -997,6 +1344,80 @@ class _CaseKeyError(Exception):
         super().__init__(f"{key}: {message}")
 
 
+def _depth(value: object, limit: int) -> int:
+    """Nesting depth of tables and arrays, counted up to ``limit + 1`` (no recursion)."""
+    stack: list[tuple[object, int]] = [(value, 0)]
+    deepest = 0
+    while stack:
+        node, depth = stack.pop()
+        deepest = max(deepest, depth)
+        if deepest > limit:
+            return deepest
+        if isinstance(node, dict):
+            stack.extend((v, depth + 1) for v in node.values())
+        elif isinstance(node, list):
+            stack.extend((v, depth + 1) for v in node)
+    return deepest
+
+
+def _field_kind(table: str, name: str) -> str | None:
+    """Unit kind (:data:`runout.units.KINDS`) of a case key, None when it is not a quantity."""
+    model = (
+        _table_type(CaseSpec.model_fields[table].annotation)
+        if table in CaseSpec.model_fields
+        else None
+    )
+    info = getattr(model, "model_fields", {}).get(name)
+    for meta in getattr(info, "metadata", ()):
+        kind = getattr(getattr(meta, "func", None), "kind", None)
+        if kind is not None:
+            return str(kind)
+    return None
+
+
+def sweep_count(spec: CaseSpec, key: str, entry: VarySpec | RawQuantity) -> int:
+    """Number of values of one ``[study.vary]`` sweep entry, computed without listing them.
+
+    ``num`` is the count; a range by ``step`` has ``floor((stop - start) / step) + 1`` values,
+    with start, stop and step read in the unit kind of the key they sweep.
+
+    Raises
+    ------
+    CaseError
+        Not here: unreadable values are left to the study, which names them; 1 is returned.
+    """
+    if not isinstance(entry, VarySpec):
+        return 1
+    if entry.values is not None:
+        return max(1, len(entry.values))
+    if entry.num is not None:
+        return int(entry.num)
+    if entry.step is None or entry.start is None or entry.stop is None:
+        return 1
+    try:
+        table, _, name = parse_vary_key(key)
+        kind = _field_kind(table, name) or "dimensionless"
+        start, stop = to_si(entry.start, kind), to_si(entry.stop, kind)
+        step = to_si(entry.step, kind)
+    except (UnitError, ValueError, KeyError):
+        return 1
+    if step == 0.0 or (stop - start) * step < 0.0:
+        return 1
+    count = math.floor((stop - start) / step + 1e-9) + 1
+    return max(1, count) if math.isfinite(count) else 2**62
+
+
+def _check_limits(case: Case) -> None:
+    """Refuse a case whose run (or study) would exceed the budget, before any work."""
+    limits = case_budget(case)
+    per_run = estimate_run(case, case.analysis.model)
+    if case.study is not None:
+        models = list(case.study.models) if case.study.models else [case.analysis.model]
+        per_run = max((estimate_run(case, m) for m in models), key=lambda e: (e.seconds, e.memory))
+        check_estimate(estimate_study(case, per_run), limits)
+    check_estimate(per_run, limits)
+
+
 def parse_case(data: dict[str, Any], path: str = "<case>", base_dir: Path | None = None) -> Case:
     """Validate a parsed TOML document and build the domain objects.
 
@@ -1007,18 +1428,26 @@ def parse_case(data: dict[str, Any], path: str = "<case>", base_dir: Path | None
     path : str
         File name used in error messages.
     base_dir : Path or None
-        Directory that relative file references (profiles) are resolved against.
+        Directory that relative file references (profiles) are resolved against, and the only
+        one profiles may come from (with those of RUNOUT_PROFILE_DIRS).
 
     Raises
     ------
     CaseError
-        Naming ``path``, the key path and the problem.
+        Naming ``path``, the key path and the problem; also for a case whose estimated memory
+        or time exceeds the budget (:mod:`runout.limits`).
     """
+    if _depth(data, MAX_TOML_DEPTH) > MAX_TOML_DEPTH:
+        raise CaseError(path, "", f"tables and arrays are nested deeper than {MAX_TOML_DEPTH}")
     try:
         spec = CaseSpec.model_validate(data)
     except ValidationError as exc:
         key, message = first_validation_error(exc)
         raise CaseError(path, key, message) from None
+    try:
+        limits = case_budget(spec)
+    except GeometryError as exc:
+        raise CaseError(path, exc.key, exc.message) from None
     try:
         bearing = _build_bearing(spec)
     except GeometryError as exc:
@@ -1037,10 +1466,12 @@ def parse_case(data: dict[str, Any], path: str = "<case>", base_dir: Path | None
     except GeometryError as exc:
         raise CaseError(path, exc.key, exc.message) from None
     try:
-        imperfections = _build_imperfections(spec, bearing, base_dir or Path.cwd())
+        imperfections = _build_imperfections(spec, bearing, base_dir or Path.cwd(), limits)
     except _CaseKeyError as exc:
         raise CaseError(path, exc.key, exc.message) from None
-    except (GeometryError, ValueError) as exc:
+    except GeometryError as exc:
+        raise CaseError(path, exc.key, exc.message) from None
+    except ValueError as exc:
         raise CaseError(path, "", str(exc)) from None
     analysis = Analysis(
         model=spec.analysis.model,
@@ -1049,7 +1480,7 @@ def parse_case(data: dict[str, Any], path: str = "<case>", base_dir: Path | None
         linear_variant=spec.analysis.linear_variant,
         race_control=spec.analysis.race_control,
     )
-    return Case(
+    case = Case(
         path=path,
         title=spec.title,
         bearing=bearing,
@@ -1058,10 +1489,19 @@ def parse_case(data: dict[str, Any], path: str = "<case>", base_dir: Path | None
         analysis=analysis,
         spec=spec,
     )
+    try:
+        _check_limits(case)
+    except GeometryError as exc:
+        raise CaseError(path, exc.key, exc.message) from None
+    return case
 
 
 def load_case(path: str | Path) -> Case:
     """Read and validate a TOML case file.
+
+    Only a regular file of at most :data:`runout.limits.MAX_CASE_FILE_BYTES` is read (a FIFO
+    or /dev/zero is refused before it is opened for reading); a UTF-8 byte-order mark is
+    allowed.
 
     Parameters
     ----------
@@ -1080,15 +1520,42 @@ def load_case(path: str | Path) -> Case:
     p = Path(path)
     name = str(path)
     try:
-        text = p.read_text(encoding="utf-8")
+        info = p.stat()
     except FileNotFoundError:
         raise CaseError(name, "", "no such file") from None
-    except IsADirectoryError:
-        raise CaseError(name, "", "is a directory, not a case file") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise CaseError(name, "", f"cannot be read ({exc})") from None
+    except OSError as exc:
+        raise CaseError(name, "", f"cannot be read ({exc.strerror or exc})") from None
+    if stat.S_ISDIR(info.st_mode):
+        raise CaseError(name, "", "is a directory, not a case file")
+    if not stat.S_ISREG(info.st_mode):
+        raise CaseError(name, "", "is not a regular file (a device or FIFO is not a case file)")
+    if info.st_size > MAX_CASE_FILE_BYTES:
+        raise CaseError(
+            name,
+            "",
+            f"is {format_bytes(info.st_size)}; a case file is at most "
+            f"{format_bytes(MAX_CASE_FILE_BYTES)} (put measured data in [[profile]] files)",
+        )
+    try:
+        with p.open("rb") as handle:
+            raw = handle.read(MAX_CASE_FILE_BYTES + 1)
+    except OSError as exc:
+        raise CaseError(name, "", f"cannot be read ({exc.strerror or exc})") from None
+    if len(raw) > MAX_CASE_FILE_BYTES:
+        raise CaseError(name, "", f"is larger than {format_bytes(MAX_CASE_FILE_BYTES)}")
+    try:
+        # utf-8-sig: editors on Windows start files with a byte-order mark
+        text = raw.decode("utf-8-sig")
+    except UnicodeDecodeError as exc:
+        raise CaseError(
+            name, "", f"is not UTF-8 text (byte {exc.start + 1} cannot be decoded)"
+        ) from None
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise CaseError(name, "", f"is not valid TOML: {exc}") from None
+    except RecursionError:
+        raise CaseError(
+            name, "", f"is not valid TOML: nested deeper than {MAX_TOML_DEPTH} levels"
+        ) from None
     return parse_case(data, name, p.parent)

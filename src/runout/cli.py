@@ -1,6 +1,14 @@
 """The ``runout`` command-line tool.
 
-Bad input ends with one clear line on stderr and exit status 2, never a traceback.
+Bad input ends with one clear line on stderr, ``error: FILE: key.path: problem``, and exit
+status 2, never a traceback. Warnings raised while a command runs (a poorly resolved profile,
+a numerical overflow) are collected and printed as one ``warning:`` line after it, without the
+source paths Python's warnings module would print. A failure that is not runout's own (a bug)
+is one ``error:`` line too, with exit status 70; ``RUNOUT_DEBUG=1`` shows its traceback.
+
+Output meant for scripts does not depend on the terminal: JSON is written as is, one-line
+messages are never wrapped, and tables written to a pipe or a file are laid out for a fixed
+width (:data:`PIPE_WIDTH`), whatever the terminal or ``COLUMNS``.
 """
 
 from __future__ import annotations
@@ -8,18 +16,21 @@ from __future__ import annotations
 import functools
 import json
 import math
+import os
 import sys
+import warnings
 from collections.abc import Callable
 from pathlib import Path
 from typing import Annotated, Any, TypeVar
 
+import click
 import typer
 from rich.console import Console
 from rich.markup import escape
 from rich.table import Table
 
 from runout import __version__
-from runout.errors import RunoutError
+from runout.errors import GeometryError, NumericalError, RunoutError
 
 app = typer.Typer(
     name="runout",
@@ -42,23 +53,113 @@ CaseArg = Annotated[
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON object on stdout.")]
 
 
-def _fail(message: str) -> None:
-    _err.print(f"[bold red]error:[/] {escape(message)}", highlight=False, soft_wrap=True)
-    raise typer.Exit(2)
+#: Width of tables written to a pipe or a file (not to a terminal).
+PIPE_WIDTH = 200
+#: Exit status of a failure that is a bug, not bad input (sysexits' EX_SOFTWARE).
+EXIT_INTERNAL = 70
+
+
+#: The command-line framework's own exits and usage errors (typer vendors click: both kinds).
+_CLI_EXITS = (
+    typer.Exit,
+    typer.Abort,
+    typer.exceptions.TyperException,
+    click.exceptions.Exit,
+    click.ClickException,
+    click.Abort,
+)
+
+
+#: Warning categories that are about the case and reach the user as one ``warning:`` line.
+_CASE_WARNINGS = (RuntimeWarning, UserWarning)
+
+
+def _one_line(text: str) -> str:
+    """``text`` on one line: control characters (a newline in a quoted TOML key) escaped."""
+    return "".join(ch if ch.isprintable() else repr(ch)[1:-1] for ch in text)
+
+
+def _fail(message: str, status: int = 2) -> None:
+    # emoji=False: ":x:" in a value or a file's line is text, not an emoji
+    _err.print(
+        f"[bold red]error:[/] {escape(_one_line(message))}",
+        highlight=False,
+        soft_wrap=True,
+        emoji=False,
+    )
+    raise typer.Exit(status)
+
+
+def _warn(file: object, messages: list[str]) -> None:
+    """One ``warning:`` line on stderr for all of ``messages`` (nothing when empty)."""
+    unique = list(dict.fromkeys(m for m in messages if m))
+    if not unique:
+        return
+    where = f"{file}: " if file is not None else ""
+    text = "; ".join(unique[:5]) + (f" (and {len(unique) - 5} more)" if len(unique) > 5 else "")
+    _err.print(
+        f"[bold yellow]warning:[/] {escape(_one_line(where + text))}",
+        highlight=False,
+        soft_wrap=True,
+        emoji=False,
+    )
+
+
+def _named(message: str, file: object) -> str:
+    """``message`` starting with the case file, once."""
+    if file is None or message.startswith(f"{file}:"):
+        return message
+    return f"{file}: {message}"
 
 
 def _guard(fn: F) -> F:
-    """Turn runout's own errors into one line on stderr and exit status 2."""
+    """One line on stderr for every failure: exit status 2 for runout's own errors.
+
+    Errors raised by a model (a geometry check, a solver that lost contact) name the case
+    file too; warnings are collected into one ``warning:`` line, printed after a command that
+    succeeded (an error line stays the only line of a failure).
+    """
 
     @functools.wraps(fn)
     def wrapper(*args: Any, **kwargs: Any) -> Any:
-        try:
-            return fn(*args, **kwargs)
-        except RunoutError as exc:
-            _fail(str(exc))
-        except KeyboardInterrupt:
-            _err.print("interrupted")
-            raise typer.Exit(130) from None
+        file = kwargs.get("case_file")
+        with warnings.catch_warnings(record=True) as caught:
+            try:
+                result = fn(*args, **kwargs)
+            except RunoutError as exc:
+                message = str(exc)
+                if isinstance(exc, GeometryError | NumericalError):
+                    message = _named(message, file)
+                _fail(message)
+            except KeyboardInterrupt:
+                _err.print("interrupted")
+                raise typer.Exit(130) from None
+            except _CLI_EXITS:
+                raise
+            except MemoryError:
+                _fail(
+                    _named(
+                        "ran out of memory; lower analysis.samples or the orders, or raise "
+                        "[analysis] max_memory only if the machine has the memory",
+                        file,
+                    )
+                )
+            except Exception as exc:
+                if os.environ.get("RUNOUT_DEBUG"):
+                    raise
+                _fail(
+                    _named(
+                        f"internal error ({type(exc).__name__}: {exc}); this is a bug in "
+                        "runout, please report it with the case file (RUNOUT_DEBUG=1 shows "
+                        "the traceback)",
+                        file,
+                    ),
+                    EXIT_INTERNAL,
+                )
+        # what concerns the case (a profile, a line too close to another, an overflow), not
+        # the deprecations and compiler notes of the libraries underneath
+        _warn(file, [str(w.message) for w in caught if issubclass(w.category, _CASE_WARNINGS)])
+        return result
 
     return wrapper  # type: ignore[return-value]
 
@@ -91,6 +192,10 @@ def _main(
     ] = False,
 ) -> None:
     """Runout (RRO/NRRO) and vibration of rolling bearings from the geometry of their parts."""
+    # Rich measures the terminal on stdin/stderr even when stdout is a pipe, and honours
+    # COLUMNS: output read by scripts and tests would depend on where it ran.
+    if not _out.is_terminal:
+        _out.size = (PIPE_WIDTH, 25)
 
 
 @app.command()
@@ -98,26 +203,38 @@ def _main(
 def check(case_file: CaseArg, as_json: JsonOpt = False) -> None:
     """Validate a case file and print the derived geometry, contact constants and frequencies.
 
+    Runs every check a run does (the model's input checks, the memory and time budget, Hertz
+    validity), so a case called valid is not refused on input later; warnings go to one
+    warning: line (--json: "warnings").
+
     Example: runout check examples/seed001_kim_spindle.toml --json
     """
     from runout.case import load_case
     from runout.errors import CaseError
     from runout.summary import bearing_summary, model_use
+    from runout.validation import validate
 
     case = load_case(case_file)
     summary = bearing_summary(case.bearing, case.operation)
     use = model_use(case)
-    if use.refusals and "model" in case.spec.analysis.model_fields_set:
+    named = "model" in case.spec.analysis.model_fields_set
+    if use.refusals and named:
         # `check` calls a case valid only when the model it names will run it
         key, message = use.refusals[0]
         raise CaseError(str(case_file), key, message)
+    # the model's own input checks, the budget and the Hertz validity, as `run` does them
+    notes = list(validate(case, strict=named))
     if as_json:
         payload = {"title": case.title, "case": str(case_file), **summary.to_json()}
         payload["model_use"] = use.to_json()
+        payload["warnings"] = notes
         _print_json(payload)
         return
+    _warn(case_file, notes)
+    # soft_wrap: one line however long the path, so that "is valid" is never split
     _out.print(
-        f"[bold]{escape(case.title or str(case_file))}[/]  ({escape(str(case_file))}) is valid."
+        f"[bold]{escape(case.title or str(case_file))}[/]  ({escape(str(case_file))}) is valid.",
+        soft_wrap=True,
     )
     for title, rows in summary.sections():
         _out.print(_rows_table(title, rows))
@@ -199,7 +316,11 @@ def run(
     case_file: CaseArg,
     as_json: JsonOpt = False,
     out: Annotated[
-        Path | None, typer.Option("--out", help="Directory for plots and data files.")
+        str | None,
+        typer.Option(
+            "--out",
+            help="Directory for plots and data files, with a copy of the case (case.toml).",
+        ),
     ] = None,
     report: Annotated[
         bool,
@@ -207,8 +328,16 @@ def run(
             "--report", help="Also write a self-contained report.html (default --out out/<case>)."
         ),
     ] = False,
+    force: Annotated[
+        bool,
+        typer.Option(
+            "--force", help="Replace the results of another case in --out (its case.toml differs)."
+        ),
+    ] = False,
 ) -> None:
     """Run the model named in the case's [analysis] table.
+
+    --out DIR refuses a DIR whose case.toml is another case, unless --force.
 
     Example: runout run examples/seed000_tada_fig7.toml --out out/tada --report
     """
@@ -217,31 +346,65 @@ def run(
     from runout.summary import bearing_summary
 
     case = load_case(case_file)
+    if report and out is None:
+        out = str(Path("out") / case_file.stem)
+    # checked before the model runs: a refused directory costs nothing and is left untouched
+    directory = None if out is None else _run_directory(out, case_file, force)
     result = run_model(case)
     if as_json:
         _print_json(result.to_json())
     else:
         for title, rows in result.summary_sections():
             _out.print(_rows_table(title, rows))
-    if report and out is None:
-        out = Path("out") / case_file.stem
-    if out is not None:
-        out.mkdir(parents=True, exist_ok=True)
-        written = result.write(out)
-        # The inputs travel with the results, so a report can be rebuilt from the directory.
-        summary = bearing_summary(case.bearing, case.operation)
-        (out / "summary.json").write_text(
-            json.dumps({"title": case.title, **summary.to_json()}, indent=2, allow_nan=False) + "\n"
-        )
-        (out / "case.toml").write_text(case_file.read_text(encoding="utf-8"), encoding="utf-8")
-        written += [out / "summary.json", out / "case.toml"]
-        if report:
-            from runout.report import build_report
+    if directory is not None:
+        try:
+            written = result.write(directory)
+            # The inputs travel with the results, so a report can be rebuilt from the directory.
+            summary = bearing_summary(case.bearing, case.operation)
+            (directory / "summary.json").write_text(
+                json.dumps({"title": case.title, **summary.to_json()}, indent=2, allow_nan=False)
+                + "\n"
+            )
+            (directory / "case.toml").write_text(
+                case_file.read_text(encoding="utf-8"), encoding="utf-8"
+            )
+            written += [directory / "summary.json", directory / "case.toml"]
+            if report:
+                from runout.report import build_report
 
-            written.append(build_report(out))
+                written.append(build_report(directory))
+        except OSError as exc:  # read-only directory, disk full: one line, not a traceback
+            _fail(f"{exc.filename or directory}: cannot write ({exc.strerror or exc})")
         if not as_json:
             for path in written:
                 _out.print(f"wrote {escape(str(path))}")
+
+
+def _run_directory(out: str, case_file: Path, force: bool) -> Path:
+    """The ``run --out`` directory, created; refused when its case.toml is another case.
+
+    ``runout report DIR`` rebuilds the report from DIR/case.toml and the results next to it:
+    results of one case beside the case file of another would make a wrong report, and the
+    user's case.toml would be lost. Writing under another name would keep the file but still
+    mix the two, so another case is refused (``--force`` replaces it). The same text again is
+    a rerun of the same case and is rewritten in place.
+    """
+    from runout.study import OutputError, output_directory
+
+    directory = output_directory(out)
+    target = directory / "case.toml"
+    if force or not (target.exists() or target.is_symlink()):
+        return directory
+    try:
+        same = target.read_text(encoding="utf-8") == case_file.read_text(encoding="utf-8")
+    except (OSError, ValueError):
+        same = False
+    if not same:
+        raise OutputError(
+            f"{target}: holds another case (the results in {directory} are not of "
+            f"{case_file}); choose another --out or pass --force to replace them"
+        )
+    return directory
 
 
 @app.command("report")
@@ -281,13 +444,19 @@ def sweep_dynamic(
         str | None, typer.Option("--preload", help="Axial preloads [N], e.g. 10,30,50,100.")
     ] = None,
     out: Annotated[
-        Path, typer.Option("--out", help="Directory for the panels, sweep.csv and points/.")
-    ] = Path("out/sweep-dynamic"),
+        str, typer.Option("--out", help="Directory for the panels, sweep.csv and points/.")
+    ] = "out/sweep-dynamic",
     as_json: JsonOpt = False,
+    force: Annotated[
+        bool,
+        typer.Option("--force", help="Write into a non-empty --out that is not a sweep's."),
+    ] = False,
 ) -> None:
     """Dynamic model (seed 003) over numbers of balls x preloads: Fig. 3/4-style spectra.
 
     Finished points are kept in OUT/points/ and reused by a rerun of the same case.
+
+    OUT is locked while the sweep writes; a non-empty OUT that is not a sweep's needs --force.
 
     Example: runout sweep-dynamic examples/seed003_purohit.toml --elements 5,7,8,10,12,15
     --preload 10,30,50,100 --out out/purohit
@@ -295,18 +464,20 @@ def sweep_dynamic(
     from rich.progress import Progress
 
     from runout.case import load_case
-    from runout.models.dynamic import sweep
+    from runout.models.dynamic import exact_number, sweep
 
     case = load_case(case_file)
     zs = _number_list(elements, int, "--elements")
     ps = _number_list(preload, float, "--preload")
-    with Progress(console=_err, transient=True, disable=as_json) as bar:
+    # no bar off a terminal: a refused --out stays one line on stderr
+    disable = as_json or not _err.is_terminal
+    with Progress(console=_err, transient=True, disable=disable) as bar:
         task = bar.add_task("sweep", total=max(1, len(zs or [0]) * len(ps or [0])))
 
         def tick(done: int, total: int, name: str) -> None:
             bar.update(task, completed=done, total=total, description=name)
 
-        points = sweep(case, zs, ps, out, progress=tick)
+        points = sweep(case, zs, ps, out, progress=tick, force=force, notify=_note)
     if as_json:
         _print_json({"points": [p.to_json() for p in points]})
         return
@@ -316,14 +487,19 @@ def sweep_dynamic(
     for p in points:
         table.add_row(
             str(p.elements),
-            f"{p.preload_n:g}",
+            exact_number(p.preload_n),
             f"{p.contact_angle_deg:.4g}",
             f"{p.ball_passage_hz:.5g}",
             "/".join(f"{f:.5g}" for f in p.natural_frequencies_hz),
             f"{p.ball_passage_pp_m * 1e9:.4g}",
         )
     _out.print(table)
-    _out.print(f"wrote {escape(str(out))}/ (sweep.csv, trend.png, spectra_*.png, points/)")
+    _out.print(f"wrote {escape(out)}/ (sweep.csv, trend.png, spectra_*.png, points/)")
+
+
+def _note(message: str) -> None:
+    """A one-line note on stderr: something the user should know that is not an error."""
+    _err.print(f"note: {escape(message)}", highlight=False, soft_wrap=True)
 
 
 @app.command("study")
@@ -332,8 +508,12 @@ def study_command(
     case_file: CaseArg,
     as_json: JsonOpt = False,
     out: Annotated[
-        Path | None,
-        typer.Option("--out", help="Directory for chunk files, manifest, summary, CSV and plots."),
+        str | None,
+        typer.Option(
+            "--out",
+            help="Directory for chunk files, manifest, summary, CSV and plots (new, empty or a "
+            "study's; locked while the study writes).",
+        ),
     ] = None,
     workers: Annotated[
         int, typer.Option("--workers", min=1, help="Local worker processes (1: in-process).")
@@ -350,8 +530,20 @@ def study_command(
     chunk_size: Annotated[
         int | None, typer.Option("--chunk-size", min=1, help="Samples per task and result file.")
     ] = None,
+    force: Annotated[
+        bool,
+        typer.Option(
+            "--force",
+            help="Write into a non-empty --out that is not a study's; start afresh over a "
+            "corrupted manifest or a different study.",
+        ),
+    ] = False,
 ) -> None:
     """Run the case's [study]: Monte Carlo over drawn quantities or a sweep (docs/studies.md).
+
+    A sample whose model fails is recorded with its error; the study goes on.
+
+    Exit status: 0 if any sample succeeded (failures noted), 1 if all failed, 2 for bad input.
 
     Example: runout study examples/seed001_kim_table9.toml --json --workers 2
     """
@@ -388,13 +580,40 @@ def study_command(
             resume=resume,
             progress=tick,
             chunk_size=chunk_size,
+            force=force,
+            notify=_note,
         )
-    if as_json:
-        _print_json(result.to_json())
-        return
     summary = result.to_json()
+    if as_json:
+        _print_json(summary)
+    else:
+        _print_study(summary, str(case.title or case_file), out)
+    _study_failures(summary)
+
+
+def _study_failures(summary: dict[str, Any]) -> None:
+    """Say how many samples failed; exit 1 when all did (the statistics are empty)."""
+    failed, total = summary["failed"], summary["samples"]
+    if not failed:
+        return
+    word = "samples" if summary["kind"] == "montecarlo" else "points"
+    first = summary["errors"][0]
+    example = f"{word[:-1]} {first['sample']}: {first['error']}"
+    if failed == total:
+        _err.print(
+            f"[bold red]error:[/] all {total} {word} failed ({escape(example)})",
+            highlight=False,
+            soft_wrap=True,
+        )
+        raise typer.Exit(1)
+    _note(
+        f"{failed} of {total} {word} failed and are left out of the statistics (first: {example})"
+    )
+
+
+def _print_study(summary: dict[str, Any], title: str, out: str | None) -> None:
     table = Table(
-        title=f"{case.title or case_file}: {summary['kind']} of {summary['samples']} samples"
+        title=f"{title}: {summary['kind']} of {summary['samples']} samples"
         f" ({summary['failed']} failed)",
         title_justify="left",
         header_style="bold",
@@ -417,7 +636,7 @@ def study_command(
         )
     _out.print(table)
     if out is not None:
-        _out.print(f"wrote {escape(str(out))}/ (manifest.json, chunks/, summary.json, samples.csv)")
+        _out.print(f"wrote {escape(out)}/ (manifest.json, chunks/, summary.json, samples.csv)")
 
 
 @app.command("reproduce")

@@ -62,8 +62,12 @@ from runout.errors import ConvergenceError, GeometryError
 __all__ = [
     "HARRIS_DELTA_STAR_TABLE",
     "HARRIS_STEEL_APPROACH_CONSTANT",
+    "ISO76_BALL_PRESSURE",
+    "ISO76_ROLLER_PRESSURE",
     "PALMGREN_LINE_CONSTANT",
+    "PLASTIC_PRESSURE",
     "BallContacts",
+    "HertzFinding",
     "HertzIntegrals",
     "LineContact",
     "PointContact",
@@ -71,6 +75,7 @@ __all__ = [
     "ball_flat_cap_displacement",
     "ball_flat_cap_force",
     "ball_flat_contact_radius",
+    "ball_load_validity",
     "ball_race_contacts",
     "ball_race_curvature",
     "combined_stiffness",
@@ -86,6 +91,7 @@ __all__ = [
     "line_contact_load",
     "point_contact",
     "radius_ratio",
+    "roller_load_validity",
     "roller_race_contacts",
     "stiffness_from_delta_star_table",
 ]
@@ -1110,3 +1116,153 @@ def roller_race_contacts(bearing: RollerBearing) -> RollerContacts:
     outer = LineContact(length, ep, 2.0 / d - 2.0 / bearing.outer_raceway_diameter, k)
     kn = float(combined_stiffness(k, k, exponent=1.0 / _LINE_EXP))
     return RollerContacts(inner, outer, kn)
+
+
+# --------------------------------------------------------------------------------------------
+# Validity of the Hertz solution
+# --------------------------------------------------------------------------------------------
+#: ISO 76 reference contact pressure of ball bearings [Pa]: at the centre of the most loaded
+#: contact it leaves a permanent deformation of 1e-4 of the ball diameter.
+ISO76_BALL_PRESSURE = 4.2e9
+#: ISO 76 reference contact pressure of roller bearings [Pa].
+ISO76_ROLLER_PRESSURE = 4.0e9
+#: Maximum pressure whose mean (2/3 of it) exceeds the hardness of hardened bearing steel
+#: (about 8 GPa, 60+ HRC) [Pa]: the contact is fully plastic, no elastic model applies.
+PLASTIC_PRESSURE = 12.0e9
+
+
+_RANK = {"warning": 0, "error": 1}
+
+
+@dataclass(frozen=True)
+class HertzFinding:
+    """A Hertz contact outside the theory's validity.
+
+    Attributes
+    ----------
+    severity : {"warning", "error"}
+        ``"error"``: the contact cannot be elastic (ellipse as long as the element, mean
+        pressure above the steel's hardness); ``"warning"``: beyond the ISO 76 static limit,
+        permanent dents, the elastic results are optimistic.
+    key : str
+        Case key of the load that causes it.
+    message : str
+        What and how much, in one line.
+    """
+
+    severity: Literal["warning", "error"]
+    key: str
+    message: str
+
+
+def _judge(
+    key: str,
+    what: str,
+    pressure: float,
+    half_size: float,
+    element: float,
+    reference: float,
+    size_word: str,
+) -> list[HertzFinding]:
+    """The findings of one contact: half-size of the contact vs the element, pressure."""
+    stated = (
+        f"{what}: Hertz pressure {pressure / 1e9:.3g} GPa, contact {size_word} "
+        f"{2e3 * half_size:.3g} mm on a {element * 1e3:.4g} mm element"
+    )
+    if not 2.0 * half_size < element:
+        return [
+            HertzFinding(
+                "error",
+                key,
+                f"{stated}: the contact would be as large as the element itself, far outside "
+                "Hertz theory (no such elastic contact exists)",
+            )
+        ]
+    if not pressure < PLASTIC_PRESSURE:
+        return [
+            HertzFinding(
+                "error",
+                key,
+                f"{stated}: the mean pressure exceeds the hardness of bearing steel "
+                f"(maximum above {PLASTIC_PRESSURE / 1e9:.3g} GPa): a fully plastic contact, "
+                "not an elastic one",
+            )
+        ]
+    if pressure > reference:
+        return [
+            HertzFinding(
+                "warning",
+                key,
+                f"{stated}: above the {reference / 1e9:.3g} GPa static limit of ISO 76 "
+                "(permanent dents); the elastic results are optimistic",
+            )
+        ]
+    return []
+
+
+def ball_load_validity(
+    bearing: BallBearing, load: float, contact_angle: float, key: str, what: str
+) -> list[HertzFinding]:
+    """Hertz validity of a ball loaded with ``load`` [N] at ``contact_angle`` [rad].
+
+    Checks both raceway contacts: the semi-major axis a of the contact ellipse against the
+    ball (2a >= D is no Hertz contact), and the maximum pressure against the hardness of the
+    steel (error) and the ISO 76 static limit (warning).
+
+    Parameters
+    ----------
+    bearing : BallBearing
+    load : float
+        Normal ball load Q [N].
+    contact_angle : float
+        α [rad].
+    key : str
+        Case key of the load, for the findings.
+    what : str
+        The load in words (``"the most loaded ball, about 3.2e4 N"``).
+    """
+    if not (math.isfinite(load) and load > 0.0):
+        return []
+    contacts = ball_race_contacts(bearing, contact_angle)
+    worst: list[HertzFinding] = []
+    for race, pc in (("inner", contacts.inner), ("outer", contacts.outer)):
+        a, _ = pc.semi_axes(load)
+        found = _judge(
+            key,
+            f"{what} ({race} raceway)",
+            float(pc.max_pressure(load)),
+            float(a),
+            bearing.ball_diameter,
+            ISO76_BALL_PRESSURE,
+            "ellipse length",
+        )
+        if found and (not worst or _RANK[found[0].severity] > _RANK[worst[0].severity]):
+            worst = found
+    return worst
+
+
+def roller_load_validity(
+    bearing: RollerBearing, load: float, key: str, what: str
+) -> list[HertzFinding]:
+    """Hertz validity of a roller loaded with ``load`` [N] (needs ``roller_length``).
+
+    The line contact's width 2b against the roller diameter, and its maximum pressure against
+    the steel's hardness (error) and the ISO 76 static limit of roller bearings (warning).
+    """
+    if bearing.roller_length is None or not (math.isfinite(load) and load > 0.0):
+        return []
+    contacts = roller_race_contacts(bearing)
+    worst: list[HertzFinding] = []
+    for race, lc in (("inner", contacts.inner), ("outer", contacts.outer)):
+        found = _judge(
+            key,
+            f"{what} ({race} raceway)",
+            float(lc.max_pressure(load)),
+            float(lc.semi_width(load)),
+            bearing.roller_diameter,
+            ISO76_ROLLER_PRESSURE,
+            "width",
+        )
+        if found and (not worst or _RANK[found[0].severity] > _RANK[worst[0].severity]):
+            worst = found
+    return worst

@@ -82,6 +82,9 @@ class KeyConvention:
     present : callable
         ``present(spec) -> list of key paths`` the case sets (explicitly and not to the
         default); empty when the case does not use the key.
+    honoured_when : dict
+        Model id -> ``condition(spec)``: cases in which a key the model otherwise does not
+        apply does change its result (e.g. conformities set the clearance of a nominal angle).
     """
 
     key: str
@@ -90,9 +93,13 @@ class KeyConvention:
     statuses: tuple[Status, ...]
     why: dict[str, str] = field(default_factory=dict)
     present: Callable[[CaseSpec], list[str]] = field(default=lambda spec: [], repr=False)
+    honoured_when: dict[str, Callable[[CaseSpec], bool]] = field(default_factory=dict, repr=False)
 
-    def status(self, model: str) -> Status:
-        """What ``model`` does with this key."""
+    def status(self, model: str, spec: CaseSpec | None = None) -> Status:
+        """What ``model`` does with this key (in ``spec``, when a condition applies)."""
+        condition = self.honoured_when.get(model)
+        if spec is not None and condition is not None and condition(spec):
+            return "honoured"
         return self.statuses[MODELS.index(model)]
 
 
@@ -251,7 +258,10 @@ KEYS: tuple[KeyConvention, ...] = (
         "free contact angle, and the Hertz contact.",
         "-",
         (H, H, H, H, H, N),
-        {"roller_constraint": "it takes the balls as circles on the groove-bottom diameters"},
+        {
+            "roller_constraint": "it takes the balls as circles on the groove-bottom diameters; "
+            "they count only through the clearance of a bearing.nominal_contact_angle"
+        },
         lambda spec: [
             f"bearing.{name}"
             for name in (
@@ -262,6 +272,7 @@ KEYS: tuple[KeyConvention, ...] = (
             )
             if name in spec.bearing.model_fields_set and getattr(spec.bearing, name) is not None
         ],
+        {"roller_constraint": lambda spec: spec.bearing.nominal_contact_angle is not None},
     ),
     KeyConvention(
         "material.youngs_modulus, poisson_ratio",
@@ -495,7 +506,7 @@ def applicability(spec: CaseSpec, model: str) -> Applicability:
     refusals: list[tuple[str, str]] = []
     notes: list[str] = []
     for convention, path in _rows(spec):
-        status = convention.status(model)
+        status = convention.status(model, spec)
         uses.append((path, status))
         why = convention.why.get(model, "")
         if status == "refused":
@@ -514,7 +525,7 @@ def _combination_notes(spec: CaseSpec, model: str) -> list[str]:
     out: list[str] = []
     b = spec.bearing
     if (
-        model in ("linear", "quasi_static_2d", "quasi_static_3d")
+        model in ("linear", "quasi_static_3d")  # 2-D: the clearance also sets δ_0
         and b.contact_angle is not None
         and (b.radial_clearance > 0.0 or b.nominal_contact_angle is not None)
     ):
@@ -527,6 +538,16 @@ def _combination_notes(spec: CaseSpec, model: str) -> list[str]:
             f"{key}: not used by the {model} model here: the contact angle is held at "
             f"bearing.contact_angle = {math.degrees(b.contact_angle):.6g} deg, and the "
             "clearance enters only through the contact angle"
+        )
+    op = spec.operation
+    if (
+        model != "roller_constraint"
+        and "radial_load_direction" in op.model_fields_set
+        and op.radial_load == 0.0
+    ):
+        out.append(
+            "operation.radial_load_direction: not applied by the "
+            f"{model} model without a radial load (the measuring direction is then x)"
         )
     fixed_frame = spec.elements is not None and spec.elements.phase_frame == "fixed"
     if model != "equilibrium" and not fixed_frame:
@@ -597,14 +618,21 @@ def conventions_page() -> str:
         "",
         "## Combinations the models read in one way",
         "",
-        "- `contact_angle` with `radial_clearance` (or `nominal_contact_angle`) in `linear`, "
-        "`quasi_static_2d` and `quasi_static_3d`: the angle is held, and the clearance, which "
-        "enters these models only through the contact angle, is not used (a note says so).",
+        "- `contact_angle` with `radial_clearance` (or `nominal_contact_angle`) in `linear` and "
+        "`quasi_static_3d`: the angle is held, and the clearance, which enters these models "
+        "only through the contact angle, is not used (a note says so). In `quasi_static_2d` the "
+        "clearance still sets the preload approach δ_0.",
+        "- Conformities (or groove radii) with `nominal_contact_angle` in `roller_constraint`: "
+        "they set the clearance P_d = 2A(1 - cos α⁰), so they are honoured there.",
+        "- `radial_load_direction` without a radial load: the measuring direction is x in every "
+        "model but `roller_constraint` (whose measuring load always has a direction); a note "
+        "says so.",
         "- Element waviness without `element` (and not a random-phase spectrum): every element "
         "carries the deviation with the same phase in its own frame, a coherent worst case (a "
         "note says so).",
         "- A radially loaded bearing without axial preload has radial play P_d/2 per ball in "
-        "`equilibrium` and `dynamic`; `quasi_static_2d` and `quasi_static_3d` need an axial "
+        "`dynamic`, and in `equilibrium` once at least 3 balls carry the load (its ring is free "
+        "to tilt and to move axially); `quasi_static_2d` and `quasi_static_3d` need an axial "
         "preload and refuse the case, naming those two.",
         "",
     ]

@@ -74,6 +74,8 @@ from __future__ import annotations
 
 import csv
 import math
+import os
+import stat
 import warnings
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
@@ -611,7 +613,7 @@ def spectral_law(
     a = amplitude * np.power(k.astype(np.float64), exponent)
     if not np.isfinite(a).all():
         raise ImperfectionError(
-            "waviness_spectrum", "amplitude * k**exponent overflows for these orders"
+            "waviness_spectrum.exponent", "amplitude * k**exponent overflows for these orders"
         )
     if isinstance(phase, str):
         if phase != "random":
@@ -859,6 +861,7 @@ def read_profile_csv(
     *,
     delimiter: str | None = None,
     columns: tuple[int, int] = (0, 1),
+    max_bytes: int | None = None,
 ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """Read a roundness profile: two columns, angle and radius deviation.
 
@@ -876,6 +879,9 @@ def read_profile_csv(
         else whitespace).
     columns : (int, int)
         0-based column indices of angle and deviation.
+    max_bytes : int, optional
+        Largest file read [bytes]; only a regular file is opened when it is given (a device
+        such as /dev/zero, or a FIFO, never ends).
 
     Returns
     -------
@@ -887,8 +893,9 @@ def read_profile_csv(
     Raises
     ------
     ProfileError
-        Missing file, a row that is not two finite numbers (naming the file and line), or no
-        data at all.
+        Missing file, a row that is not two finite numbers (naming the file and line, never
+        echoing the line: a profile may be any file), a file that is not UTF-8 text or is
+        larger than ``max_bytes``, or no data at all.
     """
     name = str(path)
     if angle_unit not in ("deg", "rad"):
@@ -897,10 +904,7 @@ def read_profile_csv(
         raise ProfileError(
             name, None, f"deviation_scale must be a positive number, got {deviation_scale!r}"
         )
-    try:
-        text = Path(path).read_text(encoding="utf-8-sig")
-    except OSError as exc:
-        raise ProfileError(name, None, f"cannot read the file: {exc.strerror or exc}") from exc
+    text = _read_text(Path(path), name, max_bytes)
     ia, idv = columns
     angles: list[float] = []
     devs: list[float] = []
@@ -923,12 +927,11 @@ def read_profile_csv(
             raise ProfileError(
                 name,
                 lineno,
-                f"expected numbers in columns {ia + 1} and {idv + 1} separated by "
-                f"{_sep_name(sep)}, got {line!r}",
+                f"expected numbers in columns {ia + 1} and {idv + 1} separated by {_sep_name(sep)}",
             ) from None
         first = False
         if not (math.isfinite(a) and math.isfinite(d)):
-            raise ProfileError(name, lineno, f"non-finite value in {line!r}")
+            raise ProfileError(name, lineno, "non-finite value")
         angles.append(a)
         devs.append(d)
     if not angles:
@@ -937,6 +940,33 @@ def read_profile_csv(
     if angle_unit == "deg":
         ang = np.deg2rad(ang)
     return ang, np.array(devs) * deviation_scale
+
+
+def _read_text(path: Path, name: str, max_bytes: int | None) -> str:
+    """The file's text, reading no more than ``max_bytes`` and only from a regular file."""
+    try:
+        if max_bytes is None:
+            return path.read_text(encoding="utf-8-sig")
+        # O_NONBLOCK: opening a FIFO must not wait for a writer before it is found out
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
+        with os.fdopen(fd, "rb") as handle:
+            if not stat.S_ISREG(os.fstat(handle.fileno()).st_mode):
+                raise ProfileError(name, None, "is not a regular file")
+            raw = handle.read(max_bytes + 1)
+    except OSError as exc:
+        raise ProfileError(name, None, f"cannot read the file: {exc.strerror or exc}") from exc
+    except UnicodeDecodeError as exc:
+        raise ProfileError(
+            name, None, f"is not UTF-8 text (byte {exc.start + 1} cannot be decoded)"
+        ) from None
+    if len(raw) > max_bytes:
+        raise ProfileError(name, None, f"is larger than {max_bytes} bytes")
+    try:
+        return raw.decode("utf-8-sig")
+    except UnicodeDecodeError as exc:
+        raise ProfileError(
+            name, None, f"is not UTF-8 text (byte {exc.start + 1} cannot be decoded)"
+        ) from None
 
 
 def _split(line: str, sep: str) -> list[str]:

@@ -38,6 +38,13 @@ __all__ = [
 ]
 
 
+def _top_source(component: Any) -> str:
+    """The name of a line's largest source, for a plot label (its part and lobes)."""
+    if component.sources:
+        return str(component.sources[0].label().split(":")[0])
+    return str(component.label.split(":")[0].split(";")[0].strip())
+
+
 def pyplot() -> Any:
     """matplotlib.pyplot with the non-interactive Agg backend."""
     import matplotlib
@@ -258,7 +265,7 @@ def plot_lines(result: RunResult, ax: Any = None, top: int = 8) -> Any:
         ax.plot(orders, pp, "o", color=colours[direction], ms=3)
     seen: set[tuple[float, str]] = set()
     for c in result.lines(top=top):
-        short = c.label.split(":")[0].split(";")[0].strip()
+        short = _top_source(c)
         key = (round(c.order, 3), short)
         if key in seen:
             continue
@@ -529,7 +536,7 @@ def plot_dynamic_spectrum(result: RunResult, ax: Any = None, f_max: float | None
     for c in result.lines(top=8):
         if c.direction == "z" or c.frequency_hz > top:
             continue
-        short = c.label.split(":")[0].split(";")[0].strip()
+        short = _top_source(c)
         ax.annotate(
             f"{short} ({c.direction})",
             (c.frequency_hz, c.pp_m * 1e9),
@@ -676,7 +683,11 @@ def plot_study(result: Any, directory: Path, top: int = 4) -> list[Path]:
         rows = (len(panels) + 1) // 2
         fig, axes = plt.subplots(rows, cols, figsize=(10, 3.0 * rows), squeeze=False)
         for ax, (name, values) in zip(axes.flat, panels, strict=False):
-            ax.hist(values * 1e9, bins=result.bins, color="tab:blue", alpha=0.8)
+            nm = values * 1e9
+            # a quantity constant over the lot (to round-off) has no spread to bin
+            spread = float(np.ptp(nm)) if nm.size else 0.0
+            flat = spread <= 1e-9 * max(float(np.max(np.abs(nm), initial=0.0)), 1e-300)
+            ax.hist(nm, bins=1 if flat else result.bins, color="tab:blue", alpha=0.8)
             ax.set_title(name[:70], fontsize=8)
             ax.set_xlabel("peak-to-peak [nm]")
             ax.set_ylabel("bearings")

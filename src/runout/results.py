@@ -2,7 +2,8 @@
 
 A model fills a :class:`RunResult`: the time (or angle) history of the measured ring's centre,
 the labelled spectral lines (``components``), the runout figures and model-specific extras. The
-JSON it prints follows the contract in DESIGN.md; ``write`` puts data and plots in a directory.
+JSON it prints is the documented contract (README, docs/conventions.md, docs/decomposition.md);
+``write`` puts data and plots in a directory.
 Plotting is delegated to :mod:`runout.plotting` (the only module that imports matplotlib).
 """
 
@@ -12,7 +13,7 @@ import csv
 import json
 import math
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -21,7 +22,10 @@ from numpy.typing import NDArray
 
 from runout.kinematics import Frequencies
 
-__all__ = ["DISPLACEMENT_OF", "Component", "RunResult", "Runout"]
+__all__ = ["DISPLACEMENT_OF", "LABEL_MAX", "Component", "RunResult", "Runout", "Source"]
+
+#: Longest short label of a component [characters].
+LABEL_MAX = 80
 
 #: The one displacement convention of every model's output (JSON ``displacement_of``).
 DISPLACEMENT_OF = (
@@ -31,6 +35,83 @@ DISPLACEMENT_OF = (
 )
 
 Rows = list[tuple[str, str, str]]
+
+
+@dataclass(frozen=True)
+class Source:
+    """One cause of a spectral line.
+
+    Attributes
+    ----------
+    part : str
+        ``"inner"``, ``"outer"``, ``"ball"``, ``"roller"``, ``"pitch"``, ``"slant"``,
+        ``"load"`` (the load zone: ball passage), ``"unbalance"``, ``"natural"`` (a natural
+        frequency of the rotor), ``"combination"`` (a kinematic combination found in the
+        residual) or ``"unattributed"``.
+    element : int or None
+        Ball or roller number (1-based); None for rings, every element or no element.
+    lobes : int or None
+        Lobe count of the harmonic (0: a size error); None where it does not apply.
+    term : str
+        The rule that produced the line, e.g. ``"nZ+1, n=1"``, ``"2n, order 2"``.
+    formula : str
+        Its frequency, e.g. ``"n f_i + f_r"``.
+    share : float
+        Fraction of the line's complex amplitude from this source [-] (the shares of a line
+        add up to 1; a source working against the others has a negative share).
+    share_basis : str
+        ``"single"`` (the only source), ``"predicted"`` (from the linearised model's complex
+        amplitude), ``"remainder"`` (an equal part of what the predicted sources leave of the
+        fitted line) or ``"equal"`` (no prediction: the sources share the line equally).
+    """
+
+    part: str
+    element: int | None
+    lobes: int | None
+    term: str
+    formula: str
+    share: float = 1.0
+    share_basis: str = "single"
+
+    def label(self) -> str:
+        """A short readable name, e.g. ``"inner 9 lobes: nZ+1, n=1"``."""
+        if self.part in ("inner", "outer", "ball", "roller"):
+            who = self.part if self.element is None else f"{self.part} {self.element}"
+            if self.lobes == 0:
+                text = f"{who} size error"
+            elif self.lobes is not None:
+                text = f"{who} {self.lobes} lobes"
+            else:
+                text = who
+            return f"{text}: {self.term}" if self.term else text
+        if self.part in ("combination", "unattributed"):
+            return f"{self.part} {self.formula}"
+        if self.part == "load":
+            return self.term
+        return f"{self.part}: {self.term}" if self.term else self.part
+
+    def to_json(self) -> dict[str, Any]:
+        """The JSON contract's source object."""
+        return {
+            "part": self.part,
+            "element": self.element,
+            "lobes": self.lobes,
+            "term": self.term,
+            "formula": self.formula,
+            "share": self.share,
+            "share_basis": self.share_basis,
+        }
+
+
+def short_label(sources: tuple[Source, ...] | list[Source]) -> str:
+    """The top source's label plus ``+N more``, at most :data:`LABEL_MAX` characters."""
+    if not sources:
+        return ""
+    more = f" +{len(sources) - 1} more" if len(sources) > 1 else ""
+    text = sources[0].label()
+    if len(text) + len(more) > LABEL_MAX:
+        text = text[: LABEL_MAX - len(more) - 1] + "…"
+    return text + more
 
 
 @dataclass(frozen=True)
@@ -53,6 +134,8 @@ class Component:
         Phase of x(t) = (pp/2) cos(2π f t + φ) [rad].
     repeatable : bool
         True when the line is synchronous with the rotating ring (an integer order): RRO.
+    sources : tuple of Source
+        What produces the line, largest share first.
     """
 
     direction: str
@@ -62,6 +145,23 @@ class Component:
     label: str
     phase_rad: float = 0.0
     repeatable: bool = False
+    sources: tuple[Source, ...] = ()
+
+    @classmethod
+    def from_sources(
+        cls,
+        direction: str,
+        frequency_hz: float,
+        rotation_hz: float,
+        amplitude: float,
+        phase_rad: float,
+        sources: list[Source] | tuple[Source, ...],
+    ) -> Component:
+        """A fitted line with its ranked sources; the label is the short one."""
+        c = cls.fitted(
+            direction, frequency_hz, rotation_hz, amplitude, phase_rad, short_label(sources)
+        )
+        return replace(c, sources=tuple(sources))
 
     @classmethod
     def fitted(
@@ -96,6 +196,7 @@ class Component:
             "label": self.label,
             "phase_rad": self.phase_rad,
             "repeatable": self.repeatable,
+            "sources": [src.to_json() for src in self.sources],
         }
 
 
@@ -196,7 +297,8 @@ class RunResult:
 
     def mean_displacement(self) -> list[float]:
         """Mean position of the inner ring's centre relative to the outer ring's over the
-        record, [x, y] or [x, y, z] [m] (:data:`DISPLACEMENT_OF`)."""
+        record: x, y, and z when the model moves the rings axially [m]
+        (:data:`DISPLACEMENT_OF`)."""
         mean = [float(np.mean(v)) for v in self.displacement]
         return mean if self.axial_motion else mean[:2]
 
@@ -208,7 +310,7 @@ class RunResult:
 
     # ---------------------------------------------------------------- output
     def to_json(self) -> dict[str, Any]:
-        """One JSON object per DESIGN.md."""
+        """One JSON object: the documented contract (README, docs/conventions.md)."""
         out: dict[str, Any] = {
             "model": self.model,
             "title": self.title,

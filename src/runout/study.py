@@ -24,6 +24,16 @@ and recorded in ``manifest.json``; :func:`run_study` with ``resume=True`` skips 
 already written, so an interrupted run ends with the same files, byte for byte, as an
 uninterrupted one.
 
+Safety
+------
+An output directory has one writer at a time (:func:`output_lock`), holds only runout's
+files unless forced (:func:`refuse_foreign`), and every file in it is replaced atomically
+through a uniquely named temporary (:func:`write_atomic`). Every chunk carries the digest of
+the case and study that wrote it; a resume recomputes a chunk that is unreadable, damaged or
+another study's. A sample whose model raises is recorded with its error (:func:`error_text`)
+and the study goes on. Pool workers end with their parent, even a SIGKILLed one
+(:func:`die_with_parent`). docs/studies.md, "Safety", lists the behaviour and the messages.
+
 Statistics
 ----------
 Every runout figure and line is summarised by its mean, sample standard deviation (ddof = 1),
@@ -33,20 +43,26 @@ a sample's output (below the model's reporting floor) counts as 0 in that sample
 
 from __future__ import annotations
 
+import contextlib
 import copy
 import csv
 import functools
 import hashlib
 import json
+import logging
 import math
 import os
 import re
+import secrets
+import signal
+import sys
 import threading
-from collections.abc import Callable, Iterable, Sequence
+import time
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from concurrent.futures import Executor, Future, ProcessPoolExecutor, as_completed
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, TextIO
 
 import numpy as np
 from numpy.typing import NDArray
@@ -60,20 +76,39 @@ from runout.case import (
     parse_case,
     parse_vary_key,
 )
-from runout.errors import CaseError, RunoutError
+from runout.decompose import RESIDUAL_REL, study_key
+from runout.errors import (
+    CaseError,
+    ContactLossError,
+    ConvergenceError,
+    NumericalError,
+    RunoutError,
+)
 from runout.units import to_si
+
+try:
+    import fcntl
+except ImportError:  # pragma: no cover - Windows: O_EXCL lock files instead of flock
+    fcntl = None  # type: ignore[assignment]
 
 __all__ = [
     "RUNOUT_KEYS",
+    "OutputError",
     "Quantity",
     "StudyError",
     "StudyResult",
     "dask_executor",
+    "die_with_parent",
+    "error_text",
     "load_study",
+    "output_directory",
+    "output_lock",
     "plan_quantities",
+    "refuse_foreign",
     "run_study",
     "sample_rng",
     "statistics",
+    "write_atomic",
 ]
 
 #: Runout figures kept per sample, in this order (the keys of :class:`runout.results.Runout`).
@@ -420,8 +455,26 @@ def _add_lines(
         entry["pp_m"][row] = max(entry["pp_m"][row], float(pp))
 
 
+#: Longest error message kept per failed sample (a model can raise with a whole array in it).
+ERROR_CHARS = 300
+#: Failed samples listed (with their errors) in summary.json and the --json output.
+ERRORS_SHOWN = 20
+
+
+def error_text(exc: BaseException) -> str:
+    """``"Type: message"`` of a failed sample, on one line and at most ERROR_CHARS long."""
+    text = " ".join(f"{type(exc).__name__}: {exc}".split())
+    return text if len(text) <= ERROR_CHARS else text[: ERROR_CHARS - 3] + "..."
+
+
 def evaluate_chunk(task: ChunkTask) -> dict[str, Any]:
-    """Evaluate one chunk: a column-wise dict (JSON-ready) of values, runout and lines."""
+    """Evaluate one chunk: a column-wise dict (JSON-ready) of values, runout and lines.
+
+    A sample (or point) whose variant or model raises any :class:`Exception` is recorded in
+    ``chunk["errors"]`` (sample index -> ``"Type: message"``) with ``None`` runout and no lines,
+    and the chunk goes on: one bad point must not lose the others. ``KeyboardInterrupt`` and
+    ``SystemExit`` are not exceptions of the samples and still stop the study.
+    """
     chunk = _empty_chunk(task)
     points = [_point(task, i) for i in range(task.start, task.stop)]
     for model, values in points:
@@ -429,24 +482,32 @@ def evaluate_chunk(task: ChunkTask) -> dict[str, Any]:
         for key, v in values.items():
             chunk["values"][key].append(v)
     if _batched(task):
-        _evaluate_batched(task, points, chunk)
-        return chunk
+        batch = copy.deepcopy(chunk)
+        try:
+            _evaluate_batched(task, points, batch)
+        except Exception:  # the per-bearing path below records each bearing's own failure
+            pass
+        else:
+            return batch
     from runout.models import run_model
 
     for row, (model, values) in enumerate(points):
         try:
             result = run_model(_variant(task, model, values))
-        except RunoutError as exc:
-            chunk["errors"][str(task.start + row)] = str(exc)
+            figures = result.runout.to_json()
+            runout = [float(figures[k]) for k in RUNOUT_KEYS]
+            comps = [
+                (c.direction, c.frequency_hz, study_key(c.sources) or c.label, c.pp_m)
+                for c in result.components
+            ]
+        except Exception as exc:  # recorded with its sample: the study goes on
+            chunk["errors"][str(task.start + row)] = error_text(exc)
             for k in RUNOUT_KEYS:
                 chunk["runout"][k].append(None)
             continue
-        figures = result.runout.to_json()
-        for k in RUNOUT_KEYS:
-            chunk["runout"][k].append(float(figures[k]))
-        _add_lines(
-            chunk, row, ((c.direction, c.frequency_hz, c.label, c.pp_m) for c in result.components)
-        )
+        for k, v in zip(RUNOUT_KEYS, runout, strict=True):
+            chunk["runout"][k].append(v)
+        _add_lines(chunk, row, comps)
     return chunk
 
 
@@ -479,10 +540,10 @@ class _BatchBase:
     time: NDArray[np.float64]
     c: NDArray[np.float64]
     theta: NDArray[np.float64]
-    sync: tuple[NDArray[np.float64], NDArray[np.float64], int] | None
     frequencies: NDArray[np.float64]
     labels: tuple[str, ...]
     projector: NDArray[np.float64]
+    synchronous: bool
     z: int
     rotation_hz: float
 
@@ -495,8 +556,9 @@ def _batch_base(task: ChunkTask) -> _BatchBase:
     found = _BASES.get(key)
     if found is not None:
         return found
+    from runout.decompose import resolved_lines
     from runout.models import quasi_static_2d as qs2
-    from runout.models._quasi_static import predicted_lines, synchronous_grid, time_grid
+    from runout.models._quasi_static import decomposition_kinematic, predicted_lines, time_grid
 
     data = copy.deepcopy(task.data)
     data.setdefault("analysis", {})["model"] = "quasi_static_2d"
@@ -518,43 +580,22 @@ def _batch_base(task: ChunkTask) -> _BatchBase:
     an, op = case.analysis, case.operation
     t = time_grid(op.speed, an.revolutions, an.samples)
     c, theta = qs2.approaches(base, st, t)
-    grid = synchronous_grid(op.speed, an.revolutions, an.samples)
-    sync: tuple[NDArray[np.float64], NDArray[np.float64], int] | None = None
-    if grid is not None:
-        ts, spr = grid
-        # The same instants up to round-off (time_grid and synchronous_grid compute them
-        # differently): reuse the record instead of solving twice.
-        if ts.size == t.size and np.allclose(ts, t, rtol=0.0, atol=1e-9 * (t[1] - t[0])):
-            sync = (np.empty((0, z)), np.empty((0, z)), spr)
-        else:
-            cs, ths = qs2.approaches(base, st, ts)
-            sync = (cs, ths, spr)
-    # lines of a representative bearing (every ball with a size error), merged as in run()
+    # lines of a representative bearing (every ball with a size error), resolved as in run()
     probe = case.imperfections.with_diameter_errors(np.full(z, 1e-9))
-    lines = predicted_lines(probe, st.kinematics, axial=False, second_order_pairs=True)
-    duration = t.size * (t[1] - t[0])
-    f_max, f_min, tol = 0.5 * t.size / duration * 0.999, 0.5 / duration, 0.05 / duration
-    freqs: list[float] = []
-    labels: list[list[str]] = []
-    for ln in sorted(lines, key=lambda ln: ln.frequency_hz):
-        if not (ln.directions == "radial" and f_min < ln.frequency_hz < f_max):
-            continue
-        if freqs and ln.frequency_hz - freqs[-1] <= tol:
-            if ln.label not in labels[-1]:
-                labels[-1].append(ln.label)
-        else:
-            freqs.append(ln.frequency_hz)
-            labels.append([ln.label])
+    candidates = predicted_lines(probe, st.kinematics, axial=False, second_order_pairs=True)
+    lines, _ = resolved_lines(candidates, "radial", t, float(op.speed))
+    freqs = [f for f, _ in lines]
+    labels = [study_key(sources) for _, sources in lines]
     f = np.array(freqs, dtype=np.float64)
     found = _BatchBase(
         setup=st,
         time=t,
         c=c,
         theta=theta,
-        sync=sync,
         frequencies=f,
-        labels=tuple(line_label("; ".join(lab)) for lab in labels),
+        labels=tuple(labels),
         projector=_line_projector(t, f),
+        synchronous=decomposition_kinematic(st.kinematics, base.imperfections).synchronous_sources,
         z=z,
         rotation_hz=float(op.speed),
     )
@@ -577,69 +618,56 @@ def _line_projector(time: NDArray[np.float64], freqs: NDArray[np.float64]) -> ND
 
 
 def _split_batch(
-    b: _BatchBase,
-    q: NDArray[np.float64],
-    coef: NDArray[np.float64],
-    errors: NDArray[np.float64],
-    status: NDArray[np.int64],
-    args: tuple[Any, ...],
+    b: _BatchBase, q: NDArray[np.float64], coef: NDArray[np.float64]
 ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """RRO and NRRO p-p of the radial (x) records, as the 2-D model's run() splits them.
+    """RRO and NRRO p-p of the radial (x) records, as :func:`runout.decompose.split_runout`
+    splits them for one bearing, batched.
 
-    :func:`runout.models._quasi_static.split_runout`, batched: when the labelled lines explain
-    the record (relative rms residual <= LINE_RESIDUAL_MAX), RRO is the p-p over one revolution
-    of the integer-order lines and NRRO the p-p over the record of the others; otherwise the
-    synchronous average of the record on the synchronous grid (if any) is used.
+    RRO: the integer-order lines, plus the synchronous average of what the lines leave when
+    something turns with the rotating ring and the average stands above three times its
+    uncertainty and above RESIDUAL_REL of the motion (whole revolutions with a whole number of
+    samples each); NRRO: the p-p over the record of the record minus the RRO waveform.
     """
-    from runout._study_kernels import solve_batch
-    from runout.models._quasi_static import LINE_RESIDUAL_MAX
-    from runout.spectrum import separate_rro_nrro
-
     t = b.time
     x = q[:, :, 0]
     n_b, m = x.shape[0], b.frequencies.size
+    speed = b.rotation_hz
     w = 2.0 * np.pi * np.outer(b.frequencies, t)  # (m, n)
     basis = np.concatenate([np.ones((1, t.size)), np.cos(w), np.sin(w)])  # (1 + 2m, n)
     fitted = np.einsum("bk,kn->bn", coef, basis, optimize=False)
-    centred = x - x.mean(axis=1, keepdims=True)
-    scale = np.sqrt(np.mean(centred**2, axis=1))
-    residual = np.sqrt(np.mean((x - fitted) ** 2, axis=1))
-    use_lines = (scale == 0.0) | (residual <= LINE_RESIDUAL_MAX * scale)
-    rro = np.zeros(n_b)
-    nrro = np.zeros(n_b)
-    speed = b.rotation_hz
+    one_rev = np.linspace(0.0, 1.0 / speed, 4097)[:-1]
+    rro_rev = np.zeros((n_b, one_rev.size))
+    rro_rec = np.zeros_like(x)
     if m:
         orders = b.frequencies / speed
         rep = np.abs(orders - np.round(orders)) < 1e-9
-        a_c, a_s = coef[:, 1 : 1 + m], coef[:, 1 + m :]
         if rep.any():
-            spr = max(2048, int(16 * np.abs(orders[rep]).max()))
-            wr = 2.0 * np.pi * np.outer(b.frequencies[rep], np.arange(spr) / (spr * speed))
-            wave = np.einsum("bk,kn->bn", a_c[:, rep], np.cos(wr), optimize=False)
-            wave += np.einsum("bk,kn->bn", a_s[:, rep], np.sin(wr), optimize=False)
-            rro = np.ptp(wave, axis=1)
-        if (~rep).any():
-            wn = w[~rep]
-            wave = np.einsum("bk,kn->bn", a_c[:, ~rep], np.cos(wn), optimize=False)
-            wave += np.einsum("bk,kn->bn", a_s[:, ~rep], np.sin(wn), optimize=False)
-            nrro = np.ptp(wave, axis=1)
-    rro = np.where(scale == 0.0, 0.0, rro)
-    nrro = np.where(scale == 0.0, 0.0, nrro)
-    if use_lines.all() or b.sync is None:
-        if b.sync is None:
-            rro = np.where(use_lines, rro, 0.0)
-            nrro = np.where(use_lines, nrro, 0.0)
-        return rro, nrro
-    cs, ths, spr_s = b.sync
-    if cs.shape[0] == 0:
-        xs, sync_status = x, status
-    else:
-        qs_, _, sync_status, _ = solve_batch(cs, 0.5 * errors, ths, *args)
-        xs = qs_[:, :, 0]
-    sep = separate_rro_nrro(xs, spr_s, axis=-1)
-    avg_rro = np.where(sync_status == 0, sep.rro_pp, np.nan)
-    avg_nrro = np.where(sync_status == 0, sep.nrro_pp, np.nan)
-    return np.where(use_lines, rro, avg_rro), np.where(use_lines, nrro, avg_nrro)
+            a_c, a_s = coef[:, 1 : 1 + m][:, rep], coef[:, 1 + m :][:, rep]
+            for tt, out in ((one_rev, rro_rev), (t, rro_rec)):
+                wr = 2.0 * np.pi * np.outer(b.frequencies[rep], tt)
+                out += np.einsum("bk,kn->bn", a_c, np.cos(wr), optimize=False)
+                out += np.einsum("bk,kn->bn", a_s, np.sin(wr), optimize=False)
+    residual = x - fitted
+    n_rev = math.floor(t.size * (t[1] - t[0]) * speed + 1e-9)
+    spr_f = 1.0 / (speed * (t[1] - t[0]))
+    spr = round(spr_f)
+    if b.synchronous and n_rev >= 2 and abs(spr_f - spr) < 1e-6 * spr:
+        blocks = residual[:, : n_rev * spr].reshape(n_b, n_rev, spr)
+        avg = blocks.mean(axis=1)
+        se = blocks.std(axis=1, ddof=1) / math.sqrt(n_rev)
+        uncertainty = np.sqrt(np.mean(se**2, axis=1))
+        avg = avg - avg.mean(axis=1, keepdims=True)
+        level = np.sqrt(np.mean(avg**2, axis=1))
+        keep = (level > 3.0 * uncertainty) & (level > RESIDUAL_REL * np.std(x, axis=1))
+        if keep.any():
+            phase = np.rint((t - t[0]) * speed * spr).astype(np.int64) % spr
+            idx = (np.arange(one_rev.size) * spr // one_rev.size) % spr
+            rro_rec = rro_rec + np.where(keep[:, None], avg[:, phase], 0.0)
+            rro_rev = rro_rev + np.where(keep[:, None], avg[:, idx], 0.0)
+    covers_rev = t.size * (t[1] - t[0]) * speed >= 1.0 - 1e-9
+    rro = np.ptp(rro_rec if covers_rev else rro_rev, axis=1)
+    nrro = np.ptp(x - rro_rec, axis=1)
+    return rro, nrro
 
 
 def _evaluate_batched(
@@ -660,13 +688,18 @@ def _evaluate_batched(
     records = np.ascontiguousarray(np.transpose(q, (0, 2, 1)).reshape(-1, t.size))
     coef = project_rows(records, b.projector).reshape(len(points), 2, 1 + 2 * m)
     pp = 2.0 * np.hypot(coef[:, :, 1 : 1 + m], coef[:, :, 1 + m :])  # (B, 2, m)
-    rro, nrro = _split_batch(b, q, coef[:, 0, :], errors, status, args)
+    rro, nrro = _split_batch(b, q, coef[:, 0, :])
     radial = np.ptp(q[:, :, 0], axis=1)
     for row in range(len(points)):
         if status[row] != 0:
-            cause = qs2.CAUSES.get(int(status[row]), "solver failure")
+            code = int(status[row])
+            cause = qs2.CAUSES.get(code, "solver failure")
             at = int(instant[row])
-            chunk["errors"][str(task.start + row)] = f"{cause} (instant {at}, t = {t[at]:.6g} s)"
+            # the exception the model's own run() raises for this status, so that a failed
+            # bearing reads the same on both paths
+            kind = {qs2.TOO_FEW_LOADED: ContactLossError, qs2.NOT_CONVERGED: ConvergenceError}
+            exc = kind.get(code, NumericalError)(cause, at, float(t[at]))
+            chunk["errors"][str(task.start + row)] = error_text(exc)
             for k in RUNOUT_KEYS:
                 chunk["runout"][k].append(None)
             continue
@@ -801,17 +834,27 @@ class StudyResult:
             "models": sorted(set(self.model)),
             "samples": self.samples,
             "failed": len(self.errors),
+            "errors": self.error_list(),
             "quantities": [q.key for q in self.quantities],
             "runout": runout,
             "components": comps,
         }
 
-    def to_json(self) -> dict[str, Any]:
-        """The ``runout study --json`` object (DESIGN.md contract).
+    def error_list(self, limit: int = ERRORS_SHOWN) -> list[dict[str, Any]]:
+        """The first ``limit`` failed samples as ``{"sample": i, "error": "Type: message"}``.
 
-        Monte Carlo: ``samples``, ``runout`` and ``components`` with each p-p as {mean, std,
-        p5, p50, p95}. Sweep: the same statistics over the points, plus ``points`` (values,
-        model, runout and components of each point).
+        Bounded: a study where every one of 10^5 samples fails must not write 10^5 messages
+        into summary.json; ``failed`` gives the count, ``points`` (sweeps) every error.
+        """
+        return [{"sample": i, "error": self.errors[i]} for i in sorted(self.errors)[:limit]]
+
+    def to_json(self) -> dict[str, Any]:
+        """The ``runout study --json`` object (the documented JSON contract, docs/studies.md).
+
+        Monte Carlo: ``samples``, ``failed``, ``errors`` (the first ERRORS_SHOWN failed samples
+        with their error), ``runout`` and ``components`` with each p-p as {mean, std, p5, p50,
+        p95}. Sweep: the same statistics over the points, plus ``points`` (values, model,
+        runout and components of each point).
         """
         full = self.summary()
 
@@ -825,6 +868,7 @@ class StudyResult:
             "seed": self.seed,
             "samples": self.samples,
             "failed": len(self.errors),
+            "errors": full["errors"],
             "runout": {k: trim(v) for k, v in full["runout"].items()},
             "components": [
                 {
@@ -863,7 +907,8 @@ class StudyResult:
     def write(self, directory: Path, plots: bool = True) -> list[Path]:
         """Write ``summary.json``, ``samples.csv`` and plots into ``directory``."""
         directory.mkdir(parents=True, exist_ok=True)
-        written = [_write_text(directory / "summary.json", _dumps(self.summary(), indent=2))]
+        summary = _nan_to_none(self.summary())  # every sample failed: no statistics, null
+        written = [_write_text(directory / "summary.json", _dumps(summary, indent=2))]
         written.append(self._write_csv(directory / "samples.csv"))
         if plots:
             from runout.plotting import plot_study
@@ -891,14 +936,14 @@ class StudyResult:
 
     def _write_csv(self, path: Path) -> Path:
         cols = self.columns()
-        tmp = path.with_suffix(".tmp")
-        with tmp.open("w", newline="", encoding="utf-8") as fh:
+
+        def rows(fh: TextIO) -> None:
             writer = csv.writer(fh, lineterminator="\n")
             writer.writerow([name for name, _ in cols])
             for i in range(self.samples):
                 writer.writerow([_cell(col[i]) for _, col in cols])
-        os.replace(tmp, path)
-        return path
+
+        return write_atomic(path, rows)
 
 
 def _cell(value: Any) -> str:
@@ -911,24 +956,333 @@ def _finite(value: float) -> float | None:
     return float(value) if math.isfinite(value) else None
 
 
+def _nan_to_none(obj: Any) -> Any:
+    """``obj`` with every non-finite float replaced by None (JSON has no NaN)."""
+    if isinstance(obj, float):
+        return _finite(obj)
+    if isinstance(obj, dict):
+        return {k: _nan_to_none(v) for k, v in obj.items()}
+    if isinstance(obj, list):
+        return [_nan_to_none(v) for v in obj]
+    return obj
+
+
 def _dumps(obj: Any, indent: int | None = None) -> str:
     return json.dumps(obj, indent=indent, sort_keys=True, allow_nan=False) + "\n"
 
 
 def _write_text(path: Path, text: str) -> Path:
-    tmp = path.with_name(path.name + ".tmp")
-    tmp.write_text(text, encoding="utf-8")
-    os.replace(tmp, path)
+    return write_atomic(path, lambda fh: fh.write(text))
+
+
+# --------------------------------------------------------------------------------------------
+# output directories: atomic files, one writer, only runout's own directories
+# --------------------------------------------------------------------------------------------
+#: The lock file of an output directory (holds the writer's PID; removed when it ends).
+LOCK_NAME = ".lock"
+#: Temporary files of :func:`write_atomic`: ``.<name>.<12 hex digits>.tmp``.
+_TEMP = re.compile(r"^\..+\.[0-9a-f]{12}\.tmp$")
+#: What ``runout sweep-dynamic`` writes into its ``--out`` (legacy directories have no marker).
+_SWEEP_DYNAMIC = re.compile(r"^(points|sweep\.csv|trend\.png|spectra_.+\.png)$")
+
+
+class OutputError(StudyError):
+    """An output directory that cannot be used: not a directory, unwritable, foreign, locked."""
+
+
+def write_atomic(path: Path, write: Callable[[TextIO], Any]) -> Path:
+    """Write ``path`` through a uniquely named temporary file in the same directory.
+
+    ``os.replace`` within one directory is atomic: a reader, or a study resumed after a kill,
+    sees the old file or the new one, never half of one. The temporary name is unique
+    (``.<name>.<random>.tmp``, created with O_EXCL), so two writers can never truncate or
+    rename each other's temporary file, and a leftover of a killed run is recognised and
+    removed by the next run (:func:`_remove_leftovers`). Created with mode 0o666 minus the
+    umask, like any file the user writes (``mkstemp`` would make it private).
+
+    Raises
+    ------
+    OutputError
+        Naming ``path`` when the file system refuses (read-only, full, permissions).
+    """
+    try:
+        for _ in range(100):
+            tmp = path.with_name(f".{path.name}.{secrets.token_hex(6)}.tmp")
+            try:
+                fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
+            except FileExistsError:
+                continue
+            break
+        else:  # pragma: no cover - 100 collisions of 48 random bits
+            raise FileExistsError(f"no free temporary name next to {path}")
+        try:
+            with os.fdopen(fd, "w", encoding="utf-8", newline="") as fh:
+                write(fh)
+            os.replace(tmp, path)
+        except BaseException:
+            tmp.unlink(missing_ok=True)
+            raise
+    except OSError as exc:
+        raise OutputError(f"{path}: cannot write ({exc.strerror or exc})") from None
     return path
+
+
+def output_directory(out: Path | str, option: str = "--out") -> Path:
+    """Check ``out`` can be an output directory and create it (with its parents).
+
+    Parameters
+    ----------
+    out : path or str
+        As the user gave it. An empty string is refused: ``Path("")`` is the current
+        directory, and writing a study there by accident would replace its files.
+    option : str
+        Name of the option in messages.
+
+    Raises
+    ------
+    OutputError
+        One line naming the path: empty, an existing file (``/dev/null`` too), or a directory
+        that cannot be created.
+    """
+    if isinstance(out, str) and not out.strip():
+        raise OutputError(f"{option}: empty path; give a directory (use {option} . for this one)")
+    path = Path(out)
+    if path.exists() and not path.is_dir():
+        raise OutputError(f"{option} {path}: exists and is not a directory")
+    try:
+        path.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise OutputError(
+            f"{option} {path}: cannot create the directory ({exc.strerror or exc})"
+        ) from None
+    return path
+
+
+def _own_lock_file(path: Path) -> bool:
+    """Whether ``path`` looks like a lock file of ours: empty or one PID."""
+    try:
+        text = path.read_text(encoding="ascii").strip()
+    except (OSError, ValueError):
+        return False
+    return text == "" or text.isdigit()
+
+
+def _entries(directory: Path) -> list[Path]:
+    """What ``directory`` holds besides our lock file and leftover temporary files."""
+    return sorted(
+        p
+        for p in directory.iterdir()
+        if not (p.name == LOCK_NAME and _own_lock_file(p)) and not _TEMP.match(p.name)
+    )
+
+
+def refuse_foreign(directory: Path, kind: str, force: bool, option: str = "--out") -> None:
+    """Refuse a non-empty ``directory`` that is not a runout output of ``kind``.
+
+    A study replaces its own files (chunks, manifest, summary, CSV, plots) in its output
+    directory; pointed by mistake at a directory of the user's (or of another command) it
+    would overwrite files that happen to share those names and mix its files with others.
+
+    Parameters
+    ----------
+    directory : Path
+        An existing directory.
+    kind : {"study", "sweep-dynamic"}
+        A study directory holds a ``manifest.json`` of format FORMAT; a sweep-dynamic
+        directory holds only ``points/``, ``sweep.csv``, ``trend.png`` and ``spectra_*.png``.
+    force : bool
+        Write into the directory anyway (only the files runout writes are replaced).
+
+    Raises
+    ------
+    OutputError
+        Naming the directory and the first entry that is not runout's.
+    StudyError
+        A study directory whose manifest is corrupted (naming the file).
+    """
+    if force:
+        return
+    try:
+        entries = _entries(directory)
+    except OSError as exc:
+        raise OutputError(f"{option} {directory}: cannot list ({exc.strerror or exc})") from None
+    if not entries:
+        return
+    if kind == "study":
+        manifest = directory / "manifest.json"
+        if manifest.is_file():
+            _read_manifest(manifest)  # a corrupted manifest is an error of its own
+            return
+        foreign: Path | None = entries[0]
+    else:
+        foreign = next((p for p in entries if not _SWEEP_DYNAMIC.match(p.name)), None)
+    if foreign is None:
+        return
+    raise OutputError(
+        f"{option} {directory}: not empty and not a runout {kind} output (it holds "
+        f"{foreign.name!r}); choose an empty directory or pass --force to write into it"
+    )
+
+
+def _remove_leftovers(directory: Path) -> None:
+    """Delete temporary files left by a killed writer (only names write_atomic makes)."""
+    for folder in (directory, directory / "chunks", directory / "points"):
+        if folder.is_dir():
+            for p in folder.iterdir():
+                if _TEMP.match(p.name):
+                    p.unlink(missing_ok=True)
+
+
+def _lock_holder(fd: int) -> str:
+    try:
+        text = os.pread(fd, 32, 0).decode("ascii", "replace").strip()
+    except OSError:
+        text = ""
+    return text if text.isdigit() else "unknown"
+
+
+def _pid_alive(pid: int) -> bool:  # pragma: no cover - only without fcntl (Windows)
+    if pid <= 0:
+        return False
+    if sys.platform == "win32":
+        import ctypes
+
+        handle = ctypes.windll.kernel32.OpenProcess(0x1000, False, pid)  # type: ignore[attr-defined]
+        if not handle:
+            return False
+        ctypes.windll.kernel32.CloseHandle(handle)  # type: ignore[attr-defined]
+        return True
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True
+    return True
+
+
+@contextlib.contextmanager
+def output_lock(directory: Path) -> Iterator[Path]:
+    """Hold the exclusive writer lock of ``directory`` (``directory/.lock``) while in the block.
+
+    POSIX: ``flock`` on the lock file. The kernel releases it when the holder ends, even by
+    SIGKILL, so a lock is never stale; the file holds the holder's PID for the message.
+    Without ``fcntl`` (Windows) the file is created with O_EXCL and a lock whose PID is no
+    longer running is taken over. The file is removed on the way out; a writer that opened
+    it just before must then lock the file now at the path (checked with ``samestat``),
+    otherwise two writers could hold locks on two different files.
+
+    Raises
+    ------
+    OutputError
+        ``"<dir>/.lock: another runout study is writing to <dir> (pid N)"``, or naming the
+        lock file when it cannot be created (unwritable directory).
+    """
+    path = directory / LOCK_NAME
+    busy = f"{path}: another runout study is writing to {directory} (pid {{}})"
+    try:
+        fd = _acquire(path, busy)
+    except OSError as exc:
+        raise OutputError(f"{path}: cannot create the lock file ({exc.strerror or exc})") from None
+    try:
+        os.ftruncate(fd, 0)
+        os.pwrite(fd, f"{os.getpid()}\n".encode(), 0)
+        yield path
+    finally:
+        with contextlib.suppress(OSError):
+            path.unlink()
+        os.close(fd)
+
+
+def _acquire(path: Path, busy: str) -> int:
+    if fcntl is None:  # pragma: no cover - Windows
+        while True:
+            try:
+                return os.open(path, os.O_RDWR | os.O_CREAT | os.O_EXCL, 0o666)
+            except FileExistsError:
+                holder = path.read_text(encoding="ascii", errors="replace").strip()
+                if holder.isdigit() and _pid_alive(int(holder)):
+                    raise OutputError(busy.format(holder)) from None
+                path.unlink(missing_ok=True)  # stale: its writer is gone
+    while True:
+        fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o666)
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            holder = _lock_holder(fd)
+            os.close(fd)
+            raise OutputError(busy.format(holder)) from None
+        except BaseException:
+            os.close(fd)
+            raise
+        try:
+            if os.path.samestat(os.fstat(fd), os.stat(path)):
+                return fd
+        except FileNotFoundError:
+            pass
+        os.close(fd)  # the holder removed that file on its way out: lock the new one
 
 
 # --------------------------------------------------------------------------------------------
 # running
 # --------------------------------------------------------------------------------------------
-def _init_worker() -> None:  # pragma: no cover - runs in worker processes
+def _init_worker(parent: int | None = None) -> None:  # pragma: no cover - runs in workers
+    """Set up a pool worker: Numba single-threaded, and tied to the life of ``parent``."""
     import numba
 
     numba.set_num_threads(1)
+    if parent is not None:
+        die_with_parent(parent)
+
+
+#: ``prctl`` option of Linux: signal sent to this process when its parent ends.
+PR_SET_PDEATHSIG = 1
+
+
+def die_with_parent(parent: int, kernel: bool = True) -> None:  # pragma: no cover - workers
+    """End this process as soon as process ``parent`` ends, however it ends.
+
+    A pool worker waits on its task queue, whose write end it holds itself, so it never sees
+    its parent go: a SIGKILLed ``runout study --workers N`` would leave N orphans finishing
+    their chunks and then waiting forever. On Linux ``prctl(PR_SET_PDEATHSIG, SIGKILL)`` has
+    the kernel kill the worker with its parent. Everywhere, and as a second line on Linux
+    (where the signal follows the parent *thread*, not process), a daemon thread waits on the
+    parent's sentinel (:func:`multiprocessing.parent_process`; polls ``os.getppid()`` when
+    there is none) and ends the process.
+
+    Parameters
+    ----------
+    parent : int
+        PID of the parent (the process that submits the chunks).
+    kernel : bool
+        Use ``prctl`` where available; False tests the portable watchdog alone.
+    """
+    if kernel and sys.platform.startswith("linux"):
+        with contextlib.suppress(OSError, AttributeError):
+            import ctypes
+
+            libc = ctypes.CDLL(None, use_errno=True)
+            libc.prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
+    if os.getppid() != parent:  # the parent was gone before the line above took effect
+        os._exit(1)
+    watch = threading.Thread(
+        target=_watch_parent, args=(parent,), name="runout-parent-watch", daemon=True
+    )
+    watch.start()
+
+
+def _watch_parent(parent: int) -> None:  # pragma: no cover - runs in workers
+    import multiprocessing
+    from multiprocessing.connection import wait
+
+    proc = multiprocessing.parent_process()
+    if proc is not None and proc.sentinel is not None:
+        while proc.is_alive():
+            wait([proc.sentinel], timeout=60.0)
+    else:
+        while os.getppid() == parent:
+            time.sleep(0.5)
+    os._exit(1)  # no cleanup: the parent that would collect our results is gone
 
 
 def dask_executor(address: str | None = None, **cluster: Any) -> Executor:
@@ -962,8 +1316,23 @@ def dask_executor(address: str | None = None, **cluster: Any) -> Executor:
     return client.get_executor()
 
 
-def _digest(data: dict[str, Any], study: StudySpec) -> str:
+def _digest(data: dict[str, Any], study: StudySpec, base_dir: str) -> str:
+    """SHA-256 of what decides a study's numbers: the case (SI), ``[study]``, profile files.
+
+    A ``[[profile]]`` names a CSV file; its bytes are part of the case, so a remeasured
+    profile makes another study (its chunks are recomputed on resume) even when the case file
+    itself did not change.
+    """
+    files: dict[str, str] = {}
+    for entry in data.get("profile", []):
+        name = str(entry.get("file", ""))
+        try:
+            files[name] = hashlib.sha256((Path(base_dir) / name).read_bytes()).hexdigest()
+        except OSError:
+            files[name] = "unreadable"  # parse_case reports it when the study runs
     doc = {"case": data, "study": study.model_dump(mode="json")}
+    if files:  # studies without profiles keep the digest of earlier versions
+        doc["profile_files"] = files
     text = json.dumps(doc, sort_keys=True, default=str)
     return hashlib.sha256(text.encode()).hexdigest()
 
@@ -972,56 +1341,37 @@ def _chunk_path(directory: Path, index: int) -> Path:
     return directory / "chunks" / f"chunk_{index:05d}.json"
 
 
-def run_study(
-    case: Case,
-    *,
-    executor: Executor | None = None,
-    workers: int = 1,
-    out: Path | str | None = None,
-    resume: bool = False,
-    progress: Callable[[int, int], None] | None = None,
-    chunk_size: int | None = None,
-    plots: bool = True,
-) -> StudyResult:
-    """Run the study described by ``case.study``.
+@dataclass(frozen=True)
+class _Plan:
+    """A study cut into chunks: what run_study and load_study both need."""
 
-    Parameters
-    ----------
-    case : Case
-        A validated case with a ``[study]`` table.
-    executor : concurrent.futures.Executor, optional
-        Where chunks run (e.g. :func:`dask_executor`); overrides ``workers``.
-    workers : int
-        Local worker processes when no executor is given (1: in this process).
-    out : path, optional
-        Directory for the chunk files, ``manifest.json``, ``summary.json``, ``samples.csv`` and
-        plots.
-    resume : bool
-        Continue the run recorded in ``out/manifest.json`` (same case and study required).
-    progress : callable, optional
-        Called as ``progress(samples_done, samples_total)`` after every chunk.
-    chunk_size : int, optional
-        Overrides ``[study] chunk_size``.
-    plots : bool
-        Write plots into ``out``.
+    study: StudySpec
+    quantities: tuple[Quantity, ...]
+    models: tuple[str, ...]
+    total: int
+    size: int
+    tasks: list[ChunkTask]
+    digest: str
 
-    Returns
-    -------
-    StudyResult
+    def manifest(self) -> dict[str, Any]:
+        """A fresh manifest.json document of this plan (no chunk done)."""
+        return {
+            "format": FORMAT,
+            "digest": self.digest,
+            "kind": self.study.kind,
+            "samples": self.total,
+            "chunk_size": self.size,
+            "chunks": len(self.tasks),
+            "done": [],
+            "complete": False,
+        }
 
-    Raises
-    ------
-    StudyError
-        Bad output directory or a resume that does not match the case.
-    """
+
+def _plan(case: Case, chunk_size: int | None, parallel: bool = False) -> _Plan:
     study = _study_of(case)
     data = _case_data(case)
     quantities = tuple(plan_quantities(case, data))
     models = tuple(_models(case))
-    from runout.conventions import enforce
-
-    for model in models:  # a key a model refuses ends the study before any work
-        enforce(case, model)
     if study.kind == "montecarlo":
         total = study.samples
     else:
@@ -1029,7 +1379,6 @@ def run_study(
     size = chunk_size or study.chunk_size
     n_chunks = max(1, math.ceil(total / size))
     base_dir = str(Path(case.path).resolve().parent) if case.path != "<case>" else os.getcwd()
-    in_process = executor is None and workers <= 1
     tasks = [
         ChunkTask(
             index=k,
@@ -1042,32 +1391,119 @@ def run_study(
             kind=study.kind,
             seed=study.seed,
             models=models,
-            parallel=in_process and threading.current_thread() is threading.main_thread(),
+            parallel=parallel,
         )
         for k in range(n_chunks)
     ]
-    # sweep points are known up front: check them before any work is scheduled
-    directory = Path(out) if out is not None else None
+    return _Plan(study, quantities, models, total, size, tasks, _digest(data, study, base_dir))
+
+
+_log = logging.getLogger(__name__)
+
+
+def run_study(
+    case: Case,
+    *,
+    executor: Executor | None = None,
+    workers: int = 1,
+    out: Path | str | None = None,
+    resume: bool = False,
+    progress: Callable[[int, int], None] | None = None,
+    chunk_size: int | None = None,
+    plots: bool = True,
+    force: bool = False,
+    notify: Callable[[str], None] | None = None,
+) -> StudyResult:
+    """Run the study described by ``case.study``.
+
+    Parameters
+    ----------
+    case : Case
+        A validated case with a ``[study]`` table.
+    executor : concurrent.futures.Executor, optional
+        Where chunks run (e.g. :func:`dask_executor`); overrides ``workers``.
+    workers : int
+        Local worker processes when no executor is given (1: in this process). The workers
+        end with this process, even when it is killed (:func:`die_with_parent`).
+    out : path, optional
+        Directory for the chunk files, ``manifest.json``, ``summary.json``, ``samples.csv`` and
+        plots. It must be empty, new, or the output of a study (see ``force``); it is locked
+        for the whole run (:func:`output_lock`).
+    resume : bool
+        Continue the run recorded in ``out/manifest.json`` (same case and study required).
+        Every chunk is checked (readable, complete, written by this study: its ``digest``);
+        one that is not is recomputed and said through ``notify``.
+    progress : callable, optional
+        Called as ``progress(samples_done, samples_total)`` after every chunk.
+    chunk_size : int, optional
+        Overrides ``[study] chunk_size``.
+    plots : bool
+        Write plots into ``out``.
+    force : bool
+        Write into a non-empty directory that is not a study output, start afresh over a
+        corrupted manifest or over a different study instead of refusing.
+    notify : callable, optional
+        Called with a one-line note (chunks recomputed on resume, a manifest replaced under
+        ``force``); default: a warning on the ``runout.study`` logger.
+
+    Returns
+    -------
+    StudyResult
+        Failed samples are in ``errors``; the study never stops on one.
+
+    Raises
+    ------
+    StudyError
+        Bad output directory (:class:`OutputError`: empty path, a file, unwritable, foreign,
+        locked by another writer), a corrupted manifest, a resume that does not match the
+        case, or a worker process that died.
+    """
+    in_process = executor is None and workers <= 1
+    plan = _plan(
+        case, chunk_size, in_process and threading.current_thread() is threading.main_thread()
+    )
+    from runout.conventions import enforce
+
+    for model in plan.models:  # a key a model refuses ends the study before any work
+        enforce(case, model)
+    notify = notify or _log.warning
+    if out is None:
+        return _run(None, case, plan, executor, workers, False, False, progress, plots, notify)
+    directory = output_directory(out)
+    refuse_foreign(directory, "study", force)
+    with output_lock(directory):
+        return _run(
+            directory, case, plan, executor, workers, resume, force, progress, plots, notify
+        )
+
+
+def _run(
+    directory: Path | None,
+    case: Case,
+    plan: _Plan,
+    executor: Executor | None,
+    workers: int,
+    resume: bool,
+    force: bool,
+    progress: Callable[[int, int], None] | None,
+    plots: bool,
+    notify: Callable[[str], None],
+) -> StudyResult:
+    """run_study once ``directory`` (if any) is checked and locked."""
+    manifest = plan.manifest()
     results: dict[int, dict[str, Any]] = {}
-    manifest: dict[str, Any] = {
-        "format": FORMAT,
-        "digest": _digest(data, study),
-        "kind": study.kind,
-        "samples": total,
-        "chunk_size": size,
-        "chunks": n_chunks,
-        "done": [],
-        "complete": False,
-    }
     if directory is not None:
-        results = _prepare_directory(directory, manifest, resume)
+        results = _prepare_directory(directory, manifest, plan, resume, force, notify)
+    tasks = plan.tasks
     done_samples = sum(tasks[k].stop - tasks[k].start for k in results)
     if progress is not None:
-        progress(done_samples, total)
+        progress(done_samples, plan.total)
     pending = [t for t in tasks if t.index not in results]
 
     def finished(index: int, chunk: dict[str, Any]) -> None:
         nonlocal done_samples
+        # the chunk names the case + study that wrote it: a resume accepts only its own
+        chunk["digest"] = plan.digest
         results[index] = chunk
         if directory is not None:
             _write_text(_chunk_path(directory, index), _dumps(chunk))
@@ -1075,14 +1511,17 @@ def run_study(
             _write_text(directory / "manifest.json", _dumps(manifest, indent=2))
         done_samples += tasks[index].stop - tasks[index].start
         if progress is not None:
-            progress(done_samples, total)
+            progress(done_samples, plan.total)
 
     _execute(pending, executor, workers, finished)
-    result = _assemble(case, study, quantities, [results[k] for k in range(n_chunks)])
+    result = _assemble(case, plan.study, plan.quantities, [results[k] for k in range(len(tasks))])
     if directory is not None:
         manifest["complete"] = True
         _write_text(directory / "manifest.json", _dumps(manifest, indent=2))
-        result.write(directory, plots=plots)
+        try:
+            result.write(directory, plots=plots)
+        except OSError as exc:  # a plot or the directory (summary and CSV name their file)
+            raise OutputError(f"{directory}: cannot write ({exc.strerror or exc})") from None
     return result
 
 
@@ -1100,7 +1539,12 @@ def _execute(
         return
     own = executor is None
     pool: Executor = (
-        ProcessPoolExecutor(max_workers=workers, initializer=_init_worker, mp_context=_context())
+        ProcessPoolExecutor(
+            max_workers=workers,
+            initializer=_init_worker,
+            initargs=(os.getpid(),),
+            mp_context=_context(),
+        )
         if executor is None
         else executor
     )
@@ -1109,7 +1553,17 @@ def _execute(
             pool.submit(evaluate_chunk, task): task.index for task in tasks
         }
         for fut in as_completed(futures):
-            finished(futures[fut], fut.result())
+            index = futures[fut]
+            try:
+                chunk = fut.result()
+            except Exception as exc:  # a dead worker, an executor's failure
+                # evaluate_chunk records every sample's failure itself: what lands here lost
+                # the whole chunk (a worker killed, out of memory, a scheduler gone)
+                raise StudyError(
+                    f"chunk {index}: the worker evaluating it failed ({error_text(exc)}); the "
+                    "chunks already written to --out are kept (rerun with --resume)"
+                ) from None
+            finished(index, chunk)
     finally:
         if own:
             pool.shutdown(cancel_futures=True)
@@ -1122,41 +1576,227 @@ def _context() -> Any:
     return multiprocessing.get_context("spawn")
 
 
-def _prepare_directory(
-    directory: Path, manifest: dict[str, Any], resume: bool
-) -> dict[int, dict[str, Any]]:
-    """Create or check ``directory``; return the chunks already done (resume)."""
-    if directory.exists() and not directory.is_dir():
-        raise StudyError(f"--out {directory}: exists and is not a directory")
-    (directory / "chunks").mkdir(parents=True, exist_ok=True)
-    old_path = directory / "manifest.json"
-    old: dict[str, Any] | None = None
-    if old_path.exists():
-        try:
-            old = json.loads(old_path.read_text(encoding="utf-8"))
-        except (OSError, ValueError):
-            old = None
-    done: dict[int, dict[str, Any]] = {}
-    if resume:
-        if old is None:
-            raise StudyError(f"--resume: no readable manifest.json in {directory}")
-        for key in ("format", "digest", "samples", "chunk_size", "chunks"):
-            if old.get(key) != manifest[key]:
-                raise StudyError(
-                    f"--resume: {directory} holds a run of a different case or study ({key} "
-                    "differs); run without --resume to start afresh"
-                )
-        for index in old.get("done", []):
-            path = _chunk_path(directory, int(index))
-            try:
-                done[int(index)] = json.loads(path.read_text(encoding="utf-8"))
-            except (OSError, ValueError):
-                continue  # recomputed
+# ---------------------------------------------------------------- manifest and chunk checks
+_RESUME_KEYS = ("format", "digest", "samples", "chunk_size", "chunks")
+
+
+def _is_int(value: Any) -> bool:
+    return isinstance(value, int) and not isinstance(value, bool)
+
+
+def _is_number(value: Any) -> bool:
+    return isinstance(value, int | float) and not isinstance(value, bool) and math.isfinite(value)
+
+
+def _manifest_problem(doc: Any) -> str | None:
+    """What makes ``doc`` not a manifest.json of this version, or None."""
+    if not isinstance(doc, dict):
+        return f"a JSON {type(doc).__name__}, not an object"
+    if doc.get("format") != FORMAT:
+        return f"format is {doc.get('format')!r}, not {FORMAT!r}"
+    if not isinstance(doc.get("digest"), str):
+        return "no study digest"
+    if doc.get("kind") not in ("montecarlo", "sweep"):
+        return f"kind is {doc.get('kind')!r}"
+    for key in ("samples", "chunk_size", "chunks"):
+        if not _is_int(doc.get(key)) or doc[key] < 1:
+            return f"{key} is {doc.get(key)!r}, not a positive integer"
+    done = doc.get("done")
+    if not isinstance(done, list) or not all(_is_int(k) and 0 <= k < doc["chunks"] for k in done):
+        return f"done is not a list of chunk numbers below {doc['chunks']}"
+    if len(set(done)) != len(done):
+        return "done lists a chunk twice"
+    if not isinstance(doc.get("complete"), bool):
+        return "complete is not true or false"
+    return None
+
+
+def _read_manifest(path: Path) -> dict[str, Any]:
+    """``path`` (a manifest.json) checked field by field.
+
+    Raises
+    ------
+    StudyError
+        Naming the file when it cannot be read or is not a manifest of this version: a
+        truncated or hand-edited manifest must not become a traceback, nor a resume that
+        trusts whatever it lists.
+    """
+    try:
+        doc = json.loads(path.read_text(encoding="utf-8"))
+    except OSError as exc:
+        problem = f"cannot read: {exc.strerror or exc}"
+    except ValueError as exc:  # JSONDecodeError, UnicodeDecodeError
+        problem = f"not valid JSON: {exc}"
     else:
-        for path in (directory / "chunks").glob("chunk_*.json"):
-            path.unlink()
-    manifest["done"] = sorted(done)
-    _write_text(old_path, _dumps(manifest, indent=2))
+        found = _manifest_problem(doc)
+        if found is None:
+            return dict(doc)
+        problem = found
+    raise StudyError(
+        f"{path}: corrupted study manifest ({problem}); pass --force to start the study afresh "
+        f"in {path.parent}"
+    )
+
+
+def _chunk_problem(chunk: Any, task: ChunkTask, digest: str) -> str | None:
+    """What makes ``chunk`` not the result of ``task`` in the study ``digest``, or None.
+
+    The digest comes first: a chunk swapped in from another study (or another version of
+    this case) is well formed and would silently replace this study's samples. The rest is
+    the structure _assemble and StudyResult rely on, so that a damaged file is recomputed
+    instead of raising KeyError / TypeError half-way through the statistics.
+    """
+    if not isinstance(chunk, dict):
+        return f"a JSON {type(chunk).__name__}, not an object"
+    if chunk.get("digest") != digest:
+        return "written by another study" if "digest" in chunk else "no study digest"
+    for key, want in (("chunk", task.index), ("start", task.start), ("stop", task.stop)):
+        if not _is_int(chunk.get(key)) or chunk[key] != want:
+            return f"{key} is {chunk.get(key)!r}, expected {want}"
+    n = task.stop - task.start
+    model, values, runout = chunk.get("model"), chunk.get("values"), chunk.get("runout")
+    if not isinstance(model, list) or len(model) != n or not all(isinstance(m, str) for m in model):
+        return f"model is not a list of {n} names"
+    if not isinstance(values, dict) or set(values) != {q.key for q in task.quantities}:
+        return "values do not hold the study's quantities"
+    for q in task.quantities:
+        column = values[q.key]
+        if not isinstance(column, list) or len(column) != n:
+            return f"values of {q.key} are not a list of {n}"
+        for v in column:
+            ok = (
+                isinstance(v, list) and len(v) == q.size and all(_is_number(x) for x in v)
+                if q.size > 1
+                else _is_number(v) or isinstance(v, str)
+            )
+            if not ok:
+                return f"a value of {q.key} is {v!r}"
+    if not isinstance(runout, dict) or not all(
+        isinstance(runout.get(k), list)
+        and len(runout[k]) == n
+        and all(v is None or _is_number(v) for v in runout[k])
+        for k in RUNOUT_KEYS
+    ):
+        return "runout is not a list of numbers per figure"
+    lines = chunk.get("lines")
+    if not isinstance(lines, dict):
+        return "lines is not an object"
+    for key, entry in lines.items():
+        if (
+            "|" not in key
+            or not isinstance(entry, dict)
+            or not _is_number(entry.get("frequency_hz"))
+            or not isinstance(entry.get("pp_m"), list)
+            or len(entry["pp_m"]) != n
+            or not all(_is_number(v) for v in entry["pp_m"])
+        ):
+            return f"line {key!r} is damaged"
+    errors = chunk.get("errors")
+    if not isinstance(errors, dict) or not all(
+        k.isdigit() and task.start <= int(k) < task.stop and isinstance(v, str)
+        for k, v in errors.items()
+    ):
+        return "errors is not an object of sample numbers and messages"
+    return None
+
+
+def _load_chunks(
+    directory: Path, indices: Iterable[int], plan: _Plan
+) -> tuple[dict[int, dict[str, Any]], list[str]]:
+    """The recorded chunks that pass :func:`_chunk_problem`, and ``"name: problem"`` of others."""
+    done: dict[int, dict[str, Any]] = {}
+    bad: list[str] = []
+    for index in indices:
+        path = _chunk_path(directory, index)
+        try:
+            chunk = json.loads(path.read_text(encoding="utf-8"))
+        except FileNotFoundError:
+            problem: str | None = "missing"
+        except OSError as exc:
+            problem = f"cannot read: {exc.strerror or exc}"
+        except ValueError:
+            problem = "not valid JSON"
+        else:
+            problem = _chunk_problem(chunk, plan.tasks[index], plan.digest)
+        if problem is None:
+            done[index] = chunk
+        else:
+            bad.append(f"{path.name}: {problem}")
+    return done, bad
+
+
+#: Files a study writes at the top of its output directory (replaced by a fresh run).
+_STUDY_FILES = re.compile(
+    r"^(manifest\.json|summary\.json|samples\.csv|histograms\.png|sweep_.+\.png)$"
+)
+
+
+def _prepare_directory(
+    directory: Path,
+    manifest: dict[str, Any],
+    plan: _Plan,
+    resume: bool,
+    force: bool,
+    notify: Callable[[str], None],
+) -> dict[int, dict[str, Any]]:
+    """Check ``directory`` (locked by us); return the chunks already done (resume).
+
+    Without ``resume`` (or when ``force`` overrides a corrupted manifest or a different
+    study) the chunk files and study outputs of an earlier run are deleted, so that nothing
+    of it can mix with this one; other files are left alone.
+    """
+    _remove_leftovers(directory)
+    path = directory / "manifest.json"
+    old: dict[str, Any] | None = None
+    if path.exists():
+        try:
+            old = _read_manifest(path)
+        except StudyError as exc:
+            if not force:
+                raise
+            notify(f"{exc}".split("; pass --force")[0] + ": --force, started afresh")
+    elif resume and not force:
+        raise StudyError(
+            f"--resume: {path}: no such file (no run to continue); run without --resume"
+        )
+    done: dict[int, dict[str, Any]] = {}
+    fresh = not resume or old is None
+    if not fresh:
+        assert old is not None
+        differs = next((key for key in _RESUME_KEYS if old[key] != manifest[key]), None)
+        if differs is not None and not force:
+            raise StudyError(
+                f"--resume: {directory} holds a run of a different case or study ({differs} "
+                "differs); run without --resume to start afresh"
+            )
+        if differs is not None:
+            notify(
+                f"{path}: a different case or study ({differs} differs): --force, started afresh"
+            )
+            fresh = True
+        else:
+            done, bad = _load_chunks(directory, old["done"], plan)
+            if bad:
+                n = len(bad)
+                shown = "; ".join(bad[:3]) + ("; ..." if n > 3 else "")
+                notify(
+                    f"{directory / 'chunks'}: recomputing {n} chunk{'s' if n > 1 else ''} that "
+                    f"{'were' if n > 1 else 'was'} unreadable or not written by this study "
+                    f"({shown})"
+                )
+    try:
+        if fresh:
+            for p in directory.iterdir():
+                if p.is_file() and _STUDY_FILES.match(p.name):
+                    p.unlink()
+            if (directory / "chunks").is_dir():
+                for p in (directory / "chunks").glob("chunk_*.json"):
+                    p.unlink()
+        manifest["done"] = sorted(done)
+        _write_text(path, _dumps(manifest, indent=2))
+        (directory / "chunks").mkdir(exist_ok=True)
+    except OSError as exc:
+        raise OutputError(f"{directory}: cannot write ({exc.strerror or exc})") from None
     return done
 
 
@@ -1196,15 +1836,21 @@ def _assemble(
 
 
 def load_study(directory: Path | str, case: Case) -> StudyResult:
-    """Read a finished (or partial: missing chunks raise) study from its output directory."""
+    """Read a finished study from its output directory.
+
+    Raises
+    ------
+    StudyError
+        Naming the file: no or a corrupted manifest, a manifest of another case or study, a
+        missing chunk (a partial run) or a chunk that is damaged or not this study's.
+    """
     d = Path(directory)
-    study = _study_of(case)
-    try:
-        manifest = json.loads((d / "manifest.json").read_text(encoding="utf-8"))
-        chunks = [
-            json.loads(_chunk_path(d, k).read_text(encoding="utf-8"))
-            for k in range(int(manifest["chunks"]))
-        ]
-    except (OSError, ValueError, KeyError) as exc:
-        raise StudyError(f"{d}: not a complete study directory ({exc})") from None
-    return _assemble(case, study, tuple(plan_quantities(case)), chunks)
+    manifest = _read_manifest(d / "manifest.json")
+    plan = _plan(case, manifest["chunk_size"])
+    differs = next((k for k in _RESUME_KEYS if manifest[k] != plan.manifest()[k]), None)
+    if differs is not None:
+        raise StudyError(f"{d / 'manifest.json'}: a run of a different case or study ({differs})")
+    chunks, bad = _load_chunks(d, range(len(plan.tasks)), plan)
+    if bad:
+        raise StudyError(f"{d / 'chunks'}: not a complete study of this case ({bad[0]})")
+    return _assemble(case, plan.study, plan.quantities, [chunks[k] for k in range(len(plan.tasks))])

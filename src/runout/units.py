@@ -4,6 +4,11 @@ Case files give a number (taken as SI) or a string carrying its unit (``"3.9688 
 ``"7200 rpm"``, ``"10 deg"``). :func:`to_si` turns either into an SI float after checking the
 dimension. Rotational speeds are stored as rotation frequencies in hertz (revolutions per
 second): ``"1800 rpm"`` becomes 30.0, ``"30 Hz"`` stays 30.0 and ``"188.5 rad/s"`` becomes 30.0.
+
+A string is read by a bounded grammar before pint sees it: a plain decimal number, then a
+product of unit names with integer powers up to :data:`MAX_UNIT_POWER` (``"7850 kg/m^3"``,
+``"200 N*s/m"``), at most :data:`MAX_QUANTITY_CHARS` characters. pint itself evaluates any
+arithmetic (``"10**10**10 N"`` would never return), so nothing else reaches it.
 """
 
 from __future__ import annotations
@@ -54,18 +59,52 @@ KINDS: dict[str, tuple[str, str, str]] = {
     "angle": ("", "rad", "an angle"),
     "speed": ("1 / [time]", "Hz", "a rotational speed"),
     "dimensionless": ("", "", "a plain number"),
+    "memory": ("", "byte", "an amount of memory (e.g. '8 GiB')"),
 }
 
 
+#: Longest quantity string read: a number and a short unit expression fit easily; anything
+#: longer is not a quantity a person typed.
+MAX_QUANTITY_CHARS = 80
+#: Largest power of one unit (m^3 of a density is the largest any key needs).
+MAX_UNIT_POWER = 4
+
 _NUMBER_FIRST = re.compile(r"^\s*[-+]?(\d|\.\d)")
+# The grammar of a quantity string, checked before pint sees it: pint evaluates arbitrary
+# arithmetic ("10**10**10 N" never returns; "2**2**2**2**2 mm" overflows), so only a plain
+# decimal number followed by a product of unit names with small integer powers is accepted.
+_NUMBER = r"[-+]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d+)?"
+_NAME = r"[A-Za-z_µμΩ°%]+"
+_FACTOR = rf"{_NAME}(?:\s*(?:\^|\*\*)\s*[-+]?[1-{MAX_UNIT_POWER}])?"
+_UNITS = rf"(?:1\s*/\s*)?{_FACTOR}(?:\s*(?:\*|/|·|\s)\s*{_FACTOR}){{0,7}}"
+_QUANTITY = re.compile(rf"\s*(?P<number>{_NUMBER})\s*(?P<units>{_UNITS})?\s*")
 
 
 def _parse(text: str) -> Any:
-    ureg = _registry()
+    """A pint quantity from a string of the bounded grammar (number, then unit names)."""
+    shown = text if len(text) <= MAX_QUANTITY_CHARS else text[:MAX_QUANTITY_CHARS] + "..."
+    if len(text) > MAX_QUANTITY_CHARS:
+        raise UnitError(
+            f'"{shown}" is too long for a quantity (at most {MAX_QUANTITY_CHARS} characters)'
+        )
     if not _NUMBER_FIRST.match(text):
         raise UnitError(f'"{text}" cannot be read as a quantity (it must start with a number)')
+    match = _QUANTITY.fullmatch(text)
+    if match is None:
+        raise UnitError(
+            f'"{text}" cannot be read as a quantity: write a plain number and a unit, e.g. '
+            f'"3.9688 mm", "7850 kg/m^3" or "200 N*s/m" (no arithmetic, powers up to '
+            f"{MAX_UNIT_POWER})"
+        )
+    number = match.group("number")
+    # an integer stays an integer, as pint's own parser keeps it (exact unit conversions)
+    magnitude: float | int = int(number) if re.fullmatch(r"[-+]?\d+", number) else float(number)
+    if not math.isfinite(magnitude):
+        raise UnitError(f'"{text}" is not a finite number')
+    ureg = _registry()
     try:
-        return ureg.Quantity(text.strip())
+        units = ureg.parse_units(match.group("units") or "")
+        return ureg.Quantity(magnitude, units)
     except Exception as exc:  # pint raises several unrelated types
         raise UnitError(f'"{text}" cannot be read as a quantity ({exc})') from None
 
@@ -84,6 +123,13 @@ def _speed_hz(q: Any, text: str) -> float:
     return float(q.magnitude) * float(factor)
 
 
+def _bytes(q: Any, text: str) -> float:
+    """Amount of memory in bytes; pint counts information in bits, a dimensionless unit."""
+    if str(q.to_base_units().units) != "bit":
+        raise UnitError(f'"{text}" is not an amount of memory (e.g. "8 GiB", "512 MiB")')
+    return float(q.to("byte").magnitude)
+
+
 def to_si(value: object, kind: str) -> float:
     """Convert a case-file value to an SI float.
 
@@ -97,7 +143,8 @@ def to_si(value: object, kind: str) -> float:
     Returns
     -------
     float
-        The value in SI units; rotational speeds in revolutions per second [Hz].
+        The value in SI units; rotational speeds in revolutions per second [Hz], amounts of
+        memory in bytes [B].
 
     Raises
     ------
@@ -115,6 +162,8 @@ def to_si(value: object, kind: str) -> float:
         q = _parse(value)
         if kind == "speed":
             result = _speed_hz(q, value)
+        elif kind == "memory":
+            result = _bytes(q, value)
         elif kind in ("angle", "dimensionless"):
             if not q.dimensionless:
                 raise UnitError(f'"{value}" is not {word}')

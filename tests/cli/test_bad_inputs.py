@@ -154,6 +154,62 @@ BAD = {
         "bearing.inner_raceway_diameter: required for a cylindrical roller bearing",
     ),
     "not_toml": (VALID + "this is = = not toml\n", "is not valid TOML"),
+    # hostile inputs (tests/hostile/ runs them as subprocesses under limits)
+    "power_tower_unit": (
+        _replace('axial_load = "20 N"', 'axial_load = "10**10**10 N"'),
+        'operation.axial_load: "10**10**10 N" cannot be read as a quantity: write a plain '
+        "number and a unit",
+    ),
+    "infinite_revolutions": (
+        VALID + '[analysis]\nmodel = "linear"\nrevolutions = inf\n',
+        "analysis.revolutions: must be a finite number, got inf",
+    ),
+    "negative_speed": (
+        _replace('speed = "1800 rpm"', 'speed = "-1800 rpm"'),
+        "operation.speed: must be >= 0, got -30.0 Hz: the sense of rotation is not a sign",
+    ),
+    "huge_conformity": (
+        _replace("inner_conformity = 0.52", "inner_conformity = 9.2e18"),
+        "bearing.inner_conformity: conformity f = 9.2e+18 is not below 1",
+    ),
+    "huge_order": (
+        VALID + '[[waviness]]\npart = "inner"\norder = 3000000000\namplitude = "1 nm"\n',
+        "waviness[1].order: order 3000000000 exceeds the largest supported order 1000000",
+    ),
+    "ball_of_negative_diameter": (
+        VALID + '[elements]\ndiameter_errors = ["-4 mm", 0, 0, 0, 0, 0, 0]\n',
+        "elements.diameter_errors[1]: -4 mm on a 3.9688 mm ball leaves a diameter of",
+    ),
+    "balls_passing_through_each_other": (
+        VALID + '[elements]\npitch_errors = ["90 deg", 0, 0, 0, 0, 0, 0]\n',
+        "elements.pitch_errors[2]: the pitch errors put ball 2",
+    ),
+    "negative_damping": (
+        VALID + '[dynamics]\nmass = "0.6 kg"\ndamping = -50\n',
+        "dynamics.damping: must be >= 0, got -50.0",
+    ),
+    "check_runs_the_model_setup": (
+        _replace('axial_load = "20 N"', 'radial_load = "20 N"')
+        + '[analysis]\nmodel = "quasi_static_2d"\n',
+        "operation.axial_load: the quasi_static_2d model needs an axial preload > 0 N",
+    ),
+    "contact_beyond_hertz": (
+        _replace('axial_load = "20 N"', 'axial_load = "1e6 N"'),
+        "operation.axial_load: the most loaded ball carries about",
+    ),
+    "too_many_entries": (
+        VALID + '[[waviness]]\npart = "inner"\norder = 3\namplitude = "1 nm"\n' * 1001,
+        "waviness: has 1001 entries, at most 1000",
+    ),
+    "too_many_elements": (
+        _replace("elements = 7", "elements = 20000"),
+        "bearing.elements: must be at most 10000",
+    ),
+    "study_samples_beyond_the_budget": (
+        VALID + '[analysis]\nmodel = "linear"\n[study]\nkind = "montecarlo"\n'
+        'samples = 10000000000\n[study.vary]\nelement_diameter_sigma = "0.1 um"\n',
+        "study.samples: would need about",
+    ),
 }
 
 
@@ -181,3 +237,32 @@ def test_valid_case_passes(tmp_path: Path) -> None:
 def test_messages_are_one_line_with_error_prefix(tmp_path: Path) -> None:
     _, stderr = _run(tmp_path, BAD["too_few_balls"][0])
     assert re.match(r"^error: ", stderr)
+
+
+def test_a_utf8_byte_order_mark_is_read(tmp_path: Path) -> None:
+    path = tmp_path / "bom.toml"
+    path.write_bytes(b"\xef\xbb\xbf" + VALID.encode("utf-8"))
+    result = runner.invoke(app, ["check", str(path)])
+    assert result.exit_code == 0, result.stderr
+
+
+def test_a_newline_in_a_quoted_key_stays_on_one_line(tmp_path: Path) -> None:
+    code, stderr = _run(tmp_path, VALID.replace("elements = 7", 'elements = 7\n"a\\nb" = 1'))
+    assert code == 2
+    assert len(stderr.splitlines()) == 1, stderr
+    assert "bearing.a\\nb: unknown key" in stderr
+
+
+def test_a_hertz_warning_is_one_warning_line(tmp_path: Path) -> None:
+    code, stderr = _run(tmp_path, _replace('axial_load = "20 N"', 'axial_load = "6000 N"'))
+    assert code == 0, stderr
+    (line,) = stderr.splitlines()
+    assert line.startswith(f"warning: {tmp_path / 'case.toml'}: operation.axial_load: ")
+    assert "ISO 76" in line
+
+
+def test_an_emoji_code_in_a_value_is_printed_as_text(tmp_path: Path) -> None:
+    # rich turned ":x:" in an echoed value into an emoji, so the line no longer said the input
+    code, stderr = _run(tmp_path, _replace('speed = "1800 rpm"', 'speed = "1 :x:"'))
+    assert code == 2
+    assert '"1 :x:"' in stderr

@@ -37,8 +37,12 @@ def test_run_json_contract() -> None:
         "label",
         "phase_rad",
         "repeatable",
+        "sources",
     }
     assert first["order"] == pytest.approx(1.0) and "eccentricity" in first["label"]
+    assert len(first["label"]) <= 80
+    top = first["sources"][0]
+    assert top["part"] == "inner" and top["lobes"] == 1 and top["share"] > 0.5
     assert {c["direction"] for c in p["components"]} == {"x", "y"}
     assert any(r["formula"].startswith("Z(1+γ)/2") for r in p["attribution"])
     assert p["frequencies_hz"]["rotation"] == pytest.approx(30.0)

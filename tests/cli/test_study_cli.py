@@ -115,6 +115,8 @@ def test_killed_run_resumes_to_identical_files(tmp_path: Path) -> None:
     proc.wait()
     state = json.loads(manifest.read_text())
     assert not state["complete"] and 3 <= len(state["done"]) < 30
+    # the killed writer's lock file stays, with its PID, but locks nothing: flock died with it
+    assert (killed / ".lock").read_text().strip() == str(proc.pid)
     done = cli("study", str(case), "--out", str(killed), "--resume")
     assert done.returncode == 0, done.stderr
     a, b = tree(fresh), tree(killed)

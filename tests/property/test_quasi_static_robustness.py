@@ -18,7 +18,13 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from runout.case import parse_case
-from runout.errors import ContactLossError, ConvergenceError, NumericalError, RunoutError
+from runout.errors import (
+    CaseError,
+    ContactLossError,
+    ConvergenceError,
+    NumericalError,
+    RunoutError,
+)
 from runout.models import run_model
 
 # Random short records put lines closer than 1/record length: the warning is right, and expected.
@@ -67,6 +73,8 @@ def _check(data: dict[str, Any]) -> None:
         return
     try:
         result = run_model(case)
+    except CaseError:  # the model-level input checks (runout.validation) name the key
+        return
     except (ContactLossError, NumericalError) as exc:
         assert not isinstance(exc, ConvergenceError), f"{exc}\n{json.dumps(data)}"
         assert "instant" in str(exc)

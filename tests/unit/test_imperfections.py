@@ -505,10 +505,12 @@ class TestReadProfileCsv:
 
     def test_bad_row_names_file_and_line(self, tmp_path: Path) -> None:
         path = self.write(tmp_path, "angle,dev\n0,1\n1,oops\n")
-        with pytest.raises(ProfileError, match=r"profile\.csv:3: .*'1,oops'") as info:
+        with pytest.raises(ProfileError, match=r"profile\.csv:3: expected numbers") as info:
             read_profile_csv(path)
         assert info.value.line == 3
         assert info.value.file == str(path)
+        # a profile may be any file: its contents are never echoed
+        assert "oops" not in str(info.value)
 
     def test_missing_column(self, tmp_path: Path) -> None:
         path = self.write(tmp_path, "0,1\n1\n")

@@ -168,7 +168,7 @@ def test_json_has_no_nan_and_labels_name_the_rule() -> None:
     out = qs3.run(case).to_json()
     assert out["model"] == "quasi_static_3d"
     top = out["components"][0]
-    assert "outer 9 lobes (nZ+1, n=1)" in top["label"]
+    assert top["label"].startswith("outer 9 lobes: nZ+1, n=1")
     assert top["pp_m"] == pytest.approx(20e-9, rel=1e-6)
     assert all(math.isfinite(v) for v in out["runout"].values())
     # a radial nZ+1 line on the rotating ring is non-repeatable: NRRO carries it

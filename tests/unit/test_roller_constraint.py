@@ -322,9 +322,14 @@ def test_run_case_gives_a_complete_result_and_files(tmp_path, ring: str) -> None
     assert result.model == "roller_constraint"
     assert result.runout.radial_pp_m == pytest.approx(np.ptp(result.radial()), rel=1e-12)
     assert result.runout.axial_pp_m == 0.0 and not result.z.any()
-    # two whole revolutions: RRO/NRRO from the synchronous average
-    assert result.runout.rro_pp_m > 0 and result.runout.nrro_pp_m > 0
-    assert any("synchronous averaging" in n for n in result.notes)
+    # RRO: the turning ring's 10 lobes read in the load zone (k f_i, an integer order) when
+    # the inner ring turns; with the outer ring turning nothing turns with it: no RRO
+    assert result.runout.nrro_pp_m > 0
+    if ring == "inner":
+        assert result.runout.rro_pp_m > 0
+        assert any(c.repeatable and c.sources[0].term == "k f_i" for c in result.components)
+    else:
+        assert result.runout.rro_pp_m == 0.0
     assert result.extras["horizontal_pp_m"] > 0
     assert result.time[-1] == pytest.approx(2.0)  # 2 revolutions at 1 rev/s
     json.dumps(result.to_json(), allow_nan=False)

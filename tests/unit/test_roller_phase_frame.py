@@ -233,13 +233,13 @@ def test_order_sweep_puts_the_roller_harmonic_in_every_roller_cage_frame() -> No
 
 def test_cage_lines_are_offered_only_for_rollers_that_differ_in_the_cage_frame() -> None:
     same = Imperfections.perfect(Z).add("roller", single_harmonic(8, 0.5 * UM))
-    labels = [label for _, label in rc._candidate_lines(rc.geometry_from(NU209, same))]
+    labels = [c.source.label() for c in rc._candidate_lines(rc.geometry_from(NU209, same))]
     assert not any(label.startswith("cage") for label in labels)
     # identical in the fixed frame = different relative to the cage: uneven rollers
     turned = same.element_phases_from_fixed_frame()
-    labels = [label for _, label in rc._candidate_lines(rc.geometry_from(NU209, turned))]
+    labels = [c.source.label() for c in rc._candidate_lines(rc.geometry_from(NU209, turned))]
     assert any(label.startswith("cage") for label in labels)
     # the same judged on the kernel's geometry: identical fixed-frame profiles are uneven
     geo = rc.geometry_from(NU209, Imperfections.perfect(Z))
     fixed_same = geo.replace(elements=(single_harmonic(8, 0.5 * UM),) * Z)
-    assert any(label.startswith("cage") for _, label in rc._candidate_lines(fixed_same))
+    assert any(c.source.part == "cage" for c in rc._candidate_lines(fixed_same))

@@ -3,7 +3,16 @@
 from __future__ import annotations
 
 import copy
+import json
+import math
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+import time
 from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -16,8 +25,22 @@ from runout._study_kernels import project_rows, solve_batch, solve_batch_referen
 from runout.case import Case, parse_case
 from runout.errors import CaseError
 from runout.models import quasi_static_2d as qs2
+from runout.models.dynamic import exact_number, point_name
 from runout.spectrum import extract_lines
-from runout.study import line_label, run_study, sample_rng, statistics
+from runout.study import (
+    OutputError,
+    StudyError,
+    error_text,
+    line_label,
+    load_study,
+    output_directory,
+    output_lock,
+    refuse_foreign,
+    run_study,
+    sample_rng,
+    statistics,
+    write_atomic,
+)
 
 KIM = {
     "bearing": {
@@ -294,3 +317,349 @@ def test_resume_refuses_a_different_study(tmp_path: Any) -> None:
     run_study(mc(samples=3), out=tmp_path, plots=False)
     with pytest.raises(st_mod.StudyError, match="different"):
         run_study(mc(samples=3, seed=6), out=tmp_path, resume=True)
+
+
+# ==================================================================== data safety
+# Atomic files, the output lock, manifest and chunk checks, the parent watchdog of pool
+# workers, exact sweep-dynamic point names, failure records (the command-line side is in
+# tests/cli/test_study_safety.py).
+
+
+def chunked(samples: int = 4, seed: int = 5, chunk: int = 2) -> Case:
+    data = copy.deepcopy(KIM)
+    data["study"] = {
+        "kind": "montecarlo",
+        "samples": samples,
+        "seed": seed,
+        "chunk_size": chunk,
+        "vary": {"element_diameter_sigma": "0.1 um"},
+    }
+    return parse_case(data, "kim.toml")
+
+
+# ------------------------------------------------------------------ atomic files
+def test_write_atomic_leaves_no_temporary_and_keeps_the_old_file_on_failure(
+    tmp_path: Path,
+) -> None:
+    target = tmp_path / "a.json"
+    write_atomic(target, lambda fh: fh.write("one\n"))
+    assert target.read_text() == "one\n" and os.listdir(tmp_path) == ["a.json"]
+
+    def broken(fh: Any) -> None:
+        fh.write("half")
+        raise RuntimeError("disk on fire")
+
+    with pytest.raises(RuntimeError):
+        write_atomic(target, broken)
+    assert target.read_text() == "one\n" and os.listdir(tmp_path) == ["a.json"]
+    # the umask decides the mode, as for any file the user writes (mkstemp would give 0o600)
+    umask = os.umask(0)
+    os.umask(umask)
+    assert target.stat().st_mode & 0o777 == 0o666 & ~umask
+
+
+def test_write_atomic_names_are_unique(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    seen: list[str] = []
+    replace = os.replace
+
+    def spy(src: Any, dst: Any) -> None:
+        seen.append(Path(src).name)
+        replace(src, dst)
+
+    monkeypatch.setattr(os, "replace", spy)
+    for _ in range(5):
+        write_atomic(tmp_path / "m.json", lambda fh: fh.write("x"))
+    assert len(set(seen)) == 5
+    assert all(st_mod._TEMP.match(name) and name.startswith(".m.json.") for name in seen)
+
+
+def test_write_atomic_failure_is_an_output_error_naming_the_file(tmp_path: Path) -> None:
+    with pytest.raises(OutputError, match=r"nowhere/a\.json: cannot write"):
+        write_atomic(tmp_path / "nowhere" / "a.json", lambda fh: fh.write("x"))
+
+
+# ------------------------------------------------------------------ output directories
+def test_output_directory_refuses_empty_and_files(tmp_path: Path) -> None:
+    with pytest.raises(OutputError, match="empty path"):
+        output_directory("")
+    with pytest.raises(OutputError, match="empty path"):
+        run_study(chunked(), out="")
+    (tmp_path / "f").write_text("x")
+    with pytest.raises(OutputError, match="exists and is not a directory"):
+        output_directory(tmp_path / "f")
+    with pytest.raises(OutputError, match="cannot create the directory"):
+        output_directory(tmp_path / "f" / "sub")
+    made = output_directory(str(tmp_path / "a" / "b"))
+    assert made.is_dir()
+
+
+def test_refuse_foreign_accepts_only_runout_outputs(tmp_path: Path) -> None:
+    d = tmp_path / "d"
+    d.mkdir()
+    refuse_foreign(d, "study", force=False)  # empty
+    (d / ".lock").write_text("123\n")  # a lock file (of a killed run) is ours
+    (d / ".manifest.json.0123456789ab.tmp").write_text("{")  # a leftover temporary too
+    refuse_foreign(d, "study", force=False)
+    (d / "points").mkdir()
+    (d / "sweep.csv").write_text("")
+    (d / "spectra_preload_Z9.png").write_text("")
+    refuse_foreign(d, "sweep-dynamic", force=False)
+    with pytest.raises(OutputError, match=r"not a runout study output .*'points'.*--force"):
+        refuse_foreign(d, "study", force=False)
+    (d / "notes.txt").write_text("mine")
+    with pytest.raises(OutputError, match=r"'notes\.txt'"):
+        refuse_foreign(d, "sweep-dynamic", force=False)
+    refuse_foreign(d, "sweep-dynamic", force=True)
+
+
+# ------------------------------------------------------------------ lock
+def test_output_lock_is_exclusive_released_and_removed(tmp_path: Path) -> None:
+    with output_lock(tmp_path) as path:
+        assert path.read_text().strip() == str(os.getpid())
+        with pytest.raises(OutputError) as err:
+            with output_lock(tmp_path):
+                pass  # pragma: no cover
+        assert str(err.value) == (
+            f"{path}: another runout study is writing to {tmp_path} (pid {os.getpid()})"
+        )
+    assert not path.exists()
+    with output_lock(tmp_path):  # free again
+        pass
+
+
+def test_a_lock_file_left_by_a_killed_writer_is_not_a_lock(tmp_path: Path) -> None:
+    (tmp_path / ".lock").write_text("999999999\n")  # a PID that does not run
+    with output_lock(tmp_path) as path:
+        assert path.read_text().strip() == str(os.getpid())
+
+
+def test_run_study_holds_the_lock_while_it_writes(tmp_path: Path) -> None:
+    with output_lock(tmp_path):
+        with pytest.raises(OutputError, match="another runout study is writing"):
+            run_study(chunked(), out=tmp_path, plots=False)
+    assert os.listdir(tmp_path) == []
+
+
+# ------------------------------------------------------------------ manifest and chunks
+def test_manifest_checks(tmp_path: Path) -> None:
+    run_study(chunked(), out=tmp_path, plots=False)
+    good = json.loads((tmp_path / "manifest.json").read_text())
+    assert st_mod._manifest_problem(good) is None
+    bad = {
+        "format": "other/1",
+        "digest": 5,
+        "kind": "grid",
+        "samples": True,
+        "chunk_size": 0,
+        "chunks": 1.5,
+        "done": [0, 0],
+        "complete": "yes",
+    }
+    for key, value in bad.items():
+        assert st_mod._manifest_problem({**good, key: value}) is not None, key
+    (tmp_path / "manifest.json").write_bytes(b"\xff\xfe")
+    with pytest.raises(StudyError, match=r"manifest\.json: corrupted study manifest"):
+        st_mod._read_manifest(tmp_path / "manifest.json")
+
+
+def test_chunks_carry_the_digest_and_are_checked(tmp_path: Path) -> None:
+    case = chunked()
+    run_study(case, out=tmp_path, plots=False)
+    plan = st_mod._plan(case, None)
+    chunk = json.loads((tmp_path / "chunks" / "chunk_00001.json").read_text())
+    assert chunk["digest"] == plan.digest
+    task = plan.tasks[1]
+    assert st_mod._chunk_problem(chunk, task, plan.digest) is None
+    assert st_mod._chunk_problem(chunk, plan.tasks[0], plan.digest) == "chunk is 1, expected 0"
+    assert st_mod._chunk_problem(chunk, task, "0" * 64) == "written by another study"
+    no_digest = {k: v for k, v in chunk.items() if k != "digest"}
+    assert st_mod._chunk_problem(no_digest, task, plan.digest) == "no study digest"
+    damaged = [
+        ("model", ["quasi_static_2d"]),
+        ("values", {}),
+        ("runout", {"radial_pp_m": [1.0, 2.0]}),
+        ("lines", {"x|f_c": {"frequency_hz": 1.0, "pp_m": [1.0]}}),
+        ("errors", {"7": "outside the chunk"}),
+    ]
+    for key, value in damaged:
+        assert st_mod._chunk_problem({**chunk, key: value}, task, plan.digest), key
+    # load_study reads the directory back, and says which file is not this study's
+    assert load_study(tmp_path, case).samples == 4
+    (tmp_path / "chunks" / "chunk_00001.json").write_text("[]")
+    with pytest.raises(StudyError, match=r"chunk_00001\.json: a JSON list"):
+        load_study(tmp_path, case)
+    with pytest.raises(StudyError, match="different case or study"):
+        load_study(tmp_path, chunked(seed=6))
+
+
+def test_resume_recomputes_a_bad_chunk_and_notifies(tmp_path: Path) -> None:
+    case = chunked()
+    first = run_study(case, out=tmp_path, plots=False)
+    (tmp_path / "chunks" / "chunk_00000.json").write_text('{"truncated')
+    notes: list[str] = []
+    again = run_study(case, out=tmp_path, plots=False, resume=True, notify=notes.append)
+    assert len(notes) == 1 and "recomputing 1 chunk" in notes[0] and "not valid JSON" in notes[0]
+    assert again.to_json() == first.to_json()
+
+
+def test_a_killed_writers_temporaries_are_removed(tmp_path: Path) -> None:
+    case = chunked()
+    run_study(case, out=tmp_path, plots=False)
+    left = tmp_path / "chunks" / ".chunk_00000.json.0123456789ab.tmp"
+    left.write_text("{")
+    run_study(case, out=tmp_path, plots=False, resume=True)
+    assert not left.exists()
+
+
+# ------------------------------------------------------------------ failures
+def test_error_text_is_one_bounded_line() -> None:
+    assert error_text(ValueError("bad\n  point")) == "ValueError: bad point"
+    long = error_text(RuntimeError("x" * 1000))
+    assert len(long) == st_mod.ERROR_CHARS and long.endswith("...")
+
+
+def test_failed_samples_are_listed_bounded(monkeypatch: pytest.MonkeyPatch) -> None:
+    import runout.models
+
+    def fail(case: Any) -> Any:
+        raise ZeroDivisionError("no")
+
+    monkeypatch.setattr(runout.models, "run_model", fail)
+    monkeypatch.setattr(st_mod, "_batched", lambda task: False)
+    res = run_study(chunked(samples=25, chunk=10))
+    assert len(res.errors) == 25
+    listed = res.summary()["errors"]
+    assert len(listed) == st_mod.ERRORS_SHOWN
+    assert listed[0] == {"sample": 0, "error": "ZeroDivisionError: no"}
+    assert res.to_json()["failed"] == 25 and res.to_json()["errors"] == listed
+
+
+def test_batched_failure_falls_back_to_per_bearing_records(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    def broken(*args: Any) -> None:
+        raise MemoryError("batch too large")
+
+    monkeypatch.setattr(st_mod, "_evaluate_batched", broken)
+    res = run_study(chunked(samples=3))
+    assert not res.errors and all(math.isfinite(v) for v in res.runout["radial_pp_m"])
+
+
+# ------------------------------------------------------------------ workers and their parent
+@pytest.mark.skipif(sys.platform == "win32", reason="SIGKILL")
+def test_watchdog_alone_ends_a_worker_whose_parent_was_killed(tmp_path: Path) -> None:
+    # The portable line of defence without prctl: the worker's thread watching its parent.
+    script = tmp_path / "parent.py"
+    script.write_text(
+        textwrap.dedent(
+            """
+            import multiprocessing, os, time
+            from concurrent.futures import ProcessPoolExecutor
+            from runout.study import die_with_parent
+
+            if __name__ == "__main__":
+                pool = ProcessPoolExecutor(
+                    1,
+                    mp_context=multiprocessing.get_context("spawn"),
+                    initializer=die_with_parent,
+                    initargs=(os.getpid(), False),
+                )
+                pool.submit(time.sleep, 0.0).result()
+                print(*pool._processes, flush=True)
+                time.sleep(600)
+            """
+        )
+    )
+    parent = subprocess.Popen(
+        [sys.executable, str(script)], stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True
+    )
+    worker = 0
+    try:
+        assert parent.stdout is not None
+        worker = int(parent.stdout.readline().split()[0])
+        os.kill(parent.pid, signal.SIGKILL)
+        parent.wait(timeout=30)
+        deadline = time.monotonic() + 10
+        while time.monotonic() < deadline and _alive(worker):
+            time.sleep(0.05)
+        assert not _alive(worker), "the worker outlived its killed parent"
+    finally:
+        if parent.poll() is None:
+            parent.kill()
+            parent.wait(timeout=30)
+        if parent.stdout is not None:
+            parent.stdout.close()
+        if worker and _alive(worker):
+            os.kill(worker, signal.SIGKILL)
+
+
+def _alive(pid: int) -> bool:
+    stat = Path(f"/proc/{pid}/stat")
+    if stat.parent.parent.is_dir() and Path("/proc/self/stat").exists():
+        try:
+            return stat.read_text().rsplit(")", 1)[1].split()[0] not in ("Z", "X")
+        except OSError:
+            return False
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    return True
+
+
+# ------------------------------------------------------------------ sweep-dynamic names
+def test_point_names_keep_the_old_short_form_when_it_is_exact() -> None:
+    assert point_name(6, 0.0) == "Z6_P0N" and point_name(9, 5) == "Z9_P5N"
+    assert point_name(9, -0.0) == "Z9_P0N"
+    assert point_name(9, 10.0000001) == "Z9_P10.0000001N"
+    assert point_name(9, 10.0000001) != point_name(9, 10.0000002)
+
+
+@settings(max_examples=300, deadline=None)
+@given(
+    st.floats(0.0, 1e6, allow_nan=False, allow_infinity=False),
+    st.floats(0.0, 1e6, allow_nan=False, allow_infinity=False),
+)
+def test_point_names_are_exact_and_unique(a: float, b: float) -> None:
+    assert float(exact_number(a)) == a
+    assert (exact_number(a) == exact_number(b)) == (a == b)
+
+
+def test_the_digest_covers_the_bytes_of_profile_files(tmp_path: Path) -> None:
+    # A remeasured profile is another case: its chunks must not pass for the old ones.
+    from runout.case import load_case
+
+    def profile(amplitude_um: float) -> None:
+        rows = [f"{a},{amplitude_um * math.cos(math.radians(a) * 5)}" for a in range(0, 360, 2)]
+        (tmp_path / "outer.csv").write_text("angle_deg,deviation_um\n" + "\n".join(rows))
+
+    case_toml = tmp_path / "case.toml"
+    case_toml.write_text(
+        """
+[bearing]
+type = "ball"
+elements = 10
+element_diameter = "1.5875 mm"
+pitch_diameter = "9.1 mm"
+inner_conformity = 0.529
+outer_conformity = 0.535
+radial_clearance = "5 um"
+[operation]
+speed = "7200 rpm"
+axial_load = "60.68 N"
+[[profile]]
+part = "outer"
+file = "outer.csv"
+orders = [2, 20]
+[study]
+kind = "montecarlo"
+samples = 2
+[study.vary]
+element_diameter_sigma = "0.1 um"
+"""
+    )
+    profile(0.2)
+    first = st_mod._plan(load_case(case_toml), None).digest
+    assert st_mod._plan(load_case(case_toml), None).digest == first
+    profile(0.3)
+    assert st_mod._plan(load_case(case_toml), None).digest != first

@@ -48,7 +48,9 @@ def run_model(case: Any) -> Any:
     ModelNotAvailableError
         If that model is not part of this version.
     CaseError
-        If the case sets a key the model refuses.
+        If the case sets a key the model refuses, fails the model's input checks, exceeds the
+        budget of :mod:`runout.limits` or loads a contact beyond Hertz theory
+        (:func:`runout.validation.validate`); its warnings join the result's notes.
     """
     model = case.analysis.model
     if model not in available_models():
@@ -58,11 +60,18 @@ def run_model(case: Any) -> Any:
             f"(available: {available}); `runout check` and `runout frequencies` work for any case"
         )
     from runout.conventions import enforce
+    from runout.errors import GeometryError
+    from runout.validation import as_case_error, validate
 
     # One meaning per key: refuse what this model cannot honour, note what it does not apply.
     notes = enforce(case, model)
+    # the model's set-up, the budget and the physics, as `runout check` runs them
+    warnings = validate(case, model)
     module = importlib.import_module(MODEL_MODULES[model])
-    result = module.run(case)
-    if notes:
-        result = dataclasses.replace(result, notes=(*result.notes, *notes))
+    try:
+        result = module.run(case)
+    except GeometryError as exc:  # an input check inside the model: name the file and key
+        raise as_case_error(case, exc) from None
+    if notes or warnings:
+        result = dataclasses.replace(result, notes=(*result.notes, *warnings, *notes))
     return result

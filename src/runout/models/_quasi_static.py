@@ -27,23 +27,20 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from runout.decompose import Candidate, Direction, Kinematic, Phasors, fit_lines, split_runout
 from runout.errors import GeometryError
 from runout.imperfections import Harmonics, Imperfections
 from runout.kinematics import bearing_frequencies
-from runout.results import Component, Runout, RunResult
-from runout.spectrum import extract_lines, separate_rro_nrro
+from runout.results import RunResult, Source
 
 __all__ = [
     "ContactDeviations",
     "Kinematics",
-    "PredictedLine",
-    "RunoutSplit",
+    "PhasorTable",
     "contact_deviations",
-    "fit_components",
+    "decomposition_kinematic",
+    "linear_phasors",
     "predicted_lines",
-    "runout_figures",
-    "split_runout",
-    "synchronous_grid",
     "time_grid",
 ]
 
@@ -107,22 +104,6 @@ def time_grid(speed: float, revolutions: float, samples: int) -> NDArray[np.floa
     return np.arange(samples, dtype=np.float64) * (duration / samples)
 
 
-def synchronous_grid(
-    speed: float, revolutions: float, samples: int
-) -> tuple[NDArray[np.float64], int] | None:
-    """A grid with an integer number (>= 2) of revolutions and of samples per revolution.
-
-    Returns ``(time, samples_per_rev)``, or None when the record is shorter than two
-    revolutions (then no RRO/NRRO split is possible).
-    """
-    n_rev = math.floor(revolutions + 1e-9)
-    if n_rev < 2:
-        return None
-    spr = max(16, math.ceil(samples / n_rev))
-    t = np.arange(n_rev * spr, dtype=np.float64) / (spr * speed)
-    return t, spr
-
-
 @dataclass(frozen=True)
 class ContactDeviations:
     """Deviations seen at each ball's contacts, arrays of shape (n, Z) [m] or [rad].
@@ -181,16 +162,13 @@ def contact_deviations(
 # --------------------------------------------------------------------------------------------
 # predicted lines (Tada Table 2 / 3)
 # --------------------------------------------------------------------------------------------
-@dataclass(frozen=True)
-class PredictedLine:
-    """A line the imperfections should produce: direction set, frequency [Hz], label."""
-
-    directions: str  # "radial" | "axial"
-    frequency_hz: float
-    label: str
+def _src(part: str, element: int | None, lobes: int | None, term: str, formula: str) -> Source:
+    return Source(part=part, element=element, lobes=lobes, term=term, formula=formula)
 
 
-def _ring_lines(part: str, lobes: int, kin: Kinematics, axial: bool) -> list[PredictedLine]:
+def _ring_lines(
+    part: str, lobes: int, kin: Kinematics, axial: bool, phasors: PhasorTable
+) -> list[Candidate]:
     """Lines of a single ring harmonic of ``lobes`` waves up to order MAX_LINE_ORDER.
 
     The l-th power of the harmonic carries l·k lobes; the ball set filters it to the radial
@@ -201,7 +179,7 @@ def _ring_lines(part: str, lobes: int, kin: Kinematics, axial: bool) -> list[Pre
     f_ring = kin.inner if part == "inner" else kin.outer
     other = kin.outer if part == "inner" else kin.inner
     sym = "f_i" if part == "inner" else "f_o"
-    out: list[PredictedLine] = []
+    out: list[Candidate] = []
     for order in range(1, MAX_LINE_ORDER + 1):
         lk = order * lobes
         for m in (-1, 0, 1):
@@ -211,10 +189,11 @@ def _ring_lines(part: str, lobes: int, kin: Kinematics, axial: bool) -> list[Pre
                 continue
             n = (lk + m) // z
             freq = abs((lk + m) * kin.cage - lk * f_ring)
-            if order == 1:
-                rule = f"nZ{'+1' if m == -1 else '-1' if m == 1 else ''}"
-            else:
-                rule = f"{order}·{lobes}=nZ{'+1' if m == -1 else '-1' if m == 1 else ''}"
+            if freq <= 0.0:
+                continue
+            rule = f"nZ{'+1' if m == -1 else '-1' if m == 1 else ''}, n={n}"
+            if order > 1:
+                rule = f"{order}x{lobes}={rule.split(',')[0]}, n={n}, order {order}"
             if f_ring == 0.0:
                 formula = f"n {sym}"
             elif other == 0.0 and m != 0:
@@ -223,44 +202,62 @@ def _ring_lines(part: str, lobes: int, kin: Kinematics, axial: bool) -> list[Pre
                 formula = f"n {sym}"
             else:
                 formula = f"|(lk{m:+d}) f_c - lk f_ring|, l={order}"
-            kind = "" if order == 1 else f", order {order}"
-            label = f"{part} {lobes} lobes ({rule}, n={n}{kind}): {formula}"
-            out.append(PredictedLine("axial" if m == 0 else "radial", freq, label))
+            direction: Direction = "axial" if m == 0 else "radial"
+            predicted = phasors.get(part, None, lobes, freq) if order == 1 else None
+            out.append(
+                Candidate(
+                    freq, direction, _src(part, None, lobes, rule, formula), predicted=predicted
+                )
+            )
     return out
 
 
-def _element_lines(index: int, h: Harmonics, kin: Kinematics, axial: bool) -> list[PredictedLine]:
-    """Lines of ball ``index``'s diameter deviation (seed 000 Table 2, ball rows)."""
-    out: list[PredictedLine] = []
+def _element_lines(
+    index: int, h: Harmonics, kin: Kinematics, axial: bool, loaded: bool, phasors: PhasorTable
+) -> list[Candidate]:
+    """Lines of ball ``index``'s diameter deviation (seed 000 Table 2, ball rows).
+
+    Order 2n of the diameter deviation gives 2n f_b ± f_c (radial) and 2n f_b (axial); its
+    square has a constant part, which turns with the ball at f_c (the second-order f_c line);
+    a size error gives f_c, and under a radial load its harmonics 2 f_c, 3 f_c too (the ball
+    passes through the load zone once per cage revolution).
+    """
+    out: list[Candidate] = []
     fc, fb = abs(kin.cage), kin.spin
+    j = index + 1
+    if fc <= 0.0:
+        return out
     for k, a in zip(h.orders, h.amplitudes, strict=True):
         if a == 0.0:
             continue
         k = int(k)
         if k == 0:
-            out.append(PredictedLine("radial", fc, f"ball {index + 1} size error: f_c"))
+            pred = phasors.get("ball", j, 0, fc)
+            out.append(Candidate(fc, "radial", _src("ball", j, 0, "f_c", "f_c"), predicted=pred))
+            if loaded:
+                for m in (2, 3):
+                    src = _src("ball", j, 0, f"{m} f_c, load zone", f"{m} f_c")
+                    out.append(Candidate(m * fc, "radial", src, optional=True))
             continue
+        out.append(
+            Candidate(fc, "radial", _src("ball", j, k, "f_c, order 2", "f_c"), optional=True)
+        )
         for order in range(1, MAX_LINE_ORDER + 1):
             kk = order * k
             kind = "" if order == 1 else f", order {order}"
-            out.append(
-                PredictedLine(
-                    "radial", kk * fb + fc, f"ball {index + 1} {k} lobes (2n{kind}): 2n f_b + f_c"
-                )
-            )
-            out.append(
-                PredictedLine(
-                    "radial",
-                    abs(kk * fb - fc),
-                    f"ball {index + 1} {k} lobes (2n{kind}): 2n f_b - f_c",
-                )
-            )
-            if axial:
+            for sign in (1, -1):
+                freq = abs(kk * fb + sign * fc)
+                if freq <= 0.0:
+                    continue
+                term = f"2n f_b {'+' if sign > 0 else '-'} f_c{kind}"
+                pred = phasors.get("ball", j, k, freq) if order == 1 else None
                 out.append(
-                    PredictedLine(
-                        "axial", kk * fb, f"ball {index + 1} {k} lobes (2n{kind}): 2n f_b"
-                    )
+                    Candidate(freq, "radial", _src("ball", j, k, term, term), predicted=pred)
                 )
+            if axial:
+                pred = phasors.get("ball", j, k, kk * fb) if order == 1 else None
+                src = _src("ball", j, k, f"2n f_b{kind}", "2n f_b")
+                out.append(Candidate(kk * fb, "axial", src, predicted=pred))
     return out
 
 
@@ -275,7 +272,7 @@ def _largest(h: Harmonics, count: int) -> list[int]:
     return sorted(k for _, k in keep[:count])
 
 
-def _pair_lines(imperfections: Imperfections, kin: Kinematics, axial: bool) -> list[PredictedLine]:
+def _pair_lines(imperfections: Imperfections, kin: Kinematics, axial: bool) -> list[Candidate]:
     r"""Second-order lines of two ring harmonics (seed 000 §2.2.2, eq. 7).
 
     The product of harmonic :math:`k_1` of part 1 (ring speed :math:`f_1`) and :math:`k_2` of
@@ -290,7 +287,7 @@ def _pair_lines(imperfections: Imperfections, kin: Kinematics, axial: bool) -> l
     parts = [
         ("inner", k, kin.inner) for k in _largest(imperfections.inner, MAX_PAIRED_HARMONICS)
     ] + [("outer", k, kin.outer) for k in _largest(imperfections.outer, MAX_PAIRED_HARMONICS)]
-    out: list[PredictedLine] = []
+    out: list[Candidate] = []
     for a in range(len(parts)):
         for b in range(a + 1, len(parts)):
             (p1, k1, f1), (p2, k2, f2) = parts[a], parts[b]
@@ -305,14 +302,116 @@ def _pair_lines(imperfections: Imperfections, kin: Kinematics, axial: bool) -> l
                         continue
                     n = (lobes + m) // z
                     freq = abs((lobes + m) * kin.cage - turn)
+                    if freq <= 0.0:
+                        continue
                     rule = f"nZ{'+1' if m == -1 else '-1' if m == 1 else ''}"
-                    label = (
-                        f"{p1} {k1} {op} {p2} {k2} lobes (|W {op} W|={lobes}={rule}, n={n}, "
-                        f"order 2, seed 000 eq. 7): |{lobes + m} f_c - ({k1} f_{p1[0]} {op} "
-                        f"{k2} f_{p2[0]})|"
+                    term = (
+                        f"{p1} {k1} {op} {p2} {k2} lobes = {rule}, n={n}, order 2 (seed 000 eq. 7)"
                     )
-                    out.append(PredictedLine("axial" if m == 0 else "radial", freq, label))
+                    formula = f"|{lobes + m} f_c - ({k1} f_{p1[0]} {op} {k2} f_{p2[0]})|"
+                    direction: Direction = "axial" if m == 0 else "radial"
+                    out.append(
+                        Candidate(freq, direction, _src("rings", None, lobes, term, formula))
+                    )
     return out
+
+
+class PhasorTable:
+    """Predicted phasors (X, Y, Z) of first-order lines, by source and frequency.
+
+    Frequencies computed two ways (orders of the linear model, Hz here) agree to round-off:
+    a lookup matches within 1e-9 relative.
+    """
+
+    def __init__(self) -> None:
+        self._rows: dict[tuple[str, int | None, int], list[tuple[float, Phasors]]] = {}
+
+    def add(self, part: str, element: int | None, lobes: int, freq: float, ph: Phasors) -> None:
+        """Add a term's phasors to its source's line at ``freq`` [Hz]."""
+        rows = self._rows.setdefault((part, element, lobes), [])
+        for i, (f, old) in enumerate(rows):
+            if abs(f - freq) <= 1e-9 * freq:
+                rows[i] = (f, (old[0] + ph[0], old[1] + ph[1], old[2] + ph[2]))
+                return
+        rows.append((freq, ph))
+
+    def get(self, part: str, element: int | None, lobes: int, freq: float) -> Phasors | None:
+        """The phasors of a source's line at ``freq`` [Hz], or None."""
+        for f, ph in self._rows.get((part, element, lobes), []):
+            if abs(f - freq) <= 1e-9 * freq:
+                return ph
+        return None
+
+
+def linear_phasors(
+    imperfections: Imperfections, kin: Kinematics, contact_angle: float
+) -> PhasorTable:
+    """Predicted first-order phasors of each ring harmonic and each element deviation.
+
+    From the linearised model (seed 002 eq. 33-40, force-balance gains: seed 000 eq. 5
+    linearised), turned into the shaft frame like the models: each term C e^{iΩθ} of
+    u = x + i y is a line at |Ω| f_r with x and y phasors (C, -iC) for Ω > 0 and (C̄, iC̄) for
+    Ω < 0. Used for the shares of lines several sources produce.
+    """
+    from runout.models import linear
+
+    rot = abs(kin.rotation)
+    table = PhasorTable()
+    if rot == 0.0 or kin.n_elements < 3:
+        return table
+    rates = linear.Rates(
+        kin.inner / rot, kin.outer / rot, kin.cage / rot, kin.contact_rate / rot, rot
+    )
+    terms = linear.closed_form_terms(imperfections, rates, contact_angle, "force_balance")
+    names = {0: "inner", 1: "outer", 2: "ball"}
+    for om, c, part, lobes, element in zip(
+        terms.omega, terms.coefficient, terms.part, terms.lobes, terms.element, strict=True
+    ):
+        if int(part) not in names or om == 0.0:
+            continue
+        cc = complex(c)
+        x, y = (cc, -1j * cc) if om > 0 else (cc.conjugate(), 1j * cc.conjugate())
+        element_no = int(element) + 1 if int(part) == 2 else None
+        table.add(names[int(part)], element_no, int(lobes), float(abs(om) * rot), (x, y, 0j))
+    _axial_phasors(table, imperfections, kin, contact_angle)
+    return table
+
+
+def _axial_phasors(
+    table: PhasorTable, imperfections: Imperfections, kin: Kinematics, contact_angle: float
+) -> None:
+    r"""First-order axial phasors (seed 000 eq. 5 linearised, shaft frame).
+
+    Under a constant preload the axial balance keeps the mean approach: the shaft moves by
+    :math:`z = -\sum_j e_j / (Z \sin\alpha)`, with :math:`e_j = (W_{ij} - W_{oj})\cos\alpha +
+    W_{bj}` the interference at ball j. A ring harmonic of k = nZ lobes adds up over the balls
+    (z = ∓ a cot α at k |f_c - f_ring|); a ball's diameter harmonic of order k passes as
+    -d / (Z sin α) at k f_b.
+    """
+    sa = math.sin(contact_angle)
+    if sa <= 1e-9:
+        return
+    z = kin.n_elements
+    ca = math.cos(contact_angle)
+    for part, h, f_ring, sign in (
+        ("inner", imperfections.inner, kin.inner, -1.0),
+        ("outer", imperfections.outer, kin.outer, 1.0),
+    ):
+        for k, a, phi in zip(h.orders, h.amplitudes, h.phases, strict=True):
+            k = int(k)
+            w = k * (kin.cage - f_ring)
+            if k == 0 or k % z or w == 0.0:
+                continue
+            c = sign * a * ca / sa * complex(math.cos(phi), math.sin(phi))
+            table.add(part, None, k, abs(w), (0j, 0j, c if w > 0 else c.conjugate()))
+    rate = kin.contact_rate
+    for j, h in enumerate(imperfections.element_diameter_deviations()):
+        for k, d, phi in zip(h.orders, h.amplitudes, h.phases, strict=True):
+            k = int(k)
+            if k == 0 or rate == 0.0:
+                continue
+            c = -d / (z * sa) * complex(math.cos(phi), math.sin(phi))
+            table.add("ball", j + 1, k, abs(k * rate), (0j, 0j, c if rate > 0 else c.conjugate()))
 
 
 def predicted_lines(
@@ -321,207 +420,97 @@ def predicted_lines(
     *,
     axial: bool = True,
     second_order_pairs: bool = False,
-) -> list[PredictedLine]:
-    """Every line the single imperfections produce (first to third order), unmerged.
+    loaded: bool = False,
+    contact_angle: float | None = None,
+) -> list[Candidate]:
+    """Every line the imperfections should produce (first to third order), with its source.
 
     With ``second_order_pairs`` the sum and difference lines of two ring harmonics (seed 000
     eq. 7, :func:`_pair_lines`) are added, for the :data:`MAX_PAIRED_HARMONICS` largest
-    harmonics of each ring.
+    harmonics of each ring. ``loaded`` (a radial load) adds the ball-passage lines of the load
+    zone, m Z f_c, and the load-zone harmonics of size errors. With ``contact_angle`` the
+    first-order lines carry their predicted phasors (:func:`linear_phasors`).
     """
-    out: list[PredictedLine] = []
+    phasors = (
+        linear_phasors(imperfections, kin, contact_angle)
+        if contact_angle is not None
+        else PhasorTable()
+    )
+    out: list[Candidate] = []
     for part, h in (("inner", imperfections.inner), ("outer", imperfections.outer)):
         for k in h.orders:
             if int(k) > 0:
-                out += _ring_lines(part, int(k), kin, axial)
+                out += _ring_lines(part, int(k), kin, axial, phasors)
     for j in range(kin.n_elements):
-        out += _element_lines(j, imperfections.element_diameter_deviation(j), kin, axial)
-    if np.any(np.asarray(imperfections.pitch_errors) != 0.0):
-        out.append(PredictedLine("radial", abs(kin.cage), "pitch errors: f_c"))
+        h = imperfections.element_diameter_deviation(j)
+        out += _element_lines(j, h, kin, axial, loaded, phasors)
+    fc = abs(kin.cage)
+    if np.any(np.asarray(imperfections.pitch_errors) != 0.0) and fc > 0.0:
+        out.append(Candidate(fc, "radial", _src("pitch", None, None, "f_c", "f_c")))
+    if loaded:
+        out += _load_zone_lines(imperfections, kin)
+    if loaded and fc > 0.0:
+        z = kin.n_elements
+        for m in (1, 2, 3):
+            src = _src("load", None, None, f"ball passage {m}x", f"{m} Z f_c")
+            out.append(Candidate(m * z * fc, "radial", src, optional=m > 1))
+            if axial:
+                out.append(Candidate(m * z * fc, "axial", src, optional=True))
     if second_order_pairs:
         out += _pair_lines(imperfections, kin, axial)
     return out
 
 
-def _merge(
-    lines: list[PredictedLine], kind: str, f_min: float, f_max: float, tol: float
-) -> list[tuple[float, str]]:
-    chosen = sorted(
-        (ln for ln in lines if ln.directions == kind and f_min < ln.frequency_hz < f_max),
-        key=lambda ln: ln.frequency_hz,
-    )
-    merged: list[tuple[float, list[str]]] = []
-    for ln in chosen:
-        if merged and ln.frequency_hz - merged[-1][0] <= tol:
-            if ln.label not in merged[-1][1]:
-                merged[-1][1].append(ln.label)
-        else:
-            merged.append((ln.frequency_hz, [ln.label]))
-    return [(f, "; ".join(labels)) for f, labels in merged]
-
-
-def fit_components(
-    time: NDArray[np.float64],
-    displacement: NDArray[np.float64],
-    lines: list[PredictedLine],
-    rotation_hz: float,
-    *,
-    directions: tuple[str, ...] = ("x", "y", "z"),
-) -> tuple[Component, ...]:
-    """Fit the predicted lines in each direction (leakage-free least squares).
-
-    Radial lines are fitted in x and y, axial lines in z (:func:`runout.spectrum.extract_lines`).
-    Lines closer than a twentieth of the record's resolution are merged (labels joined); lines
-    below ``FLOOR`` times the largest are dropped.
-
-    Returns
-    -------
-    tuple of Component
-        Largest first; p-p = 2 × fitted amplitude.
-    """
-    n = time.size
-    duration = n * (time[1] - time[0])
-    f_max = 0.5 * n / duration * 0.999
-    f_min = 0.5 / duration
-    tol = 0.05 / duration
-    comps: list[Component] = []
-    for axis, name in enumerate(("x", "y", "z")):
-        if name not in directions:
+def _load_zone_lines(imperfections: Imperfections, kin: Kinematics) -> list[Candidate]:
+    """Lines a radial load adds: the stiffness of the load zone, fixed in space, reads a
+    turning ring's k lobes at k f_ring (and its element-passage sidebands |k f_ring ± m Z f_c|),
+    and an element's 2n lobes at 2n f_b (all elements swelling together move the shaft along
+    the load)."""
+    out: list[Candidate] = []
+    z, fc = kin.n_elements, abs(kin.cage)
+    for part, h, f_ring in (
+        ("inner", imperfections.inner, kin.inner),
+        ("outer", imperfections.outer, kin.outer),
+    ):
+        if f_ring == 0.0:
             continue
-        kind = "axial" if name == "z" else "radial"
-        merged = _merge(lines, kind, f_min, f_max, tol)
-        if not merged:
-            continue
-        freqs = np.array([f for f, _ in merged])
-        fit = extract_lines(time, displacement[axis], freqs)
-        for (f, label), amp, ph in zip(merged, fit.amplitude, fit.phase, strict=True):
-            comps.append(Component.fitted(name, f, rotation_hz, amp, ph, label))
-    if comps:
-        # drop lines at the solver's round-off floor (predicted but absent)
-        floor = FLOOR * max(c.pp_m for c in comps)
-        comps = [c for c in comps if c.pp_m > floor]
-    comps.sort(key=lambda c: -c.pp_m)
-    return tuple(comps)
+        sym = "f_i" if part == "inner" else "f_o"
+        for k in h.orders:
+            k = int(k)
+            if k <= 0:
+                continue
+            base = k * abs(f_ring)
+            src = _src(part, None, k, f"k {sym}, load zone", f"{k} {sym}")
+            out.append(Candidate(base, "radial", src, optional=True))
+            for m in (1, 2):
+                for sign, word in ((1, "+"), (-1, "-")):
+                    term = f"k {sym} {word} {m} Z f_c, load zone"
+                    freq = abs(base + sign * m * z * fc)
+                    if freq > 0.0:
+                        out.append(Candidate(freq, "radial", _src(part, None, k, term, term), True))
+    for j, h in enumerate(imperfections.element_diameter_deviations(), start=1):
+        for k in h.orders:
+            k = int(k)
+            if k > 0 and kin.spin > 0.0:
+                src = _src("ball", j, k, "2n f_b, load zone", "2n f_b")
+                out.append(Candidate(k * kin.spin, "radial", src, optional=True))
+    return out
 
 
-#: Lines "explain" a record when the rms of what they leave is at most this fraction of the
-#: rms of the radial motion; RRO/NRRO then come from the lines (no averaging bias).
-LINE_RESIDUAL_MAX = 1e-3
-
-
-@dataclass(frozen=True)
-class RunoutSplit:
-    """Runout figures and how RRO/NRRO were separated.
-
-    Attributes
-    ----------
-    runout : Runout
-    method : {"lines", "synchronous_average", "none"}
-    residual : float
-        rms of the radial motion the fitted lines leave, over the rms of the radial motion
-        about its mean [-] (nan-free: 0 for a motionless record; 1 when no line was fitted).
-    """
-
-    runout: Runout
-    method: str
-    residual: float
-
-
-def split_runout(
-    time: NDArray[np.float64],
-    displacement: NDArray[np.float64],
-    direction: NDArray[np.float64],
-    lines: list[PredictedLine],
-    rotation_hz: float,
-    synchronous: tuple[NDArray[np.float64], int] | None,
-) -> RunoutSplit:
-    """RRO/NRRO from the labelled lines when they explain the record, else by averaging.
-
-    The radial lines are fitted to the radial signal (:func:`runout.spectrum.extract_lines`).
-    When the relative residual is at most :data:`LINE_RESIDUAL_MAX`, RRO p-p is the p-p over
-    one revolution of the sum of the integer-order lines and NRRO p-p the p-p over the record
-    of the sum of the others: exact, whereas a synchronous average over N revolutions keeps a
-    fraction of order 1/(N·dist(order, ℤ)) of every non-integer line (seed 001's cage line
-    would show up as RRO). Otherwise the synchronous average is used (:func:`runout_figures`)
-    and the residual is reported.
-    """
-    radial = direction[0] * displacement[0] + direction[1] * displacement[1]
-    base = runout_figures(displacement, direction, synchronous)
-    n = time.size
-    duration = n * (time[1] - time[0])
-    merged = _merge(lines, "radial", 0.5 / duration, 0.5 * n / duration * 0.999, 0.05 / duration)
-    centred = radial - radial.mean()
-    scale = float(np.sqrt(np.mean(centred**2)))
-    if scale == 0.0:
-        return RunoutSplit(base, "lines", 0.0)
-    if not merged:
-        return RunoutSplit(base, "synchronous_average" if synchronous else "none", 1.0)
-    freqs = np.array([f for f, _ in merged])
-    fit = extract_lines(time, radial, freqs)
-    residual = float(fit.residual_rms) / scale
-    if residual > LINE_RESIDUAL_MAX:
-        return RunoutSplit(base, "synchronous_average" if synchronous else "none", residual)
-    orders = freqs / rotation_hz
-    rep = np.abs(orders - np.round(orders)) < 1e-9
-    rro = nrro = 0.0
-    if rep.any():
-        spr = max(2048, int(16 * np.abs(orders[rep]).max()))
-        tr = np.arange(spr) / (spr * rotation_hz)
-        wr = 2.0 * math.pi * np.outer(freqs[rep], tr)
-        rro = float(np.ptp((fit.amplitude[rep, None] * np.cos(wr + fit.phase[rep, None])).sum(0)))
-    if (~rep).any():
-        wn = 2.0 * math.pi * np.outer(freqs[~rep], time)
-        nrro = float(
-            np.ptp((fit.amplitude[~rep, None] * np.cos(wn + fit.phase[~rep, None])).sum(0))
-        )
-    out = Runout(base.radial_pp_m, base.axial_pp_m, rro, nrro)
-    return RunoutSplit(out, "lines", residual)
-
-
-def runout_note(split: RunoutSplit, synchronous: bool) -> str:
-    """Readable note on how RRO/NRRO were obtained."""
-    if split.method == "lines":
-        return (
-            "RRO/NRRO from the labelled lines (integer orders = RRO); they explain the radial "
-            f"motion to {100 * split.residual:.2g} % rms"
-        )
-    if synchronous:
-        return (
-            "RRO/NRRO by synchronous averaging: the labelled lines leave "
-            f"{100 * split.residual:.3g} % rms of the radial motion unexplained (non-integer "
-            "lines bias the average by about 1/(revolutions x distance to an integer order))"
-        )
-    return "record shorter than 2 revolutions: RRO/NRRO not separated (reported 0)"
-
-
-def runout_figures(
-    displacement: NDArray[np.float64],
-    direction: NDArray[np.float64],
-    synchronous: tuple[NDArray[np.float64], int] | None,
-) -> Runout:
-    """Runout p-p figures [m].
-
-    Parameters
-    ----------
-    displacement : ndarray, shape (3, n)
-        x, y, z history [m].
-    direction : ndarray, shape (2,)
-        Unit radial measuring direction.
-    synchronous : (radial signal, samples_per_rev) or None
-        Radial signal on a grid with an integer number of revolutions; RRO is its synchronous
-        average, NRRO the rest (:func:`runout.spectrum.separate_rro_nrro`). None → RRO = radial
-        p-p and NRRO = 0 are not claimed: both are reported as 0.
-    """
-    radial = direction[0] * displacement[0] + direction[1] * displacement[1]
-    rro = nrro = 0.0
-    if synchronous is not None:
-        sep = separate_rro_nrro(synchronous[0], synchronous[1])
-        rro, nrro = float(sep.rro_pp), float(sep.nrro_pp)
-    return Runout(
-        radial_pp_m=float(np.ptp(radial)),
-        axial_pp_m=float(np.ptp(displacement[2])),
-        rro_pp_m=rro,
-        nrro_pp_m=nrro,
+def decomposition_kinematic(
+    kin: Kinematics, imperfections: Imperfections, *, unbalance: bool = False
+) -> Kinematic:
+    """The frequencies residual lines are attributed to (see :class:`Kinematic`)."""
+    wavy = any(np.any(h.orders > 0) for h in imperfections.element_diameter_deviations())
+    turning = imperfections.inner if kin.rotating_ring == "inner" else imperfections.outer
+    slant = imperfections.slant is not None and kin.rotating_ring == "inner"
+    synchronous = (
+        bool(np.any(turning.amplitudes > 0.0))
+        or unbalance
+        or slant
+        or (kin.inner != 0.0 and kin.outer != 0.0)
     )
+    return Kinematic(abs(kin.rotation), kin.cage, kin.spin, kin.n_elements, bool(wavy), synchronous)
 
 
 def unloaded_note(unloaded: NDArray[np.int64], n_elements: int) -> str:
@@ -570,9 +559,9 @@ def run_quasi_static(
 ) -> RunResult:
     """The run flow shared by the quasi-static models (seeds 000 and 001).
 
-    Solve on the analysis grid, fit the predicted lines, split RRO/NRRO (from the lines, or a
-    synchronous grid of whole revolutions, solved again when it differs from the analysis
-    grid), and assemble the result with its notes and the GIF writer.
+    Solve on the analysis grid, decompose the record (:mod:`runout.decompose`: the predicted
+    lines, the residual search, RRO/NRRO from the lines), and assemble the result with its
+    notes and the GIF writer.
 
     Parameters
     ----------
@@ -595,22 +584,31 @@ def run_quasi_static(
     t = time_grid(op.speed, an.revolutions, an.samples)
     disp, unloaded = solve(case, t, setup)
     u = measuring_direction(op)
-    grid = synchronous_grid(op.speed, an.revolutions, an.samples)
-    sync = None
-    if grid is not None:
-        ts, spr = grid
-        ds = disp if np.array_equal(ts, t) else solve(case, ts, setup)[0]
-        sync = (u[0] * ds[0] + u[1] * ds[1], spr)
+    kin = setup.kinematics
     lines = predicted_lines(
-        case.imperfections, setup.kinematics, axial=not planar, second_order_pairs=True
+        case.imperfections,
+        kin,
+        axial=not planar,
+        second_order_pairs=True,
+        loaded=op.radial_load > 0.0,
+        contact_angle=setup.contact_angle,
     )
     directions = ("x", "y") if planar else ("x", "y", "z")
-    comps = fit_components(t, disp, lines, op.speed, directions=directions)
-    split = split_runout(t, disp, u, lines, op.speed, sync)
+    basis = decomposition_kinematic(kin, case.imperfections)
+    # the Newton solves stop at RTOL ~ 1e-11 of the elastic approach: lines below 1e-9 of it
+    # are the solver's round-off, not runout
+    approach = float(getattr(setup, "preload", 0.0) or getattr(setup, "initial_approach", 0.0))
+    fit = fit_lines(
+        t, disp, lines, op.speed, directions=directions, kinematic=basis, floor=1e-9 * approach
+    )
+    split = split_runout(
+        t, disp, u, fit.components, op.speed, fit.residual, synchronous=basis.synchronous_sources
+    )
     notes = (
-        unloaded_note(unloaded, setup.kinematics.n_elements),
+        unloaded_note(unloaded, kin.n_elements),
         description,
-        runout_note(split, grid is not None),
+        *fit.notes,
+        *split.notes,
     )
     result = RunResult(
         model=model,
@@ -619,15 +617,14 @@ def run_quasi_static(
         contact_angle=setup.contact_angle,
         time=t,
         displacement=disp,
-        components=comps,
+        components=fit.components,
         runout=split.runout,
         measuring_direction=u,
         extras={
             **extras,
             "unloaded_balls_max": int(unloaded.max()),
-            "n_elements": setup.kinematics.n_elements,
-            "rro_method": split.method,
-            "line_fit_residual": split.residual,
+            "n_elements": kin.n_elements,
+            "explained_fraction": fit.explained_fraction,
         },
         notes=notes,
     )

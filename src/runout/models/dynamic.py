@@ -101,16 +101,16 @@ from runout.contact import (
     combined_stiffness,
     stiffness_from_delta_star_table,
 )
+from runout.decompose import Candidate, Direction, fit_lines, split_runout
 from runout.errors import ConvergenceError, GeometryError, NumericalError
 from runout.imperfections import pack_harmonics
 from runout.kinematics import ball_spin_frequency, bearing_frequencies, cage_frequency
 from runout.models._quasi_static import (
     Kinematics,
-    PredictedLine,
+    decomposition_kinematic,
     predicted_lines,
-    runout_figures,
 )
-from runout.results import Component, RunResult
+from runout.results import RunResult, Source
 from runout.spectrum import amplitude_spectrum, extract_lines
 
 __all__ = [
@@ -152,6 +152,8 @@ MAX_ITER = 50
 FORCE_RTOL = 1e-13
 #: Most steps a single run may take (transient + analysis) before giving up.
 MAX_STEPS = 50_000_000
+#: Longest block of the transient search [revolutions of the rotating ring].
+MAX_BLOCK_REVOLUTIONS = 200
 
 # kernel status codes
 OK, NOT_CONVERGED, BLOWUP, NOT_FINITE = 0, 1, 2, 3
@@ -400,6 +402,15 @@ def setup(case: Any) -> DynamicSetup:
         raise GeometryError(
             "dynamics.axial_dof",
             "an axial degree of freedom needs an axial or radial load to hold the rotor",
+        )
+    if op.axial_load <= 0.0 and op.radial_load <= 0.0:
+        # no static position: the rotor floats in its play (or touches with zero stiffness)
+        # and the step, the transient and the natural frequencies have no scale
+        raise GeometryError(
+            "operation.radial_load",
+            "the dynamic model needs a radial load or an axial preload to hold the rotor "
+            "(with neither, it has no static position and no contact stiffness); an "
+            "unbalance alone does not hold it",
         )
     z = bearing.n_elements
     d, dm = bearing.element_diameter, bearing.pitch_diameter
@@ -1135,7 +1146,9 @@ def choose_step(
 
     Default: at least :data:`STEPS_PER_PERIOD` steps per period of ``f_natural`` (phase
     error of the average-acceleration scheme ≈ (ωh)²/12 ≈ 8e-5 per period) and a whole
-    number of steps per output interval.
+    number of steps per output interval. The stride may be astronomically large (a tiny
+    step or speed): :func:`plan_integration` checks the work it implies before anything is
+    allocated.
     """
     if time_step is not None:
         if not (time_step > 0.0 and math.isfinite(time_step)):
@@ -1145,6 +1158,184 @@ def choose_step(
         target = 1.0 / (STEPS_PER_PERIOD * max(f_natural, 1e-12))
     stride = max(1, math.ceil(dt_out / target * (1 - 1e-12)))
     return dt_out / stride, stride
+
+
+def _largest_divisor_at_most(n: int, bound: int) -> int:
+    """Largest divisor of ``n`` (>= 1) not above ``bound`` (>= 1), in O(sqrt n) steps."""
+    best = 1
+    i = 1
+    while i * i <= n:
+        if n % i == 0:
+            for d in (i, n // i):
+                if best < d <= bound:
+                    best = d
+        i += 1
+    return best
+
+
+@dataclass(frozen=True)
+class IntegrationPlan:
+    """Step, strides and block sizes of one dynamic run, fixed before any array exists.
+
+    Attributes
+    ----------
+    time_step : float
+        Newmark step h [s].
+    stride : int
+        Steps per output instant.
+    steps_per_rev : int
+        Steps per revolution of the rotating ring.
+    window_steps : int
+        Steps of the analysis window (``revolutions`` revolutions).
+    rev_block, block_steps : int
+        Revolutions and steps of one block of the transient search.
+    det_stride : int
+        Steps per recorded instant of a transient block (a divisor of ``block_steps``).
+    record : int
+        Output instants of the analysis window.
+    f_lo, f_hi : float
+        Lowest positive and highest linearised natural frequency [Hz].
+    transient_steps : int
+        Most steps the transient search may take (each is integrated twice).
+    """
+
+    time_step: float
+    stride: int
+    steps_per_rev: int
+    window_steps: int
+    rev_block: int
+    block_steps: int
+    det_stride: int
+    record: int
+    f_lo: float
+    f_hi: float
+    transient_steps: int
+
+
+def _cost_per_step(st: DynamicSetup) -> float:
+    """Estimated seconds of one Newmark step (contacts x harmonics, Newton iterations)."""
+    from runout.limits import COST_DYNAMIC_ELEMENT, COST_DYNAMIC_HARMONIC
+
+    z = st.n_elements
+    rings = st.harmonics[0].size + st.harmonics[3].size
+    balls = st.harmonics[6].size
+    return z * COST_DYNAMIC_ELEMENT + (z * rings + balls) * COST_DYNAMIC_HARMONIC
+
+
+def plan_integration(
+    st: DynamicSetup,
+    speed: float,
+    revolutions: int,
+    samples_per_rev: int,
+    natural: NDArray[np.float64],
+    *,
+    time_step: float | None = None,
+    max_steps: int = MAX_STEPS,
+    limits: Any = None,
+) -> IntegrationPlan:
+    """Step, strides and transient allowance of a run, refused when beyond the budget.
+
+    The analysis window and one block of the transient search (integrated twice) are the
+    least a run does; their time and memory are estimated from the step count and compared
+    with ``limits`` (:func:`runout.limits.budget`) before anything is allocated. The steps
+    left in the time budget (at most ``max_steps`` in all) bound the transient search.
+
+    Raises
+    ------
+    runout.limits.LimitError
+        Naming the key that makes the run too large (``dynamics.time_step``,
+        ``operation.speed``, ``dynamics.mass`` or ``analysis.revolutions``).
+    GeometryError
+        No contact stiffness at the static position.
+    """
+    from runout.limits import LimitError, budget, format_bytes, format_seconds
+
+    limits = budget() if limits is None else limits
+    f_hi = float(natural.max()) if natural.size else 0.0
+    if not (math.isfinite(f_hi) and f_hi > 0.0):
+        raise GeometryError(
+            "operation.radial_load",
+            "the rotor has no contact stiffness at its static position (no ball is loaded): "
+            "give a radial load or an axial preload",
+        )
+    positive = natural[natural > 0.0]
+    f_lo = float(positive.min()) if positive.size else f_hi
+    if f_lo * MAX_BLOCK_REVOLUTIONS < speed:
+        # a transient block is at most 200 revolutions: a free vibration slower than that
+        # cannot be seen decaying, and its record would hold less than one sample
+        raise GeometryError(
+            "dynamics.mass",
+            f"the rotor's lowest natural frequency ({f_lo:.3g} Hz, from the mass "
+            f"{st.mass:.4g} kg on the contact stiffness) is below 1/{MAX_BLOCK_REVOLUTIONS} of "
+            f"the speed ({speed:.4g} Hz): its free vibration outlasts "
+            f"{MAX_BLOCK_REVOLUTIONS} revolutions and no steady state can be found",
+        )
+    dt_out = 1.0 / (speed * samples_per_rev)
+    h, stride = choose_step(st, f_hi, dt_out, time_step)
+    steps_per_rev = stride * samples_per_rev
+    # a block spans >= 20 natural periods and, with damping, >= ln 2 linear decay times 2m/c
+    # (the free vibration halves per block at least), but at most 200 revolutions
+    decay = math.log(2.0) * 2.0 * st.mass / st.damping if st.damping > 0.0 else math.inf
+    rev_block = max(1, math.ceil(20.0 / max(f_lo, 1e-12) * speed))
+    rev_block = min(MAX_BLOCK_REVOLUTIONS, max(rev_block, math.ceil(min(decay, 1e9) * speed)))
+    window_steps = revolutions * steps_per_rev
+    block_steps = rev_block * steps_per_rev
+    det_points = block_steps / max(1.0, math.floor(1.0 / (8.0 * f_hi * h)))
+    record = revolutions * samples_per_rev
+    least = window_steps + 2 * block_steps
+    per_step = _cost_per_step(st)
+    seconds = least * per_step
+    memory = 8.0 * 3 * (8 * record + 6 * det_points) + 16.0 * record * 64
+    duration = revolutions / speed
+    what = (
+        f"{revolutions} revolutions at {speed:.4g} Hz = {duration:.4g} s of motion, and a "
+        f"transient block of {rev_block} revolutions, in steps of {h:.3g} s: "
+        f"{least:.3g} Newmark steps"
+    )
+    # the key to change: the one that makes the steps many
+    undamped = math.ceil(min(decay, 1e9) * speed) >= rev_block > 1
+    if time_step is not None:
+        key = "dynamics.time_step"
+    elif duration > 60.0:
+        key = "operation.speed"
+    elif h < 1e-8:
+        key = "dynamics.mass"
+        what += f" (natural frequency {f_hi:.3g} Hz)"
+    elif 2 * block_steps > window_steps and undamped:
+        # little or no damping: the transient blocks last as long as the free vibration does
+        key = "dynamics.damping"
+    else:
+        key = "analysis.revolutions"
+    if not memory <= limits.memory:
+        raise LimitError(
+            key,
+            f"the dynamic run would need about {format_bytes(memory)} of memory ({what}); "
+            f"change {key} {limits.raise_hint('memory')}",
+        )
+    if not (seconds <= limits.time and least <= max_steps):
+        raise LimitError(
+            key,
+            f"the dynamic run would take about {format_seconds(seconds)} ({what}); change "
+            f"{key} {limits.raise_hint('time')}",
+        )
+    # the transient search is integrated twice: half of what is left of the budget
+    left = min(max_steps, int(limits.time / per_step)) - window_steps
+    transient_steps = max(block_steps, left // 2)
+    fine = max(1, math.floor(1.0 / (8.0 * f_hi * h)))
+    det_stride = _largest_divisor_at_most(block_steps, fine)
+    return IntegrationPlan(
+        time_step=h,
+        stride=stride,
+        steps_per_rev=steps_per_rev,
+        window_steps=window_steps,
+        rev_block=rev_block,
+        block_steps=block_steps,
+        det_stride=det_stride,
+        record=record,
+        f_lo=f_lo,
+        f_hi=f_hi,
+        transient_steps=transient_steps,
+    )
 
 
 class _Stepper:
@@ -1192,6 +1383,7 @@ def integrate(
     time_step: float | None = None,
     progress: Callable[[float], None] | None = None,
     max_steps: int = MAX_STEPS,
+    limits: Any = None,
 ) -> Integration:
     """Integrate from the static equilibrium, detect the end of the transient, record.
 
@@ -1224,37 +1416,43 @@ def integrate(
     progress : callable or None
         Called with the fraction done (0..1) after each block.
     max_steps : int
-        Step budget for the transient search.
+        Step budget of the whole run (transient search twice and the window).
+    limits : runout.limits.Budget or None
+        Memory and time budget (default :func:`runout.limits.budget`); the plan is refused
+        before any array is allocated when it exceeds it, and what is left of the time bounds
+        the transient search.
 
     Raises
     ------
     ConvergenceError, NumericalError
         Naming the step and time of the failure.
+    runout.limits.LimitError
+        A window or a transient block beyond the budget (:func:`plan_integration`).
     """
     q_static = static_equilibrium(st, np.array([0.0]))[0]
     fn = linearised_natural_frequencies(st, q_static)
-    f_hi = float(fn.max())
-    positive = fn[fn > 0.0]
-    f_lo = float(positive.min()) if positive.size else f_hi
+    plan = plan_integration(
+        st,
+        speed,
+        revolutions,
+        samples_per_rev,
+        fn,
+        time_step=time_step,
+        max_steps=max_steps,
+        limits=limits,
+    )
+    f_lo, f_hi = plan.f_lo, plan.f_hi
     dt_out = 1.0 / (speed * samples_per_rev)
-    h, stride = choose_step(st, f_hi, dt_out, time_step)
-    steps_per_rev = stride * samples_per_rev
-    # a block spans >= 20 natural periods and, with damping, >= ln 2 linear decay times 2m/c
-    # (the free vibration halves per block at least), but at most 200 revolutions
-    decay = math.log(2.0) * 2.0 * st.mass / st.damping if st.damping > 0.0 else math.inf
-    rev_block = max(1, math.ceil(20.0 / max(f_lo, 1e-12) * speed))
-    rev_block = min(200, max(rev_block, math.ceil(min(decay, 1e9) * speed)))
+    h, stride, steps_per_rev = plan.time_step, plan.stride, plan.steps_per_rev
     par = st.params(h)
     run = _Stepper(st, par, h)
     run.start_static(0.0, q_static)
     history: list[float] = []
     settled = "limit"
-    budget = max_steps - revolutions * steps_per_rev
-    block_steps = rev_block * steps_per_rev
+    budget = plan.transient_steps
+    block_steps = plan.block_steps
     # the transient blocks are recorded finely enough to see the free vibration
-    det_stride = max(1, math.floor(1.0 / (8.0 * f_hi * h)))
-    while block_steps % det_stride:
-        det_stride -= 1
+    det_stride = plan.det_stride
     dt_det = det_stride * h
     est_blocks = 4
     while run.steps + block_steps <= max(budget, block_steps):
@@ -1328,100 +1526,60 @@ def integrate(
 # lines and result
 # --------------------------------------------------------------------------------------------
 def ball_passage_frequency(st: DynamicSetup) -> float:
-    """Rate at which balls pass a point fixed to the outer ring, Z |f_c − f_o| [Hz] (eq. 2.20)."""
-    kin = st.kinematics
-    return st.n_elements * abs(kin.cage - kin.outer)
+    """Rate at which balls pass the load zone, fixed in space, Z |f_c| [Hz].
+
+    Seed 003 eq. 2.20 writes it for a stationary outer ring, where it is also the rate at which
+    balls pass a point of the outer ring; with the outer ring turning the stiffness still varies
+    with the balls' positions relative to the (fixed) load.
+    """
+    return st.n_elements * abs(st.kinematics.cage)
 
 
 def candidate_lines(
-    st: DynamicSetup, imperfections: Any, natural: NDArray[np.float64]
-) -> list[tuple[PredictedLine, bool]]:
-    """Lines to fit: (line, optional). Optional lines are kept only when clearly present."""
+    st: DynamicSetup, imperfections: Any, natural: NDArray[np.float64], loaded: bool = False
+) -> list[Candidate]:
+    """The lines to fit, each with its source (optional lines are kept only when present).
+
+    Ball passage Z|f_c| and its harmonics (the compliance of the balls under load, seed
+    003 eq. 2.20), the unbalance at f_i and its interactions, the linearised natural
+    frequencies, and every line of the imperfections (:func:`predicted_lines`, with the
+    linearised model's phasors for the shares).
+    """
     kin = st.kinematics
     fbp = ball_passage_frequency(st)
-    out: list[tuple[PredictedLine, bool]] = []
+    out: list[Candidate] = []
+
+    def add(freq: float, kinds: tuple[Direction, ...], src: Source, optional: bool) -> None:
+        if freq > 0.0:
+            out.extend(Candidate(freq, d, src, optional=optional) for d in kinds)
+
+    both: tuple[Direction, ...] = ("radial", "axial")
     for n in range(1, 7):
-        name = "ball passage" if n == 1 else f"ball passage {n}x (harmonic)"
-        out.append((PredictedLine("radial", n * fbp, f"{name}: {n} Z f_c"), n > 3))
-        out.append((PredictedLine("axial", n * fbp, f"{name}: {n} Z f_c"), n > 3))
-    out.append((PredictedLine("radial", 0.5 * fbp, "ball passage 1/2 (subharmonic)"), True))
+        # the same source predicted_lines gives a loaded bearing (one line, one source)
+        add(n * fbp, both, Source("load", None, None, f"ball passage {n}x", f"{n} Z f_c"), n > 3)
+    add(0.5 * fbp, ("radial",), Source("load", None, None, "ball passage 1/2", "Z f_c / 2"), True)
     if st.unbalance_force > 0.0:
         fr = abs(kin.inner)
-        out.append((PredictedLine("radial", fr, "unbalance: f_i"), False))
+        add(fr, ("radial",), Source("unbalance", None, None, "f_i", "f_i"), False)
         for n in range(2, 4):
-            out.append((PredictedLine("radial", n * fr, f"unbalance {n}x: {n} f_i"), True))
+            src = Source("unbalance", None, None, f"{n}x: {n} f_i", f"{n} f_i")
+            add(n * fr, ("radial",), src, True)
         for n in range(1, 3):
             for sgn in (1, -1):
-                f = abs(n * fbp + sgn * fr)
-                lab = f"ball passage x unbalance: {n} Z f_c {'+' if sgn > 0 else '-'} f_i"
-                out.append((PredictedLine("radial", f, lab), True))
+                formula = f"{n} Z f_c {'+' if sgn > 0 else '-'} f_i"
+                src = Source("unbalance", None, None, "x ball passage", formula)
+                add(abs(n * fbp + sgn * fr), ("radial",), src, True)
     for i, f in enumerate(sorted(natural), start=1):
-        if f > 0.0:
-            lab = f"natural frequency {i} (linearised): {f:.5g} Hz"
-            out.append((PredictedLine("radial", float(f), lab), True))
-            out.append((PredictedLine("axial", float(f), lab), True))
-    for ln in predicted_lines(imperfections, kin, axial=st.ndof == 3):
-        out.append((ln, False))
+        src = Source("natural", None, None, f"mode {i} (linearised)", f"{f:.5g} Hz")
+        add(float(f), both, src, True)
+    out += predicted_lines(
+        imperfections,
+        kin,
+        axial=st.ndof == 3,
+        loaded=loaded,
+        contact_angle=st.contact_angle if st.contact_angle > 0.0 else None,
+    )
     return out
-
-
-def fit_lines(
-    time: NDArray[np.float64],
-    displacement: NDArray[np.float64],
-    lines: list[tuple[PredictedLine, bool]],
-    rotation_hz: float,
-    ndof: int,
-    noise: float = 0.0,
-) -> tuple[Component, ...]:
-    """Least-squares amplitudes of the candidate lines in x, y (and z).
-
-    Lines closer than 1.5 / record of an earlier (higher-priority) line are merged into it
-    (labels joined), so that the fit stays well conditioned; optional lines below 1e-3 of the
-    largest line, every line below 1e-7 of it and every line below ``noise`` p-p [m] (the
-    solver's resolution) are dropped.
-    """
-    n = time.size
-    duration = n * (time[1] - time[0])
-    f_max = 0.5 * n / duration * 0.999
-    f_min = 1.5 / duration
-    sep = 1.5 / duration
-    comps: list[Component] = []
-    optional_labels: set[str] = set()
-    for axis, name in enumerate(("x", "y", "z")):
-        if axis == 2 and ndof == 2:
-            continue
-        kind = "axial" if name == "z" else "radial"
-        kept: list[tuple[float, list[str], bool]] = []
-        for ln, optional in lines:
-            f = ln.frequency_hz
-            if ln.directions != kind or not (f_min < f < f_max):
-                continue
-            for entry in kept:
-                if abs(entry[0] - f) < sep:
-                    if ln.label not in entry[1]:
-                        entry[1].append(ln.label)
-                    break
-            else:
-                kept.append((f, [ln.label], optional))
-        if not kept:
-            continue
-        freqs = np.array([f for f, _, _ in kept])
-        fit = extract_lines(time, displacement[axis], freqs)
-        for (f, labels, optional), amp, ph in zip(kept, fit.amplitude, fit.phase, strict=True):
-            label = "; ".join(labels)
-            if optional:
-                optional_labels.add(label)
-            comps.append(Component.fitted(name, f, rotation_hz, amp, ph, label))
-    if comps:
-        top = max(c.pp_m for c in comps)
-        comps = [
-            c
-            for c in comps
-            if c.pp_m > max(1e-7 * top, noise)
-            and not (c.label in optional_labels and c.pp_m < 1e-3 * top)
-        ]
-    comps.sort(key=lambda c: -c.pp_m)
-    return tuple(comps)
 
 
 def _measuring_direction(op: Any) -> NDArray[np.float64]:
@@ -1465,14 +1623,30 @@ def run(case: Any, progress: Callable[[float], None] | None = None) -> RunResult
     op = case.operation
     dyn = _dyn(case)
     revs, spr, notes = _analysis_grid(case)
-    integ = integrate(st, op.speed, revs, spr, time_step=dyn.time_step, progress=progress)
+    from runout.limits import case_budget
+
+    integ = integrate(
+        st, op.speed, revs, spr, time_step=dyn.time_step, progress=progress,
+        limits=case_budget(case),
+    )  # fmt: skip
     disp = integ.displacement
     u = _measuring_direction(op)
-    radial = u[0] * disp[0] + u[1] * disp[1]
-    lines = candidate_lines(st, case.imperfections, integ.natural_frequencies)
+    lines = candidate_lines(
+        st, case.imperfections, integ.natural_frequencies, loaded=op.radial_load > 0.0
+    )
     noise = NOISE * st.reference_approach
-    comps = fit_lines(integ.time, disp, lines, op.speed, st.ndof, noise)
-    notes = list(st.notes) + notes
+    directions = ("x", "y", "z") if st.ndof == 3 else ("x", "y")
+    basis = decomposition_kinematic(
+        st.kinematics, case.imperfections, unbalance=st.unbalance_force > 0.0
+    )
+    fit = fit_lines(
+        integ.time, disp, lines, op.speed, directions=directions, kinematic=basis, floor=noise
+    )
+    comps = fit.components
+    split = split_runout(
+        integ.time, disp, u, comps, op.speed, fit.residual, synchronous=basis.synchronous_sources
+    )
+    notes = list(st.notes) + notes + list(fit.notes) + list(split.notes)
     fn = integ.natural_frequencies
     notes.append(
         f"rotor = inner ring + shaft, displacement relative to the outer ring; transient "
@@ -1520,6 +1694,7 @@ def run(case: Any, progress: Callable[[float], None] | None = None) -> RunResult
         "axial_dof": st.ndof == 3,
         "min_loaded_balls": integ.min_loaded,
         "solver_resolution_m": noise,
+        "explained_fraction": fit.explained_fraction,
     }
     if st.ndof == 3:
         extras["mean_axial_displacement_m"] = float(mean[2])  # from the preloaded position
@@ -1546,7 +1721,7 @@ def run(case: Any, progress: Callable[[float], None] | None = None) -> RunResult
         time=integ.time,
         displacement=disp,
         components=comps,
-        runout=runout_figures(disp, u, (radial, spr)),
+        runout=split.runout,
         measuring_direction=u,
         extras=extras,
         notes=tuple(notes),
@@ -1623,22 +1798,78 @@ def _point(case: Any, result: RunResult) -> SweepPoint:
     )
 
 
+def exact_number(value: float) -> str:
+    """Shortest text of ``value`` that reads back as exactly ``value``.
+
+    ``f"{value:g}"`` when it round-trips (``10``, ``0.5``: the names of earlier versions stay
+    valid), ``repr`` otherwise (``10.0000001``). Two different values therefore never share a
+    text: a point name made of 6 significant digits let two close preloads share one result.
+    """
+    value = float(value) + 0.0  # -0.0 and 0.0 are one preload
+    short = f"{value:g}"
+    return short if float(short) == value else repr(value)
+
+
+def point_name(elements: int, preload: float) -> str:
+    """Name of a sweep point (and of its file in ``points/``): ``Z<z>_P<preload>N``, exact."""
+    return f"Z{int(elements)}_P{exact_number(preload)}N"
+
+
+_POINT_FIELDS = frozenset(SweepPoint.__dataclass_fields__)
+
+
+def _saved_point(doc: Any, elements: int, preload: float, digest: str) -> SweepPoint | str:
+    """The point stored in ``doc`` if it is this case's point (elements, preload); else why not.
+
+    Checked field by field: a damaged or hand-edited file must be recomputed, not raise
+    AttributeError / TypeError here or in the plots, and a file of another point (renamed,
+    or named by an older version) must not stand in for this one.
+    """
+    if not isinstance(doc, dict):
+        return f"a JSON {type(doc).__name__}, not an object"
+    if doc.get("case_digest") != digest:
+        return "written for another case"
+    if set(doc) != _POINT_FIELDS | {"case_digest"}:
+        return "fields missing or unknown"
+    if doc["elements"] != elements or doc["preload_n"] != preload:
+        return f"the point Z{doc['elements']!r} P{doc['preload_n']!r} N"
+
+    def number(v: Any) -> bool:
+        return isinstance(v, int | float) and not isinstance(v, bool) and math.isfinite(v)
+
+    scalars = ("contact_angle_deg", "ball_passage_hz", "radial_pp_m", "ball_passage_pp_m")
+    arrays = ("natural_frequencies_hz", "mean_displacement_m", "spectrum_hz", "spectrum_pp_m")
+    if not all(number(doc[k]) for k in scalars) or not all(
+        isinstance(doc[k], list) and all(number(v) for v in doc[k]) for k in arrays
+    ):
+        return "a figure is not a number"
+    if len(doc["mean_displacement_m"]) != 2 or len(doc["spectrum_hz"]) != len(doc["spectrum_pp_m"]):
+        return "arrays of the wrong length"
+    if not isinstance(doc["lines"], list) or not all(isinstance(x, dict) for x in doc["lines"]):
+        return "lines is not a list of objects"
+    return SweepPoint(**{k: v for k, v in doc.items() if k != "case_digest"})
+
+
 def sweep(
     case: Any,
     elements: Sequence[int] = (),
     preloads: Sequence[float] = (),
-    out: Path | None = None,
+    out: Path | str | None = None,
     *,
     progress: Callable[[int, int, str], None] | None = None,
+    force: bool = False,
+    notify: Callable[[str], None] | None = None,
 ) -> list[SweepPoint]:
     """Run the dynamic model over numbers of balls × axial preloads (seed 003 Figs. 3–4).
 
     Every point is the case with ``[bearing] elements`` and ``[operation] axial_load``
-    replaced. With ``out``, each finished point is written at once to
-    ``out/points/Z<z>_P<p>N.json`` (with a digest of the case), and a rerun reuses the
-    points already there for the same case: an interrupted sweep loses nothing. The panels
-    (``spectra_elements_P<p>N.png``, ``spectra_preload_Z<z>.png``), ``trend.png`` and
-    ``sweep.csv`` are written at the end.
+    replaced. With ``out``, each finished point is written at once (atomically) to
+    ``out/points/<point_name>.json`` (with a digest of the case), and a rerun reuses the
+    points already there for the same case: an interrupted sweep loses nothing. A saved point
+    that is damaged, of another case or of another point is recomputed, and said through
+    ``notify``. The panels (``spectra_elements_P<p>N.png``, ``spectra_preload_Z<z>.png``),
+    ``trend.png`` and ``sweep.csv`` are written at the end. ``out`` is locked for the whole
+    sweep (:func:`runout.study.output_lock`) and must be new, empty or a sweep's output.
 
     Parameters
     ----------
@@ -1647,75 +1878,150 @@ def sweep(
         Numbers of balls; empty = the case's.
     preloads : sequence of float
         Axial preloads [N]; empty = the case's.
-    out : Path or None
-        Output directory.
+    out : Path, str or None
+        Output directory (an empty string is refused, not taken as the current directory).
     progress : callable or None
         Called as ``progress(done, total, text)`` after each point.
+    force : bool
+        Write into a non-empty ``out`` that is not a sweep-dynamic output.
+    notify : callable or None
+        Called with one-line notes (points recomputed); default: a logged warning.
 
     Returns
     -------
     list of SweepPoint
         In the order elements-major.
+
+    Raises
+    ------
+    runout.study.OutputError
+        ``out`` empty, a file, unwritable, not a sweep's output, or locked by another writer.
+    runout.study.StudyError
+        A point failed with an exception that is not a runout error (the points finished
+        before it are kept).
     """
     zs = list(elements) or [case.bearing.n_elements]
     ps = list(preloads) or [case.operation.axial_load]
     for p in ps:
         if not (math.isfinite(p) and p >= 0.0):
             raise GeometryError("preload", f"must be >= 0 N, got {p!r}")
+    if out is None:
+        return _sweep_points(case, zs, ps, None, progress, notify)
+    from runout.study import output_directory, output_lock, refuse_foreign
+
+    directory = output_directory(out)
+    refuse_foreign(directory, "sweep-dynamic", force)
+    with output_lock(directory):
+        return _sweep_points(case, zs, ps, directory, progress, notify)
+
+
+def _sweep_points(
+    case: Any,
+    zs: list[int],
+    ps: list[float],
+    out: Path | None,
+    progress: Callable[[int, int, str], None] | None,
+    notify: Callable[[str], None] | None,
+) -> list[SweepPoint]:
+    """The points of :func:`sweep`; ``out`` is checked and locked by the caller."""
+    import functools
+
+    from runout.errors import RunoutError
+    from runout.study import (
+        OutputError,
+        StudyError,
+        _dumps,
+        _remove_leftovers,
+        error_text,
+        write_atomic,
+    )
+
     digest = _case_digest(case)
     points: list[SweepPoint] = []
     total = len(zs) * len(ps)
+    redone: list[str] = []
     if out is not None:
-        (out / "points").mkdir(parents=True, exist_ok=True)
+        _remove_leftovers(out)
+        try:
+            (out / "points").mkdir(exist_ok=True)
+        except OSError as exc:
+            raise OutputError(f"{out / 'points'}: cannot create ({exc.strerror or exc})") from None
     for z in zs:
         for p in ps:
-            name = f"Z{z}_P{p:g}N"
+            p = float(p) + 0.0
+            name = point_name(z, p)
             path = out / "points" / f"{name}.json" if out is not None else None
             point = None
             if path is not None and path.exists():
                 try:
-                    saved = json.loads(path.read_text())
-                    if saved.get("case_digest") == digest:
-                        saved.pop("case_digest")
-                        point = SweepPoint(**saved)
-                except (ValueError, TypeError):
-                    point = None
+                    found = _saved_point(json.loads(path.read_text()), z, p, digest)
+                except (OSError, ValueError):
+                    found = "unreadable"
+                if isinstance(found, SweepPoint):
+                    point = found
+                else:
+                    redone.append(f"{path.name}: {found}")
             if point is None:
                 variant = _variant(case, z, p)
-                point = _point(variant, run(variant))
+                try:
+                    point = _point(variant, run(variant))
+                except RunoutError:
+                    raise  # names the case and the point already
+                except Exception as exc:
+                    raise StudyError(
+                        f"{variant.path}: {error_text(exc)} (the points finished before it "
+                        "are kept)"
+                    ) from None
                 if path is not None:
-                    payload = {**point.to_json(), "case_digest": digest}
-                    tmp = path.with_suffix(".tmp")
-                    tmp.write_text(json.dumps(payload, allow_nan=False))
-                    tmp.replace(path)
+                    text = _dumps({**point.to_json(), "case_digest": digest})
+                    write_atomic(path, functools.partial(_write_str, text))
             points.append(point)
             if progress is not None:
                 progress(len(points), total, name)
+    if redone:
+        n = len(redone)
+        shown = "; ".join(redone[:3]) + ("; ..." if n > 3 else "")
+        message = (
+            f"{out / 'points' if out is not None else 'points'}: recomputed {n} point"
+            f"{'s' if n > 1 else ''} that could not be reused ({shown})"
+        )
+        if notify is not None:
+            notify(message)
+        else:
+            import logging
+
+            logging.getLogger(__name__).warning(message)
     if out is not None:
-        _write_sweep(points, zs, ps, out, case.title)
+        try:
+            _write_sweep(points, zs, ps, out, case.title)
+        except OSError as exc:  # a plot: the CSV names its own file
+            raise OutputError(f"{out}: cannot write ({exc.strerror or exc})") from None
     return points
+
+
+def _write_str(text: str, fh: Any) -> None:
+    fh.write(text)
 
 
 def _write_sweep(
     points: list[SweepPoint], zs: list[int], ps: list[float], out: Path, title: str
 ) -> list[Path]:
     from runout import plotting
+    from runout.study import write_atomic
 
-    written = []
-    path = out / "sweep.csv"
-    with path.open("w") as fh:
-        fh.write(
-            "elements,preload_n,contact_angle_deg,ball_passage_hz,natural_frequency_1_hz,"
-            "natural_frequency_2_hz,radial_pp_m,ball_passage_pp_m,mean_x_m,mean_y_m\n"
+    rows = [
+        "elements,preload_n,contact_angle_deg,ball_passage_hz,natural_frequency_1_hz,"
+        "natural_frequency_2_hz,radial_pp_m,ball_passage_pp_m,mean_x_m,mean_y_m\n"
+    ]
+    for pt in points:
+        fn = [*pt.natural_frequencies_hz, 0.0, 0.0]
+        # the preload exactly: two close preloads are two rows, not one value twice
+        rows.append(
+            f"{pt.elements},{exact_number(pt.preload_n)},{pt.contact_angle_deg:.6g},"
+            f"{pt.ball_passage_hz:.8g},{fn[0]:.8g},{fn[1]:.8g},{pt.radial_pp_m:.6g},"
+            f"{pt.ball_passage_pp_m:.6g},{pt.mean_displacement_m[0]:.6g},"
+            f"{pt.mean_displacement_m[1]:.6g}\n"
         )
-        for pt in points:
-            fn = [*pt.natural_frequencies_hz, 0.0, 0.0]
-            fh.write(
-                f"{pt.elements},{pt.preload_n:.6g},{pt.contact_angle_deg:.6g},"
-                f"{pt.ball_passage_hz:.8g},{fn[0]:.8g},{fn[1]:.8g},{pt.radial_pp_m:.6g},"
-                f"{pt.ball_passage_pp_m:.6g},{pt.mean_displacement_m[0]:.6g},"
-                f"{pt.mean_displacement_m[1]:.6g}\n"
-            )
-    written.append(path)
+    written = [write_atomic(out / "sweep.csv", lambda fh: fh.writelines(rows))]
     written += plotting.plot_dynamic_sweep(points, zs, ps, out, title)
     return written

@@ -740,8 +740,9 @@ def _newton(
         res = force - load
         if np.count_nonzero(loaded) < 3:
             raise NumericalError(
-                f"{stage}: fewer than 3 balls carry load; the ring cannot be held "
-                f"(loads {load.tolist()})"
+                f"{stage}: fewer than 3 balls carry load; the ring (free to tilt and to move "
+                f"axially) cannot be held (loads {load.tolist()}); a bearing with play under a "
+                'radial load alone runs in model = "dynamic", or here with an axial load too'
             )
         try:
             dq = -np.linalg.solve(jac + 1e-12 * np.diag(np.abs(np.diag(jac)) + 1.0), res)
@@ -851,6 +852,26 @@ def _moment_start(ring: _Ring, op: Operation) -> NDArray[np.float64]:
             lo = mid
     theta = play + hi
     return np.array([-offset, 0.0, 0.0, theta * c, theta * s])
+
+
+def setup(case: object) -> None:
+    """The input checks of :func:`solve_equilibrium` for a case, without solving anything.
+
+    Raises
+    ------
+    GeometryError
+        Not a ball bearing, an unknown race control, or no load to hold the inner ring.
+    """
+    bearing = case.bearing  # type: ignore[attr-defined]
+    op = case.operation  # type: ignore[attr-defined]
+    if not isinstance(bearing, BallBearing):
+        raise GeometryError("bearing.type", "the equilibrium model needs a ball bearing")
+    control = case.analysis.race_control  # type: ignore[attr-defined]
+    if control not in _LAMBDA:
+        raise GeometryError(
+            "analysis.race_control", f'must be "outer", "inner" or "none", got {control!r}'
+        )
+    _initial_displacement(bearing, op)
 
 
 def solve_equilibrium(

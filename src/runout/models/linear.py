@@ -56,7 +56,7 @@ derives them):
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any, Literal
 
@@ -65,10 +65,11 @@ from numpy.typing import ArrayLike, NDArray
 
 from runout.attribution import attribution_rows, attribution_table_rows
 from runout.bearing import Bearing, Operation
+from runout.decompose import exact_shares, split_runout
 from runout.errors import GeometryError
 from runout.imperfections import Harmonics, Imperfections
 from runout.kinematics import Frequencies, bearing_frequencies, pitch_ratio
-from runout.results import Component, Rows, Runout, RunResult
+from runout.results import Component, Rows, RunResult, Source
 from runout.spectrum import (
     ANDERON_BANDS,
     MICROINCH,
@@ -393,6 +394,46 @@ def closed_form_terms(
 # --------------------------------------------------------------------------------------------
 # real lines
 # --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class LineSource:
+    """One source's part of a line: its x and y phasors [m] (x = Re(X e^{iωθ}))."""
+
+    source: Source
+    x: complex
+    y: complex
+
+
+def _term_source(
+    part: int, lobes: int, kind: int, element: int, z: int, inner_rotating: bool
+) -> Source:
+    """The structured source of one term (seed 002's symbol where it has one)."""
+    if part == 3:
+        return Source("slant", None, None, "2 per rev of the inner ring (eq. 35)", "2 f_i")
+    if part == 2:
+        if kind == 2:
+            sym = "B_A0, eq. 40" if inner_rotating else "eq. 40"
+            return Source("ball", element + 1, 0, f"f_c ({sym})", "f_c")
+        n = lobes // 2
+        sign = "+" if kind == 0 else "-"
+        sym = f"B_{'A' if kind == 0 else 'B'}{n}, eq. 39" if inner_rotating else "eq. 39"
+        return Source(
+            "ball", element + 1, lobes, f"2n f_b {sign} f_c ({sym})", f"{lobes} f_b {sign} f_c"
+        )
+    name = "inner" if part == 0 else "outer"
+    ring = "i" if part == 0 else "o"
+    k = lobes
+    if k == 1 and kind == 1:
+        return Source(name, None, 1, "eccentricity (eq. 33)", f"f_{ring}")
+    if kind == 0:
+        n, pm, formula = (k + 1) // z, "-", f"|{k + 1} f_c - {k} f_{ring}|"
+    else:
+        n, pm, formula = (k - 1) // z, "+", f"|{k} f_{ring} - {k - 1} f_c|"
+    if (k + (1 if kind == 0 else -1)) % z == 0 and n >= 1:
+        sym = (f" I_(nZ{pm}1)" if part == 0 else " O_nZ") if inner_rotating else ""
+        return Source(name, None, k, f"nZ{pm}1, n={n}{sym} (eq. 33/37)", formula)
+    return Source(name, None, k, "k ± 1 ≠ nZ (unequal spacing)", formula)
+
+
 @dataclass(frozen=True, eq=False)
 class SpectralLines:
     r"""Lines of the ring-centre displacement, one per distinct frequency.
@@ -417,6 +458,9 @@ class SpectralLines:
         Source(s): part, lobe count and formula.
     rotation_hz : float
         Rotating-ring speed [Hz].
+    sources : tuple of tuples of LineSource
+        Per line, each source with its own x and y phasors (they add up to X, Y): the exact
+        shares of a line several sources produce.
     """
 
     order: NDArray[np.float64]
@@ -424,6 +468,7 @@ class SpectralLines:
     c_minus: NDArray[np.complex128]
     labels: tuple[str, ...]
     rotation_hz: float
+    sources: tuple[tuple[LineSource, ...], ...] = ()
 
     def __len__(self) -> int:
         return int(self.order.size)
@@ -502,6 +547,9 @@ class SpectralLines:
             self.c_minus[m],
             tuple(lab for lab, keep in zip(self.labels, m, strict=True) if keep),
             self.rotation_hz,
+            tuple(src for src, keep in zip(self.sources, m, strict=True) if keep)
+            if self.sources
+            else (),
         )
 
     def derivative(self) -> SpectralLines:
@@ -512,6 +560,12 @@ class SpectralLines:
             -1j * self.order * self.c_minus,
             self.labels,
             self.rotation_hz,
+            tuple(
+                tuple(LineSource(ls.source, 1j * w * ls.x, 1j * w * ls.y) for ls in line_sources)
+                for w, line_sources in zip(self.order, self.sources, strict=True)
+            )
+            if self.sources
+            else (),
         )
 
     def evaluate(self, theta: ArrayLike) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
@@ -606,7 +660,28 @@ def spectral_lines(terms: Terms, rotation_hz: float, z: int, inner_rotating: boo
     for (g, lab), elems in balls.items():
         which = "all balls" if len(elems) == z else "ball " + ",".join(map(str, sorted(elems)))
         labels[g].append(f"{lab} [{which}]")
-    return SpectralLines(freq, cp, cm, tuple("; ".join(lab) for lab in labels), rotation_hz)
+    # each source's own phasors (terms of one source at one line add up)
+    parts: list[dict[Source, list[complex]]] = [{} for _ in range(n_lines)]
+    for j in order:
+        src = _term_source(
+            int(terms.part[j]),
+            int(terms.lobes[j]),
+            int(terms.kind[j]),
+            int(terms.element[j]),
+            z,
+            inner_rotating,
+        )
+        cj = complex(c[j])
+        xj, yj = (cj, -1j * cj) if plus[j] else (cj.conjugate(), 1j * cj.conjugate())
+        acc = parts[int(grp[j])].setdefault(src, [0j, 0j])
+        acc[0] += xj
+        acc[1] += yj
+    sources = tuple(
+        tuple(LineSource(src, xy[0], xy[1]) for src, xy in line.items()) for line in parts
+    )
+    return SpectralLines(
+        freq, cp, cm, tuple("; ".join(lab) for lab in labels), rotation_hz, sources
+    )
 
 
 # --------------------------------------------------------------------------------------------
@@ -709,10 +784,6 @@ def direct_sum(
 # --------------------------------------------------------------------------------------------
 # the model's result
 # --------------------------------------------------------------------------------------------
-def _peak_to_peak(v: NDArray[np.float64]) -> float:
-    return float(v.max() - v.min()) if v.size else 0.0
-
-
 @dataclass(frozen=True)
 class LinearResult(RunResult):
     """:class:`RunResult` of the linear model, with its exact lines and Anderon analysis.
@@ -882,24 +953,30 @@ class LinearResult(RunResult):
 def _components(lines: SpectralLines) -> tuple[Component, ...]:
     out: list[Component] = []
     rep = lines.repeatable
+    top = float(max(lines.x_amplitude.max(initial=0.0), lines.y_amplitude.max(initial=0.0)))
     for i in range(len(lines)):
         if lines.order[i] == 0.0:
             continue
         for name, cval in (("x", lines.x_complex[i]), ("y", lines.y_complex[i])):
             amp = abs(cval)
-            if amp == 0.0:
+            if amp <= 1e-12 * top:  # a cancelled line (round-off of the element sums)
                 continue
+            own = [(ls.source, ls.x if name == "x" else ls.y) for ls in lines.sources[i]]
             out.append(
-                Component(
-                    direction=name,
-                    frequency_hz=float(lines.frequency_hz[i]),
+                replace(
+                    Component.from_sources(
+                        name,
+                        float(lines.frequency_hz[i]),
+                        lines.rotation_hz,
+                        amp,
+                        float(np.angle(cval)),
+                        exact_shares(own, complex(cval)),
+                    ),
                     order=float(lines.order[i]),
-                    pp_m=2.0 * amp,
-                    label=lines.labels[i],
-                    phase_rad=float(np.angle(cval)),
                     repeatable=bool(rep[i]),
                 )
             )
+
     out.sort(key=lambda c: -c.pp_m)
     return tuple(out)
 
@@ -950,11 +1027,31 @@ def run(case: Any) -> LinearResult:
     else:
         theta, x, y = synthesize(lines, revolutions, samples)
     direction = _measuring_direction(operation)
-    rep = lines.repeatable
-    radial = direction[0] * x + direction[1] * y
-    _, xr, yr = synthesize(lines.select(rep), revolutions, samples)
-    rro = direction[0] * xr + direction[1] * yr
-    nrro = radial - rro
+    time = theta / (TWO_PI * rt.rotation_hz)
+    displacement = np.stack([x, y, np.zeros_like(x)])
+    components = _components(lines)
+    residual = np.zeros_like(displacement)
+    if pitch:  # the lines neglect the unequal-spacing coupling: what they leave
+        _, xl, yl = synthesize(lines, revolutions, samples)
+        residual[0], residual[1] = x - xl, y - yl
+    turning = imp.inner if operation.rotating_ring == "inner" else imp.outer
+    synchronous = (
+        bool(np.any(turning.amplitudes > 0.0))
+        or (imp.slant is not None and operation.rotating_ring == "inner")
+        or (operation.inner_speed != 0.0 and operation.outer_speed != 0.0)
+    )
+    split = split_runout(
+        time,
+        displacement,
+        direction,
+        components,
+        rt.rotation_hz,
+        residual,
+        synchronous=synchronous,
+    )
+    notes += split.notes
+    variance = float(np.sum(np.var(displacement[:2], axis=1)))
+    explained = 1.0 - float(np.sum(np.var(residual[:2], axis=1))) / variance if variance else 1.0
     freqs: Frequencies = bearing_frequencies(bearing, operation, alpha)
     attribution = attribution_rows(
         ball_diameter=bearing.element_diameter,
@@ -976,20 +1073,16 @@ def run(case: Any) -> LinearResult:
         title=case.title,
         frequencies=freqs,
         contact_angle=alpha,
-        time=theta / (TWO_PI * rt.rotation_hz),
-        displacement=np.stack([x, y, np.zeros_like(x)]),
-        components=_components(lines),
-        runout=Runout(
-            radial_pp_m=_peak_to_peak(radial),
-            axial_pp_m=0.0,
-            rro_pp_m=_peak_to_peak(rro),
-            nrro_pp_m=_peak_to_peak(nrro),
-        ),
+        time=time,
+        displacement=displacement,
+        components=components,
+        runout=split.runout,
         measuring_direction=direction,
         anderon=anderon,
         extras={
             "attribution": attribution,
             "linear_variant": variant,
+            "explained_fraction": explained,
         },
         notes=tuple(notes),
         spectral_lines=lines,

@@ -311,7 +311,8 @@ def setup(case: object) -> Setup:
             "operation.axial_load",
             "the quasi_static_2d model needs an axial preload > 0 N to set the initial "
             "deflection (seed 001, text after eq. 18); a bearing without preload, with its "
-            'radial play, runs in model = "equilibrium" (static) or "dynamic"',
+            'radial play, runs in model = "dynamic" (or "equilibrium" when at least 3 balls '
+            "carry the load)",
         )
     alpha, loading = operating_contact_angle(bearing, op)
     if loading is None or bearing.contact_angle is not None:

@@ -59,6 +59,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import numba
 import numpy as np
@@ -386,6 +387,61 @@ class Setup:
     kinematics: Kinematics
 
 
+def contact_line_deviation(imperfections: Any, contact_angle: float) -> float:
+    """Largest deviation along a contact line the imperfections can add up to [m].
+
+    Raceway orders >= 2 (order 1 is a rigid translation, not a change of the ball's room)
+    projected on the contact line, plus the largest element diameter deviation (its
+    waviness and diameter error, seed 002 eq. 26).
+    """
+    rings = 0.0
+    for h in (imperfections.inner, imperfections.outer):
+        rings += float(np.sum(h.amplitudes[h.orders >= 2]))
+    element = max(
+        (float(np.sum(h.amplitudes)) for h in imperfections.element_diameter_deviations()),
+        default=0.0,
+    )
+    return rings * math.cos(contact_angle) + element
+
+
+def check_axial_room(
+    imperfections: Any, bearing: BallBearing, contact_angle: float, preload: float
+) -> None:
+    r"""Refuse deviations that would carry the ring beyond its opposite groove flanks.
+
+    Under the preload the inner ring's groove centres sit :math:`(A + \delta_{pl})\sin\alpha`
+    axially from the rings centred; the opposite flanks touch at :math:`-A\sin\alpha^0`
+    (the free end play is :math:`2A\sin\alpha^0`). So the ring can travel at most
+    :math:`(A + \delta_{pl})\sin\alpha + A\sin\alpha^0` against the preload. A deviation w
+    along the contact line moves it axially by about :math:`w / \sin\alpha` at a fixed
+    contact angle; beyond that travel no such motion exists, and the fixed-angle model's
+    axial runout is an artefact (e.g. 381 µm of axial p-p with 2 nm of clearance and a small
+    preload, where the end play is 1.3 µm).
+
+    Raises
+    ------
+    GeometryError
+        Naming ``bearing.contact_angle`` (a fixed angle) or ``operation.axial_load``.
+    """
+    w = contact_line_deviation(imperfections, contact_angle)
+    s = math.sin(contact_angle)
+    a = bearing.curvature_distance
+    end_play = 2.0 * a * math.sin(bearing.free_contact_angle)
+    travel = (a + preload) * s + 0.5 * end_play
+    if w <= 0.0 or w / s <= travel:
+        return
+    key = "bearing.contact_angle" if bearing.contact_angle is not None else "operation.axial_load"
+    raise GeometryError(
+        key,
+        f"the deviations along a contact line (up to {w * 1e9:.4g} nm) would move the inner "
+        f"ring axially by about {w / s * 1e6:.4g} um at the contact angle "
+        f"{math.degrees(contact_angle):.4g} deg, beyond the {travel * 1e6:.4g} um it can "
+        f"travel before its opposite groove flanks touch (free end play 2A sin a0 = "
+        f"{end_play * 1e6:.4g} um): the fixed contact angle cannot hold; raise the axial "
+        'preload (or bearing.radial_clearance), or use model = "dynamic"',
+    )
+
+
 def setup(case: object) -> Setup:
     """Contact angle, K_n, δ_pl, loads and frequencies of a case (see module docstring)."""
     bearing = case.bearing  # type: ignore[attr-defined]
@@ -396,8 +452,8 @@ def setup(case: object) -> Setup:
         raise GeometryError(
             "operation.axial_load",
             "the quasi_static_3d model needs an axial preload > 0 N (seed 000 eq. 5); a bearing "
-            'without preload, with its radial play, runs in model = "equilibrium" (static) or '
-            '"dynamic"',
+            'without preload, with its radial play, runs in model = "dynamic" (or "equilibrium" '
+            "when at least 3 balls carry the load)",
         )
     alpha, _ = operating_contact_angle(bearing, op)
     if not alpha > 0.0:
@@ -405,6 +461,7 @@ def setup(case: object) -> Setup:
     kn = ball_race_contacts(bearing, alpha).combined_stiffness
     z = bearing.n_elements
     dpl = preload_approach(kn, z, alpha, op.axial_load)
+    check_axial_room(case.imperfections, bearing, alpha, dpl)  # type: ignore[attr-defined]
     # The radial load acts on the shaft along β; in the paper's frame (outer ring moving
     # relative to the inner ring) that is the outer ring pushed along -β.
     beta = op.radial_load_angle

@@ -95,9 +95,8 @@ from __future__ import annotations
 import csv
 import dataclasses
 import math
-import warnings
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Literal
 
@@ -106,10 +105,11 @@ import numpy as np
 from numpy.typing import NDArray
 
 from runout.bearing import BallBearing, Bearing, Operation, RollerBearing
+from runout.decompose import Candidate, Kinematic, fit_lines, split_runout
 from runout.errors import ConvergenceError, GeometryError, NumericalError
 from runout.imperfections import Harmonics, Imperfections, single_harmonic
 from runout.kinematics import bearing_frequencies
-from runout.results import Component, Runout, RunResult
+from runout.results import Component, Runout, RunResult, Source
 
 if TYPE_CHECKING:
     from runout.case import Case
@@ -202,6 +202,11 @@ class ConstraintGeometry:
         Override of the roller rotation per unit ring rotation (counter-clockwise, fixed
         frame) [-]; None (default) uses pure rolling, :func:`absolute_spin_ratio`. Only for
         studying the paper's eq. 2 as printed (``-((d_i+d_e)^2 - 4D_w^2)/((d_i+d_e)D_w)``).
+    roller_contacts : {"both_ends", "same_angle"}
+        How a roller's profile meets the raceways: ``"both_ends"`` (default, physical) at the
+        two ends of a diameter, so that odd lobe counts cancel across it; ``"same_angle"``
+        reads the deviation at the outer contact's angle at the inner contact too, as seed 004
+        computed Fig. 12 (VALIDATION.md). For reproducing the paper only.
     """
 
     n_elements: int
@@ -217,6 +222,7 @@ class ConstraintGeometry:
     rotating_ring: Literal["inner", "outer"] = "inner"
     load_angle: float = -0.5 * math.pi
     spin_ratio: float | None = None
+    roller_contacts: Literal["both_ends", "same_angle"] = "both_ends"
 
     @property
     def radial_clearance(self) -> float:
@@ -536,8 +542,9 @@ def _constraint(
     """Gap C_j(c) between roller j and the loaded ring centred at c, and its gradient in c."""
     dx = rx[j] - cx
     dy = ry[j] - cy
+    inner_body = 2 + j + (r0.size - 2 - rx.size)  # seed 004's reading: see _pack
     if mode == 0:
-        g, psi, _ = _gap(0, s_in, 2 + j, s_rol, dx, dy, r0, k, a, p, off, False)
+        g, psi, _ = _gap(0, s_in, inner_body, s_rol, dx, dy, r0, k, a, p, off, False)
         return g, -math.cos(psi), -math.sin(psi)
     g, psi, _ = _gap(1, s_out, 2 + j, s_rol, dx, dy, r0, k, a, p, off, True)
     return g, math.cos(psi), math.sin(psi)
@@ -702,6 +709,7 @@ def _solve_all(
     out_status: NDArray[np.int64],
 ) -> None:
     z = beta0.size
+    shift = r0.size - 2 - z  # Z with seed 004's roller reading (inner contacts: see _pack)
     rx = np.empty(z)
     ry = np.empty(z)
     phi = np.empty(z)
@@ -755,7 +763,9 @@ def _solve_all(
                     g, psi, _ = _gap(1, s_out, 2 + j, s_rol, s * ex, s * ey, r0, k, a, p, off, True)
                     ds = g / (math.cos(psi) * ex + math.sin(psi) * ey)
                 else:
-                    g, psi, _ = _gap(0, s_in, 2 + j, s_rol, s * ex, s * ey, r0, k, a, p, off, False)
+                    g, psi, _ = _gap(
+                        0, s_in, 2 + j + shift, s_rol, s * ex, s * ey, r0, k, a, p, off, False
+                    )
                     ds = -g / (math.cos(psi) * ex + math.sin(psi) * ey)
                 s += ds
                 if abs(ds) <= 1e-10:  # Newton on a nearly linear gap: next step < 1e-18 m
@@ -904,7 +914,14 @@ def _pack(
     geo: ConstraintGeometry,
 ) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray, NDArray[np.int64]]:
     bodies = [geo.inner, geo.outer, *geo.elements]
-    r0 = np.array([geo.inner_radius, geo.outer_radius, *geo.element_radii], dtype=np.float64)
+    radii = [geo.inner_radius, geo.outer_radius, *geo.element_radii]
+    if geo.roller_contacts == "same_angle":
+        # seed 004's reading: the inner contact sees the roller's deviation at the outer
+        # contact's angle; bodies 2 + Z + j are roller j with its odd lobes turned by π
+        # (the kernels take the inner contact from there when there are 2 + 2Z bodies)
+        bodies += [_odd_turned(h) for h in geo.elements]
+        radii += list(geo.element_radii)
+    r0 = np.array(radii, dtype=np.float64)
     sizes = np.array([len(h) for h in bodies], dtype=np.int64)
     off = np.zeros(len(bodies) + 1, dtype=np.int64)
     np.cumsum(sizes, out=off[1:])
@@ -915,6 +932,12 @@ def _pack(
     else:
         k = a = p = np.zeros(1)
     return r0, np.ascontiguousarray(k), np.ascontiguousarray(a), np.ascontiguousarray(p), off
+
+
+def _odd_turned(h: Harmonics) -> Harmonics:
+    """The profile read half a turn away at its odd lobes: cos(m(θ+π)+φ) with φ + π for odd m."""
+    odd = (h.orders % 2) == 1
+    return Harmonics(h.orders, h.amplitudes, h.phases + np.where(odd, np.pi, 0.0))
 
 
 def _turns(geo: ConstraintGeometry) -> tuple[float, float]:
@@ -1448,41 +1471,58 @@ def order_sweep(
 # ============================================================================================
 # the model entry point
 # ============================================================================================
-def _candidate_lines(geo: ConstraintGeometry) -> list[tuple[float, str]]:
-    """(order, label) of the lines the rigid model produces, most important first."""
+def _candidate_lines(geo: ConstraintGeometry) -> list[Candidate]:
+    """The lines the rigid model produces, with their sources, in orders (f_r = 1 Hz).
+
+    * Roller passage through the load zone, m Z f_c.
+    * A harmonic of k lobes on the **turning** ring is read where the load holds the ring, a
+      direction fixed in space: k f_r, with the roller-passage sidebands k f_r ± m Z f_c (the
+      lowest stable position switches between roller pairs Z f_c times a turn); and k |f_r -
+      f_c|, the rate at which its lobes pass the rollers.
+    * A harmonic of the fixed ring: k |f_c| (lobes passing the rollers) and the sidebands.
+    * Roller harmonics: k f_b (spin relative to the cage) and the sidebands.
+    * Rollers that differ relative to the cage (size, pitch, profile): m f_c.
+    """
     z = geo.n_elements
     c = cage_ratio(geo)
     inner_turns, outer_turns = _turns(geo)
     spin_rel = abs(absolute_spin_ratio(geo) - c)
-    passage = z * c
-    lines: list[tuple[float, str]] = [(passage, "roller passage: Z f_c")]
-    parts = [
-        ("inner", geo.inner, abs(inner_turns - c), "k|f_i - f_c|"),
-        ("outer", geo.outer, abs(outer_turns - c), "k|f_o - f_c|"),
-    ]
+    passage = z * abs(c)
+    out: list[Candidate] = []
+
+    def add(order: float, src: Source, optional: bool = False) -> None:
+        if order > 1e-9:
+            out.append(Candidate(order, "radial", src, optional=optional))
+
+    for m in (1, 2, 3):
+        add(m * passage, Source("load", None, None, f"roller passage {m}x", f"{m} Z f_c"))
+    rings = [("inner", geo.inner, inner_turns), ("outer", geo.outer, outer_turns)]
+    for name, h, turns in rings:
+        sym = "f_i" if name == "inner" else "f_o"
+        for kk in h.orders:
+            kk = int(kk)
+            if kk == 0:
+                continue
+            rel = kk * abs(turns - c)
+            add(rel, Source(name, None, kk, f"k |{sym} - f_c|", f"{kk} |{sym} - f_c|"))
+            for sign, word in ((1, "+"), (-1, "-")):
+                term = f"k |{sym} - f_c| {word} Z f_c"
+                add(abs(rel + sign * passage), Source(name, None, kk, term, term), True)
+            if turns != 0.0:
+                add(kk * abs(turns), Source(name, None, kk, f"k {sym}", f"{kk} {sym}"))
+                for m in (1, 2):
+                    for sign, word in ((1, "+"), (-1, "-")):
+                        term = f"k {sym} {word} {m} Z f_c"
+                        freq = abs(kk * abs(turns) + sign * m * passage)
+                        add(freq, Source(name, None, kk, term, term), m > 1)
     roller_orders: set[int] = set()
     for h in geo.elements:
         roller_orders.update(int(kk) for kk in h.orders if kk > 0)
-    for name, h, rate, formula in parts:
-        for kk in h.orders:
-            if kk == 0:
-                continue
-            base = kk * rate
-            lines.append((base, f"{name} {kk} lobes: {formula}"))
     for kk in sorted(roller_orders):
-        lines.append((kk * spin_rel, f"roller {kk} lobes: k f_b"))
-    for name, h, rate, _ in parts:
-        for kk in h.orders:
-            if kk == 0:
-                continue
-            base = kk * rate
-            lines.append((abs(base - passage), f"{name} {kk} lobes - roller passage"))
-            lines.append((base + passage, f"{name} {kk} lobes + roller passage"))
-    for kk in sorted(roller_orders):
-        lines.append((abs(kk * spin_rel - passage), f"roller {kk} lobes - roller passage"))
-        lines.append((kk * spin_rel + passage, f"roller {kk} lobes + roller passage"))
-    lines.append((2 * passage, "roller passage: 2 Z f_c"))
-    lines.append((3 * passage, "roller passage: 3 Z f_c"))
+        add(kk * spin_rel, Source("roller", None, kk, "k f_b", f"{kk} f_b"))
+        for sign, word in ((1, "+"), (-1, "-")):
+            term = f"k f_b {word} Z f_c"
+            add(abs(kk * spin_rel + sign * passage), Source("roller", None, kk, term, term), True)
     # rollers that differ relative to the cage (identical fixed-frame profiles do, unless
     # their orders are multiples of Z)
     uneven = (
@@ -1492,8 +1532,9 @@ def _candidate_lines(geo: ConstraintGeometry) -> list[tuple[float, str]]:
     )
     if uneven:
         for m in (1, 2, 3):
-            lines.append((m * c, f"cage {m}x: uneven rollers, {m} f_c"))
-    return lines
+            src = Source("cage", None, None, f"{m}x: uneven rollers", f"{m} f_c")
+            add(m * abs(c), src, m > 1)
+    return out
 
 
 def _same_profiles(elements: Sequence[Harmonics]) -> bool:
@@ -1511,98 +1552,33 @@ def _same_profiles(elements: Sequence[Harmonics]) -> bool:
     return True
 
 
-def _components(sol: Solution, rotation_hz: float, notes: list[str]) -> tuple[Component, ...]:
-    from runout.spectrum import LineResolutionWarning, extract_lines
-
+def _components(
+    sol: Solution, rotation_hz: float, notes: list[str]
+) -> tuple[tuple[Component, ...], FloatArray | None, float]:
+    """Lines of the ring centre (:func:`runout.decompose.fit_lines`), the residual and the
+    explained fraction of the variance."""
     geo = sol.geometry
     rev = sol.alpha / (2.0 * math.pi)
     span = float(rev[-1] - rev[0])
     if span <= 0 or rev.size < 8:
-        return ()
-    n = rev.size
-    nyquist = 0.5 * (n - 1) / span
-    min_gap = 1.0 / (span * n / (n - 1))
-    chosen: list[tuple[float, str]] = []
-    dropped: list[str] = []
-    for order, label in _candidate_lines(geo):
-        if not (order > 1e-9) or order >= 0.9 * nyquist:
-            continue
-        if order < min_gap or any(abs(order - o) < min_gap for o, _ in chosen):
-            dropped.append(f"{label} ({order:.4g})")
-            continue
-        chosen.append((order, label))
-    if not chosen:
-        return ()
-    signal = np.vstack([sol.centre[:, 0], sol.centre[:, 1]])
-    while chosen:
-        try:
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore", LineResolutionWarning)
-                lines = extract_lines(rev, signal, [o for o, _ in chosen])
-            break
-        except ValueError:
-            o, label = chosen.pop()
-            dropped.append(f"{label} ({o:.4g})")
-    else:
-        return ()
-    if dropped:
-        notes.append(
-            f"lines closer than 1/record = {min_gap:.3g} orders could not be separated over "
-            f"{span:.4g} revolutions and were left out: "
-            + "; ".join(dropped[:6])
-            + (" ..." if len(dropped) > 6 else "")
-        )
-    peak = max(float(np.ptp(sol.centre[:, 0])), float(np.ptp(sol.centre[:, 1])), 1e-300)
-    comps: list[Component] = []
-    for axis, name in enumerate("xy"):
-        for i, (order, label) in enumerate(chosen):
-            pp = float(2.0 * lines.amplitude[axis, i])
-            if pp < 1e-3 * peak:
-                continue
-            comps.append(
-                Component(
-                    direction=name,
-                    frequency_hz=order * rotation_hz,
-                    order=order,
-                    pp_m=pp,
-                    label=label,
-                    phase_rad=float(lines.phase[axis, i]),
-                    repeatable=bool(abs(order - round(order)) < 1e-6),
-                )
-            )
-    comps.sort(key=lambda c: -c.pp_m)
-    return tuple(comps)
-
-
-def _rro_nrro(
-    sol: Solution, revolutions: float, comps: Sequence[Component], notes: list[str]
-) -> tuple[float, float]:
-    from runout.spectrum import separate_rro_nrro
-
-    n = sol.alpha.size
-    whole = math.floor(revolutions + 1e-9)
-    spr_f = (n - 1) / revolutions
-    spr = round(spr_f)
-    if whole >= 2 and abs(spr_f - spr) < 1e-9 and spr >= 2:
-        split = separate_rro_nrro(sol.radial[: whole * spr], spr)
-        notes.append(
-            f"RRO/NRRO by synchronous averaging over {whole} whole revolutions of the turning ring"
-        )
-        return float(split.rro_pp[()]), float(split.nrro_pp[()])
-    u = sol.geometry.load_direction
-    rro = nrro = 0.0
-    for c in comps:
-        proj = abs(u[0]) if c.direction == "x" else abs(u[1])
-        if c.repeatable:
-            rro += c.pp_m * proj
-        else:
-            nrro += c.pp_m * proj
-    notes.append(
-        "the run covers fewer than 2 whole revolutions (or not an integer number of samples per "
-        "revolution): rro_pp_m / nrro_pp_m are line sums (upper bounds) of the integer-order and "
-        "other lines along the load, not synchronous averages"
-    )
-    return rro, nrro
+        return (), None, 0.0
+    time = rev / rotation_hz
+    candidates = [
+        replace(c, frequency_hz=c.frequency_hz * rotation_hz) for c in _candidate_lines(geo)
+    ]
+    c = cage_ratio(geo)
+    wavy = any(np.any(h.orders > 0) for h in geo.elements)
+    turning = geo.inner if geo.rotating_ring == "inner" else geo.outer
+    synchronous = bool(np.any((turning.orders > 0) & (turning.amplitudes > 0.0)))
+    kin = Kinematic(
+        rotation_hz, c * rotation_hz, abs(absolute_spin_ratio(geo) - c) * rotation_hz,
+        geo.n_elements, bool(wavy), synchronous,
+    )  # fmt: skip
+    signal = np.vstack([sol.centre[:, 0], sol.centre[:, 1], np.zeros(rev.size)])
+    fit = fit_lines(time, signal, candidates, rotation_hz, directions=("x", "y"), kinematic=kin)
+    notes.extend(fit.notes)
+    residual = fit.residual if synchronous else None  # nothing turns with the ring: no RRO
+    return fit.components, residual, fit.explained_fraction
 
 
 def run(case: Case) -> RunResult:
@@ -1648,17 +1624,21 @@ def run(case: Case) -> RunResult:
     f_rot = speed if speed > 0 else 1.0
     time = alpha / (2.0 * math.pi * f_rot)
     disp = np.vstack([shaft * sol.centre[:, 0], shaft * sol.centre[:, 1], np.zeros(alpha.size)])
-    comps = _components(sol, f_rot, notes)
+    comps, residual, explained = _components(sol, f_rot, notes)
     if shaft < 0.0:
         comps = tuple(
             dataclasses.replace(c, phase_rad=float(math.remainder(c.phase_rad + math.pi, TWO_PI)))
             for c in comps
         )
-    rro, nrro = _rro_nrro(sol, case.analysis.revolutions, comps, notes)
+        residual = None if residual is None else -residual
+    u_shaft = shaft * geo.load_direction
+    split = split_runout(time, disp, u_shaft, comps, f_rot, residual)
+    notes.extend(split.notes)
     pairs, counts = np.unique(np.sort(sol.pair, axis=1), axis=0, return_counts=True)
     touching = sol.touching.sum(axis=1)
     extras: dict[str, Any] = {
         "horizontal_pp_m": float(np.ptp(sol.horizontal)),
+        "explained_fraction": explained,
         "contacts": {
             "rollers_touched": sorted({int(j) + 1 for j in np.flatnonzero(sol.touching.any(0))}),
             "pairs": [[int(a) + 1, int(b) + 1] for a, b in pairs],
@@ -1675,7 +1655,7 @@ def run(case: Case) -> RunResult:
         )
     else:
         freqs = bearing_frequencies(case.bearing, case.operation)
-    u = shaft * geo.load_direction  # the load on the shaft
+    u = u_shaft  # the load on the shaft
 
     def writer(directory: Path) -> list[Path]:
         return write_extras(sol, directory, case.analysis.revolutions)
@@ -1688,7 +1668,12 @@ def run(case: Case) -> RunResult:
         time=time,
         displacement=disp,
         components=comps,
-        runout=Runout(radial_pp_m=sol.runout, axial_pp_m=0.0, rro_pp_m=rro, nrro_pp_m=nrro),
+        runout=Runout(
+            radial_pp_m=sol.runout,
+            axial_pp_m=0.0,
+            rro_pp_m=split.runout.rro_pp_m,
+            nrro_pp_m=split.runout.nrro_pp_m,
+        ),
         measuring_direction=u,
         extras=extras,
         notes=tuple(notes),
