@@ -1595,6 +1595,11 @@ def _analysis_grid(case: Any) -> tuple[int, int, list[str]]:
     if revs != an.revolutions:
         notes.append(f"analysis window rounded to {revs} whole revolutions (RRO/NRRO split)")
     spr = max(16, math.ceil(an.samples / revs))
+    if spr * revs != an.samples:
+        notes.append(
+            f"{spr * revs} instants recorded ({spr} per revolution, whole revolutions; "
+            f"analysis.samples = {an.samples})"
+        )
     return revs, spr, notes
 
 

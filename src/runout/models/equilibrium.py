@@ -1074,6 +1074,12 @@ def run(case: object) -> RunResult:
         "(mean_displacement_m from the rings centred; ring_displacement.axial_m from the "
         "contact on one groove flank, as in seed 001)",
     ]
+    if abs(q[3]) + abs(q[4]) > 0.0 and op.moment_load == 0.0:
+        notes.append(
+            f"the inner ring tilts by ({q[3] * 1e3:.4g}, {q[4] * 1e3:.4g}) mrad about x, y: a "
+            "single bearing has no moment restraint but its balls, so its radial displacement "
+            "includes the tilt coupling (quasi_static_3d and dynamic hold the tilt at 0)"
+        )
     if not loaded.all():
         notes.append(
             f"{int((~loaded).sum())} of {loaded.size} balls carry no inner-race load "
