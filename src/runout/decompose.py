@@ -73,6 +73,10 @@ RESIDUAL_REL = 1e-3
 MAX_RESIDUAL_LINES = 12
 #: ... in at most this many rounds of search and refit (a round adds every resolvable peak).
 RESIDUAL_ROUNDS = 3
+#: Residual peaks closer than this many 1/T to a fitted line (to a line carrying unresolved
+#: sources) are taken for its leakage (for the beat of what it carries), not searched for.
+LEAKAGE = 1.0
+LEAKAGE_MERGED = 3.0
 #: Lines below this fraction of the largest one are dropped (the solvers' round-off floor).
 FLOOR = 1e-7
 #: Integer coefficient bounds of the combination search |a f_r + b f_c + c f_b|.
@@ -167,6 +171,7 @@ class _Group:
     direction: Direction
     sources: list[tuple[Source, Phasors | None]] = field(default_factory=list)
     optional: bool = True
+    merged: bool = False  # carries lines the record cannot resolve (they beat within 1/T)
 
 
 def _group(candidates: Sequence[Candidate], direction: Direction) -> list[_Group]:
@@ -271,6 +276,7 @@ def _resolve(
             f"{_short(g)} ({g.frequency:.6g} Hz) with {_short(clash)} ({clash.frequency:.6g} Hz)"
         )
         clash.sources.extend(s for s in g.sources if s not in clash.sources)
+        kept[kept.index(clash)] = replace(clash, merged=True)
     if clashes:
         shown = "; ".join(clashes[:4]) + (
             f"; and {len(clashes) - 4} more" if len(clashes) > 4 else ""
@@ -619,8 +625,14 @@ def _add_residual_lines(
                 term="residual search",
                 formula=f"{f:.6g} Hz (no kinematic combination within {tolerance:.3g} Hz)",
             )
-        if any(abs(g.frequency - freq) < JOINT_FIT / duration for g in groups):
-            continue  # already a line there (its amplitude is fitted): try the next peak
+        # a peak next to a fitted line is its leakage (or the beat of lines merged there, which
+        # the record cannot resolve), not a line of its own
+        if any(
+            abs(g.frequency - f) < (LEAKAGE_MERGED if g.merged else LEAKAGE) / duration
+            or abs(g.frequency - freq) < JOINT_FIT / duration
+            for g in groups
+        ):
+            continue
         groups.append(_Group(freq, kind, [(source, None)], optional=False))
         groups.sort(key=lambda g: g.frequency)
         added += 1
