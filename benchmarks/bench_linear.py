@@ -74,7 +74,8 @@ def _naive(imp: Imperfections, r: lin.Rates) -> tuple[np.ndarray, np.ndarray]:
         y += 2 * c / z * w * np.sin(tz)
     assert imp.slant is not None
     s = c * imp.slant.amplitude * np.cos(2 * theta - imp.slant.phase)
-    return x + s, y - s
+    # eq. 28 gives the outer ring relative to the inner; runout reports the shaft: turn the sign
+    return lin.SHAFT_FRAME * (x + s), lin.SHAFT_FRAME * (y - s)
 
 
 def bench_linear_608_all_harmonics_65536_samples() -> BenchResult:
