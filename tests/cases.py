@@ -6,6 +6,22 @@ from typing import Any
 
 from runout.case import Case, parse_case
 
+#: Kim's spindle bearing (seed 001 Table 1) at 7200 rpm under its fitted 60.68 N, as TOML.
+KIM_TOML = """\
+[bearing]
+type = "ball"
+elements = 10
+element_diameter = "1.5875 mm"
+pitch_diameter = "9.1 mm"
+inner_conformity = 0.529
+outer_conformity = 0.535
+radial_clearance = "5 um"
+[operation]
+speed = "7200 rpm"
+axial_load = "60.68 N"
+"""
+
+
 #: Tada's standard HDD bearing (seed 000 Table 1) with 10 um clearance, as a [bearing] table.
 TADA_BEARING: dict[str, Any] = {
     "type": "ball",

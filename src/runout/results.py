@@ -13,7 +13,7 @@ import csv
 import json
 import math
 from collections.abc import Callable
-from dataclasses import dataclass, field, replace
+from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -91,16 +91,8 @@ class Source:
         return f"{self.part}: {self.term}" if self.term else self.part
 
     def to_json(self) -> dict[str, Any]:
-        """The JSON contract's source object."""
-        return {
-            "part": self.part,
-            "element": self.element,
-            "lobes": self.lobes,
-            "term": self.term,
-            "formula": self.formula,
-            "share": self.share,
-            "share_basis": self.share_basis,
-        }
+        """The JSON contract's source object (its fields, in order)."""
+        return asdict(self)
 
 
 def short_label(sources: tuple[Source, ...] | list[Source]) -> str:

@@ -13,24 +13,17 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from cases import KIM_TOML
 from runout.case import load_case
 from runout.study import run_study
 
 ROOT = Path(__file__).resolve().parents[2]
-CASE = """
+CASE = (
+    """
 title = "study test"
-[bearing]
-type = "ball"
-elements = 10
-element_diameter = "1.5875 mm"
-pitch_diameter = "9.1 mm"
-inner_conformity = 0.529
-outer_conformity = 0.535
-radial_clearance = "5 um"
-[operation]
-speed = "7200 rpm"
-axial_load = "60.68 N"
-[analysis]
+"""
+    + KIM_TOML
+    + """[analysis]
 model = "quasi_static_2d"
 revolutions = 4
 samples = 256
@@ -43,6 +36,7 @@ chunk_size = {chunk}
 element_diameter_sigma = "0.1 um"
 "operation.axial_load" = {{ distribution = "normal", std = "2 N" }}
 """
+)
 
 
 def write_case(tmp_path: Path, samples: int, chunk: int) -> Path:

@@ -24,23 +24,16 @@ from typing import Any
 import pytest
 from typer.testing import CliRunner
 
+from cases import KIM_TOML
 from runout.cli import app
 
 ROOT = Path(__file__).resolve().parents[2]
-CASE = """
+CASE = (
+    """
 title = "safety test"
-[bearing]
-type = "ball"
-elements = 10
-element_diameter = "1.5875 mm"
-pitch_diameter = "9.1 mm"
-inner_conformity = 0.529
-outer_conformity = 0.535
-radial_clearance = "5 um"
-[operation]
-speed = "7200 rpm"
-axial_load = "60.68 N"
-[analysis]
+"""
+    + KIM_TOML
+    + """[analysis]
 model = "quasi_static_2d"
 revolutions = 4
 samples = 256
@@ -53,6 +46,7 @@ chunk_size = {chunk}
 element_diameter_sigma = "0.1 um"
 "operation.axial_load" = {{ distribution = "normal", std = "2 N" }}
 """
+)
 
 runner = CliRunner()
 WORKERS_2 = ("--workers", "2", "--out")
@@ -480,7 +474,10 @@ def _alive(pid: int) -> bool:
     return state not in ("Z", "X")  # a zombie has exited: only its parent's record is left
 
 
-@pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="needs /proc (Linux)")
+@pytest.mark.skipif(
+    not Path("/proc/self/stat").exists(),
+    reason="reads worker PIDs from /proc (Linux); the watchdog fallback is tested apart",
+)
 def test_workers_die_with_a_killed_parent(
     tmp_path: Path, procs: list[subprocess.Popen[str]]
 ) -> None:

@@ -18,7 +18,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from typer.testing import CliRunner
 
-from runout.case import parse_case
+from runout.case import CaseSpec, parse_case
 from runout.cli import app
 from runout.errors import CaseError
 
@@ -322,18 +322,8 @@ def _finite_json(value: Any) -> bool:
     return True
 
 
-_INPUT_TABLES = (
-    "bearing",
-    "material",
-    "operation",
-    "waviness",
-    "waviness_spectrum",
-    "profile",
-    "slant",
-    "elements",
-    "analysis",
-    "dynamics",
-)
+#: Tables whose keys describe the run's input (every case table but the title and the study).
+_INPUT_TABLES = tuple(k for k in CaseSpec.model_fields if k not in ("title", "study"))
 
 
 def _one_error_line(stderr: str, name: str) -> str:

@@ -20,6 +20,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from cases import KIM_TOML
 from runout import study as st_mod
 from runout._study_kernels import project_rows, solve_batch, solve_batch_reference
 from runout.case import Case, parse_case
@@ -546,7 +547,9 @@ def test_batched_failure_falls_back_to_per_bearing_records(
 
 
 # ------------------------------------------------------------------ workers and their parent
-@pytest.mark.skipif(sys.platform == "win32", reason="SIGKILL")
+@pytest.mark.skipif(
+    sys.platform == "win32", reason="SIGKILL (the orphaned-worker case) does not exist on Windows"
+)
 def test_watchdog_alone_ends_a_worker_whose_parent_was_killed(tmp_path: Path) -> None:
     # The portable line of defence without prctl: the worker's thread watching its parent.
     script = tmp_path / "parent.py"
@@ -635,19 +638,8 @@ def test_the_digest_covers_the_bytes_of_profile_files(tmp_path: Path) -> None:
 
     case_toml = tmp_path / "case.toml"
     case_toml.write_text(
-        """
-[bearing]
-type = "ball"
-elements = 10
-element_diameter = "1.5875 mm"
-pitch_diameter = "9.1 mm"
-inner_conformity = 0.529
-outer_conformity = 0.535
-radial_clearance = "5 um"
-[operation]
-speed = "7200 rpm"
-axial_load = "60.68 N"
-[[profile]]
+        KIM_TOML
+        + """[[profile]]
 part = "outer"
 file = "outer.csv"
 orders = [2, 20]
