@@ -9,14 +9,16 @@ export MPLBACKEND ?= Agg
 
 $(STAMP): pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install --quiet -e '.[dev,dask]'
+	$(BIN)/python -m pip install --quiet -e '.[dev,dask,docs]'
+	# compile every model's kernels into numba's cache now, so that no first command waits
+	$(BIN)/python -m runout._warm examples || echo "warning: warming the kernel cache failed"
 	touch $(STAMP)
 
 install: $(STAMP)
 
 lint: install
-	$(BIN)/ruff check src tests benchmarks examples
-	$(BIN)/ruff format --check src tests benchmarks examples
+	$(BIN)/ruff check src tests benchmarks examples docs_hooks
+	$(BIN)/ruff format --check src tests benchmarks examples docs_hooks
 
 typecheck: install
 	$(BIN)/mypy
@@ -35,13 +37,9 @@ bench: install
 # The documentation site (out/site): getting started, concepts, case-file reference (generated
 # from the schema), one theory page per model, validation, benchmarks, API reference.
 docs: install
-	$(BIN)/python -m pip install --quiet -e '.[dev,dask,docs]'
 	$(BIN)/python -m runout.schema_doc > docs/case-file.md
 	$(BIN)/python -m runout.conventions > docs/conventions.md
-	cp VALIDATION.md docs/validation.md
-	cp BENCHMARKS.md docs/benchmarks.md
-	$(BIN)/mkdocs build --strict --site-dir out/site
-	@echo "documentation: out/site/index.html"
+	$(BIN)/python docs_hooks/build.py out/site
 
 clean:
 	rm -rf $(VENV) out .pytest_cache .mypy_cache .ruff_cache

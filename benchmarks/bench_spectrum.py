@@ -1,13 +1,17 @@
 """Benchmark of runout.spectrum: least-squares extraction of many known lines.
 
 Ours: :func:`runout.spectrum.extract_lines` (closed-form Gram matrix, compiled rotating-phasor
-projections, Cholesky with one refinement step). Reference: the straightforward approach,
-building the dense 65,536 x 401 design matrix and calling :func:`numpy.linalg.lstsq`.
+projections, Cholesky with one refinement step, BLAS on one thread). Reference: the
+straightforward approach, building the dense 65,536 x 401 design matrix and calling
+:func:`numpy.linalg.lstsq`, also with its BLAS on one thread: on a shared 2-core machine a
+threaded BLAS made it ten times slower when the other core was busy (2.5 s vs 26 s), which
+measures the machine, not the method.
 """
 
 from __future__ import annotations
 
 import numpy as np
+from threadpoolctl import threadpool_limits
 
 from _harness import BenchResult, best_time
 from runout.spectrum import extract_lines
@@ -45,7 +49,8 @@ def bench_extract_lines_200_lines_65536_samples() -> BenchResult:
     if not np.allclose(ours_amp, ref_amp, rtol=0, atol=1e-9):
         raise AssertionError("extract_lines and dense lstsq disagree")
     ours = best_time(lambda: extract_lines(t, x, f), repeat=5)
-    ref = best_time(lambda: _dense_lstsq(t, x, f), repeat=1)
+    with threadpool_limits(limits=1, user_api="blas"):
+        ref = best_time(lambda: _dense_lstsq(t, x, f), repeat=1)
     return BenchResult(
         name="extract_lines 200 lines x 65536 samples",
         ours_s=ours,

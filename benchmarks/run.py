@@ -1,16 +1,25 @@
-"""Run every ``benchmarks/bench_*.py`` and print our time, the reference's, and the ratio.
+"""Run every ``benchmarks/bench_*.py``; print, and write out/bench.json and out/bench.md.
 
 Each module defines functions named ``bench_*`` that take no argument and return a
-:class:`_harness.BenchResult`. Exit status 1 when a target is missed.
+:class:`_harness.BenchResult`. Arguments select benchmarks whose function name contains one of
+them. The results of the run go to ``out/bench.json`` (one object per benchmark, times in
+seconds) and ``out/bench.md`` (a Markdown table: benchmark, ours, reference, ratio, target,
+met) so that BENCHMARKS.md can show the figures of one run. Exit status 1 when a target is
+missed.
 """
 
 from __future__ import annotations
 
+import datetime as _dt
 import importlib.util
+import json
+import os
+import platform
 import sys
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
+OUT = HERE.parent / "out"
 sys.path.insert(0, str(HERE))
 
 from _harness import BenchResult  # noqa: E402
@@ -22,6 +31,65 @@ def _load(path: Path):  # type: ignore[no-untyped-def]
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return module
+
+
+def _time(seconds: float) -> str:
+    """A duration with a unit that keeps 3-4 significant digits."""
+    if seconds >= 1.0:
+        return f"{seconds:.3g} s"
+    if seconds >= 1e-3:
+        return f"{seconds * 1e3:.3g} ms"
+    return f"{seconds * 1e6:.3g} µs"
+
+
+def _cell(text: str) -> str:
+    return text.replace("|", "\\|")
+
+
+def markdown(results: list[BenchResult], machine: str) -> str:
+    """The Markdown table of a run (one row per benchmark)."""
+    lines = [
+        f"Run of {_dt.datetime.now(_dt.UTC):%Y-%m-%d %H:%M} UTC on {machine}. Ratio: the "
+        "reference's time over ours (above 1: ours is faster); best of several runs each.",
+        "",
+        "| benchmark | ours | reference (same run) | ratio | target | met |",
+        "|---|---|---|---|---|---|",
+    ]
+    for r in results:
+        lines.append(
+            f"| {_cell(r.name)} | {_time(r.ours_s)} | {_cell(r.reference)}: "
+            f"{_time(r.reference_s)} | ×{r.ratio:.3g} | {_cell(r.target)} | "
+            f"{'yes' if r.met else '**no**'} |"
+        )
+    return "\n".join(lines) + "\n"
+
+
+def write_outputs(results: list[BenchResult], out: Path = OUT) -> tuple[Path, Path]:
+    """Write ``bench.json`` and ``bench.md`` of a run into ``out``."""
+    out.mkdir(parents=True, exist_ok=True)
+    machine = f"{platform.machine()}, {os.cpu_count()} CPUs, Python {platform.python_version()}"
+    payload = {
+        "machine": machine,
+        "selection": sys.argv[1:],
+        "load_average": list(os.getloadavg()) if hasattr(os, "getloadavg") else None,
+        "benchmarks": [
+            {
+                "name": r.name,
+                "ours_s": r.ours_s,
+                "reference": r.reference,
+                "reference_s": r.reference_s,
+                "ratio": r.ratio,
+                "target": r.target,
+                "met": r.met,
+            }
+            for r in results
+        ],
+    }
+    json_path = out / "bench.json"
+    json_path.write_text(json.dumps(payload, indent=2) + "\n")
+    md_path = out / "bench.md"
+    md_path.write_text(markdown(results, machine))
+    return json_path, md_path
 
 
 def main() -> int:
@@ -42,7 +110,8 @@ def main() -> int:
                 flush=True,
             )
     missed = [r for r in results if not r.met]
-    print(f"{len(results)} benchmarks, {len(missed)} missed")
+    json_path, md_path = write_outputs(results)
+    print(f"{len(results)} benchmarks, {len(missed)} missed; written {json_path}, {md_path}")
     return 1 if missed else 0
 
 

@@ -54,7 +54,6 @@ from typing import Literal, NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
-from scipy.special import ellipe, ellipkm1
 
 from runout.bearing import BallBearing, Material, RollerBearing
 from runout.errors import ConvergenceError, GeometryError
@@ -263,6 +262,8 @@ class HertzIntegrals(NamedTuple):
 
 def _integrals(x: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray, FloatArray]:
     """p = 1 - m, m, K(m), E(m) and D(m) = (K - E)/m at x = ln(1 - m) = -2 ln κ (x <= 0)."""
+    from scipy.special import ellipe, ellipkm1  # lazily: ~0.1 s of start-up, when needed
+
     p = np.exp(x)  # p = 1 - m = 1/κ², precise even when m -> 1
     m = -np.expm1(x)
     k = ellipkm1(p)  # K(m) from 1 - m (SciPy's ellipk(m) is this same function of 1 - m)

@@ -3,9 +3,9 @@
 Every case key has one physical meaning, unit, sign and frame, whichever model runs. A model
 *honours* a key (it changes the result), *refuses* it (exit 2, naming the key and the models
 that honour it) or does *not apply* it (the run goes on and says so in the JSON ``notes`` and
-in the readable summary). This table is the single source: :func:`enforce` applies it before
+in the readable summary). This table is the single source: ``enforce`` applies it before
 every run, ``runout check`` prints it for the case's model, ``docs/conventions.md`` is
-generated from it (:func:`conventions_page`), and the tests change one key at a time to check
+generated from it (``conventions_page``), and the tests change one key at a time to check
 that every cell is what the code does.
 
 The frame shared by every model (Harris, *Rolling Bearing Analysis*, for the geometry):

@@ -103,6 +103,20 @@ COST_DYNAMIC_ELEMENT = 1e-7
 COST_DYNAMIC_HARMONIC = 1.5e-8
 #: Seconds of fixed cost of one run (set-up, result assembly).
 COST_RUN = 5e-3
+#: Bytes per instant of a quasi-static run at its peak: the record (time, the (3, n)
+#: displacement: 32 B, the unloaded-ball counts: 2 B; the deviations are evaluated in the
+#: kernel, without (n, Z) arrays) and the decomposition's arrays (the residual, the window and
+#: the spectrum of one direction, ~56 B). Measured: 90 B by tracemalloc, 97 B of RSS growth
+#: at 2^22 instants (Fig. 7 case of seed 000); doubled.
+BYTES_QUASI_STATIC = 192.0
+#: Bytes per instant and fitted line of the line fit (3 directions x 16 B per block of 256
+#: instants: 0.19 B measured), doubled.
+BYTES_LINE_INSTANT = 0.5
+#: Largest angle the quasi-static models evaluate, 2π x revolutions x the highest order [rad]:
+#: a double holds an angle of 1e9 rad to 1e-7 rad, so beyond it the phases of the record, not
+#: the bearing, set the smallest lines (a perfect bearing over 1e9 revolutions shows 1e-13 m
+#: of round-off runout).
+MAX_PHASE_ANGLE = 1e9
 #: Bytes per stored harmonic (orders, amplitudes, phases and the temporaries of normalising,
 #: packing and per-element copies).
 BYTES_PER_HARMONIC = 160
@@ -430,11 +444,29 @@ def estimate_run(case: Any, model: str) -> Estimate:
             seconds = n * s.lines * COST_LINEAR
         what = f"{instants} x {s.lines:.4g} lines"
     elif model in ("quasi_static_2d", "quasi_static_3d"):
-        solves = s.samples + _sync_instants(s)
-        memory = n * (z * 8.0 * 12 + 3 * 8.0 * 8 + 16.0 * min(s.lines, 4096.0))
-        seconds = solves * s.contact_harmonics * COST_QUASI_STATIC
-        seconds += s.samples * s.lines * COST_LINE_FIT
-        what = f"{solves:.4g} instants x {z} elements x {s.contact_harmonics / z:.4g} harmonics"
+        # one solve on the analysis grid; the deviations are evaluated inside the kernel
+        n, key = s.samples, "analysis.samples"
+        angle = 2.0 * math.pi * s.revolutions * max(1, s.max_order)
+        if angle > MAX_PHASE_ANGLE:
+            raise LimitError(
+                "analysis.revolutions",
+                f"the angles of the record would reach {angle:.3g} rad (2 pi x revolutions x "
+                f"highest order {max(1, s.max_order)}), beyond the {MAX_PHASE_ANGLE:.0e} rad "
+                "within which double precision keeps their phase to 1e-7 rad; lower "
+                "analysis.revolutions",
+            )
+        # the line fit keeps partial sums per line, direction and block of 256 instants, and
+        # blocks of 2048 instants per line; pairs of ring harmonics add lines (seed 000 eq. 7)
+        paired = min(s.ring_harmonics, 48)
+        fitted = s.lines + 6.0 * paired * (paired - 1) / 2.0 / z
+        per_line = BYTES_LINE_INSTANT * fitted * max(n, 256.0)
+        memory = n * BYTES_QUASI_STATIC + per_line + 16.0 * min(fitted, 4096.0) * 4096.0
+        if per_line > n * BYTES_QUASI_STATIC:
+            key = harmonics_key  # the lines, i.e. the harmonics, not the record, are to cut
+        seconds = n * s.contact_harmonics * COST_QUASI_STATIC
+        seconds += n * s.lines * COST_LINE_FIT
+        instants = f"{n:.4g} instants"
+        what = f"{instants} x {z} elements x {s.contact_harmonics / z:.4g} harmonics"
     elif model == "roller_constraint":
         n = s.samples
         memory = n * (z * 8.0 * 16 + 3 * 8.0 * 8) + 16.0 * 8.0 * (s.max_order + 16) * 8
@@ -501,9 +533,11 @@ def _study_key(case: Any) -> str:
 #: Bytes a study keeps per run (runout figures, line p-p and varied values; the records are not
 #: kept: chunks are summarised as they finish).
 STUDY_BYTES_PER_RUN = 2048.0
-#: Seconds per instant and element of the batched ball-size Monte Carlo kernel (measured:
-#: 1000 bearings x 1024 instants x 10 balls in 0.1 s; twice that here).
-COST_BATCH = 2e-8
+#: Seconds per instant and element of a batched ball-size Monte Carlo, everything included
+#: (draws, kernel, line fit, RRO/NRRO split, records) on one thread: measured 15 ns (2x10^4
+#: bearings x 1024 instants x 10 balls in 3.1 s of CPU). Two Numba threads in-process or two
+#: worker processes take about half of that in wall time.
+COST_BATCH = 1.5e-8
 
 
 def _batched_study(case: Any) -> bool:

@@ -236,7 +236,7 @@ def axial_loading(
         return _load_at(bearing, alpha, alpha0, kn) / fa - 1.0
 
     try:
-        from scipy.optimize import brentq  # lazily: ~0.1 s of CLI start-up
+        from runout._roots import brentq  # SciPy's Brent steps without scipy.optimize's import
 
         alpha, info = brentq(
             residual, alpha0, _ALPHA_MAX, xtol=xtol, rtol=8.9e-16, full_output=True

@@ -480,7 +480,7 @@ def _kinematics() -> list[Check]:
         ),
         Check(
             "Seed 002 eq. 48 (608)",
-            "I_{7−1}",
+            "I₇₋₁ (k = Z − 1 = 6)",
             3.41198,
             lambda: o()["ball_pass_inner"] - 1,
             "abs",
@@ -1739,8 +1739,8 @@ def _tada_rows() -> list[Check]:
                 _bind(lambda i, printed: _angle_to(printed, _tada_fig6_cell(i)[2]), i, printed),
                 "abs",
                 1e-3,
-                reason="eq. 8 was lost in extraction; reconstructed as φ = ((Z+1)ϑ_{Z+1} − "
-                "(Z−1)ϑ_{Z−1})/2 (mod 180°)"
+                reason="eq. 8 was lost in extraction; reconstructed as φ = ((Z+1)·ϑ(Z+1) − "
+                "(Z−1)·ϑ(Z−1))/2 (mod 180°)"
                 if i == 0
                 else "—",
                 case=fig6,
@@ -2032,7 +2032,7 @@ def _kim_rows() -> list[Check]:
     out.append(
         Check(
             "Seed 001 Table 6, balls 1,5,9 (linear superposition)",
-            "f_c(1,5,9) / f_c(1) over |1 + e^{i144°} + e^{i288°}| = 0.618",
+            "f_c(1,5,9) / f_c(1) over |1 + exp(i·144°) + exp(i·288°)| = 0.618",
             1.0,
             lambda: kim_fc_pp_nm(t58, 10, (1, 5, 9)) / kim_fc_pp_nm(t58, 10, (1,)) / 0.618034,
             "rel",

@@ -22,7 +22,15 @@ from numpy.typing import NDArray
 
 from runout.kinematics import Frequencies
 
-__all__ = ["DISPLACEMENT_OF", "LABEL_MAX", "Component", "RunResult", "Runout", "Source"]
+__all__ = [
+    "DISPLACEMENT_OF",
+    "LABEL_MAX",
+    "Component",
+    "RunResult",
+    "Runout",
+    "Source",
+    "write_columns",
+]
 
 #: Longest short label of a component [characters].
 LABEL_MAX = 80
@@ -211,6 +219,45 @@ class Runout:
         }
 
 
+#: Rows formatted per call of :func:`write_columns` (bounds its temporary memory: a few MB).
+_CSV_CHUNK = 65536
+
+
+def write_columns(path: Path, header: list[str], columns: list[NDArray[np.float64]]) -> Path:
+    """Write equal-length float columns as CSV, the bytes :mod:`csv` would write, fast.
+
+    The same text as a ``csv.writer`` writing ``f"{v:.12g}"`` for every value (comma
+    separated, CRLF line ends, header first), formatted by compiled kernels
+    (:func:`runout._csvfmt.format_rows`, about ten times faster than Python's formatting,
+    which it falls back on for the rare values it cannot prove it rounds the same way).
+    Rows are formatted in chunks, so the text in memory stays small.
+
+    Parameters
+    ----------
+    path : Path
+        Output file.
+    header : list of str
+        Column names (plain names: no comma, quote or line break).
+    columns : list of ndarray, each shape (n,)
+        The columns [SI units].
+
+    Returns
+    -------
+    Path
+    """
+    from runout._csvfmt import format_rows
+
+    data = [np.asarray(c, dtype=np.float64).ravel() for c in columns]
+    n = data[0].size if data else 0
+    if any(c.size != n for c in data):
+        raise ValueError(f"columns differ in length: {[c.size for c in data]}")
+    with path.open("wb") as fh:
+        fh.write((",".join(header) + "\r\n").encode("ascii"))
+        for i0 in range(0, n, _CSV_CHUNK):
+            fh.write(format_rows(np.column_stack([c[i0 : i0 + _CSV_CHUNK] for c in data])))
+    return path
+
+
 @dataclass(frozen=True)
 class RunResult:
     """Result of one model run on one case.
@@ -384,11 +431,7 @@ class RunResult:
         path.write_text(json.dumps(self.to_json(), indent=2, allow_nan=False) + "\n")
         written.append(path)
         path = directory / "history.csv"
-        with path.open("w", newline="") as fh:
-            w = csv.writer(fh)
-            w.writerow(["time_s", "x_m", "y_m", "z_m"])
-            for row in zip(self.time, *self.displacement, strict=True):
-                w.writerow([f"{v:.12g}" for v in row])
+        write_columns(path, ["time_s", "x_m", "y_m", "z_m"], [self.time, *self.displacement])
         written.append(path)
         path = directory / "lines.csv"
         with path.open("w", newline="") as fh:

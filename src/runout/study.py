@@ -16,10 +16,16 @@ chunks finish; runs are reproducible bit for bit.
 Execution
 ---------
 Samples are grouped in chunks of ``chunk_size``; a chunk is one task. Tasks run in the calling
-process (vectorised: ball-size Monte Carlo of the 2-D model goes through the batched Numba
-kernel :func:`runout._study_kernels.solve_batch`), in a local process pool (``workers``), or on
-any :class:`concurrent.futures.Executor` (a Dask ``Client.get_executor()``, see
-:func:`dask_executor`). With an output directory each finished chunk is written as one JSON file
+process, in a local process pool (``workers``), or on any :class:`concurrent.futures.Executor`
+(a Dask ``Client.get_executor()``, see :func:`dask_executor`). A ball-size Monte Carlo of the
+2-D model is batched: the parent computes what every bearing shares once
+(:class:`runout._study_pool.BatchArrays`) and ships it with every chunk, and a chunk is one
+call of the batched Numba kernel :func:`runout._study_kernels.solve_batch` (threads over
+bearings in the calling process) plus a vectorised line fit and RRO/NRRO split
+(:func:`runout._study_pool.evaluate_rows`). The pool is one for the whole study: its workers
+start and load the kernels while the parent plans, and serve every chunk.
+
+With an output directory each finished chunk is written as one JSON file
 and recorded in ``manifest.json``; :func:`run_study` with ``resume=True`` skips the chunks
 already written, so an interrupted run ends with the same files, byte for byte, as an
 uninterrupted one.
@@ -46,20 +52,27 @@ from __future__ import annotations
 import contextlib
 import copy
 import csv
+import dataclasses
 import functools
 import hashlib
+import itertools
 import json
 import logging
 import math
 import os
 import re
 import secrets
-import signal
 import sys
 import threading
-import time
 from collections.abc import Callable, Iterable, Iterator, Sequence
-from concurrent.futures import Executor, Future, ProcessPoolExecutor, as_completed
+from concurrent.futures import (
+    FIRST_COMPLETED,
+    Executor,
+    Future,
+    ProcessPoolExecutor,
+    ThreadPoolExecutor,
+    wait,
+)
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, TextIO
@@ -67,6 +80,14 @@ from typing import Any, TextIO
 import numpy as np
 from numpy.typing import NDArray
 
+from runout._study_pool import (
+    BatchArrays,
+    die_with_parent,
+    evaluate_rows,
+    init_worker,
+    line_projector,
+    spawn_context,
+)
 from runout.case import (
     STUDY_SHORTHANDS,
     Case,
@@ -76,7 +97,7 @@ from runout.case import (
     parse_case,
     parse_vary_key,
 )
-from runout.decompose import RESIDUAL_REL, study_key
+from runout.decompose import study_key
 from runout.errors import (
     CaseError,
     ContactLossError,
@@ -403,6 +424,8 @@ class ChunkTask:
     seed: int
     models: tuple[str, ...]
     parallel: bool = False
+    #: The arrays of a batched ball-size Monte Carlo (computed once by the parent), or None.
+    batch: BatchArrays | None = None
 
 
 def _point(task: ChunkTask, i: int) -> tuple[str, dict[str, Any]]:
@@ -482,7 +505,13 @@ def evaluate_chunk(task: ChunkTask) -> dict[str, Any]:
         for key, v in values.items():
             chunk["values"][key].append(v)
     if _batched(task):
-        batch = copy.deepcopy(chunk)
+        # the batch fills only runout, lines and errors: it shares the drawn values
+        batch = {
+            **chunk,
+            "runout": {k: [] for k in RUNOUT_KEYS},
+            "lines": {},
+            "errors": {},
+        }
         try:
             _evaluate_batched(task, points, batch)
         except Exception:  # the per-bearing path below records each bearing's own failure
@@ -532,26 +561,14 @@ def _batched(task: ChunkTask) -> bool:
     )
 
 
-@dataclass(frozen=True)
-class _BatchBase:
-    """What every bearing of a ball-size Monte Carlo shares (cached per process)."""
+def _batch_base(task: ChunkTask) -> BatchArrays:
+    """The arrays every bearing of ``task``'s ball-size Monte Carlo shares (cached per process).
 
-    setup: Any
-    time: NDArray[np.float64]
-    c: NDArray[np.float64]
-    theta: NDArray[np.float64]
-    frequencies: NDArray[np.float64]
-    labels: tuple[str, ...]
-    projector: NDArray[np.float64]
-    synchronous: bool
-    z: int
-    rotation_hz: float
-
-
-_BASES: dict[str, _BatchBase] = {}
-
-
-def _batch_base(task: ChunkTask) -> _BatchBase:
+    Computed by the parent once per study and shipped with every chunk (:func:`_run`), so that
+    workers validate no case and set up no model; a chunk without them computes them here.
+    """
+    if task.batch is not None:
+        return task.batch
     key = json.dumps([task.path, task.base_dir, task.data], sort_keys=True, default=str)
     found = _BASES.get(key)
     if found is not None:
@@ -587,17 +604,19 @@ def _batch_base(task: ChunkTask) -> _BatchBase:
     freqs = [f for f, _ in lines]
     labels = [study_key(sources) for _, sources in lines]
     f = np.array(freqs, dtype=np.float64)
-    found = _BatchBase(
-        setup=st,
+    found = BatchArrays(
         time=t,
-        c=c,
-        theta=theta,
+        c=np.ascontiguousarray(c, dtype=np.float64),
+        theta=np.ascontiguousarray(theta, dtype=np.float64),
         frequencies=f,
         labels=tuple(labels),
-        projector=_line_projector(t, f),
+        projector=line_projector(t, f),
         synchronous=decomposition_kinematic(st.kinematics, base.imperfections).synchronous_sources,
         z=z,
         rotation_hz=float(op.speed),
+        stiffness=float(st.stiffness),
+        d_ref=float(st.initial_approach),
+        max_iter=int(qs2.MAX_ITER),
     )
     if len(_BASES) > 8:
         _BASES.clear()
@@ -605,117 +624,69 @@ def _batch_base(task: ChunkTask) -> _BatchBase:
     return found
 
 
-def _line_projector(time: NDArray[np.float64], freqs: NDArray[np.float64]) -> NDArray[np.float64]:
-    r"""Least-squares projector P, shape (1 + 2m, n): [c, a_j, b_j] = P x.
-
-    The fit of :func:`runout.spectrum.extract_lines` (constant plus a cos/sin pair per line,
-    :math:`x \approx c + \sum_j a_j\cos 2\pi f_j t + b_j \sin 2\pi f_j t`) written as the
-    pseudo-inverse of its design matrix, so that many records are fitted by one product.
-    """
-    w = 2.0 * np.pi * np.outer(time, freqs)
-    design = np.concatenate([np.ones((time.size, 1)), np.cos(w), np.sin(w)], axis=1)
-    return np.ascontiguousarray(np.linalg.pinv(design))
-
-
-def _split_batch(
-    b: _BatchBase, q: NDArray[np.float64], coef: NDArray[np.float64]
-) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """RRO and NRRO p-p of the radial (x) records, as :func:`runout.decompose.split_runout`
-    splits them for one bearing, batched.
-
-    RRO: the integer-order lines, plus the synchronous average of what the lines leave when
-    something turns with the rotating ring and the average stands above three times its
-    uncertainty and above RESIDUAL_REL of the motion (whole revolutions with a whole number of
-    samples each); NRRO: the p-p over the record of the record minus the RRO waveform.
-    """
-    t = b.time
-    x = q[:, :, 0]
-    n_b, m = x.shape[0], b.frequencies.size
-    speed = b.rotation_hz
-    w = 2.0 * np.pi * np.outer(b.frequencies, t)  # (m, n)
-    basis = np.concatenate([np.ones((1, t.size)), np.cos(w), np.sin(w)])  # (1 + 2m, n)
-    fitted = np.einsum("bk,kn->bn", coef, basis, optimize=False)
-    one_rev = np.linspace(0.0, 1.0 / speed, 4097)[:-1]
-    rro_rev = np.zeros((n_b, one_rev.size))
-    rro_rec = np.zeros_like(x)
-    if m:
-        orders = b.frequencies / speed
-        rep = np.abs(orders - np.round(orders)) < 1e-9
-        if rep.any():
-            a_c, a_s = coef[:, 1 : 1 + m][:, rep], coef[:, 1 + m :][:, rep]
-            for tt, out in ((one_rev, rro_rev), (t, rro_rec)):
-                wr = 2.0 * np.pi * np.outer(b.frequencies[rep], tt)
-                out += np.einsum("bk,kn->bn", a_c, np.cos(wr), optimize=False)
-                out += np.einsum("bk,kn->bn", a_s, np.sin(wr), optimize=False)
-    residual = x - fitted
-    n_rev = math.floor(t.size * (t[1] - t[0]) * speed + 1e-9)
-    spr_f = 1.0 / (speed * (t[1] - t[0]))
-    spr = round(spr_f)
-    if b.synchronous and n_rev >= 2 and abs(spr_f - spr) < 1e-6 * spr:
-        blocks = residual[:, : n_rev * spr].reshape(n_b, n_rev, spr)
-        avg = blocks.mean(axis=1)
-        se = blocks.std(axis=1, ddof=1) / math.sqrt(n_rev)
-        uncertainty = np.sqrt(np.mean(se**2, axis=1))
-        avg = avg - avg.mean(axis=1, keepdims=True)
-        level = np.sqrt(np.mean(avg**2, axis=1))
-        keep = (level > 3.0 * uncertainty) & (level > RESIDUAL_REL * np.std(x, axis=1))
-        if keep.any():
-            phase = np.rint((t - t[0]) * speed * spr).astype(np.int64) % spr
-            idx = (np.arange(one_rev.size) * spr // one_rev.size) % spr
-            rro_rec = rro_rec + np.where(keep[:, None], avg[:, phase], 0.0)
-            rro_rev = rro_rev + np.where(keep[:, None], avg[:, idx], 0.0)
-    covers_rev = t.size * (t[1] - t[0]) * speed >= 1.0 - 1e-9
-    rro = np.ptp(rro_rec if covers_rev else rro_rev, axis=1)
-    nrro = np.ptp(x - rro_rec, axis=1)
-    return rro, nrro
+_BASES: dict[str, BatchArrays] = {}
+#: Kept for callers of the former private name.
+_line_projector = line_projector
 
 
 def _evaluate_batched(
     task: ChunkTask, points: list[tuple[str, dict[str, Any]]], chunk: dict[str, Any]
 ) -> None:
-    from runout._study_kernels import project_rows, solve_batch
-    from runout.models import quasi_static_2d as qs2
+    """Fill ``chunk`` (runout, lines, errors) from the batched kernel, column by column.
 
+    The same JSON as the per-bearing records of :func:`evaluate_chunk` would hold: a failed
+    bearing has None runout and 0 in every line; a line's entry appears at the first bearing
+    that succeeds (none: no lines).
+    """
     b = _batch_base(task)
-    st, t = b.setup, b.time
     # every quantity replaces the same key: the last one (sorted keys) wins, as in _variant
     errors = np.array(
         [values[task.quantities[-1].key] for _, values in points], dtype=np.float64
     ).reshape(len(points), b.z)
-    args = (st.stiffness, st.initial_approach, qs2.MAX_ITER, task.parallel)
-    q, _unl, status, instant = solve_batch(b.c, 0.5 * errors, b.theta, *args)
-    m = b.frequencies.size
-    records = np.ascontiguousarray(np.transpose(q, (0, 2, 1)).reshape(-1, t.size))
-    coef = project_rows(records, b.projector).reshape(len(points), 2, 1 + 2 * m)
-    pp = 2.0 * np.hypot(coef[:, :, 1 : 1 + m], coef[:, :, 1 + m :])  # (B, 2, m)
-    rro, nrro = _split_batch(b, q, coef[:, 0, :])
-    radial = np.ptp(q[:, :, 0], axis=1)
-    for row in range(len(points)):
-        if status[row] != 0:
-            code = int(status[row])
-            cause = qs2.CAUSES.get(code, "solver failure")
-            at = int(instant[row])
-            # the exception the model's own run() raises for this status, so that a failed
-            # bearing reads the same on both paths
-            kind = {qs2.TOO_FEW_LOADED: ContactLossError, qs2.NOT_CONVERGED: ConvergenceError}
-            exc = kind.get(code, NumericalError)(cause, at, float(t[at]))
-            chunk["errors"][str(task.start + row)] = error_text(exc)
-            for k in RUNOUT_KEYS:
-                chunk["runout"][k].append(None)
-            continue
-        chunk["runout"]["radial_pp_m"].append(float(radial[row]))
-        chunk["runout"]["axial_pp_m"].append(0.0)
-        chunk["runout"]["rro_pp_m"].append(float(rro[row]))
-        chunk["runout"]["nrro_pp_m"].append(float(nrro[row]))
-        _add_lines(
-            chunk,
-            row,
-            (
-                (name, float(b.frequencies[j]), b.labels[j], float(pp[row, axis, j]))
-                for axis, name in enumerate(("x", "y"))
-                for j in range(m)
-            ),
-        )
+    rows = evaluate_rows(b, errors, task.parallel)
+    ok = rows.status == 0
+    t = b.time
+    for row in np.flatnonzero(~ok):
+        from runout.models import quasi_static_2d as qs2
+
+        code = int(rows.status[row])
+        cause = qs2.CAUSES.get(code, "solver failure")
+        at = int(rows.instant[row])
+        # the exception the model's own run() raises for this status, so that a failed
+        # bearing reads the same on both paths
+        kind = {qs2.TOO_FEW_LOADED: ContactLossError, qs2.NOT_CONVERGED: ConvergenceError}
+        exc = kind.get(code, NumericalError)(cause, at, float(t[at]))
+        chunk["errors"][str(task.start + int(row))] = error_text(exc)
+
+    def column(values: NDArray[np.float64]) -> list[float | None]:
+        out: list[float | None] = values.tolist()
+        for row in np.flatnonzero(~ok):
+            out[row] = None
+        return out
+
+    runout = chunk["runout"]
+    runout["radial_pp_m"] = column(rows.radial)
+    runout["axial_pp_m"] = column(np.zeros(len(points)))
+    runout["rro_pp_m"] = column(rows.rro)
+    runout["nrro_pp_m"] = column(rows.nrro)
+    if not ok.any():
+        return
+    lines = chunk["lines"]
+    for axis, name in enumerate(("x", "y")):
+        for j in range(b.frequencies.size):
+            key = f"{name}|{line_label(b.labels[j])}"
+            pp = np.where(ok, rows.pp[:, axis, j], 0.0)
+            entry = lines.get(key)
+            if entry is None:
+                # NaN (never from hypot of finite coefficients) would read 0, as max(0.0, nan)
+                lines[key] = {
+                    "frequency_hz": float(b.frequencies[j]),
+                    "pp_m": np.where(pp > 0.0, pp, 0.0).tolist(),
+                }
+            else:
+                # two lines of one sample that differ only by element numbers: keep the larger
+                old = np.array(entry["pp_m"], dtype=np.float64)
+                entry["pp_m"] = np.where(pp > old, pp, old).tolist()
 
 
 # --------------------------------------------------------------------------------------------
@@ -937,11 +908,12 @@ class StudyResult:
     def _write_csv(self, path: Path) -> Path:
         cols = self.columns()
 
+        cells = [_cells(col) for _, col in cols]  # column by column: no per-cell dispatch
+
         def rows(fh: TextIO) -> None:
             writer = csv.writer(fh, lineterminator="\n")
             writer.writerow([name for name, _ in cols])
-            for i in range(self.samples):
-                writer.writerow([_cell(col[i]) for _, col in cols])
+            writer.writerows(zip(*cells, strict=True))
 
         return write_atomic(path, rows)
 
@@ -950,6 +922,15 @@ def _cell(value: Any) -> str:
     if isinstance(value, float | np.floating):
         return repr(float(value)) if math.isfinite(value) else ""
     return str(value)
+
+
+def _cells(column: NDArray[Any]) -> list[str]:
+    """:func:`_cell` of every entry of ``column``, the same text."""
+    if column.dtype.kind == "f":
+        return [repr(v) if math.isfinite(v) else "" for v in column.tolist()]
+    if column.dtype.kind in "iu":
+        return [str(v) for v in column.tolist()]
+    return [_cell(v) for v in column]
 
 
 def _finite(value: float) -> float | None:
@@ -1226,63 +1207,10 @@ def _acquire(path: Path, busy: str) -> int:
 # --------------------------------------------------------------------------------------------
 # running
 # --------------------------------------------------------------------------------------------
-def _init_worker(parent: int | None = None) -> None:  # pragma: no cover - runs in workers
-    """Set up a pool worker: Numba single-threaded, and tied to the life of ``parent``."""
-    import numba
-
-    numba.set_num_threads(1)
-    if parent is not None:
-        die_with_parent(parent)
-
-
-#: ``prctl`` option of Linux: signal sent to this process when its parent ends.
-PR_SET_PDEATHSIG = 1
-
-
-def die_with_parent(parent: int, kernel: bool = True) -> None:  # pragma: no cover - workers
-    """End this process as soon as process ``parent`` ends, however it ends.
-
-    A pool worker waits on its task queue, whose write end it holds itself, so it never sees
-    its parent go: a SIGKILLed ``runout study --workers N`` would leave N orphans finishing
-    their chunks and then waiting forever. On Linux ``prctl(PR_SET_PDEATHSIG, SIGKILL)`` has
-    the kernel kill the worker with its parent. Everywhere, and as a second line on Linux
-    (where the signal follows the parent *thread*, not process), a daemon thread waits on the
-    parent's sentinel (:func:`multiprocessing.parent_process`; polls ``os.getppid()`` when
-    there is none) and ends the process.
-
-    Parameters
-    ----------
-    parent : int
-        PID of the parent (the process that submits the chunks).
-    kernel : bool
-        Use ``prctl`` where available; False tests the portable watchdog alone.
-    """
-    if kernel and sys.platform.startswith("linux"):
-        with contextlib.suppress(OSError, AttributeError):
-            import ctypes
-
-            libc = ctypes.CDLL(None, use_errno=True)
-            libc.prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
-    if os.getppid() != parent:  # the parent was gone before the line above took effect
-        os._exit(1)
-    watch = threading.Thread(
-        target=_watch_parent, args=(parent,), name="runout-parent-watch", daemon=True
-    )
-    watch.start()
-
-
-def _watch_parent(parent: int) -> None:  # pragma: no cover - runs in workers
-    import multiprocessing
-    from multiprocessing.connection import wait
-
-    proc = multiprocessing.parent_process()
-    if proc is not None and proc.sentinel is not None:
-        while proc.is_alive():
-            wait([proc.sentinel], timeout=60.0)
-    else:
-        while os.getppid() == parent:
-            time.sleep(0.5)
-    os._exit(1)  # no cleanup: the parent that would collect our results is gone
+#: The pool workers' set-up (kept under its former name for callers).
+_init_worker = init_worker
+#: The start method of pool workers (kept under its former name for callers).
+_context = spawn_context
 
 
 def dask_executor(address: str | None = None, **cluster: Any) -> Executor:
@@ -1307,8 +1235,15 @@ def dask_executor(address: str | None = None, **cluster: Any) -> Executor:
         raise StudyError("--scheduler needs Dask distributed: pip install 'runout[dask]'") from None
     try:
         if address is None:
+            import dask
+
             cluster.setdefault("dashboard_address", None)
-            client = Client(LocalCluster(**cluster))
+            # Dask's nannies trim malloc at 64 KiB by default (MALLOC_TRIM_THRESHOLD_), which
+            # returns every NumPy temporary of a chunk to the system and costs the workers
+            # much of their time; a local cluster of ours keeps glibc's usual behaviour.
+            trim = {"distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_": 2**28}
+            with dask.config.set(trim):
+                client = Client(LocalCluster(**cluster))
         else:
             client = Client(address, timeout=cluster.get("timeout", 10))
     except (OSError, TimeoutError) as exc:
@@ -1423,8 +1358,9 @@ def run_study(
     executor : concurrent.futures.Executor, optional
         Where chunks run (e.g. :func:`dask_executor`); overrides ``workers``.
     workers : int
-        Local worker processes when no executor is given (1: in this process). The workers
-        end with this process, even when it is killed (:func:`die_with_parent`).
+        Local worker processes when no executor is given (1: in this process, where the
+        chunks of a batched Monte Carlo run on Numba's number of threads). The workers end
+        with this process, even when it is killed (:func:`die_with_parent`).
     out : path, optional
         Directory for the chunk files, ``manifest.json``, ``summary.json``, ``samples.csv`` and
         plots. It must be empty, new, or the output of a study (see ``force``); it is locked
@@ -1525,17 +1461,70 @@ def _run(
     return result
 
 
+#: Chunks submitted ahead per worker of the process pool (the others wait in the parent, so
+#: that the pool's queue holds a few chunks' arrays, not the whole study's).
+AHEAD_PER_WORKER = 2
+#: Chunks in flight on an external executor (Dask): enough to keep a cluster busy.
+AHEAD_EXTERNAL = 64
+
+
+def _with_batch(tasks: list[ChunkTask]) -> list[ChunkTask]:
+    """``tasks`` carrying the arrays of a batched Monte Carlo, computed here once.
+
+    The workers then receive arrays, not a case to validate and a model to set up. A case
+    whose set-up fails is left to the workers, whose per-bearing path records each failure.
+    """
+    if not tasks or not _batched(tasks[0]):
+        return tasks
+    try:
+        base = _batch_base(tasks[0])
+    except Exception:  # recorded bearing by bearing in the chunks (evaluate_chunk)
+        return tasks
+    return [dataclasses.replace(t, batch=base) for t in tasks]
+
+
+def _threads(tasks: list[ChunkTask]) -> int:
+    """Threads for the chunks of an in-process study: Numba's thread count for a batched
+    Monte Carlo of several chunks, else 1."""
+    if len(tasks) < 2 or tasks[0].batch is None:
+        return 1
+    import numba
+
+    limit = int(getattr(numba.config, "NUMBA_NUM_THREADS", 1))  # set from the environment
+    return max(1, min(len(tasks), limit))
+
+
 def _execute(
     tasks: list[ChunkTask],
     executor: Executor | None,
     workers: int,
     finished: Callable[[int, dict[str, Any]], None],
 ) -> None:
+    """Evaluate ``tasks`` in this process, in a pool of ``workers`` processes or on
+    ``executor``, and hand every chunk to ``finished`` (in this thread) as it ends.
+
+    In this process, the chunks of a batched Monte Carlo run side by side on Numba's number of
+    threads, each chunk on one (the kernels release the GIL): one chunk per thread keeps every
+    thread busy whatever else the machine runs, where threads inside each chunk's kernel wait
+    for the slowest at the end of every chunk. A single chunk uses the kernel's threads.
+    One pool serves the whole study: its workers start (and load the kernels,
+    :func:`runout._study_pool.init_worker`) while this process computes the shared arrays.
+    """
     if not tasks:
         return
     if executor is None and workers <= 1:
-        for task in tasks:
-            finished(task.index, evaluate_chunk(task))
+        batch = _with_batch(tasks)
+        threads = _threads(batch)
+        if threads <= 1:
+            for task in batch:
+                finished(task.index, evaluate_chunk(task))
+            return
+        serial = [dataclasses.replace(t, parallel=False) for t in batch]
+        team = ThreadPoolExecutor(threads, thread_name_prefix="runout-study")
+        try:
+            _drain(team, iter(serial), len(serial), AHEAD_PER_WORKER * threads, finished)
+        finally:  # an interrupt drops the queued chunks and waits for the running ones
+            team.shutdown(wait=True, cancel_futures=True)
         return
     own = executor is None
     pool: Executor = (
@@ -1548,32 +1537,48 @@ def _execute(
         if executor is None
         else executor
     )
+    ok = False
     try:
-        futures: dict[Future[dict[str, Any]], int] = {
-            pool.submit(evaluate_chunk, task): task.index for task in tasks
-        }
-        for fut in as_completed(futures):
-            index = futures[fut]
+        if own:  # start every worker now: their start-up overlaps the set-up below
+            for _ in range(workers):
+                pool.submit(int)
+        ahead = AHEAD_PER_WORKER * workers if own else AHEAD_EXTERNAL
+        _drain(pool, iter(_with_batch(tasks)), len(tasks), ahead, finished)
+        ok = True
+    finally:
+        if own:
+            # every chunk is in: the idle workers exit on their own (they end with this
+            # process in any case); after a failure, cancel and wait for them
+            pool.shutdown(wait=not ok, cancel_futures=True)
+
+
+def _drain(
+    pool: Executor,
+    queue: Iterator[ChunkTask],
+    count: int,
+    ahead: int,
+    finished: Callable[[int, dict[str, Any]], None],
+) -> None:
+    """Run the ``count`` tasks of ``queue`` on ``pool``, at most ``ahead`` at a time."""
+    running: dict[Future[dict[str, Any]], int] = {}
+    for _ in range(count + 1):  # one submission round per finished chunk, at most
+        for task in itertools.islice(queue, max(0, ahead - len(running))):
+            running[pool.submit(evaluate_chunk, task)] = task.index
+        if not running:
+            break
+        done, _pending = wait(running, return_when=FIRST_COMPLETED)
+        for fut in sorted(done, key=running.__getitem__):
+            index = running.pop(fut)
             try:
                 chunk = fut.result()
             except Exception as exc:  # a dead worker, an executor's failure
                 # evaluate_chunk records every sample's failure itself: what lands here lost
                 # the whole chunk (a worker killed, out of memory, a scheduler gone)
                 raise StudyError(
-                    f"chunk {index}: the worker evaluating it failed ({error_text(exc)}); the "
-                    "chunks already written to --out are kept (rerun with --resume)"
+                    f"chunk {index}: the worker evaluating it failed ({error_text(exc)}); "
+                    "the chunks already written to --out are kept (rerun with --resume)"
                 ) from None
             finished(index, chunk)
-    finally:
-        if own:
-            pool.shutdown(cancel_futures=True)
-
-
-def _context() -> Any:
-    import multiprocessing
-
-    # Numba's threading layers are not fork-safe once used: start clean interpreters.
-    return multiprocessing.get_context("spawn")
 
 
 # ---------------------------------------------------------------- manifest and chunk checks

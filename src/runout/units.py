@@ -15,10 +15,9 @@ from __future__ import annotations
 
 import math
 import re
+import sys
 from functools import lru_cache
 from typing import Any
-
-import pint
 
 __all__ = ["KINDS", "UnitError", "to_si"]
 
@@ -27,8 +26,29 @@ class UnitError(ValueError):
     """A value that cannot be read as the expected kind of quantity."""
 
 
+def _import_pint() -> Any:
+    """pint, imported without dask.
+
+    pint.compat imports dask whenever it is installed (~0.1 s of every CLI call) to accept
+    dask arrays as magnitudes, which runout never gives it. While pint is imported, ``dask``
+    is marked absent in ``sys.modules`` (pint then sees no dask); the mark is removed right
+    after, so dask imports normally later (the study's Dask executor). Nothing changes when
+    dask was imported before.
+    """
+    hide = "dask" not in sys.modules
+    if hide:
+        sys.modules["dask"] = None  # type: ignore[assignment]
+    try:
+        import pint
+    finally:
+        if hide and sys.modules.get("dask", 0) is None:
+            del sys.modules["dask"]
+    return pint
+
+
 @lru_cache(maxsize=1)
 def _registry() -> Any:
+    pint = _import_pint()
     # pint's on-disk cache of the parsed definitions cuts ~0.25 s from every CLI call; a
     # home without a writable cache directory falls back to parsing them
     try:

@@ -24,6 +24,7 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
+import numba
 import numpy as np
 from numpy.typing import NDArray
 
@@ -34,14 +35,26 @@ from runout.kinematics import bearing_frequencies
 from runout.results import RunResult, Source
 
 __all__ = [
+    "ANCHOR",
     "ContactDeviations",
+    "ContactSources",
     "Kinematics",
     "PhasorTable",
+    "contact_advance",
+    "contact_anchor",
     "contact_deviations",
+    "contact_rotations",
+    "contact_series",
+    "contact_sources",
+    "contact_state",
+    "contact_values",
     "decomposition_kinematic",
     "linear_phasors",
+    "on_grid",
+    "predict",
     "predicted_lines",
     "time_grid",
+    "time_step",
 ]
 
 TWO_PI = 2.0 * math.pi
@@ -157,6 +170,339 @@ def contact_deviations(
     spin_angle = TWO_PI * kin.contact_rate * t
     w_ball = np.ascontiguousarray(imperfections.evaluate_element_diameters(spin_angle).T)
     return ContactDeviations(theta=theta, inner=w_in, outer=w_out, ball=w_ball)
+
+
+# --------------------------------------------------------------------------------------------
+# fused evaluation of the deviations (phasor recurrences), for the compiled solves
+# --------------------------------------------------------------------------------------------
+#: Most instants between two direct evaluations of the phasors (re-anchoring): each step of a
+#: recurrence adds a few ulp, so the drift stays below ~1e-13 of the amplitudes.
+ANCHOR = 256
+#: Tolerance of the uniform-grid test of :func:`on_grid`, relative to the instant (4 ulp).
+GRID_RTOL = 4.0 * 2.0**-52
+
+
+@dataclass(frozen=True)
+class ContactSources:
+    r"""The deviations of :func:`contact_deviations`, packed for the compiled kernels.
+
+    The kernels evaluate, at every instant and ball, the approach at zero displacement (3-D:
+    :math:`(W_i - W_o) g_r + W_b + c_0`, seed 000 eq. 2; planar: :math:`c_0 + \tfrac12(W_i +
+    g_b W_b - W_o)`, seed 001 eq. 10) and :math:`e^{i\theta_j}`, by rotating the phasor
+    :math:`a e^{i(k\psi + \varphi)}` of every harmonic from one instant to the next instead of
+    calling cos and sin (:func:`contact_advance`), re-anchored on a direct evaluation every
+    :data:`ANCHOR` instants and wherever the time grid is not uniform.
+
+    Attributes
+    ----------
+    rates : ndarray, shape (4,)
+        2π f_c, 2π f_inner, 2π f_outer and 2π times the contact rate [rad/s].
+    base : ndarray, shape (Z,)
+        Nominal ball angles 2π j / Z [rad].
+    pitch : ndarray, shape (Z,)
+        Pitch errors ε_j [rad].
+    ring : ndarray, shape (3, M)
+        Orders, amplitudes [m] and phases [rad] of the inner then the outer raceway.
+    n_inner : int
+        Harmonics of the inner raceway (the first ``n_inner`` columns of ``ring``).
+    ball : ndarray, shape (3, K)
+        Packed diameter deviations of the elements (orders, amplitudes [m], phases [rad]).
+    ball_offsets : ndarray of int64, shape (Z + 1,)
+        Element j owns ``ball[:, ball_offsets[j]:ball_offsets[j + 1]]``.
+    gains : ndarray, shape (3,)
+        g_r (ring gain), g_b (element gain), c_0 [m].
+    planar : bool
+        Planar combination (seed 001 eq. 10) instead of the 3-D one (seed 000 eq. 2).
+    """
+
+    rates: NDArray[np.float64]
+    base: NDArray[np.float64]
+    pitch: NDArray[np.float64]
+    ring: NDArray[np.float64]
+    n_inner: int
+    ball: NDArray[np.float64]
+    ball_offsets: NDArray[np.int64]
+    gains: NDArray[np.float64]
+    planar: bool
+
+    def args(self) -> tuple[Any, ...]:
+        """The positional arguments of the kernels, in their order."""
+        return (
+            self.rates,
+            self.base,
+            self.pitch,
+            self.ring,
+            self.n_inner,
+            self.ball,
+            self.ball_offsets,
+            self.gains,
+            self.planar,
+        )
+
+
+def contact_sources(
+    imperfections: Imperfections,
+    kin: Kinematics,
+    *,
+    ring_gain: float,
+    element_gain: float,
+    offset: float,
+    planar: bool,
+) -> ContactSources:
+    """Pack the imperfections for the fused kernels (see :class:`ContactSources`).
+
+    Parameters
+    ----------
+    imperfections : Imperfections
+        Waviness, size and pitch errors (Z elements).
+    kin : Kinematics
+        Signed ring, cage and spin frequencies [Hz].
+    ring_gain, element_gain : float
+        g_r and g_b of :class:`ContactSources` (3-D: cos α and 1; planar: unused and 1 or
+        cos α).
+    offset : float
+        c_0 [m] (δ_pl, or δ_0 of seed 001).
+    planar : bool
+        Seed 001's planar combination.
+    """
+    from runout.imperfections import pack_harmonics
+
+    z = kin.n_elements
+    rates = np.array(
+        [TWO_PI * kin.cage, TWO_PI * kin.inner, TWO_PI * kin.outer, TWO_PI * kin.contact_rate]
+    )
+    ring = pack_harmonics((imperfections.inner, imperfections.outer))[:3]
+    k, a, p, offsets = pack_harmonics(imperfections.element_diameter_deviations())
+    return ContactSources(
+        rates=rates,
+        base=TWO_PI * np.arange(z) / z,
+        pitch=np.ascontiguousarray(imperfections.pitch_errors, dtype=np.float64),
+        ring=np.ascontiguousarray(np.stack(ring)),
+        n_inner=len(imperfections.inner),
+        ball=np.ascontiguousarray(np.stack([k, a, p])),
+        ball_offsets=offsets,
+        gains=np.array([ring_gain, element_gain, offset]),
+        planar=planar,
+    )
+
+
+@numba.njit(cache=True)
+def contact_state(z, ring, ball):
+    """Work arrays of the phasor recurrences (:func:`contact_series`) (compiled).
+
+    Returns
+    -------
+    tuple of ndarray
+        The anchored phasors e^{iθ_j} (2, Z) and a e^{i(kψ_j + φ)} of every ring harmonic and
+        ball (M, 2, Z); the element phasors (2, K); the cage's and each ring harmonic's
+        rotation since the anchor (2,), (2, M); their rotations per step (2,), (2, M), (2, K);
+        per-ball sums (2, Z). Row 0 holds real parts, row 1 imaginary parts.
+    """
+    m = ring.shape[1]
+    kb = ball.shape[1]
+    return (
+        np.empty((2, z)),
+        np.empty((m, 2, z)),
+        np.empty((2, kb)),
+        np.empty(2),
+        np.empty((2, m)),
+        np.empty(2),
+        np.empty((2, m)),
+        np.empty((2, kb)),
+        np.empty((2, z)),
+    )
+
+
+@numba.njit(cache=True)
+def contact_rotations(h, rates, ring, n_inner, ball, state):
+    """Rotations of the phasors over one time step ``h`` [s] (compiled)."""
+    cage_rot, ring_rot, ball_rot = state[5], state[6], state[7]
+    wc = rates[0]
+    cage_rot[0] = math.cos(wc * h)
+    cage_rot[1] = math.sin(wc * h)
+    for m in range(ring.shape[1]):
+        w = rates[1] if m < n_inner else rates[2]
+        angle = ring[0, m] * ((wc - w) * h)
+        ring_rot[0, m] = math.cos(angle)
+        ring_rot[1, m] = math.sin(angle)
+    for m in range(ball.shape[1]):
+        angle = ball[0, m] * (rates[3] * h)
+        ball_rot[0, m] = math.cos(angle)
+        ball_rot[1, m] = math.sin(angle)
+
+
+@numba.njit(cache=True)
+def contact_anchor(ti, rates, base, pitch, ring, n_inner, ball, state):
+    """Every phasor evaluated directly at instant ``ti`` [s], from the same rounded arguments
+    as :func:`contact_deviations` (compiled)."""
+    cage_q, ring_q, ball_ph, cage_p, ring_p = state[0], state[1], state[2], state[3], state[4]
+    z = base.size
+    wc, wi, wo = rates[0], rates[1], rates[2]
+    for j in range(z):
+        th = wc * ti + base[j] + pitch[j]
+        cage_q[0, j] = math.cos(th)
+        cage_q[1, j] = math.sin(th)
+        psi_i = th - wi * ti
+        psi_o = th - wo * ti
+        for m in range(ring.shape[1]):
+            arg = ring[0, m] * (psi_i if m < n_inner else psi_o) + ring[2, m]
+            ring_q[m, 0, j] = ring[1, m] * math.cos(arg)
+            ring_q[m, 1, j] = ring[1, m] * math.sin(arg)
+    s = rates[3] * ti
+    for m in range(ball.shape[1]):
+        arg = ball[0, m] * s + ball[2, m]
+        ball_ph[0, m] = ball[1, m] * math.cos(arg)
+        ball_ph[1, m] = ball[1, m] * math.sin(arg)
+    cage_p[0] = 1.0
+    cage_p[1] = 0.0
+    for m in range(ring.shape[1]):
+        ring_p[0, m] = 1.0
+        ring_p[1, m] = 0.0
+
+
+@numba.njit(cache=True, inline="always")
+def contact_advance(state):
+    """Advance the rotations since the anchor, and the element phasors, by one step (compiled)."""
+    ball_ph, cage_p, ring_p, cage_rot, ring_rot, ball_rot = (
+        state[2],
+        state[3],
+        state[4],
+        state[5],
+        state[6],
+        state[7],
+    )
+    re, im = cage_p[0], cage_p[1]
+    cage_p[0] = re * cage_rot[0] - im * cage_rot[1]
+    cage_p[1] = re * cage_rot[1] + im * cage_rot[0]
+    for m in range(ring_p.shape[1]):
+        re, im = ring_p[0, m], ring_p[1, m]
+        ring_p[0, m] = re * ring_rot[0, m] - im * ring_rot[1, m]
+        ring_p[1, m] = re * ring_rot[1, m] + im * ring_rot[0, m]
+    for m in range(ball_ph.shape[1]):
+        re, im = ball_ph[0, m], ball_ph[1, m]
+        ball_ph[0, m] = re * ball_rot[0, m] - im * ball_rot[1, m]
+        ball_ph[1, m] = re * ball_rot[1, m] + im * ball_rot[0, m]
+
+
+@numba.njit(cache=True, inline="always")
+def contact_values(state, n_inner, ball_offsets, gains, planar, c, cth, sth):
+    """Approach of every ball at zero displacement, cos θ_j and sin θ_j (compiled).
+
+    Each ring term is Re(anchored phasor × rotation since the anchor); sums run in the order
+    of :func:`contact_deviations` (harmonics in ascending order), then combine as seed 000
+    eq. 2 (3-D) or seed 001 eq. 10 (planar), see :class:`ContactSources`.
+    """
+    cage_q, ring_q, ball_ph, cage_p, ring_p, acc = (
+        state[0],
+        state[1],
+        state[2],
+        state[3],
+        state[4],
+        state[8],
+    )
+    z = c.size
+    pr, pi = cage_p[0], cage_p[1]
+    for j in range(z):
+        cth[j] = cage_q[0, j] * pr - cage_q[1, j] * pi
+        sth[j] = cage_q[0, j] * pi + cage_q[1, j] * pr
+        acc[0, j] = 0.0
+        acc[1, j] = 0.0
+    # loops over balls innermost: independent sums, which the compiler vectorises
+    wi = acc[0]
+    for m in range(n_inner):
+        pr, pi = ring_p[0, m], ring_p[1, m]
+        qr, qi = ring_q[m, 0], ring_q[m, 1]
+        for j in range(z):
+            wi[j] += qr[j] * pr - qi[j] * pi
+    wo = acc[1]
+    for m in range(n_inner, ring_p.shape[1]):
+        pr, pi = ring_p[0, m], ring_p[1, m]
+        qr, qi = ring_q[m, 0], ring_q[m, 1]
+        for j in range(z):
+            wo[j] += qr[j] * pr - qi[j] * pi
+    for j in range(z):
+        wb = 0.0
+        for h in range(ball_offsets[j], ball_offsets[j + 1]):
+            wb += ball_ph[0, h]
+        if planar:
+            c[j] = gains[2] + 0.5 * (acc[0, j] + wb * gains[1] - acc[1, j])
+        else:
+            c[j] = (acc[0, j] - acc[1, j]) * gains[0] + wb + gains[2]
+
+
+@numba.njit(cache=True)
+def time_step(t):
+    """Step of a uniform grid, (t[-1] - t[0]) / (n - 1) [s] (0 for fewer than 2 instants)."""
+    n = t.size
+    return (t[n - 1] - t[0]) / (n - 1) if n > 1 else 0.0
+
+
+@numba.njit(cache=True)
+def on_grid(i, t, h, anchor):
+    """True when the phasors anchored at instant ``anchor`` may be advanced to instant i by
+    one step of ``h`` [s]: i follows within :data:`ANCHOR` instants and ``t[i]`` is the
+    anchor's time plus a whole number of steps to round-off (compiled).
+
+    Otherwise the caller evaluates the phasors directly (:func:`contact_anchor`): at the
+    first instant, every :data:`ANCHOR` instants, and at every instant of a non-uniform grid.
+    The test is scalar on purpose: arrays passed per instant would cost reference counting.
+    """
+    r = i - anchor
+    if anchor < 0 or not 0 < r < ANCHOR:
+        return False
+    return abs(t[i] - (t[anchor] + r * h)) <= GRID_RTOL * (abs(t[i]) + r * abs(h))
+
+
+@numba.njit(cache=True)
+def predict(known, q, p, o):
+    """Starting point of an instant from the solutions of the instants before it.
+
+    ``known`` is how many of the last three solutions (q the last, then p, then o) lie on a
+    smooth stretch of the record: quadratic extrapolation ``3 q - 3 p + o`` with three,
+    linear ``2 q - p`` with two, the last solution otherwise. The kernels count as smooth the
+    instants at which every ball carries load (a contact lost or regained makes the record
+    kink, and the equilibrium of a ring held by few balls may not be unique: there they start
+    from the last solution, as without extrapolation, and also where an extrapolated start
+    fails). A start this close lets Newton's first step land within the tolerance: one step
+    per instant instead of two or three, and no line search; the converged solution is the
+    same to well within the tolerance.
+    """
+    if known >= 3:
+        return 3.0 * q - 3.0 * p + o
+    if known == 2:
+        return 2.0 * q - p
+    return q
+
+
+@numba.njit(cache=True)
+def contact_series(t, rates, base, pitch, ring, n_inner, ball, ball_offsets, gains, planar):
+    """Approaches at zero displacement and cos θ_j, sin θ_j at every instant (compiled).
+
+    The fused evaluation the quasi-static kernels run instant by instant, written out in full
+    (for tests and for callers that need the arrays).
+
+    Returns
+    -------
+    c, cos_theta, sin_theta : ndarray, shape (n, Z)
+        [m], [-], [-].
+    """
+    n = t.size
+    z = base.size
+    state = contact_state(z, ring, ball)
+    h = time_step(t)
+    contact_rotations(h, rates, ring, n_inner, ball, state)
+    c = np.empty((n, z))
+    cth = np.empty((n, z))
+    sth = np.empty((n, z))
+    anchor = -1
+    for i in range(n):
+        if on_grid(i, t, h, anchor):
+            contact_advance(state)
+        else:
+            contact_anchor(t[i], rates, base, pitch, ring, n_inner, ball, state)
+            anchor = i
+        contact_values(state, n_inner, ball_offsets, gains, planar, c[i], cth[i], sth[i])
+    return c, cth, sth
 
 
 # --------------------------------------------------------------------------------------------
@@ -513,7 +859,7 @@ def decomposition_kinematic(
     return Kinematic(abs(kin.rotation), kin.cage, kin.spin, kin.n_elements, bool(wavy), synchronous)
 
 
-def unloaded_note(unloaded: NDArray[np.int64], n_elements: int) -> str:
+def unloaded_note(unloaded: NDArray[np.integer[Any]], n_elements: int) -> str:
     """Readable note on balls that lost contact (count per instant)."""
     worst = int(unloaded.max()) if unloaded.size else 0
     if worst == 0:
@@ -525,7 +871,7 @@ def unloaded_note(unloaded: NDArray[np.int64], n_elements: int) -> str:
     )
 
 
-SolveFn = Callable[[NDArray[np.float64]], tuple[NDArray[np.float64], NDArray[np.int64]]]
+SolveFn = Callable[[NDArray[np.float64]], tuple[NDArray[np.float64], NDArray[np.integer[Any]]]]
 
 
 def measuring_direction(operation: Any) -> NDArray[np.float64]:
@@ -583,8 +929,11 @@ def run_quasi_static(
     an, op = case.analysis, case.operation
     t = time_grid(op.speed, an.revolutions, an.samples)
     disp, unloaded = solve(case, t, setup)
-    u = measuring_direction(op)
     kin = setup.kinematics
+    # the counts are summarised at once: the decomposition's arrays then have their room
+    loss_note, unloaded_max = unloaded_note(unloaded, kin.n_elements), int(unloaded.max())
+    del unloaded
+    u = measuring_direction(op)
     lines = predicted_lines(
         case.imperfections,
         kin,
@@ -605,7 +954,7 @@ def run_quasi_static(
         t, disp, u, fit.components, op.speed, fit.residual, synchronous=basis.synchronous_sources
     )
     notes = (
-        unloaded_note(unloaded, kin.n_elements),
+        loss_note,
         description,
         *fit.notes,
         *split.notes,
@@ -622,7 +971,7 @@ def run_quasi_static(
         measuring_direction=u,
         extras={
             **extras,
-            "unloaded_balls_max": int(unloaded.max()),
+            "unloaded_balls_max": unloaded_max,
             "n_elements": kin.n_elements,
             "explained_fraction": fit.explained_fraction,
         },

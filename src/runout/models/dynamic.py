@@ -81,6 +81,7 @@ Notes
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import json
 import math
@@ -89,11 +90,9 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Literal
 
-import numba
 import numpy as np
 from numpy.typing import NDArray
 
-from runout._linalg import solve_spd3
 from runout.bearing import BallBearing
 from runout.contact import (
     ball_race_contacts,
@@ -105,6 +104,36 @@ from runout.decompose import Candidate, Direction, fit_lines, split_runout
 from runout.errors import ConvergenceError, GeometryError, NumericalError
 from runout.imperfections import pack_harmonics
 from runout.kinematics import ball_spin_frequency, bearing_frequencies, cage_frequency
+from runout.models._dynamic_kernels import (
+    BLOWUP,
+    FORCE_RTOL,  # noqa: F401 - re-exported with the kernels (docs, tests)
+    N_PAR,
+    NEWTON_RTOL,
+    NOT_CONVERGED,
+    NOT_FINITE,
+    OK,
+    P_A,
+    P_C,
+    P_FU,
+    P_FX,
+    P_FY,
+    P_FZ,
+    P_G0,
+    P_H,
+    P_K,
+    P_M,
+    P_TOL,
+    P_WB,
+    P_WC,
+    P_WI,
+    P_WO,
+    P_WU,
+    P_ZP,
+    _contact,  # noqa: F401
+    _deviations,  # noqa: F401
+    newmark_kernel,
+    static_kernel,
+)
 from runout.models._quasi_static import (
     Kinematics,
     decomposition_kinematic,
@@ -142,32 +171,19 @@ ContactLaw = Literal["exact", "delta_star_table"]
 STEPS_PER_PERIOD = 200
 #: Transient is over when the free vibration is below this fraction of the response p-p.
 SETTLE_TOL = 1e-3
-#: Newton step tolerance relative to the reference approach.
-NEWTON_RTOL = 1e-12
 #: Lines below this fraction of the reference approach are solver noise (1000 × tolerance).
 NOISE = 1e-9
 MAX_ITER = 50
-#: A quasi-static force balance holding to this fraction of (Σ ball loads + |load|) has
-#: converged (the round-off floor of the sum over balls is ~Z × 1e-16 of it).
-FORCE_RTOL = 1e-13
 #: Most steps a single run may take (transient + analysis) before giving up.
 MAX_STEPS = 50_000_000
 #: Longest block of the transient search [revolutions of the rotating ring].
 MAX_BLOCK_REVOLUTIONS = 200
 
-# kernel status codes
-OK, NOT_CONVERGED, BLOWUP, NOT_FINITE = 0, 1, 2, 3
 _CAUSES = {
     NOT_CONVERGED: "Newton-Raphson iteration of the Newmark step did not converge",
     BLOWUP: "the rotor left the bearing (displacement beyond half the groove-centre distance A)",
     NOT_FINITE: "non-finite displacement (numerical blow-up)",
 }
-
-# indices of the scalar parameter vector of the kernels
-P_H, P_M, P_C, P_A, P_G0, P_ZP, P_K = 0, 1, 2, 3, 4, 5, 6
-P_WC, P_WI, P_WO, P_WB = 7, 8, 9, 10
-P_FU, P_WU, P_FX, P_FY, P_FZ, P_TOL = 11, 12, 13, 14, 15, 16
-N_PAR = 17
 
 
 # --------------------------------------------------------------------------------------------
@@ -213,6 +229,15 @@ def preloaded_contact_angle(
         α⁰ = arccos(1 − P_d/2A) [rad] (Harris's free contact angle of the clearance).
     law : {"exact", "delta_star_table"}
     """
+    return _preloaded_contact_angle(bearing, float(preload), float(free_contact_angle), law)
+
+
+@functools.lru_cache(maxsize=64)
+def _preloaded_contact_angle(
+    bearing: BallBearing, preload: float, free_contact_angle: float, law: str
+) -> tuple[float, float]:
+    """:func:`preloaded_contact_angle`, remembered: a run sets the same bearing up twice (the
+    case check and the model), and each solve takes some 40 Hertz solutions."""
     a = bearing.curvature_distance
     z = bearing.n_elements
     if preload <= 0.0:
@@ -462,353 +487,6 @@ def setup(case: Any) -> DynamicSetup:
         reference_approach=ref,
         notes=tuple(notes),
     )
-
-
-# --------------------------------------------------------------------------------------------
-# compiled kernels
-# --------------------------------------------------------------------------------------------
-@numba.njit(cache=True)
-def _hsum(k, a, p, lo, hi, angle):
-    s = 0.0
-    for i in range(lo, hi):
-        s += a[i] * math.cos(k[i] * angle + p[i])
-    return s
-
-
-@numba.njit(cache=True)
-def _deviations(t, par, theta0, hk, cth, sth, gap, wb):
-    """Ball angles (cos, sin), radial gap at q = 0 and ball deviation at time t."""
-    z = theta0.size
-    wc = par[P_WC]
-    wi = par[P_WI]
-    wo = par[P_WO]
-    spin = par[P_WB] * t
-    ik, ia, ip, ok, oa, op, bk, ba, bp, boff = hk
-    for j in range(z):
-        th = theta0[j] + wc * t
-        cth[j] = math.cos(th)
-        sth[j] = math.sin(th)
-        g = par[P_G0]
-        if ik.size:
-            g += _hsum(ik, ia, ip, 0, ik.size, th - wi * t)
-        if ok.size:
-            g -= _hsum(ok, oa, op, 0, ok.size, th - wo * t)
-        gap[j] = g
-        wb[j] = _hsum(bk, ba, bp, boff[j], boff[j + 1], spin) if bk.size else 0.0
-
-
-@numba.njit(cache=True)
-def _contact(q0, q1, q2, cth, sth, gap, wb, a, zp, k, ndof):
-    """Sum of Q_j n_j (force of the contacts resisting q) and its Jacobian (symmetric)."""
-    f0 = f1 = f2 = 0.0
-    k00 = k01 = k02 = k11 = k12 = k22 = 0.0
-    loaded = 0
-    sa = zp + (q2 if ndof == 3 else 0.0)
-    for j in range(cth.size):
-        g = gap[j] + q0 * cth[j] + q1 * sth[j]
-        sr = a + g
-        s = math.sqrt(sr * sr + sa * sa)
-        d = (g * (a + sr) + sa * sa) / (s + a) + wb[j]
-        if d <= 0.0:
-            continue
-        loaded += 1
-        sd = math.sqrt(d)
-        q = k * d * sd
-        dq = 1.5 * k * sd
-        nx = sr * cth[j] / s
-        ny = sr * sth[j] / s
-        nz = sa / s
-        f0 += q * nx
-        f1 += q * ny
-        f2 += q * nz
-        geo = q / s
-        kk = dq - geo
-        k00 += kk * nx * nx + geo * cth[j] * cth[j]
-        k01 += kk * nx * ny + geo * cth[j] * sth[j]
-        k11 += kk * ny * ny + geo * sth[j] * sth[j]
-        k02 += kk * nx * nz
-        k12 += kk * ny * nz
-        k22 += kk * nz * nz + geo
-    return f0, f1, f2, k00, k01, k02, k11, k12, k22, loaded
-
-
-@numba.njit(cache=True)
-def _solve3(j00, j01, j02, j11, j12, j22, r0, r1, r2, ndof):
-    """Solve the symmetric 2x2 (ndof 2) or 3x3 system J s = r in closed form."""
-    if ndof == 2:
-        det = j00 * j11 - j01 * j01
-        return (j11 * r0 - j01 * r1) / det, (j00 * r1 - j01 * r0) / det, 0.0
-    s0, s1, s2, _ok = solve_spd3(j00, j01, j02, j11, j12, j22, r0, r1, r2)
-    return s0, s1, s2
-
-
-@numba.njit(cache=True)
-def newmark_kernel(n_steps, stride, t_start, state, par, theta0, hk, ndof, max_iter, out):
-    """Integrate seed 003 eq. 2.16 (module form) over ``n_steps`` Newmark steps (compiled).
-
-    Average-acceleration Newmark-β (β = 1/4, γ = 1/2): with step h,
-
-    .. math::
-        a_{n+1} = \\tfrac{4}{h^2}(q_{n+1} - q_n) - \\tfrac4h v_n - a_n, \\quad
-        v_{n+1} = v_n + \\tfrac h2 (a_n + a_{n+1}),
-
-    and :math:`R(q_{n+1}) = m a_{n+1} + c v_{n+1} + \\sum_j Q_j n_j - F(t_{n+1}) = 0` solved
-    by Newton–Raphson with the Jacobian :math:`(4m/h^2 + 2c/h) I + K_t` (closed-form solve).
-
-    Parameters
-    ----------
-    n_steps : int
-        Steps to take.
-    stride : int
-        Record q every ``stride`` steps (the first record is the state after ``stride`` steps).
-    t_start : float
-        Time of ``state`` [s].
-    state : ndarray, shape (9,)
-        q, v, a (3 each) [m, m/s, m/s²]; updated in place.
-    par : ndarray
-        Scalars (:meth:`DynamicSetup.params`).
-    theta0 : ndarray, shape (Z,)
-        Ball angles at t = 0 [rad].
-    hk : tuple of ndarray
-        Packed waviness (:attr:`DynamicSetup.harmonics`).
-    ndof : int
-        2 or 3.
-    max_iter : int
-        Newton iterations per step.
-    out : ndarray, shape (n_steps // stride, 3)
-        Recorded q [m].
-
-    Returns
-    -------
-    status : int
-        0 ok, 1 not converged, 2 rotor left the bearing, 3 not finite.
-    step : int
-        Failing step (-1 if ok).
-    iterations : int
-        Newton iterations taken in total.
-    min_loaded : int
-        Fewest loaded balls at any step.
-    """
-    z = theta0.size
-    h = par[P_H]
-    m = par[P_M]
-    c = par[P_C]
-    a = par[P_A]
-    zp = par[P_ZP]
-    k = par[P_K]
-    tol = par[P_TOL]
-    c0 = 4.0 / (h * h)
-    c1 = 4.0 / h
-    jd = m * c0 + 2.0 * c / h
-    cth = np.empty(z)
-    sth = np.empty(z)
-    gap = np.empty(z)
-    wb = np.empty(z)
-    q0, q1, q2 = state[0], state[1], state[2]
-    v0, v1, v2 = state[3], state[4], state[5]
-    a0, a1, a2 = state[6], state[7], state[8]
-    if ndof == 2:
-        q2 = v2 = a2 = 0.0
-    fx, fy, fz = par[P_FX], par[P_FY], par[P_FZ]
-    fu, wu = par[P_FU], par[P_WU]
-    iters = 0
-    min_loaded = z
-    rec = 0
-    limit = 0.5 * a
-    for n in range(n_steps):
-        t1 = t_start + (n + 1) * h
-        _deviations(t1, par, theta0, hk, cth, sth, gap, wb)
-        e0 = fx + fu * math.cos(wu * t1)
-        e1 = fy + fu * math.sin(wu * t1)
-        e2 = fz
-        # predictor
-        p0 = q0 + h * v0 + 0.5 * h * h * a0
-        p1 = q1 + h * v1 + 0.5 * h * h * a1
-        p2 = q2 + h * v2 + 0.5 * h * h * a2 if ndof == 3 else 0.0
-        converged = False
-        loaded = z
-        for _ in range(max_iter):
-            iters += 1
-            f0, f1, f2, k00, k01, k02, k11, k12, k22, loaded = _contact(
-                p0, p1, p2, cth, sth, gap, wb, a, zp, k, ndof
-            )
-            na0 = c0 * (p0 - q0) - c1 * v0 - a0
-            na1 = c0 * (p1 - q1) - c1 * v1 - a1
-            na2 = c0 * (p2 - q2) - c1 * v2 - a2
-            nv0 = v0 + 0.5 * h * (a0 + na0)
-            nv1 = v1 + 0.5 * h * (a1 + na1)
-            nv2 = v2 + 0.5 * h * (a2 + na2)
-            r0 = m * na0 + c * nv0 + f0 - e0
-            r1 = m * na1 + c * nv1 + f1 - e1
-            r2 = m * na2 + c * nv2 + f2 - e2
-            s0, s1, s2 = _solve3(jd + k00, k01, k02, jd + k11, k12, jd + k22, r0, r1, r2, ndof)
-            p0 -= s0
-            p1 -= s1
-            p2 -= s2
-            if max(abs(s0), abs(s1), abs(s2)) <= tol:
-                converged = True
-                break
-        if not (math.isfinite(p0) and math.isfinite(p1) and math.isfinite(p2)):
-            state[0], state[1], state[2] = q0, q1, q2
-            return NOT_FINITE, n, iters, min_loaded
-        if not converged:
-            state[0], state[1], state[2] = q0, q1, q2
-            return NOT_CONVERGED, n, iters, min_loaded
-        if math.sqrt(p0 * p0 + p1 * p1 + p2 * p2) > limit:
-            return BLOWUP, n, iters, min_loaded
-        na0 = c0 * (p0 - q0) - c1 * v0 - a0
-        na1 = c0 * (p1 - q1) - c1 * v1 - a1
-        na2 = c0 * (p2 - q2) - c1 * v2 - a2 if ndof == 3 else 0.0
-        v0 += 0.5 * h * (a0 + na0)
-        v1 += 0.5 * h * (a1 + na1)
-        v2 += 0.5 * h * (a2 + na2)
-        a0, a1, a2 = na0, na1, na2
-        q0, q1, q2 = p0, p1, p2
-        if loaded < min_loaded:
-            min_loaded = loaded
-        if (n + 1) % stride == 0 and rec < out.shape[0]:
-            out[rec, 0] = q0
-            out[rec, 1] = q1
-            out[rec, 2] = q2
-            rec += 1
-    state[0], state[1], state[2] = q0, q1, q2
-    state[3], state[4], state[5] = v0, v1, v2
-    state[6], state[7], state[8] = a0, a1, a2
-    return OK, -1, iters, min_loaded
-
-
-@numba.njit(cache=True)
-def _potential(q0, q1, q2, cth, sth, gap, wb, a, zp, k, ndof, e0, e1, e2):
-    sa = zp + (q2 if ndof == 3 else 0.0)
-    en = -(e0 * q0 + e1 * q1 + (e2 * q2 if ndof == 3 else 0.0))
-    for j in range(cth.size):
-        g = gap[j] + q0 * cth[j] + q1 * sth[j]
-        sr = a + g
-        s = math.sqrt(sr * sr + sa * sa)
-        d = (g * (a + sr) + sa * sa) / (s + a) + wb[j]
-        if d > 0.0:
-            en += k / 2.5 * d * d * math.sqrt(d)
-    return en
-
-
-@numba.njit(cache=True)
-def _load_sum(q0, q1, q2, cth, sth, gap, wb, a, zp, k, ndof):
-    """Sum of the ball loads Σ_j Q_j [N] (scale of the round-off in the force balance)."""
-    sa = zp + (q2 if ndof == 3 else 0.0)
-    total = 0.0
-    for j in range(cth.size):
-        g = gap[j] + q0 * cth[j] + q1 * sth[j]
-        sr = a + g
-        s = math.sqrt(sr * sr + sa * sa)
-        d = (g * (a + sr) + sa * sa) / (s + a) + wb[j]
-        if d > 0.0:
-            total += k * d * math.sqrt(d)
-    return total
-
-
-@numba.njit(cache=True)
-def static_kernel(times, q_start, par, theta0, hk, ndof, max_iter):
-    """Quasi-static solution of the same contact model at each instant (compiled).
-
-    Newton's method on the convex potential :math:`\\Pi(q) = \\sum_j \\tfrac{K_n}{2.5}
-    [\\delta_j]_+^{5/2} - F(t)\\cdot q` (inertia and damping dropped), Armijo backtracking and
-    a warm start from the previous instant.
-
-    An instant has converged when the Newton correction is below the tolerance, or when the
-    force balance itself holds to round-off, :math:`\\max_i |\\sum_j Q_j n_{ji} - F_i| \\le`
-    :data:`FORCE_RTOL` :math:`(\\sum_j Q_j + |F|)`. The second test is needed when the
-    equilibrium is not unique: a single loaded ball (a ball straight under the load, its
-    neighbours inside the play, e.g. Z divisible by 4 and the load along −y) holds the rotor
-    only along its own line, so every position across it within the play is an equilibrium
-    (the Hessian of Π is singular there). The round-off force across (~1e-16 of the load)
-    then drives regularised Newton corrections that never fall below the position tolerance,
-    although the forces balance. The iterate then stays close to where it came from (from
-    q = 0: within picometres of the symmetric equilibrium across the load).
-
-    Returns
-    -------
-    q : ndarray, shape (n, 3)
-        Rotor centre [m].
-    status : int
-        0 ok, 1 not converged.
-    instant : int
-        Failing instant (-1 if ok).
-    """
-    z = theta0.size
-    a = par[P_A]
-    zp = par[P_ZP]
-    k = par[P_K]
-    tol = par[P_TOL]
-    fx, fy, fz = par[P_FX], par[P_FY], par[P_FZ]
-    fu, wu = par[P_FU], par[P_WU]
-    cth = np.empty(z)
-    sth = np.empty(z)
-    gap = np.empty(z)
-    wb = np.empty(z)
-    n = times.size
-    q = np.zeros((n, 3))
-    p0, p1, p2 = q_start[0], q_start[1], q_start[2]
-    if ndof == 2:
-        p2 = 0.0
-    # tiny regularisation: keeps Newton moving while few balls are loaded
-    reg = 1e-9 * k * math.sqrt(par[P_TOL] / NEWTON_RTOL)
-    for i in range(n):
-        t = times[i]
-        _deviations(t, par, theta0, hk, cth, sth, gap, wb)
-        e0 = fx + fu * math.cos(wu * t)
-        e1 = fy + fu * math.sin(wu * t)
-        e2 = fz
-        converged = False
-        scale = math.sqrt(e0 * e0 + e1 * e1 + (e2 * e2 if ndof == 3 else 0.0))
-        for _ in range(max_iter):
-            f0, f1, f2, k00, k01, k02, k11, k12, k22, _l = _contact(
-                p0, p1, p2, cth, sth, gap, wb, a, zp, k, ndof
-            )
-            r0, r1, r2 = f0 - e0, f1 - e1, f2 - e2
-            worst = max(abs(r0), abs(r1), abs(r2) if ndof == 3 else 0.0)
-            if worst <= FORCE_RTOL * (
-                _load_sum(p0, p1, p2, cth, sth, gap, wb, a, zp, k, ndof) + scale
-            ):
-                converged = True  # forces balance to round-off (see the docstring)
-                break
-            s0, s1, s2 = _solve3(k00 + reg, k01, k02, k11 + reg, k12, k22 + reg, r0, r1, r2, ndof)
-            big = max(abs(s0), abs(s1), abs(s2))
-            step = 1.0
-            if big > 1e-3 * tol / NEWTON_RTOL:
-                en0 = _potential(p0, p1, p2, cth, sth, gap, wb, a, zp, k, ndof, e0, e1, e2)
-                slope = -(r0 * s0 + r1 * s1 + r2 * s2)
-                for _ls in range(60):
-                    en1 = _potential(
-                        p0 - step * s0,
-                        p1 - step * s1,
-                        p2 - step * s2,
-                        cth,
-                        sth,
-                        gap,
-                        wb,
-                        a,
-                        zp,
-                        k,
-                        ndof,
-                        e0,
-                        e1,
-                        e2,
-                    )
-                    if en1 <= en0 + 1e-4 * step * slope:
-                        break
-                    step *= 0.5
-            p0 -= step * s0
-            p1 -= step * s1
-            p2 -= step * s2
-            if step * big <= tol:
-                converged = True
-                break
-        if not converged:
-            return q, 1, i
-        q[i, 0] = p0
-        q[i, 1] = p1
-        q[i, 2] = p2
-    return q, 0, -1
 
 
 # --------------------------------------------------------------------------------------------

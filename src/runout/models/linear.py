@@ -293,7 +293,7 @@ def closed_form_terms(
 ) -> Terms:
     r"""Exact complex exponential terms of u = x + i y (seed 002 eq. 33, 35, 37, 39-40).
 
-    Ring harmonic k of complex amplitude A = a e^{iφ} (ring rate ν) gives
+    Ring harmonic k of complex amplitude :math:`A = a e^{i\varphi}` (ring rate ν) gives
 
     .. math::
 
@@ -302,7 +302,8 @@ def closed_form_terms(
         \qquad S_m = \sum_z e^{i m \beta_z}
 
     (S_m = Z when m ≡ 0 mod Z, else 0, for equally spaced elements β_z = 2πz/Z); the outer ring
-    with a minus sign. Element z's diameter harmonic of even order m, B = d e^{iφ}, gives
+    with a minus sign. Element z's diameter harmonic of even order m,
+    :math:`B = d e^{i\varphi}`, gives
     ``(g_b/Z) e^{iβ_z} (B e^{i(ν_c + mν_b)θ} + B̄ e^{i(ν_c − mν_b)θ})`` (eq. 39: B_An, B_Bn);
     its size error (order 0, value D_z) gives ``(2 g_b/Z) D_z e^{iβ_z} e^{iν_cθ}`` (eq. 40).
 
@@ -396,7 +397,10 @@ def closed_form_terms(
 # --------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
 class LineSource:
-    """One source's part of a line: its x and y phasors [m] (x = Re(X e^{iωθ}))."""
+    r"""One source's part of a line: its x and y phasors [m].
+
+    :math:`x = \mathrm{Re}(X e^{i\omega\theta})`, likewise y.
+    """
 
     source: Source
     x: complex

@@ -37,7 +37,11 @@ Notes
   those of the axial preload (a planar model cannot change them); the measuring direction is
   then the load's. Use ``equilibrium`` for the loaded contact angles.
 * Solver: Newton per instant (eq. 18) with a closed-form 2×2 solve, Armijo backtracking on the
-  convex potential and warm start (:func:`solve_kernel`); :func:`solve_reference` is the
+  convex potential, started from the previous solutions extrapolated
+  (:func:`runout.models._quasi_static.predict`). :func:`solve` runs the fused kernel
+  :func:`solve_fused`, which evaluates the deviations of eq. 10-13 instant by instant by
+  rotating phasors (no arrays of size instants × balls); :func:`solve_kernel_loaded` is the
+  same solve on precomputed arrays (:func:`approaches`), :func:`solve_reference` the
   vectorised NumPy version used in tests.
 """
 
@@ -45,7 +49,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Literal
+from typing import Any, Literal
 
 import numba
 import numpy as np
@@ -58,8 +62,17 @@ from runout.kinematics import ball_spin_frequency, cage_frequency
 from runout.loading import axial_loading
 from runout.models._quasi_static import (
     Kinematics,
+    contact_advance,
+    contact_anchor,
     contact_deviations,
+    contact_rotations,
+    contact_sources,
+    contact_state,
+    contact_values,
+    on_grid,
+    predict,
     run_quasi_static,
+    time_step,
 )
 from runout.results import RunResult
 from runout.summary import operating_contact_angle
@@ -70,6 +83,7 @@ __all__ = [
     "run",
     "setup",
     "solve",
+    "solve_fused",
     "solve_kernel",
     "solve_kernel_loaded",
     "solve_reference",
@@ -109,7 +123,7 @@ def hertz_potential(c, cth, sth, k, q0, q1, force):
 def loaded_balls_collinear(c, cth, sth, q0, q1):
     """True when the loaded balls' directions span one line only (compiled).
 
-    The stiffness of the loaded balls, Σ d_k^{1/2} n_k n_k^T (without regularisation), is
+    The stiffness of the loaded balls, Σ √d_k n_k n_kᵀ (without regularisation), is
     then singular: e.g. two opposite balls hold the shaft along their line and nothing holds
     it across (its position there is undetermined). Relative threshold 1e-12 on
     det / trace².
@@ -136,11 +150,85 @@ def solve_kernel(c, theta, k, d_ref, max_iter):
 
 
 @numba.njit(cache=True)
+def _newton(ci, cth, sth, k, d_ref, max_iter, force, q0, q1):
+    """Newton solve of seed 001 eq. 16-17 at one instant from (q0, q1) (compiled).
+
+    Returns
+    -------
+    q0, q1 : float
+        Shaft centre [m].
+    unloaded : int
+        Balls without load.
+    status : int
+        0 ok, 1 too few loaded balls, 2 singular, 3 not converged.
+    """
+    z = ci.size
+    tol = RTOL * d_ref
+    converged = False
+    for _ in range(max_iter):
+        f0 = -force[0]
+        f1 = -force[1]
+        h00 = h01 = h11 = 0.0
+        load_sum = abs(force[0]) + abs(force[1])
+        for j in range(z):
+            d = 2.0 * ci[j] + q0 * cth[j] + q1 * sth[j]  # total approach 2 δ_k
+            if d > 0.0:
+                sd = math.sqrt(d)
+                p = k * d * sd
+                load_sum += p
+                kk = 1.5 * k * sd
+                f0 += p * cth[j]
+                f1 += p * sth[j]
+                h00 += kk * cth[j] * cth[j]
+                h01 += kk * cth[j] * sth[j]
+                h11 += kk * sth[j] * sth[j]
+        # residual at its round-off floor: converged (a nearly unloaded ball makes the
+        # stiffness nearly singular and the steps then never fall below the tolerance)
+        if max(abs(f0), abs(f1)) <= FLOOR * load_sum:
+            converged = True
+            break
+        reg = 1e-9 * 1.5 * k * math.sqrt(2.0 * d_ref)
+        h00 += reg
+        h11 += reg
+        det = h00 * h11 - h01 * h01
+        if not det > 0.0:
+            return q0, q1, 0, SINGULAR
+        s0 = -(h11 * f0 - h01 * f1) / det
+        s1 = -(h00 * f1 - h01 * f0) / det
+        slope = f0 * s0 + f1 * s1
+        step = 1.0
+        big = max(abs(s0), abs(s1)) > 1e-4 * d_ref
+        e0 = hertz_potential(ci, cth, sth, k, q0, q1, force) if big else 0.0
+        for _ls in range(40 if big else 0):
+            e1 = hertz_potential(ci, cth, sth, k, q0 + step * s0, q1 + step * s1, force)
+            if e1 <= e0 + 1e-4 * step * slope or step * max(abs(s0), abs(s1)) < tol:
+                break
+            step *= 0.5
+        q0 += step * s0
+        q1 += step * s1
+        if step * max(abs(s0), abs(s1)) <= tol:
+            converged = True
+            break
+    count = 0
+    for j in range(z):
+        if 2.0 * ci[j] + q0 * cth[j] + q1 * sth[j] <= 0.0:
+            count += 1
+    if z - count < 2:
+        return q0, q1, count, TOO_FEW_LOADED
+    if loaded_balls_collinear(ci, cth, sth, q0, q1):
+        return q0, q1, count, SINGULAR
+    if not converged:
+        return q0, q1, count, NOT_CONVERGED
+    return q0, q1, count, OK
+
+
+@numba.njit(cache=True)
 def solve_kernel_loaded(c, theta, k, d_ref, max_iter, force):
     r"""Newton solve of seed 001 eq. 16-17 with a radial load at every instant (compiled).
 
     Solves :math:`\sum_k P_k(\cos\theta_k, \sin\theta_k) = F` (eq. 16-17 with the radial
-    load F on the right-hand side; F = 0 is the paper's case).
+    load F on the right-hand side; F = 0 is the paper's case). Each instant starts from the
+    extrapolated previous solutions (:func:`runout.models._quasi_static.predict`).
 
     Parameters
     ----------
@@ -170,77 +258,117 @@ def solve_kernel_loaded(c, theta, k, d_ref, max_iter, force):
         Instant of the failure (-1 when status is 0).
     """
     n, z = c.shape
-    tol = RTOL * d_ref
     q = np.zeros((n, 2))
     unloaded = np.zeros(n, dtype=np.int64)
     cth = np.empty(z)
     sth = np.empty(z)
-    q0 = 0.0
-    q1 = 0.0
+    a0 = a1 = b0 = b1 = c0 = c1 = 0.0  # the last three solutions
+    smooth = 0  # last instants with every ball loaded (up to 3)
     for i in range(n):
-        ci = c[i]
         for j in range(z):
             cth[j] = math.cos(theta[i, j])
             sth[j] = math.sin(theta[i, j])
-        converged = False
-        for _ in range(max_iter):
-            f0 = -force[0]
-            f1 = -force[1]
-            h00 = h01 = h11 = 0.0
-            load_sum = abs(force[0]) + abs(force[1])
-            for j in range(z):
-                d = 2.0 * ci[j] + q0 * cth[j] + q1 * sth[j]  # total approach 2 δ_k
-                if d > 0.0:
-                    sd = math.sqrt(d)
-                    p = k * d * sd
-                    load_sum += p
-                    kk = 1.5 * k * sd
-                    f0 += p * cth[j]
-                    f1 += p * sth[j]
-                    h00 += kk * cth[j] * cth[j]
-                    h01 += kk * cth[j] * sth[j]
-                    h11 += kk * sth[j] * sth[j]
-            # residual at its round-off floor: converged (a nearly unloaded ball makes the
-            # stiffness nearly singular and the steps then never fall below the tolerance)
-            if max(abs(f0), abs(f1)) <= FLOOR * load_sum:
-                converged = True
+        for attempt in range(2):  # from the extrapolation, then from the last solution
+            order = smooth if attempt == 0 else 1
+            q0, q1, count, status = _newton(
+                c[i],
+                cth,
+                sth,
+                k,
+                d_ref,
+                max_iter,
+                force,
+                predict(order, a0, b0, c0),
+                predict(order, a1, b1, c1),
+            )
+            if status == OK or order < 2:
                 break
-            reg = 1e-9 * 1.5 * k * math.sqrt(2.0 * d_ref)
-            h00 += reg
-            h11 += reg
-            det = h00 * h11 - h01 * h01
-            if not det > 0.0:
-                return q, unloaded, 2, i
-            s0 = -(h11 * f0 - h01 * f1) / det
-            s1 = -(h00 * f1 - h01 * f0) / det
-            slope = f0 * s0 + f1 * s1
-            step = 1.0
-            big = max(abs(s0), abs(s1)) > 1e-4 * d_ref
-            e0 = hertz_potential(ci, cth, sth, k, q0, q1, force) if big else 0.0
-            for _ls in range(40 if big else 0):
-                e1 = hertz_potential(ci, cth, sth, k, q0 + step * s0, q1 + step * s1, force)
-                if e1 <= e0 + 1e-4 * step * slope or step * max(abs(s0), abs(s1)) < tol:
-                    break
-                step *= 0.5
-            q0 += step * s0
-            q1 += step * s1
-            if step * max(abs(s0), abs(s1)) <= tol:
-                converged = True
-                break
-        count = 0
-        for j in range(z):
-            if 2.0 * ci[j] + q0 * cth[j] + q1 * sth[j] <= 0.0:
-                count += 1
-        if z - count < 2:
-            return q, unloaded, 1, i
-        if loaded_balls_collinear(ci, cth, sth, q0, q1):
-            return q, unloaded, 2, i
-        if not converged:
-            return q, unloaded, 3, i
+        smooth = min(smooth + 1, 3) if count == 0 else 0
+        if status != OK:
+            return q, unloaded, status, i
+        c0, c1 = b0, b1
+        b0, b1 = a0, a1
+        a0, a1 = q0, q1
         q[i, 0] = q0
         q[i, 1] = q1
         unloaded[i] = count
     return q, unloaded, 0, -1
+
+
+@numba.njit(cache=True)
+def solve_fused(
+    t, rates, base, pitch, ring, n_inner, ball, ball_offsets, gains, planar,
+    k, d_ref, max_iter, force, disp, unloaded,
+):  # fmt: skip
+    """Seed 001 eq. 16-17 at every instant, the deviations evaluated on the fly (compiled).
+
+    :func:`solve_kernel_loaded` fused with
+    :func:`runout.models._quasi_static.contact_series` (no (n, Z) temporaries).
+
+    Parameters
+    ----------
+    t : ndarray, shape (n,)
+        Instants [s].
+    rates, base, pitch, ring, n_inner, ball, ball_offsets, gains, planar
+        :meth:`runout.models._quasi_static.ContactSources.args` (planar combination).
+    k, d_ref, max_iter, force
+        As :func:`solve_kernel_loaded`.
+    disp : ndarray, shape (3, n)
+        Filled with the shaft centre (x, y, 0) [m].
+    unloaded : ndarray of int16 or int64, shape (n,)
+        Filled with the balls without load at each instant.
+
+    Returns
+    -------
+    status : int
+        0 ok, 1 too few loaded balls, 2 singular, 3 not converged.
+    instant : int
+        Instant of the failure (-1 when status is 0).
+    """
+    n = t.size
+    z = base.size
+    state = contact_state(z, ring, ball)
+    h = time_step(t)
+    contact_rotations(h, rates, ring, n_inner, ball, state)
+    ci = np.empty(z)
+    cth = np.empty(z)
+    sth = np.empty(z)
+    a0 = a1 = b0 = b1 = c0 = c1 = 0.0  # the last three solutions
+    smooth = 0  # last instants with every ball loaded (up to 3)
+    anchor = -1
+    for i in range(n):
+        if on_grid(i, t, h, anchor):
+            contact_advance(state)
+        else:
+            contact_anchor(t[i], rates, base, pitch, ring, n_inner, ball, state)
+            anchor = i
+        contact_values(state, n_inner, ball_offsets, gains, planar, ci, cth, sth)
+        for attempt in range(2):  # from the extrapolation, then from the last solution
+            order = smooth if attempt == 0 else 1
+            q0, q1, count, status = _newton(
+                ci,
+                cth,
+                sth,
+                k,
+                d_ref,
+                max_iter,
+                force,
+                predict(order, a0, b0, c0),
+                predict(order, a1, b1, c1),
+            )
+            if status == OK or order < 2:
+                break
+        smooth = min(smooth + 1, 3) if count == 0 else 0
+        if status != OK:
+            return status, i
+        c0, c1 = b0, b1
+        b0, b1 = a0, a1
+        a0, a1 = q0, q1
+        disp[0, i] = q0
+        disp[1, i] = q1
+        disp[2, i] = 0.0
+        unloaded[i] = count
+    return 0, -1
 
 
 def solve_reference(
@@ -352,7 +480,7 @@ def solve(
     st: Setup | None = None,
     *,
     element_projection: ElementProjection = "none",
-) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
+) -> tuple[NDArray[np.float64], NDArray[np.integer[Any]]]:
     """Shaft centre (3, n) [m] (z = 0) and unloaded-ball counts (n,) at ``time``.
 
     Raises
@@ -361,19 +489,38 @@ def solve(
         When the shaft cannot be held at some instant (the error names it).
     """
     st = setup(case) if st is None else st
-    c, theta = approaches(case, st, time, element_projection)
-    q, unloaded, status, instant = solve_kernel_loaded(
-        c, theta, st.stiffness, st.initial_approach, MAX_ITER, st.force
+    t = np.ascontiguousarray(time, dtype=np.float64)
+    src = contact_sources(
+        case.imperfections,  # type: ignore[attr-defined]
+        st.kinematics,
+        ring_gain=1.0,
+        element_gain=math.cos(st.contact_angle) if element_projection == "radial" else 1.0,
+        offset=st.initial_approach,
+        planar=True,
     )
+    disp = np.empty((3, t.size))
+    # counts of at most Z balls: 2 bytes an instant for any case (Z <= MAX_ELEMENTS < 2**15)
+    unloaded: NDArray[np.integer[Any]] = np.empty(
+        t.size, dtype=np.int16 if st.kinematics.n_elements < 2**15 else np.int64
+    )
+    args = (
+        t,
+        *src.args(),
+        st.stiffness,
+        st.initial_approach,
+        MAX_ITER,
+        st.force,
+        disp,
+        unloaded,
+    )
+    status, instant = solve_fused(*args)
     if status != OK:
-        cause, t = CAUSES[int(status)], float(time[int(instant)])
+        cause, when = CAUSES[int(status)], float(t[int(instant)])
         if status == TOO_FEW_LOADED:
-            raise ContactLossError(cause, int(instant), t)
+            raise ContactLossError(cause, int(instant), when)
         if status == NOT_CONVERGED:
-            raise ConvergenceError(cause, int(instant), t)
-        raise NumericalError(cause, int(instant), t)
-    disp = np.zeros((3, time.size))
-    disp[:2] = q.T
+            raise ConvergenceError(cause, int(instant), when)
+        raise NumericalError(cause, int(instant), when)
     return disp, unloaded
 
 

@@ -51,8 +51,14 @@ Notes
   z is then counted from the rings axially centred (:func:`axial_position`).
 * Solver: per instant, Newton's method on the convex potential
   :math:`\Pi(q) = \sum_j \tfrac{K_n}{2.5}[\delta_j]_+^{5/2} + F\cdot q` with a closed-form 3×3
-  solve, Armijo backtracking, warm start from the previous instant (Numba kernel
-  :func:`solve_kernel`); :func:`solve_reference` is a vectorised NumPy version for tests.
+  solve, Armijo backtracking, started from the previous solutions extrapolated
+  (:func:`runout.models._quasi_static.predict`). :func:`solve` runs the fused kernel
+  :func:`solve_fused`: the deviations :math:`W_{ij}, W_{oj}, W_{bj}` and the ball angles are
+  evaluated inside it, instant by instant, by rotating phasors
+  (:class:`runout.models._quasi_static.ContactSources`), so a run allocates its record and
+  nothing of size (instants × balls); :func:`solve_kernel` is the same Newton solve on
+  precomputed arrays (:func:`approaches`), :func:`solve_reference` a vectorised NumPy version
+  for tests.
 """
 
 from __future__ import annotations
@@ -72,9 +78,18 @@ from runout.errors import ContactLossError, ConvergenceError, GeometryError, Num
 from runout.kinematics import ball_spin_frequency, cage_frequency
 from runout.models._quasi_static import (
     Kinematics,
+    contact_advance,
+    contact_anchor,
     contact_deviations,
+    contact_rotations,
+    contact_sources,
+    contact_state,
+    contact_values,
+    on_grid,
+    predict,
     run_quasi_static,
     time_grid,
+    time_step,
 )
 from runout.results import RunResult
 from runout.summary import operating_contact_angle
@@ -86,6 +101,7 @@ __all__ = [
     "run",
     "setup",
     "solve",
+    "solve_fused",
     "solve_kernel",
     "solve_reference",
     "time_grid_of",
@@ -140,6 +156,100 @@ def _potential(c, cth, sth, ca, sa, k, f, q0, q1, q2):
 
 
 @numba.njit(cache=True)
+def _newton(ci, cth, sth, cos_a, sin_a, k, force, q0, q1, q2, d_ref, max_iter):
+    """Newton solve of seed 000 eq. 5 at one instant from (q0, q1, q2) (compiled).
+
+    Returns
+    -------
+    q0, q1, q2 : float
+        Outer-ring centre [m].
+    unloaded : int
+        Balls without load.
+    status : int
+        0 ok, 1 too few loaded balls, 2 singular, 3 not converged.
+    """
+    z = ci.size
+    tol = RTOL * d_ref
+    converged = False
+    for _ in range(max_iter):
+        # residual r = sum Q n - F and Hessian H = sum 1.5 K d^0.5 n n^T of the potential
+        r0 = -force[0]
+        r1 = -force[1]
+        r2 = -force[2]
+        h00 = h01 = h02 = h11 = h12 = h22 = 0.0
+        load_sum = abs(force[0]) + abs(force[1]) + abs(force[2])
+        for j in range(z):
+            d = ci[j] - (q0 * cth[j] + q1 * sth[j]) * cos_a - q2 * sin_a
+            if d > 0.0:
+                sd = math.sqrt(d)
+                qj = k * d * sd
+                load_sum += qj
+                kk = 1.5 * k * sd
+                nx = cos_a * cth[j]
+                ny = cos_a * sth[j]
+                r0 += qj * nx
+                r1 += qj * ny
+                r2 += qj * sin_a
+                h00 += kk * nx * nx
+                h01 += kk * nx * ny
+                h02 += kk * nx * sin_a
+                h11 += kk * ny * ny
+                h12 += kk * ny * sin_a
+                h22 += kk * sin_a * sin_a
+        # The residual is at its round-off floor: converged. A nearly unloaded ball makes the
+        # stiffness nearly singular, and the steps then never fall below the tolerance.
+        if max(abs(r0), abs(r1), abs(r2)) <= _FLOOR * load_sum:
+            converged = True
+            break
+        # a small regularisation keeps intermediate iterates with few loaded balls moving
+        # (three loaded balls at distinct angles always hold the ring: checked below)
+        reg = 1e-9 * 1.5 * k * math.sqrt(d_ref)
+        h00 += reg
+        h11 += reg
+        h22 += reg
+        # closed-form 3x3 solve H s = r (gradient of the potential is -r)
+        s0, s1, s2, ok = solve_spd3(h00, h01, h02, h11, h12, h22, r0, r1, r2)
+        if not ok:
+            return q0, q1, q2, 0, SINGULAR
+        # Armijo backtracking on the convex potential
+        slope = -(r0 * s0 + r1 * s1 + r2 * s2)
+        step = 1.0
+        big = max(abs(s0), abs(s1), abs(s2)) > 1e-4 * d_ref
+        e0 = _potential(ci, cth, sth, cos_a, sin_a, k, force, q0, q1, q2) if big else 0.0
+        for _ls in range(40 if big else 0):
+            e1 = _potential(
+                ci,
+                cth,
+                sth,
+                cos_a,
+                sin_a,
+                k,
+                force,
+                q0 + step * s0,
+                q1 + step * s1,
+                q2 + step * s2,
+            )
+            if e1 <= e0 + 1e-4 * step * slope or step * max(abs(s0), abs(s1), abs(s2)) < tol:
+                break
+            step *= 0.5
+        q0 += step * s0
+        q1 += step * s1
+        q2 += step * s2
+        if step * max(abs(s0), abs(s1), abs(s2)) <= tol:
+            converged = True
+            break
+    count = 0
+    for j in range(z):
+        if ci[j] - (q0 * cth[j] + q1 * sth[j]) * cos_a - q2 * sin_a <= 0.0:
+            count += 1
+    if z - count < 3:
+        return q0, q1, q2, count, TOO_FEW_LOADED
+    if not converged:
+        return q0, q1, q2, count, NOT_CONVERGED
+    return q0, q1, q2, count, OK
+
+
+@numba.njit(cache=True)
 def solve_kernel(c, theta, cos_a, sin_a, k, force, q_start, d_ref, max_iter):
     """Newton solve of seed 000 eq. 5 at every instant (compiled).
 
@@ -176,98 +286,127 @@ def solve_kernel(c, theta, cos_a, sin_a, k, force, q_start, d_ref, max_iter):
         Instant of the failure (-1 when status is 0).
     """
     n, z = c.shape
-    tol = RTOL * d_ref
     q = np.zeros((n, 3))
     unloaded = np.zeros(n, dtype=np.int64)
     cth = np.empty(z)
     sth = np.empty(z)
-    q0, q1, q2 = q_start[0], q_start[1], q_start[2]
+    qa = q_start.copy()  # the last three solutions, for the starting point of the next
+    qb = q_start.copy()
+    qc = q_start.copy()
+    smooth = 0  # last instants with every ball loaded (up to 3)
     for i in range(n):
-        ci = c[i]
         for j in range(z):
             cth[j] = math.cos(theta[i, j])
             sth[j] = math.sin(theta[i, j])
-        converged = False
-        for _ in range(max_iter):
-            # residual r = sum Q n - F and Hessian H = sum 1.5 K d^0.5 n n^T of the potential
-            r0 = -force[0]
-            r1 = -force[1]
-            r2 = -force[2]
-            h00 = h01 = h02 = h11 = h12 = h22 = 0.0
-            load_sum = abs(force[0]) + abs(force[1]) + abs(force[2])
-            for j in range(z):
-                d = ci[j] - (q0 * cth[j] + q1 * sth[j]) * cos_a - q2 * sin_a
-                if d > 0.0:
-                    sd = math.sqrt(d)
-                    qj = k * d * sd
-                    load_sum += qj
-                    kk = 1.5 * k * sd
-                    nx = cos_a * cth[j]
-                    ny = cos_a * sth[j]
-                    r0 += qj * nx
-                    r1 += qj * ny
-                    r2 += qj * sin_a
-                    h00 += kk * nx * nx
-                    h01 += kk * nx * ny
-                    h02 += kk * nx * sin_a
-                    h11 += kk * ny * ny
-                    h12 += kk * ny * sin_a
-                    h22 += kk * sin_a * sin_a
-            # The residual is at its round-off floor: converged. A nearly unloaded ball makes the
-            # stiffness nearly singular, and the steps then never fall below the tolerance.
-            if max(abs(r0), abs(r1), abs(r2)) <= _FLOOR * load_sum:
-                converged = True
+        for attempt in range(2):  # from the extrapolation, then from the last solution
+            order = smooth if attempt == 0 else 1
+            q0, q1, q2, count, status = _newton(
+                c[i],
+                cth,
+                sth,
+                cos_a,
+                sin_a,
+                k,
+                force,
+                predict(order, qa[0], qb[0], qc[0]),
+                predict(order, qa[1], qb[1], qc[1]),
+                predict(order, qa[2], qb[2], qc[2]),
+                d_ref,
+                max_iter,
+            )
+            if status == OK or order < 2:
                 break
-            # a small regularisation keeps intermediate iterates with few loaded balls moving
-            # (three loaded balls at distinct angles always hold the ring: checked below)
-            reg = 1e-9 * 1.5 * k * math.sqrt(d_ref)
-            h00 += reg
-            h11 += reg
-            h22 += reg
-            # closed-form 3x3 solve H s = r (gradient of the potential is -r)
-            s0, s1, s2, ok = solve_spd3(h00, h01, h02, h11, h12, h22, r0, r1, r2)
-            if not ok:
-                return q, unloaded, 2, i
-            # Armijo backtracking on the convex potential
-            slope = -(r0 * s0 + r1 * s1 + r2 * s2)
-            step = 1.0
-            big = max(abs(s0), abs(s1), abs(s2)) > 1e-4 * d_ref
-            e0 = _potential(ci, cth, sth, cos_a, sin_a, k, force, q0, q1, q2) if big else 0.0
-            for _ls in range(40 if big else 0):
-                e1 = _potential(
-                    ci,
-                    cth,
-                    sth,
-                    cos_a,
-                    sin_a,
-                    k,
-                    force,
-                    q0 + step * s0,
-                    q1 + step * s1,
-                    q2 + step * s2,
-                )
-                if e1 <= e0 + 1e-4 * step * slope or step * max(abs(s0), abs(s1), abs(s2)) < tol:
-                    break
-                step *= 0.5
-            q0 += step * s0
-            q1 += step * s1
-            q2 += step * s2
-            if step * max(abs(s0), abs(s1), abs(s2)) <= tol:
-                converged = True
-                break
-        count = 0
-        for j in range(z):
-            if ci[j] - (q0 * cth[j] + q1 * sth[j]) * cos_a - q2 * sin_a <= 0.0:
-                count += 1
-        if z - count < 3:
-            return q, unloaded, 1, i
-        if not converged:
-            return q, unloaded, 3, i
-        q[i, 0] = q0
-        q[i, 1] = q1
-        q[i, 2] = q2
+        smooth = min(smooth + 1, 3) if count == 0 else 0
+        if status != OK:
+            return q, unloaded, status, i
+        qc[:] = qb
+        qb[:] = qa
+        qa[0] = q[i, 0] = q0
+        qa[1] = q[i, 1] = q1
+        qa[2] = q[i, 2] = q2
         unloaded[i] = count
     return q, unloaded, 0, -1
+
+
+@numba.njit(cache=True)
+def solve_fused(
+    t, rates, base, pitch, ring, n_inner, ball, ball_offsets, gains, planar,
+    cos_a, sin_a, k, force, d_ref, max_iter, disp, unloaded,
+):  # fmt: skip
+    """Seed 000 eq. 5 at every instant, the deviations evaluated on the fly (compiled).
+
+    :func:`solve_kernel` fused with :func:`runout.models._quasi_static.contact_series`: at
+    each instant the phasor recurrences give the approaches c_j and cos θ_j, sin θ_j (arrays
+    of Z values, no (n, Z) temporaries), then Newton's method runs from the previous instant's
+    solutions (:func:`runout.models._quasi_static.predict`; the first from q = 0).
+
+    Parameters
+    ----------
+    t : ndarray, shape (n,)
+        Instants [s].
+    rates, base, pitch, ring, n_inner, ball, ball_offsets, gains, planar
+        :meth:`runout.models._quasi_static.ContactSources.args`.
+    cos_a, sin_a, k, force, d_ref, max_iter
+        As :func:`solve_kernel`.
+    disp : ndarray, shape (3, n)
+        Filled with the shaft centre relative to the outer ring, -q [m] (the reported frame).
+    unloaded : ndarray of int16 or int64, shape (n,)
+        Filled with the balls without load at each instant.
+
+    Returns
+    -------
+    status : int
+        0 ok, 1 too few loaded balls, 2 singular, 3 not converged.
+    instant : int
+        Instant of the failure (-1 when status is 0).
+    """
+    n = t.size
+    z = base.size
+    state = contact_state(z, ring, ball)
+    h = time_step(t)
+    contact_rotations(h, rates, ring, n_inner, ball, state)
+    ci = np.empty(z)
+    cth = np.empty(z)
+    sth = np.empty(z)
+    a0 = a1 = a2 = b0 = b1 = b2 = c0 = c1 = c2 = 0.0  # the last three solutions
+    smooth = 0  # last instants with every ball loaded (up to 3)
+    anchor = -1
+    for i in range(n):
+        if on_grid(i, t, h, anchor):
+            contact_advance(state)
+        else:
+            contact_anchor(t[i], rates, base, pitch, ring, n_inner, ball, state)
+            anchor = i
+        contact_values(state, n_inner, ball_offsets, gains, planar, ci, cth, sth)
+        for attempt in range(2):  # from the extrapolation, then from the last solution
+            order = smooth if attempt == 0 else 1
+            q0, q1, q2, count, status = _newton(
+                ci,
+                cth,
+                sth,
+                cos_a,
+                sin_a,
+                k,
+                force,
+                predict(order, a0, b0, c0),
+                predict(order, a1, b1, c1),
+                predict(order, a2, b2, c2),
+                d_ref,
+                max_iter,
+            )
+            if status == OK or order < 2:
+                break
+        smooth = min(smooth + 1, 3) if count == 0 else 0
+        if status != OK:
+            return status, i
+        c0, c1, c2 = b0, b1, b2
+        b0, b1, b2 = a0, a1, a2
+        a0, a1, a2 = q0, q1, q2
+        disp[0, i] = -q0
+        disp[1, i] = -q1
+        disp[2, i] = -q2
+        unloaded[i] = count
+    return 0, -1
 
 
 def _raise(status: int, instant: int, time: NDArray[np.float64]) -> None:
@@ -491,7 +630,7 @@ def approaches(
 
 def solve(
     case: object, time: NDArray[np.float64], st: Setup | None = None
-) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
+) -> tuple[NDArray[np.float64], NDArray[np.integer[Any]]]:
     """Shaft (inner-ring) centre relative to the outer ring (3, n) [m] and unloaded-ball counts
     (n,) at ``time``: the kernel's outer-ring position (seed 000's frame) with its sign turned.
 
@@ -501,21 +640,36 @@ def solve(
         When the ring cannot be held at some instant (the error names it).
     """
     st = setup(case) if st is None else st
-    c, theta = approaches(case, st, time)
-    q, unloaded, status, instant = solve_kernel(
-        c,
-        theta,
+    t = np.ascontiguousarray(time, dtype=np.float64)
+    src = contact_sources(
+        case.imperfections,  # type: ignore[attr-defined]
+        st.kinematics,
+        ring_gain=math.cos(st.contact_angle),
+        element_gain=1.0,
+        offset=st.preload,
+        planar=False,
+    )
+    disp = np.empty((3, t.size))
+    # counts of at most Z balls: 2 bytes an instant for any case (Z <= MAX_ELEMENTS < 2**15)
+    unloaded: NDArray[np.integer[Any]] = np.empty(
+        t.size, dtype=np.int16 if st.kinematics.n_elements < 2**15 else np.int64
+    )
+    args = (
+        t,
+        *src.args(),
         math.cos(st.contact_angle),
         math.sin(st.contact_angle),
         st.stiffness,
         st.force,
-        np.zeros(3),
         st.preload,
         MAX_ITER,
+        disp,
+        unloaded,
     )
+    status, instant = solve_fused(*args)
     if status != OK:
-        _raise(int(status), int(instant), time)
-    return np.ascontiguousarray(-q.T), unloaded
+        _raise(int(status), int(instant), t)
+    return disp, unloaded
 
 
 def time_grid_of(case: object) -> NDArray[np.float64]:
@@ -547,7 +701,7 @@ def run(case: object) -> RunResult:
 
     def solve_reported(
         case: object, time: NDArray[np.float64], st: Setup | None = None
-    ) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
+    ) -> tuple[NDArray[np.float64], NDArray[np.integer[Any]]]:
         disp, unloaded = solve(case, time, st)
         disp[2] += offset
         return disp, unloaded

@@ -109,6 +109,19 @@ from runout.decompose import Candidate, Kinematic, fit_lines, split_runout
 from runout.errors import ConvergenceError, GeometryError, NumericalError
 from runout.imperfections import Harmonics, Imperfections, single_harmonic
 from runout.kinematics import bearing_frequencies
+from runout.models._roller_kernels import (
+    _FAR_CONTACT,
+    _NO_STABLE,
+    _NO_STRADDLE,
+    _NO_VERTEX,
+    _SETTLE_FAIL,
+    TOL_FEASIBLE,  # noqa: F401 - part of this module's documented constants
+    TOL_MULTIPLIER,  # noqa: F401
+    Bodies,
+    _gap,
+    _solve_all,
+    _support,
+)
 from runout.results import Component, Runout, RunResult, Source
 
 if TYPE_CHECKING:
@@ -132,26 +145,16 @@ __all__ = [
     "rotation_angles",
     "run",
     "solve",
+    "solve_many",
     "support_function",
 ]
 
 FloatArray = NDArray[np.float64]
 
-#: A roller counts as interfering below this gap [m] (rounding of the gap is ~1e-17 m).
-TOL_FEASIBLE = 1e-13
-#: A KKT multiplier below ``-TOL_MULTIPLIER`` means the vertex is not the stable one [-].
-TOL_MULTIPLIER = 1e-9
 #: Rollers closer than this to the loaded ring are reported as touching [m].
 TOL_TOUCH = 1e-11
 TWO_PI = 2.0 * math.pi
 
-# status codes of the compiled solver
-_OK = 0
-_NO_STRADDLE = 1
-_NO_VERTEX = 2
-_NO_STABLE = 3
-_SETTLE_FAIL = 4
-_FAR_CONTACT = 5
 _STATUS_TEXT = {
     _NO_STRADDLE: "no roller on one side of the load line (too few rollers near the load zone)",
     _NO_VERTEX: "the two-contact Newton solve did not converge",
@@ -356,9 +359,18 @@ def _convexity_margin(radius: float, h: Harmonics) -> float:
         return 1.0
     n = max(256, 16 * h.max_order)
     theta = np.linspace(0.0, 2.0 * math.pi, n, endpoint=False)
-    r = radius + h.evaluate(theta)
-    d1 = h.derivative().evaluate(theta)
-    d2 = h.derivative().derivative().evaluate(theta)
+    if h.orders.size * n > 1_000_000:  # many harmonics: the kernel-backed evaluation
+        r = radius + h.evaluate(theta)
+        d1 = h.derivative().evaluate(theta)
+        d2 = h.derivative().derivative().evaluate(theta)
+    else:  # one cosine and sine table for ρ, ρ', ρ'' (no derived Harmonics objects)
+        k = h.orders.astype(np.float64)[:, None]
+        a = h.amplitudes[:, None]
+        arg = k * theta[None, :] + h.phases[:, None]
+        ac = a * np.cos(arg)
+        r = radius + ac.sum(axis=0)
+        d1 = -(a * k * np.sin(arg)).sum(axis=0)
+        d2 = -(k * k * ac).sum(axis=0)
     return float(np.min((r * r + 2 * d1 * d1 - r * d2) / (r * r)))
 
 
@@ -417,502 +429,10 @@ def rotation_angles(revolutions: float, samples: int) -> FloatArray:
 
 
 # ============================================================================================
-# compiled kernels
-# ============================================================================================
-# Bodies are packed: index 0 inner raceway, 1 outer raceway, 2 + j roller j. ``r0[b]`` is the
-# base radius, harmonics ``k, a, p`` of body b are ``off[b]:off[b+1]``; the profile in the
-# fixed frame is r0 + Σ a cos(k (θ - shift) + p) with the body's current turn ``shift``.
-
-
-@numba.njit(cache=True)
-def _profile(
-    r0: float, k: FloatArray, a: FloatArray, p: FloatArray, lo: int, hi: int, x: float
-) -> tuple[float, float, float]:
-    r = r0
-    d1 = 0.0
-    d2 = 0.0
-    for i in range(lo, hi):
-        arg = k[i] * x + p[i]
-        c = math.cos(arg)
-        s = math.sin(arg)
-        r += a[i] * c
-        d1 -= a[i] * k[i] * s
-        d2 -= a[i] * k[i] * k[i] * c
-    return r, d1, d2
-
-
-@numba.njit(cache=True)
-def _support(
-    b: int,
-    r0: FloatArray,
-    k: FloatArray,
-    a: FloatArray,
-    p: FloatArray,
-    off: NDArray[np.int64],
-    shift: float,
-    psi: float,
-) -> tuple[float, float, float]:
-    """Support value h(ψ), its derivative h'(ψ) and the radius of curvature at the support point."""
-    lo = off[b]
-    hi = off[b + 1]
-    if hi == lo:
-        return r0[b], 0.0, r0[b]
-    # Newton on the support condition ρ'cos δ - ρ sin δ = 0; quadratic convergence, so once
-    # a step is below 1e-9 rad the next would be below ~1e-16 rad and we stop. h is taken at
-    # the last evaluated δ (it is stationary there, error O(step² ρ)), h' at the updated δ.
-    delta = 0.0
-    r = d1 = d2 = 0.0
-    h = h1 = 0.0
-    for _ in range(40):
-        r, d1, d2 = _profile(r0[b], k, a, p, lo, hi, psi + delta - shift)
-        cd = math.cos(delta)
-        sd = math.sin(delta)
-        f = d1 * cd - r * sd
-        fp = d2 * cd - 2.0 * d1 * sd - r * cd
-        step = f / fp
-        h = r * cd
-        delta -= step
-        if abs(step) < 1e-9:
-            break
-    h1 = r * math.sin(delta)
-    rc = (r * r + d1 * d1) ** 1.5 / (r * r + 2.0 * d1 * d1 - r * d2)
-    return h, h1, rc
-
-
-@numba.njit(cache=True)
-def _gap(
-    ba: int,
-    sa: float,
-    bb: int,
-    sb: float,
-    dx: float,
-    dy: float,
-    r0: FloatArray,
-    k: FloatArray,
-    a: FloatArray,
-    p: FloatArray,
-    off: NDArray[np.int64],
-    inside: bool,
-) -> tuple[float, float, float]:
-    """Signed distance between body A (centre 0) and body B (centre d); normal angle; curvature.
-
-    ``inside=False``: B lies outside A (roller on the inner raceway), the gap is
-    d·n − h_A(ψ) − h_B(ψ + π). ``inside=True``: A encloses B (roller in the outer raceway), the
-    gap is h_A(ψ) − h_B(ψ) − d·n. Newton on ψ makes the gap stationary (support functions h).
-    """
-    sign = -1.0 if inside else 1.0  # B's support enters with this sign, the gap with it too
-    turn = 0.0 if inside else math.pi
-    psi = math.atan2(dy, dx)
-    g = 0.0
-    rk = 0.0
-    for _ in range(40):
-        ha, h1a, rca = _support(ba, r0, k, a, p, off, sa, psi)
-        hb, h1b, rcb = _support(bb, r0, k, a, p, off, sb, psi + turn)
-        c = math.cos(psi)
-        s = math.sin(psi)
-        nd = c * dx + s * dy
-        g = sign * (nd - ha - sign * hb)
-        rk = rca + sign * rcb
-        f1 = -s * dx + c * dy - h1a - sign * h1b
-        f2 = -nd + ha + sign * hb - rca - sign * rcb
-        step = f1 / f2
-        psi -= step
-        if abs(step) < 1e-9:  # quadratic convergence: g is stationary in ψ, error O(step²|d|)
-            break
-    return g, psi, rk
-
-
-@numba.njit(cache=True)
-def _constraint(
-    mode: int,
-    j: int,
-    cx: float,
-    cy: float,
-    rx: FloatArray,
-    ry: FloatArray,
-    s_in: float,
-    s_out: float,
-    s_rol: float,
-    r0: FloatArray,
-    k: FloatArray,
-    a: FloatArray,
-    p: FloatArray,
-    off: NDArray[np.int64],
-) -> tuple[float, float, float]:
-    """Gap C_j(c) between roller j and the loaded ring centred at c, and its gradient in c."""
-    dx = rx[j] - cx
-    dy = ry[j] - cy
-    inner_body = 2 + j + (r0.size - 2 - rx.size)  # seed 004's reading: see _pack
-    if mode == 0:
-        g, psi, _ = _gap(0, s_in, inner_body, s_rol, dx, dy, r0, k, a, p, off, False)
-        return g, -math.cos(psi), -math.sin(psi)
-    g, psi, _ = _gap(1, s_out, 2 + j, s_rol, dx, dy, r0, k, a, p, off, True)
-    return g, math.cos(psi), math.sin(psi)
-
-
-@numba.njit(cache=True)
-def _vertex(
-    mode: int,
-    ja: int,
-    jb: int,
-    cx: float,
-    cy: float,
-    ux: float,
-    uy: float,
-    rx: FloatArray,
-    ry: FloatArray,
-    s_in: float,
-    s_out: float,
-    s_rol: float,
-    r0: FloatArray,
-    k: FloatArray,
-    a: FloatArray,
-    p: FloatArray,
-    off: NDArray[np.int64],
-) -> tuple[float, float, float, float, bool]:
-    """Newton solve of C_a(c) = C_b(c) = 0; returns c, the KKT multipliers and success."""
-    lam_a = lam_b = 0.0
-    for _ in range(60):
-        ca, gax, gay = _constraint(mode, ja, cx, cy, rx, ry, s_in, s_out, s_rol, r0, k, a, p, off)
-        cb, gbx, gby = _constraint(mode, jb, cx, cy, rx, ry, s_in, s_out, s_rol, r0, k, a, p, off)
-        det = gax * gby - gay * gbx
-        if abs(det) < 1e-10:
-            return cx, cy, 0.0, 0.0, False
-        ddx = (-ca * gby + cb * gay) / det
-        ddy = (-gax * cb + gbx * ca) / det
-        lam_a = (-ux * gby + uy * gbx) / det
-        lam_b = (-gax * uy + gay * ux) / det
-        cx += ddx
-        cy += ddy
-        step = math.hypot(ddx, ddy)
-        if step > 1e-2:
-            return cx, cy, 0.0, 0.0, False
-        if step <= 1e-10:  # quadratic convergence: remaining error ~ step² / radius
-            return cx, cy, lam_a, lam_b, True
-    return cx, cy, lam_a, lam_b, False
-
-
-@numba.njit(cache=True)
-def _far_bound(
-    mode: int,
-    j: int,
-    cx: float,
-    cy: float,
-    rx: FloatArray,
-    ry: FloatArray,
-    r0: FloatArray,
-    dev: FloatArray,
-) -> float:
-    """Lower bound on the gap of a roller far from the load zone (placed at its nominal radius).
-
-    Settling moves the roller by at most dev(fixed ring) + dev(roller) along its radius, so
-    the gap is at least the circle gap minus twice the deviations involved.
-    """
-    dist = math.hypot(rx[j] - cx, ry[j] - cy)
-    if mode == 0:
-        gap = dist - r0[0] - r0[2 + j]
-        slack = dev[0] + dev[1] + 2.0 * dev[2 + j]
-    else:
-        gap = r0[1] - r0[2 + j] - dist
-        slack = dev[0] + dev[1] + 2.0 * dev[2 + j]
-    return gap - slack
-
-
-@numba.njit(cache=True)
-def _worst(
-    mode: int,
-    skip1: int,
-    skip2: int,
-    cx: float,
-    cy: float,
-    rx: FloatArray,
-    ry: FloatArray,
-    far: NDArray[np.bool_],
-    dev: FloatArray,
-    s_in: float,
-    s_out: float,
-    s_rol: float,
-    r0: FloatArray,
-    k: FloatArray,
-    a: FloatArray,
-    p: FloatArray,
-    off: NDArray[np.int64],
-) -> tuple[int, float]:
-    """The roller that interferes most with the loaded ring at c (-1 if none)."""
-    worst = -1
-    wgap = -TOL_FEASIBLE
-    for j in range(rx.size):
-        if j == skip1 or j == skip2:
-            continue
-        if far[j] and _far_bound(mode, j, cx, cy, rx, ry, r0, dev) > 0.0:
-            continue
-        gj, _, _ = _constraint(mode, j, cx, cy, rx, ry, s_in, s_out, s_rol, r0, k, a, p, off)
-        if gj < wgap:
-            wgap = gj
-            worst = j
-    return worst, wgap
-
-
-@numba.njit(cache=True)
-def _single(
-    j: int,
-    wx: float,
-    wy: float,
-    rx: FloatArray,
-    ry: FloatArray,
-    s_out: float,
-    s_rol: float,
-    r0: FloatArray,
-    k: FloatArray,
-    a: FloatArray,
-    p: FloatArray,
-    off: NDArray[np.int64],
-) -> tuple[float, float]:
-    """Outer ring hanging on roller j alone: the contact normal points along w = -u.
-
-    With ψ_w the angle of w, G = 0 and stationarity in ψ give the roller centre relative to
-    the ring as d = (h_E - h_B) w + (h_E' - h_B') t, t ⊥ w, in closed form.
-    """
-    psi = math.atan2(wy, wx)
-    he, h1e, _ = _support(1, r0, k, a, p, off, s_out, psi)
-    hb, h1b, _ = _support(2 + j, r0, k, a, p, off, s_rol, psi)
-    tx = -math.sin(psi)
-    ty = math.cos(psi)
-    dx = (he - hb) * wx + (h1e - h1b) * tx
-    dy = (he - hb) * wy + (h1e - h1b) * ty
-    return rx[j] - dx, ry[j] - dy
-
-
-@numba.njit(cache=True)
-def _solve_all(
-    alphas: FloatArray,
-    mode: int,
-    r0: FloatArray,
-    k: FloatArray,
-    a: FloatArray,
-    p: FloatArray,
-    off: NDArray[np.int64],
-    beta0: FloatArray,
-    cage: float,
-    spin: float,
-    inner_turns: float,
-    outer_turns: float,
-    ux: float,
-    uy: float,
-    c0x: float,
-    c0y: float,
-    out_c: FloatArray,
-    out_pair: NDArray[np.int64],
-    out_lam: FloatArray,
-    out_gap: FloatArray,
-    out_rc: FloatArray,
-    out_status: NDArray[np.int64],
-) -> None:
-    z = beta0.size
-    shift = r0.size - 2 - z  # Z with seed 004's roller reading (inner contacts: see _pack)
-    rx = np.empty(z)
-    ry = np.empty(z)
-    phi = np.empty(z)
-    cx = c0x
-    cy = c0y
-    # contact side: rollers around +u (inner ring loaded) or around -u (outer ring loaded)
-    wx = ux if mode == 0 else -ux
-    wy = uy if mode == 0 else -uy
-    cand = np.empty(z, dtype=np.int64)
-    far = np.zeros(z, dtype=np.bool_)
-    lim = 0.5 * math.pi + 2.0 * math.pi / z
-    # largest deviation of each body from its base radius (for the far-roller bound)
-    nb = r0.size
-    dev = np.zeros(nb)
-    for b in range(nb):
-        for i in range(off[b], off[b + 1]):
-            dev[b] += abs(a[i])
-    for n in range(alphas.size):
-        alpha = alphas[n]
-        s_in = inner_turns * alpha
-        s_out = outer_turns * alpha
-        s_rol = spin * alpha
-        status = _OK
-        # 1. rollers near the contact side settle radially onto the fixed ring (§5.1); the
-        #    others only need a safe lower bound on their gap (checked below)
-        nc = 0
-        for j in range(z):
-            beta = beta0[j] + cage * alpha
-            ex = math.cos(beta)
-            ey = math.sin(beta)
-            phi[j] = math.atan2(wx * ey - wy * ex, wx * ex + wy * ey)
-            if abs(phi[j]) >= lim:
-                far[j] = True
-                # nominal circle position, exact settling not needed for a bound
-                s = r0[1] - r0[2 + j] if mode == 0 else r0[0] + r0[2 + j]
-                rx[j] = s * ex
-                ry[j] = s * ey
-                out_rc[n, j, 0] = rx[j]
-                out_rc[n, j, 1] = ry[j]
-                continue
-            far[j] = False
-            cand[nc] = j
-            nc += 1
-            if mode == 0:
-                s = r0[1] - r0[2 + j]
-            else:
-                s = r0[0] + r0[2 + j]
-            ok = False
-            for _ in range(40):
-                if mode == 0:
-                    g, psi, _ = _gap(1, s_out, 2 + j, s_rol, s * ex, s * ey, r0, k, a, p, off, True)
-                    ds = g / (math.cos(psi) * ex + math.sin(psi) * ey)
-                else:
-                    g, psi, _ = _gap(
-                        0, s_in, 2 + j + shift, s_rol, s * ex, s * ey, r0, k, a, p, off, False
-                    )
-                    ds = -g / (math.cos(psi) * ex + math.sin(psi) * ey)
-                s += ds
-                if abs(ds) <= 1e-10:  # Newton on a nearly linear gap: next step < 1e-18 m
-                    ok = True
-                    break
-            if not ok:
-                status = _SETTLE_FAIL
-            rx[j] = s * ex
-            ry[j] = s * ey
-            out_rc[n, j, 0] = rx[j]
-            out_rc[n, j, 1] = ry[j]
-        if status != _OK:
-            out_status[n] = status
-            continue
-        # 2. candidates sorted by angle from the contact side
-        order = np.argsort(phi[cand[:nc]])
-        sc = cand[:nc][order]
-        ia = -1
-        for i in range(nc):
-            if phi[sc[i]] <= 0.0:
-                ia = i
-        ib = ia + 1
-        if ia < 0 or ib >= nc:
-            out_status[n] = _NO_STRADDLE
-            continue
-        # 3. active-set walk over two-contact vertices
-        found = False
-        single = -1
-        bx = by = 0.0
-        la = lb = 0.0
-        for _ in range(4 * z):
-            vx, vy, lam_a, lam_b, conv = _vertex(
-                mode, sc[ia], sc[ib], cx, cy, ux, uy, rx, ry, s_in, s_out, s_rol,
-                r0, k, a, p, off,
-            )  # fmt: skip
-            if not conv:
-                break
-            if lam_a < -TOL_MULTIPLIER or lam_b < -TOL_MULTIPLIER:
-                keep = sc[ib] if lam_a < -TOL_MULTIPLIER else sc[ia]
-                if mode == 1:
-                    # the hoop may hang on the kept roller alone (convex admissible set)
-                    qx, qy = _single(keep, wx, wy, rx, ry, s_out, s_rol, r0, k, a, p, off)
-                    wj, _ = _worst(mode, keep, keep, qx, qy, rx, ry, far, dev, s_in, s_out,
-                                   s_rol, r0, k, a, p, off)  # fmt: skip
-                    if wj < 0:
-                        found = True
-                        bx, by, la, lb = qx, qy, 1.0, 0.0
-                        ia = ib = -1
-                        single = keep
-                        break
-                if lam_a < -TOL_MULTIPLIER:
-                    ia = ib
-                    ib = ib + 1
-                    if ib >= nc:
-                        break
-                else:
-                    ib = ia
-                    ia = ia - 1
-                    if ia < 0:
-                        break
-                continue
-            worst, _ = _worst(mode, sc[ia], sc[ib], vx, vy, rx, ry, far, dev, s_in, s_out,
-                              s_rol, r0, k, a, p, off)  # fmt: skip
-            if worst >= 0 and far[worst]:
-                out_status[n] = _FAR_CONTACT
-                break
-            if worst < 0:
-                found = True
-                bx, by, la, lb = vx, vy, lam_a, lam_b
-                break
-            pos = -1
-            for i in range(nc):
-                if sc[i] == worst:
-                    pos = i
-            if pos < 0:
-                break
-            if phi[worst] > 0.0:
-                ib = pos
-            else:
-                ia = pos
-            if ia > ib:
-                ia, ib = ib, ia
-            if ia == ib:
-                break
-        if out_status[n] == _FAR_CONTACT:
-            continue
-        if not found:
-            # 4. fall-back: every pair of candidates, keep the lowest admissible KKT vertex
-            best = -1e300
-            for i1 in range(nc):
-                for i2 in range(i1 + 1, nc):
-                    vx, vy, lam_a, lam_b, conv = _vertex(
-                        mode, sc[i1], sc[i2], cx, cy, ux, uy, rx, ry, s_in, s_out, s_rol,
-                        r0, k, a, p, off,
-                    )  # fmt: skip
-                    if not conv or lam_a < -TOL_MULTIPLIER or lam_b < -TOL_MULTIPLIER:
-                        continue
-                    wj, _ = _worst(mode, sc[i1], sc[i2], vx, vy, rx, ry, far, dev, s_in,
-                                   s_out, s_rol, r0, k, a, p, off)  # fmt: skip
-                    if wj < 0 and ux * vx + uy * vy > best:
-                        best = ux * vx + uy * vy
-                        bx, by, la, lb = vx, vy, lam_a, lam_b
-                        ia, ib = i1, i2
-                        single = -1
-                        found = True
-            if mode == 1:
-                for i1 in range(nc):
-                    qx, qy = _single(sc[i1], wx, wy, rx, ry, s_out, s_rol, r0, k, a, p, off)
-                    wj, _ = _worst(mode, sc[i1], sc[i1], qx, qy, rx, ry, far, dev, s_in, s_out,
-                                   s_rol, r0, k, a, p, off)  # fmt: skip
-                    if wj < 0 and ux * qx + uy * qy > best:
-                        best = ux * qx + uy * qy
-                        bx, by, la, lb = qx, qy, 1.0, 0.0
-                        single = sc[i1]
-                        found = True
-        if not found:
-            out_status[n] = _NO_STABLE
-            continue
-        cx = bx
-        cy = by
-        out_c[n, 0] = cx
-        out_c[n, 1] = cy
-        if single >= 0:
-            out_pair[n, 0] = single
-            out_pair[n, 1] = single
-        else:
-            out_pair[n, 0] = sc[ia]
-            out_pair[n, 1] = sc[ib]
-        out_lam[n, 0] = la
-        out_lam[n, 1] = lb
-        for j in range(z):
-            if far[j]:
-                gj = _far_bound(mode, j, cx, cy, rx, ry, r0, dev)
-                if gj <= 0.0:
-                    out_status[n] = _FAR_CONTACT
-                out_gap[n, j] = gj
-                continue
-            gj, _, _ = _constraint(mode, j, cx, cy, rx, ry, s_in, s_out, s_rol, r0, k, a, p, off)
-            out_gap[n, j] = gj
-
-
-# ============================================================================================
 # Python API
 # ============================================================================================
-def _pack(
-    geo: ConstraintGeometry,
-) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray, NDArray[np.int64]]:
+def _pack(geo: ConstraintGeometry) -> Bodies:
+    """The bodies of ``geo`` packed for the kernels (:data:`_roller_kernels.Bodies`)."""
     bodies = [geo.inner, geo.outer, *geo.elements]
     radii = [geo.inner_radius, geo.outer_radius, *geo.element_radii]
     if geo.roller_contacts == "same_angle":
@@ -921,6 +441,11 @@ def _pack(
         # (the kernels take the inner contact from there when there are 2 + 2Z bodies)
         bodies += [_odd_turned(h) for h in geo.elements]
         radii += list(geo.element_radii)
+    return _bodies(radii, bodies)
+
+
+def _bodies(radii: Sequence[float], bodies: Sequence[Harmonics]) -> Bodies:
+    """Base radii and harmonics packed as :data:`_roller_kernels.Bodies`."""
     r0 = np.array(radii, dtype=np.float64)
     sizes = np.array([len(h) for h in bodies], dtype=np.int64)
     off = np.zeros(len(bodies) + 1, dtype=np.int64)
@@ -1019,11 +544,56 @@ def solve(geo: ConstraintGeometry, alpha: Sequence[float] | FloatArray) -> Solut
     ConvergenceError
         A Newton solve did not converge.
     """
+    return _solve_one(geo, _angles(alpha))
+
+
+def solve_many(
+    geometries: Sequence[ConstraintGeometry], alpha: Sequence[float] | FloatArray
+) -> list[Solution]:
+    """:func:`solve` for several geometries over the same angles, on parallel threads.
+
+    The compiled solver releases the GIL, so the independent solves run on up to
+    :func:`numba.get_num_threads` threads; each solution is the one :func:`solve` gives
+    (bit for bit, whatever the number of threads).
+
+    Parameters
+    ----------
+    geometries : sequence of ConstraintGeometry
+    alpha : array_like, shape (n,)
+        Rotation angles of the turning ring [rad], shared by every solve.
+
+    Returns
+    -------
+    list of Solution
+        In the order of ``geometries``.
+
+    Raises
+    ------
+    NumericalError, ConvergenceError
+        As :func:`solve`, for the first geometry that fails.
+    """
+    al = _angles(alpha)
+    geos = list(geometries)
+    threads = min(len(geos), max(1, numba.get_num_threads()))
+    if threads <= 1:
+        return [_solve_one(g, al) for g in geos]
+    from concurrent.futures import ThreadPoolExecutor
+
+    with ThreadPoolExecutor(max_workers=threads) as pool:
+        return list(pool.map(lambda g: _solve_one(g, al), geos))
+
+
+def _angles(alpha: Sequence[float] | FloatArray) -> FloatArray:
     al = np.ascontiguousarray(np.asarray(alpha, dtype=np.float64).reshape(-1))
     if not np.all(np.isfinite(al)):
         raise GeometryError("alpha", "rotation angles must be finite")
+    return al
+
+
+def _solve_one(geo: ConstraintGeometry, al: FloatArray) -> Solution:
+    """:func:`solve` on checked angles."""
     z = geo.n_elements
-    r0, k, a, p, off = _pack(geo)
+    bodies = _pack(geo)
     beta0 = geo.element_positions
     u = geo.load_direction
     c0 = 0.5 * max(geo.radial_clearance, 0.0) * u
@@ -1038,11 +608,7 @@ def solve(geo: ConstraintGeometry, alpha: Sequence[float] | FloatArray) -> Solut
     _solve_all(
         al,
         0 if geo.rotating_ring == "inner" else 1,
-        r0,
-        k,
-        a,
-        p,
-        off,
+        bodies,
         np.ascontiguousarray(beta0),
         cage_ratio(geo),
         absolute_spin_ratio(geo),
@@ -1087,34 +653,24 @@ def support_function(
         :math:`h(\\psi) = \\max_\\theta \\rho(\\theta)\\cos(\\theta-\\psi)` [m], its derivative
         [m/rad] and the radius of curvature of the profile at the support point [m].
     """
-    r0 = np.array([radius])
-    k, a, p, off = _one(harmonics)
-    return _support(0, r0, k, a, p, off, float(turned), float(psi))
+    return _support(0, _bodies([radius], [harmonics]), float(turned), float(psi))
 
 
-def _one(h: Harmonics) -> tuple[FloatArray, FloatArray, FloatArray, NDArray[np.int64]]:
-    if h.is_empty:
-        return np.zeros(1), np.zeros(1), np.zeros(1), np.array([0, 0], dtype=np.int64)
-    return (
-        h.orders.astype(np.float64),
-        np.ascontiguousarray(h.amplitudes, dtype=np.float64),
-        np.ascontiguousarray(h.phases, dtype=np.float64),
-        np.array([0, len(h)], dtype=np.int64),
-    )
+def _pair(
+    ra: float, ha: Harmonics, rb: float, hb: Harmonics, turned_a: float, turned_b: float,
+    centre_b: Sequence[float], inside: bool,
+) -> tuple[float, float]:  # fmt: skip
+    bodies = _bodies([ra, rb], [ha, hb])
+    dx, dy = float(centre_b[0]), float(centre_b[1])
+    g, psi, _ = _gap(0, float(turned_a), 1, float(turned_b), dx, dy, bodies, inside)
+    return g, psi
 
 
-def _two(
-    ra: float, ha: Harmonics, rb: float, hb: Harmonics
-) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray, NDArray[np.int64]]:
-    r0 = np.array([ra, rb])
-    sizes = [len(ha), len(hb)]
-    off = np.array([0, sizes[0], sizes[0] + sizes[1]], dtype=np.int64)
-    if off[-1] == 0:
-        return r0, np.zeros(1), np.zeros(1), np.zeros(1), off
-    k = np.concatenate([ha.orders, hb.orders]).astype(np.float64)
-    a = np.concatenate([ha.amplitudes, hb.amplitudes]).astype(np.float64)
-    p = np.concatenate([ha.phases, hb.phases]).astype(np.float64)
-    return r0, k, a, p, off
+def _cold(n: int) -> FloatArray:
+    """Support points of ``n`` bodies to start from: δ = 0 (see ``_roller_kernels._support``)."""
+    warm = np.zeros((n, 3))
+    warm[:, 1] = 1.0
+    return warm
 
 
 def pair_gap(
@@ -1132,12 +688,7 @@ def pair_gap(
     ``radius + harmonics(θ - turned)``. Returns the gap [m] (negative: interference depth)
     and the direction ψ of the contact normal from A towards B [rad].
     """
-    r0, k, a, p, off = _two(radius_a, harmonics_a, radius_b, harmonics_b)
-    g, psi, _ = _gap(
-        0, float(turned_a), 1, float(turned_b), float(centre_b[0]), float(centre_b[1]),
-        r0, k, a, p, off, False,
-    )  # fmt: skip
-    return g, psi
+    return _pair(radius_a, harmonics_a, radius_b, harmonics_b, turned_a, turned_b, centre_b, False)
 
 
 def inside_gap(
@@ -1153,12 +704,7 @@ def inside_gap(
 
     Returns the gap [m] (negative: B sticks out of E) and the normal direction ψ [rad].
     """
-    r0, k, a, p, off = _two(radius_e, harmonics_e, radius_b, harmonics_b)
-    g, psi, _ = _gap(
-        0, float(turned_e), 1, float(turned_b), float(centre_b[0]), float(centre_b[1]),
-        r0, k, a, p, off, True,
-    )  # fmt: skip
-    return g, psi
+    return _pair(radius_e, harmonics_e, radius_b, harmonics_b, turned_e, turned_b, centre_b, True)
 
 
 # --------------------------------------------------------------------------------------------
@@ -1449,10 +995,9 @@ def order_sweep(
         element_radii=np.full(z, 0.5 * geo.element_diameter),
         pitch_errors=np.zeros(z),
     )
-    baseline = solve(perfect, alpha).runout
-    table = np.empty((len(parts), ks.size))
-    for j, part in enumerate(parts):
-        for i, kk in enumerate(ks):
+    geos = [perfect]
+    for part in parts:
+        for kk in ks:
             h = single_harmonic(int(kk), amplitude)
             if part == "inner":
                 g = perfect.replace(inner=h)
@@ -1464,8 +1009,10 @@ def order_sweep(
                 )
             else:
                 raise GeometryError("order_sweep.parts", f"unknown part {part!r}")
-            table[j, i] = solve(g, alpha).runout
-    return OrderSweep(ks, tuple(parts), amplitude, table, baseline, z)
+            geos.append(g)
+    runouts = np.array([sol.runout for sol in solve_many(geos, alpha)])
+    table = runouts[1:].reshape(len(parts), ks.size)
+    return OrderSweep(ks, tuple(parts), amplitude, table, float(runouts[0]), z)
 
 
 # ============================================================================================

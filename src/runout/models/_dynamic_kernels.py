@@ -1,0 +1,637 @@
+r"""Compiled kernels of the dynamic model (seed 003): deviations, contacts, Newmark, statics.
+
+Split out of :mod:`runout.models.dynamic` (which documents the model and re-exports these
+names). Reference: R.K. Purohit, K. Purohit, "Dynamic analysis of ball bearings with effect of
+preload and number of balls", 2006 (seed 003), eq. 2.1-2.5, 2.16 and §3 (Newmark-β with
+Newton-Raphson).
+
+Rotating phasors
+----------------
+Every angle of the model grows linearly in time: ball j at :math:`\theta_j(t) = \theta_{0j} +
+\omega_c t` (eq. 2.18), the raceway harmonics at :math:`k(\theta_j - \omega_{i,o} t)`, the ball
+harmonics at :math:`k\omega_b t`, the unbalance at :math:`\Omega t`. The Newmark kernel
+therefore advances :math:`e^{i r t}` of each rate r by one multiplication with
+:math:`e^{i r h}` per step instead of calling sin and cos: a raceway harmonic at ball j is
+:math:`\operatorname{Re}(a e^{i(\varphi + k\theta_{0j})} e^{ik(\omega_c - \omega)t})`. Each
+multiplication adds about one ulp of phase and modulus, so every :data:`ANCHOR_STEPS` steps
+the phasors are recomputed from the exact angle: the deviations stay within ~1e-13 of the
+direct evaluation (:func:`_deviations`, kept for the quasi-static kernel and the tests).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba
+import numpy as np
+
+from runout._linalg import solve_spd3
+
+#: Newton step tolerance relative to the reference approach.
+NEWTON_RTOL = 1e-12
+#: A quasi-static force balance holding to this fraction of (Σ ball loads + |load|) has
+#: converged (the round-off floor of the sum over balls is ~Z × 1e-16 of it).
+FORCE_RTOL = 1e-13
+#: Steps between two recomputations of the rotating phasors from the exact angles (their
+#: round-off grows by ~1e-16 per step in between).
+ANCHOR_STEPS = 256
+
+# kernel status codes
+OK, NOT_CONVERGED, BLOWUP, NOT_FINITE = 0, 1, 2, 3
+
+# indices of the scalar parameter vector of the kernels
+P_H, P_M, P_C, P_A, P_G0, P_ZP, P_K = 0, 1, 2, 3, 4, 5, 6
+P_WC, P_WI, P_WO, P_WB = 7, 8, 9, 10
+P_FU, P_WU, P_FX, P_FY, P_FZ, P_TOL = 11, 12, 13, 14, 15, 16
+N_PAR = 17
+
+
+@numba.njit(cache=True)
+def _hsum(k, a, p, lo, hi, angle):
+    s = 0.0
+    for i in range(lo, hi):
+        s += a[i] * math.cos(k[i] * angle + p[i])
+    return s
+
+
+@numba.njit(cache=True)
+def _deviations(t, par, theta0, hk, cth, sth, gap, wb):
+    """Ball angles (cos, sin), radial gap at q = 0 and ball deviation at time t."""
+    z = theta0.size
+    wc = par[P_WC]
+    wi = par[P_WI]
+    wo = par[P_WO]
+    spin = par[P_WB] * t
+    ik, ia, ip, ok, oa, op, bk, ba, bp, boff = hk
+    for j in range(z):
+        th = theta0[j] + wc * t
+        cth[j] = math.cos(th)
+        sth[j] = math.sin(th)
+        g = par[P_G0]
+        if ik.size:
+            g += _hsum(ik, ia, ip, 0, ik.size, th - wi * t)
+        if ok.size:
+            g -= _hsum(ok, oa, op, 0, ok.size, th - wo * t)
+        gap[j] = g
+        wb[j] = _hsum(bk, ba, bp, boff[j], boff[j + 1], spin) if bk.size else 0.0
+
+
+@numba.njit(cache=True)
+def _phasor_tables(par, theta0, hk):
+    """Rates and coefficients of the rotating phasors of :func:`_phasor_deviations`.
+
+    Phasor 0 is the cage :math:`e^{i\\omega_c t}`, 1 the unbalance :math:`e^{i\\Omega t}`,
+    then one per raceway harmonic (inner, then outer; rate :math:`k(\\omega_c - \\omega)`)
+    and one per ball harmonic (rate :math:`k\\omega_b`).
+
+    Returns
+    -------
+    rate : ndarray, shape (2 + n_ring + n_ball,)
+        Angular rate of each phasor [rad/s].
+    ball : ndarray, shape (Z, 2)
+        :math:`e^{i\\theta_{0j}}` (cos, sin).
+    ring : ndarray, shape (Z, n_ring, 2)
+        :math:`\\pm a e^{i(\\varphi + k\\theta_{0j})}` [m], + inner, − outer (gap sign).
+    bcoef : ndarray, shape (n_ball, 2)
+        :math:`a e^{i\\varphi}` of each ball harmonic [m].
+    """
+    ik, ia, ip, ok, oa, op, bk, ba, bp, _boff = hk
+    z = theta0.size
+    ni = ik.size
+    nr = ni + ok.size
+    nb = bk.size
+    wc = par[P_WC]
+    rate = np.empty(2 + nr + nb)
+    rate[0] = wc
+    rate[1] = par[P_WU]
+    ball = np.empty((z, 2))
+    ring = np.empty((z, nr, 2))
+    for j in range(z):
+        ball[j, 0] = math.cos(theta0[j])
+        ball[j, 1] = math.sin(theta0[j])
+    for m in range(nr):
+        if m < ni:
+            kk, aa, pp, sign, w = ik[m], ia[m], ip[m], 1.0, par[P_WI]
+        else:
+            i = m - ni
+            kk, aa, pp, sign, w = ok[i], oa[i], op[i], -1.0, par[P_WO]
+        rate[2 + m] = kk * (wc - w)
+        for j in range(z):
+            arg = kk * theta0[j] + pp
+            ring[j, m, 0] = sign * aa * math.cos(arg)
+            ring[j, m, 1] = sign * aa * math.sin(arg)
+    bcoef = np.empty((nb, 2))
+    for i in range(nb):
+        rate[2 + nr + i] = bk[i] * par[P_WB]
+        bcoef[i, 0] = ba[i] * math.cos(bp[i])
+        bcoef[i, 1] = ba[i] * math.sin(bp[i])
+    return rate, ball, ring, bcoef
+
+
+@numba.njit(cache=True)
+def _phasor_anchor(t, rate, ph):
+    """Set every phasor to its exact value :math:`e^{i r t}` at time t [s]."""
+    for m in range(rate.size):
+        ph[m, 0] = math.cos(rate[m] * t)
+        ph[m, 1] = math.sin(rate[m] * t)
+
+
+@numba.njit(cache=True)
+def _phasor_rotate(ph, rot):
+    """Advance every phasor by one step: multiply by its :math:`e^{i r h}`."""
+    for m in range(ph.shape[0]):
+        pr = ph[m, 0]
+        pi = ph[m, 1]
+        ph[m, 0] = pr * rot[m, 0] - pi * rot[m, 1]
+        ph[m, 1] = pr * rot[m, 1] + pi * rot[m, 0]
+
+
+@numba.njit(cache=True)
+def _phasor_balls(ph, ball, cth, sth):
+    """cos and sin of the ball angles θ_j from the cage phasor (perfect parts: nothing else)."""
+    er = ph[0, 0]
+    ei = ph[0, 1]
+    for j in range(ball.shape[0]):
+        cth[j] = ball[j, 0] * er - ball[j, 1] * ei
+        sth[j] = ball[j, 0] * ei + ball[j, 1] * er
+
+
+@numba.njit(cache=True)
+def _phasor_deviations(ph, ball, ring, bcoef, boff, g0, cth, sth, gap, wb):
+    """What :func:`_deviations` gives, from the phasors of :func:`_phasor_tables` (no trig)."""
+    er = ph[0, 0]
+    ei = ph[0, 1]
+    nr = ring.shape[1]
+    for j in range(ball.shape[0]):
+        cth[j] = ball[j, 0] * er - ball[j, 1] * ei
+        sth[j] = ball[j, 0] * ei + ball[j, 1] * er
+        g = g0
+        for m in range(nr):
+            g += ring[j, m, 0] * ph[2 + m, 0] - ring[j, m, 1] * ph[2 + m, 1]
+        gap[j] = g
+        w = 0.0
+        for i in range(boff[j], boff[j + 1]):
+            w += bcoef[i, 0] * ph[2 + nr + i, 0] - bcoef[i, 1] * ph[2 + nr + i, 1]
+        wb[j] = w
+
+
+@numba.njit(cache=True)
+def _contact(q0, q1, q2, cth, sth, gap, wb, a, zp, k, ndof):
+    """Sum of Q_j n_j (force of the contacts resisting q) and its Jacobian (symmetric)."""
+    f0 = f1 = f2 = 0.0
+    k00 = k01 = k02 = k11 = k12 = k22 = 0.0
+    loaded = 0
+    sa = zp + (q2 if ndof == 3 else 0.0)
+    for j in range(cth.size):
+        g = gap[j] + q0 * cth[j] + q1 * sth[j]
+        sr = a + g
+        s = math.sqrt(sr * sr + sa * sa)
+        d = (g * (a + sr) + sa * sa) / (s + a) + wb[j]
+        if d <= 0.0:
+            continue
+        loaded += 1
+        sd = math.sqrt(d)
+        q = k * d * sd
+        dq = 1.5 * k * sd
+        nx = sr * cth[j] / s
+        ny = sr * sth[j] / s
+        nz = sa / s
+        f0 += q * nx
+        f1 += q * ny
+        f2 += q * nz
+        geo = q / s
+        kk = dq - geo
+        k00 += kk * nx * nx + geo * cth[j] * cth[j]
+        k01 += kk * nx * ny + geo * cth[j] * sth[j]
+        k11 += kk * ny * ny + geo * sth[j] * sth[j]
+        k02 += kk * nx * nz
+        k12 += kk * ny * nz
+        k22 += kk * nz * nz + geo
+    return f0, f1, f2, k00, k01, k02, k11, k12, k22, loaded
+
+
+@numba.njit(cache=True)
+def _solve3(j00, j01, j02, j11, j12, j22, r0, r1, r2, ndof):
+    """Solve the symmetric 2x2 (ndof 2) or 3x3 system J s = r in closed form."""
+    if ndof == 2:
+        det = j00 * j11 - j01 * j01
+        return (j11 * r0 - j01 * r1) / det, (j00 * r1 - j01 * r0) / det, 0.0
+    s0, s1, s2, _ok = solve_spd3(j00, j01, j02, j11, j12, j22, r0, r1, r2)
+    return s0, s1, s2
+
+
+@numba.njit(cache=True)
+def _newmark_radial(n_steps, stride, t_start, state, par, theta0, hk, max_iter, out):
+    """:func:`newmark_kernel` in the plane without axial offset (two degrees of freedom, z_p = 0).
+
+    There the exact geometry of :func:`_contact` reduces to seed 003 eq. 2.3-2.5: s_j = A +
+    g_j, so δ_j = g_j + w_bj and n_j = (cos θ_j, sin θ_j) (the geometric stiffness cancels).
+    The same scheme and tests, with that contact written into the loop (no z row, no 3x3
+    solve) and, for perfect parts, without re-evaluating the constant gap.
+    """
+    z = theta0.size
+    h = par[P_H]
+    m = par[P_M]
+    c = par[P_C]
+    k = par[P_K]
+    tol = par[P_TOL]
+    c0 = 4.0 / (h * h)
+    c1 = 4.0 / h
+    hh = 0.5 * h
+    jd = m * c0 + 2.0 * c / h
+    cth = np.empty(z)
+    sth = np.empty(z)
+    gap = np.full(z, par[P_G0])
+    wb = np.zeros(z)
+    # radial gap + ball deviation at q = 0: constant for perfect parts
+    gw = np.full(z, par[P_G0])
+    rate, ball, ring, bcoef = _phasor_tables(par, theta0, hk)
+    boff = hk[9]
+    g0 = par[P_G0]
+    wavy = rate.size > 2
+    ph = np.empty((rate.size, 2))
+    rot = np.empty((rate.size, 2))
+    for i in range(rate.size):
+        rot[i, 0] = math.cos(rate[i] * h)
+        rot[i, 1] = math.sin(rate[i] * h)
+    q0, q1 = state[0], state[1]
+    v0, v1 = state[3], state[4]
+    a0, a1 = state[6], state[7]
+    fx, fy = par[P_FX], par[P_FY]
+    fu = par[P_FU]
+    iters = 0
+    min_loaded = z
+    rec = 0
+    limit = 0.5 * par[P_A]
+    for n in range(n_steps):
+        if n % ANCHOR_STEPS == 0:
+            _phasor_anchor(t_start + (n + 1) * h, rate, ph)
+        else:
+            _phasor_rotate(ph, rot)
+        if wavy:
+            _phasor_deviations(ph, ball, ring, bcoef, boff, g0, cth, sth, gap, wb)
+            for j in range(z):
+                gw[j] = gap[j] + wb[j]
+        else:
+            _phasor_balls(ph, ball, cth, sth)
+        e0 = fx + fu * ph[1, 0]
+        e1 = fy + fu * ph[1, 1]
+        p0 = q0 + h * v0 + 0.5 * h * h * a0
+        p1 = q1 + h * v1 + 0.5 * h * h * a1
+        converged = False
+        loaded = z
+        for _ in range(max_iter):
+            iters += 1
+            f0 = f1 = 0.0
+            k00 = k01 = k11 = 0.0
+            loaded = 0
+            for j in range(z):
+                cj = cth[j]
+                sj = sth[j]
+                d = gw[j] + p0 * cj + p1 * sj
+                if d > 0.0:
+                    loaded += 1
+                    sd = math.sqrt(d)
+                    q = k * d * sd
+                    dq = 1.5 * k * sd
+                    f0 += q * cj
+                    f1 += q * sj
+                    k00 += dq * cj * cj
+                    k01 += dq * cj * sj
+                    k11 += dq * sj * sj
+            na0 = c0 * (p0 - q0) - c1 * v0 - a0
+            na1 = c0 * (p1 - q1) - c1 * v1 - a1
+            r0 = m * na0 + c * (v0 + hh * (a0 + na0)) + f0 - e0
+            r1 = m * na1 + c * (v1 + hh * (a1 + na1)) + f1 - e1
+            j00 = jd + k00
+            j11 = jd + k11
+            det = j00 * j11 - k01 * k01
+            s0 = (j11 * r0 - k01 * r1) / det
+            s1 = (j00 * r1 - k01 * r0) / det
+            p0 -= s0
+            p1 -= s1
+            if max(abs(s0), abs(s1)) <= tol:
+                converged = True
+                break
+        if not (math.isfinite(p0) and math.isfinite(p1)):
+            state[0], state[1], state[2] = q0, q1, 0.0
+            return NOT_FINITE, n, iters, min_loaded
+        if not converged:
+            state[0], state[1], state[2] = q0, q1, 0.0
+            return NOT_CONVERGED, n, iters, min_loaded
+        if math.sqrt(p0 * p0 + p1 * p1) > limit:
+            return BLOWUP, n, iters, min_loaded
+        na0 = c0 * (p0 - q0) - c1 * v0 - a0
+        na1 = c0 * (p1 - q1) - c1 * v1 - a1
+        v0 += hh * (a0 + na0)
+        v1 += hh * (a1 + na1)
+        a0, a1 = na0, na1
+        q0, q1 = p0, p1
+        if loaded < min_loaded:
+            min_loaded = loaded
+        if (n + 1) % stride == 0 and rec < out.shape[0]:
+            out[rec, 0] = q0
+            out[rec, 1] = q1
+            out[rec, 2] = 0.0
+            rec += 1
+    state[0], state[1], state[2] = q0, q1, 0.0
+    state[3], state[4], state[5] = v0, v1, 0.0
+    state[6], state[7], state[8] = a0, a1, 0.0
+    return OK, -1, iters, min_loaded
+
+
+def newmark_kernel(n_steps, stride, t_start, state, par, theta0, hk, ndof, max_iter, out):
+    """Integrate seed 003 eq. 2.16 (module form) over ``n_steps`` Newmark steps (compiled).
+
+    Average-acceleration Newmark-β (β = 1/4, γ = 1/2): with step h,
+
+    .. math::
+        a_{n+1} = \\tfrac{4}{h^2}(q_{n+1} - q_n) - \\tfrac4h v_n - a_n, \\quad
+        v_{n+1} = v_n + \\tfrac h2 (a_n + a_{n+1}),
+
+    and :math:`R(q_{n+1}) = m a_{n+1} + c v_{n+1} + \\sum_j Q_j n_j - F(t_{n+1}) = 0` solved
+    by Newton–Raphson with the Jacobian :math:`(4m/h^2 + 2c/h) I + K_t` (closed-form solve).
+    The ball angles, waviness and unbalance come from rotating phasors (module docstring),
+    recomputed from the exact angles every :data:`ANCHOR_STEPS` steps.
+    A Python dispatcher onto two compiled kernels, :func:`_newmark_radial` (two degrees of
+    freedom without axial offset) and :func:`_newmark_general`, so that a run compiles only
+    the one it uses.
+
+    Parameters
+    ----------
+    n_steps : int
+        Steps to take.
+    stride : int
+        Record q every ``stride`` steps (the first record is the state after ``stride`` steps).
+    t_start : float
+        Time of ``state`` [s].
+    state : ndarray, shape (9,)
+        q, v, a (3 each) [m, m/s, m/s²]; updated in place.
+    par : ndarray
+        Scalars (:meth:`DynamicSetup.params`).
+    theta0 : ndarray, shape (Z,)
+        Ball angles at t = 0 [rad].
+    hk : tuple of ndarray
+        Packed waviness (:attr:`DynamicSetup.harmonics`).
+    ndof : int
+        2 or 3.
+    max_iter : int
+        Newton iterations per step.
+    out : ndarray, shape (n_steps // stride, 3)
+        Recorded q [m].
+
+    Returns
+    -------
+    status : int
+        0 ok, 1 not converged, 2 rotor left the bearing, 3 not finite.
+    step : int
+        Failing step (-1 if ok).
+    iterations : int
+        Newton iterations taken in total.
+    min_loaded : int
+        Fewest loaded balls at any step.
+    """
+    if ndof == 2 and par[P_ZP] == 0.0:
+        # in the plane without axial offset the exact geometry is seed 003 eq. 2.3-2.5
+        return _newmark_radial(n_steps, stride, t_start, state, par, theta0, hk, max_iter, out)
+    return _newmark_general(n_steps, stride, t_start, state, par, theta0, hk, ndof, max_iter, out)
+
+
+@numba.njit(cache=True)
+def _newmark_general(n_steps, stride, t_start, state, par, theta0, hk, ndof, max_iter, out):
+    """:func:`newmark_kernel` with the exact contact geometry (:func:`_contact`), any z_p."""
+    z = theta0.size
+    h = par[P_H]
+    m = par[P_M]
+    c = par[P_C]
+    a = par[P_A]
+    zp = par[P_ZP]
+    k = par[P_K]
+    tol = par[P_TOL]
+    c0 = 4.0 / (h * h)
+    c1 = 4.0 / h
+    jd = m * c0 + 2.0 * c / h
+    cth = np.empty(z)
+    sth = np.empty(z)
+    gap = np.full(z, par[P_G0])  # constant for perfect parts
+    wb = np.zeros(z)
+    rate, ball, ring, bcoef = _phasor_tables(par, theta0, hk)
+    boff = hk[9]
+    g0 = par[P_G0]
+    wavy = rate.size > 2
+    ph = np.empty((rate.size, 2))
+    rot = np.empty((rate.size, 2))
+    for i in range(rate.size):
+        rot[i, 0] = math.cos(rate[i] * h)
+        rot[i, 1] = math.sin(rate[i] * h)
+    q0, q1, q2 = state[0], state[1], state[2]
+    v0, v1, v2 = state[3], state[4], state[5]
+    a0, a1, a2 = state[6], state[7], state[8]
+    if ndof == 2:
+        q2 = v2 = a2 = 0.0
+    fx, fy, fz = par[P_FX], par[P_FY], par[P_FZ]
+    fu = par[P_FU]
+    iters = 0
+    min_loaded = z
+    rec = 0
+    limit = 0.5 * a
+    for n in range(n_steps):
+        if n % ANCHOR_STEPS == 0:
+            _phasor_anchor(t_start + (n + 1) * h, rate, ph)
+        else:
+            _phasor_rotate(ph, rot)
+        if wavy:
+            _phasor_deviations(ph, ball, ring, bcoef, boff, g0, cth, sth, gap, wb)
+        else:
+            _phasor_balls(ph, ball, cth, sth)
+        e0 = fx + fu * ph[1, 0]
+        e1 = fy + fu * ph[1, 1]
+        e2 = fz
+        # predictor
+        p0 = q0 + h * v0 + 0.5 * h * h * a0
+        p1 = q1 + h * v1 + 0.5 * h * h * a1
+        p2 = q2 + h * v2 + 0.5 * h * h * a2 if ndof == 3 else 0.0
+        converged = False
+        loaded = z
+        for _ in range(max_iter):
+            iters += 1
+            f0, f1, f2, k00, k01, k02, k11, k12, k22, loaded = _contact(
+                p0, p1, p2, cth, sth, gap, wb, a, zp, k, ndof
+            )
+            na0 = c0 * (p0 - q0) - c1 * v0 - a0
+            na1 = c0 * (p1 - q1) - c1 * v1 - a1
+            na2 = c0 * (p2 - q2) - c1 * v2 - a2
+            nv0 = v0 + 0.5 * h * (a0 + na0)
+            nv1 = v1 + 0.5 * h * (a1 + na1)
+            nv2 = v2 + 0.5 * h * (a2 + na2)
+            r0 = m * na0 + c * nv0 + f0 - e0
+            r1 = m * na1 + c * nv1 + f1 - e1
+            r2 = m * na2 + c * nv2 + f2 - e2
+            s0, s1, s2 = _solve3(jd + k00, k01, k02, jd + k11, k12, jd + k22, r0, r1, r2, ndof)
+            p0 -= s0
+            p1 -= s1
+            p2 -= s2
+            if max(abs(s0), abs(s1), abs(s2)) <= tol:
+                converged = True
+                break
+        if not (math.isfinite(p0) and math.isfinite(p1) and math.isfinite(p2)):
+            state[0], state[1], state[2] = q0, q1, q2
+            return NOT_FINITE, n, iters, min_loaded
+        if not converged:
+            state[0], state[1], state[2] = q0, q1, q2
+            return NOT_CONVERGED, n, iters, min_loaded
+        if math.sqrt(p0 * p0 + p1 * p1 + p2 * p2) > limit:
+            return BLOWUP, n, iters, min_loaded
+        na0 = c0 * (p0 - q0) - c1 * v0 - a0
+        na1 = c0 * (p1 - q1) - c1 * v1 - a1
+        na2 = c0 * (p2 - q2) - c1 * v2 - a2 if ndof == 3 else 0.0
+        v0 += 0.5 * h * (a0 + na0)
+        v1 += 0.5 * h * (a1 + na1)
+        v2 += 0.5 * h * (a2 + na2)
+        a0, a1, a2 = na0, na1, na2
+        q0, q1, q2 = p0, p1, p2
+        if loaded < min_loaded:
+            min_loaded = loaded
+        if (n + 1) % stride == 0 and rec < out.shape[0]:
+            out[rec, 0] = q0
+            out[rec, 1] = q1
+            out[rec, 2] = q2
+            rec += 1
+    state[0], state[1], state[2] = q0, q1, q2
+    state[3], state[4], state[5] = v0, v1, v2
+    state[6], state[7], state[8] = a0, a1, a2
+    return OK, -1, iters, min_loaded
+
+
+@numba.njit(cache=True)
+def _potential(q0, q1, q2, cth, sth, gap, wb, a, zp, k, ndof, e0, e1, e2):
+    sa = zp + (q2 if ndof == 3 else 0.0)
+    en = -(e0 * q0 + e1 * q1 + (e2 * q2 if ndof == 3 else 0.0))
+    for j in range(cth.size):
+        g = gap[j] + q0 * cth[j] + q1 * sth[j]
+        sr = a + g
+        s = math.sqrt(sr * sr + sa * sa)
+        d = (g * (a + sr) + sa * sa) / (s + a) + wb[j]
+        if d > 0.0:
+            en += k / 2.5 * d * d * math.sqrt(d)
+    return en
+
+
+@numba.njit(cache=True)
+def _load_sum(q0, q1, q2, cth, sth, gap, wb, a, zp, k, ndof):
+    """Sum of the ball loads Σ_j Q_j [N] (scale of the round-off in the force balance)."""
+    sa = zp + (q2 if ndof == 3 else 0.0)
+    total = 0.0
+    for j in range(cth.size):
+        g = gap[j] + q0 * cth[j] + q1 * sth[j]
+        sr = a + g
+        s = math.sqrt(sr * sr + sa * sa)
+        d = (g * (a + sr) + sa * sa) / (s + a) + wb[j]
+        if d > 0.0:
+            total += k * d * math.sqrt(d)
+    return total
+
+
+@numba.njit(cache=True)
+def static_kernel(times, q_start, par, theta0, hk, ndof, max_iter):
+    """Quasi-static solution of the same contact model at each instant (compiled).
+
+    Newton's method on the convex potential :math:`\\Pi(q) = \\sum_j \\tfrac{K_n}{2.5}
+    [\\delta_j]_+^{5/2} - F(t)\\cdot q` (inertia and damping dropped), Armijo backtracking and
+    a warm start from the previous instant.
+
+    An instant has converged when the Newton correction is below the tolerance, or when the
+    force balance itself holds to round-off, :math:`\\max_i |\\sum_j Q_j n_{ji} - F_i| \\le`
+    :data:`FORCE_RTOL` :math:`(\\sum_j Q_j + |F|)`. The second test is needed when the
+    equilibrium is not unique: a single loaded ball (a ball straight under the load, its
+    neighbours inside the play, e.g. Z divisible by 4 and the load along −y) holds the rotor
+    only along its own line, so every position across it within the play is an equilibrium
+    (the Hessian of Π is singular there). The round-off force across (~1e-16 of the load)
+    then drives regularised Newton corrections that never fall below the position tolerance,
+    although the forces balance. The iterate then stays close to where it came from (from
+    q = 0: within picometres of the symmetric equilibrium across the load).
+
+    Returns
+    -------
+    q : ndarray, shape (n, 3)
+        Rotor centre [m].
+    status : int
+        0 ok, 1 not converged.
+    instant : int
+        Failing instant (-1 if ok).
+    """
+    z = theta0.size
+    a = par[P_A]
+    zp = par[P_ZP]
+    k = par[P_K]
+    tol = par[P_TOL]
+    fx, fy, fz = par[P_FX], par[P_FY], par[P_FZ]
+    fu, wu = par[P_FU], par[P_WU]
+    cth = np.empty(z)
+    sth = np.empty(z)
+    gap = np.empty(z)
+    wb = np.empty(z)
+    n = times.size
+    q = np.zeros((n, 3))
+    p0, p1, p2 = q_start[0], q_start[1], q_start[2]
+    if ndof == 2:
+        p2 = 0.0
+    # tiny regularisation: keeps Newton moving while few balls are loaded
+    reg = 1e-9 * k * math.sqrt(par[P_TOL] / NEWTON_RTOL)
+    for i in range(n):
+        t = times[i]
+        _deviations(t, par, theta0, hk, cth, sth, gap, wb)
+        e0 = fx + fu * math.cos(wu * t)
+        e1 = fy + fu * math.sin(wu * t)
+        e2 = fz
+        converged = False
+        scale = math.sqrt(e0 * e0 + e1 * e1 + (e2 * e2 if ndof == 3 else 0.0))
+        for _ in range(max_iter):
+            f0, f1, f2, k00, k01, k02, k11, k12, k22, _l = _contact(
+                p0, p1, p2, cth, sth, gap, wb, a, zp, k, ndof
+            )
+            r0, r1, r2 = f0 - e0, f1 - e1, f2 - e2
+            worst = max(abs(r0), abs(r1), abs(r2) if ndof == 3 else 0.0)
+            if worst <= FORCE_RTOL * (
+                _load_sum(p0, p1, p2, cth, sth, gap, wb, a, zp, k, ndof) + scale
+            ):
+                converged = True  # forces balance to round-off (see the docstring)
+                break
+            s0, s1, s2 = _solve3(k00 + reg, k01, k02, k11 + reg, k12, k22 + reg, r0, r1, r2, ndof)
+            big = max(abs(s0), abs(s1), abs(s2))
+            step = 1.0
+            if big > 1e-3 * tol / NEWTON_RTOL:
+                en0 = _potential(p0, p1, p2, cth, sth, gap, wb, a, zp, k, ndof, e0, e1, e2)
+                slope = -(r0 * s0 + r1 * s1 + r2 * s2)
+                for _ls in range(60):
+                    en1 = _potential(
+                        p0 - step * s0,
+                        p1 - step * s1,
+                        p2 - step * s2,
+                        cth,
+                        sth,
+                        gap,
+                        wb,
+                        a,
+                        zp,
+                        k,
+                        ndof,
+                        e0,
+                        e1,
+                        e2,
+                    )
+                    if en1 <= en0 + 1e-4 * step * slope:
+                        break
+                    step *= 0.5
+            p0 -= step * s0
+            p1 -= step * s1
+            p2 -= step * s2
+            if step * big <= tol:
+                converged = True
+                break
+        if not converged:
+            return q, 1, i
+        q[i, 0] = p0
+        q[i, 1] = p1
+        q[i, 2] = p2
+    return q, 0, -1

@@ -1,0 +1,862 @@
+r"""Numba kernels of the Jones–Harris equilibrium: the ball balance and the ring force.
+
+:mod:`runout.models.equilibrium` describes the physics (Kim, Choi & Yoon, seed 001 §2.1,
+eq. 1-9; Harris, *Rolling Bearing Analysis*); this module evaluates, for one ring
+displacement, what its ring Newton needs: every ball's equilibrium (seed 001 eq. 3-6, a 2×2
+Newton per ball, the lift-off test at speed, the restarts), the ring force (eq. 1-2) and its
+Jacobian by implicit differentiation of the converged ball states. The steps are those of the
+vectorised NumPy implementation it replaced, ball by ball and in the same order (the same
+global stopping rules, the same step limits), so that the results agree to round-off; the unit
+tests keep that NumPy implementation as the reference.
+
+Derivatives are complex-step derivatives (exact to round-off), as in the NumPy code: each
+scalar ball function is evaluated in complex arithmetic with a step of ``1e-30 i``. Square root
+and arctangent take their first-order complex-step forms (:func:`_sqrt_cs`, :func:`_atan_cs`),
+exact to round-off for such steps and far less code to compile than the general complex
+functions. First compilation (empty cache) takes some 8 s on the 2-core machine.
+
+The kernels take C-contiguous float64 arrays and plain scalars, are compiled with
+``cache=True`` and without ``fastmath``. The constants of the bearing travel in one float64
+vector (indices ``C_*`` below); the Hertz constants of each ball (linearised in its contact
+angles, :meth:`runout.models.equilibrium._Ring.set_angles`) in six arrays of shape (Z,).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba
+import numpy as np
+from numpy.typing import NDArray
+
+__all__ = [
+    "BALL_ITER",
+    "N_CONST",
+    "N_STATE",
+    "STATE_NAMES",
+    "constants",
+    "ring_forces",
+]
+
+#: Iterations of the ball Newton and of the lift-off fixed point.
+BALL_ITER = 50
+_H = 1e-30  # complex step [m]
+_SHRINK = 60  # halvings of a ball Newton step that would open a contact
+# continuation in the gyroscopic friction: each pass advances s by >= 1/1024 or halves ds
+# (at most 10 times in a row), so this bounds the loop with a wide margin
+_CONT_PASSES = 1024 * 12
+
+# indices of the constant vector
+C_D, C_DM, C_RI0, C_RO0, C_FI, C_MASS, C_INERTIA, C_INNER, C_OUTER, C_INNER_CONTROL = range(10)
+C_A1, C_A2, C_RAD_I, C_SCALE = range(10, 14)
+N_CONST = 14
+
+#: Rows of the per-ball state returned by :func:`ring_forces`.
+STATE_NAMES = (
+    "g1",
+    "g2",
+    "pa",
+    "pr",
+    "mg",
+    "fc",
+    "q_i",
+    "q_o",
+    "d_i",
+    "d_o",
+    "alpha_i",
+    "alpha_o",
+    "omega_m",
+    "omega_r",
+)
+N_STATE = len(STATE_NAMES)
+
+#: Status codes of :func:`ring_forces`.
+OK, BALLS_DID_NOT_CONVERGE = 0, 1
+
+
+def constants(
+    ball_diameter: float,
+    pitch_diameter: float,
+    ri0: float,
+    ro0: float,
+    f_i: float,
+    mass: float,
+    inertia: float,
+    inner: float,
+    outer: float,
+    inner_control: bool,
+    a1_0: float,
+    a2_0: float,
+    rad_i: float,
+    scale: float,
+) -> NDArray[np.float64]:
+    """The constant vector of the kernels.
+
+    Parameters
+    ----------
+    ball_diameter, pitch_diameter : float
+        D, d_m [m].
+    ri0, ro0 : float
+        (f_i − 0.5) D and (f_o − 0.5) D [m].
+    f_i : float
+        Inner conformity [-].
+    mass, inertia : float
+        Ball mass [kg] and polar moment of inertia [kg m²].
+    inner, outer : float
+        Ring speeds [rad/s].
+    inner_control : bool
+        Spin-axis attitude of inner-raceway control (else outer).
+    a1_0, a2_0 : float
+        A sin α⁰, A cos α⁰: the groove centres of the centred ring [m].
+    rad_i : float
+        ℜ_i, radius of the locus of inner groove curvature centres [m].
+    scale : float
+        Length scale of the ball Newton tolerance (A) [m].
+
+    Returns
+    -------
+    ndarray, shape (N_CONST,)
+    """
+    return np.array(
+        [
+            ball_diameter,
+            pitch_diameter,
+            ri0,
+            ro0,
+            f_i,
+            mass,
+            inertia,
+            inner,
+            outer,
+            1.0 if inner_control else 0.0,
+            a1_0,
+            a2_0,
+            rad_i,
+            scale,
+        ]
+    )
+
+
+# --------------------------------------------------------------------------------------------
+# scalar ball functions (real or complex arguments)
+# --------------------------------------------------------------------------------------------
+@numba.njit(cache=True)
+def _tan_beta(cos_i, sin_i, cos_o, sin_o, gamma, inner_control):
+    """tan β of the spin axis: outer-raceway control, or inner (Harris)."""
+    if inner_control:
+        return sin_i / (cos_i - gamma)
+    return sin_o / (cos_o + gamma)
+
+
+@numba.njit(cache=True)
+def _speeds_at(tb, cb, cos_i, sin_i, cos_o, sin_o, gamma, inner, outer):
+    """Orbit and spin speed and sin β for the attitude (tan β, cos β), as ``ball_speeds``."""
+    sb = tb * cb
+    ci = cos_i + tb * sin_i
+    co = cos_o + tb * sin_o
+    w = inner - outer
+    a = (1.0 - gamma * cos_i) * co
+    b = (1.0 + gamma * cos_o) * ci
+    omega_m = outer + w * a / (a + b)
+    omega_r = w / ((co / (1.0 + gamma * cos_o) + ci / (1.0 - gamma * cos_i)) * gamma * cb)
+    return omega_m, omega_r, sb
+
+
+@numba.njit(cache=True)
+def _speeds(cos_i, sin_i, cos_o, sin_o, gamma, inner, outer, inner_control):
+    """Orbit speed, spin speed and sin β (Harris), real arguments (``equilibrium.ball_speeds``)."""
+    tb = _tan_beta(cos_i, sin_i, cos_o, sin_o, gamma, inner_control)
+    cb = 1.0 / math.sqrt(1.0 + tb * tb)
+    return _speeds_at(tb, cb, cos_i, sin_i, cos_o, sin_o, gamma, inner, outer)
+
+
+@numba.njit(cache=True)
+def _speeds_cs(cos_i, sin_i, cos_o, sin_o, gamma, inner, outer, inner_control):
+    """:func:`_speeds` for complex-step arguments."""
+    tb = _tan_beta(cos_i, sin_i, cos_o, sin_o, gamma, inner_control)
+    cb = 1.0 / _sqrt_cs(1.0 + tb * tb)
+    return _speeds_at(tb, cb, cos_i, sin_i, cos_o, sin_o, gamma, inner, outer)
+
+
+@numba.njit(cache=True)
+def _atan_cs(z: complex) -> complex:
+    """arctan of a complex-step argument x + i h, |h| negligible against |x| and 1.
+
+    Exact to round-off: arctan(x + i h) = arctan x + i h/(1 + x²) + O(h²), and the
+    arguments here (tangents of contact angles, O(1)) carry imaginary parts of order 1e-27.
+    Much less code than the general complex arctangent (compile time).
+    """
+    x = z.real
+    return complex(math.atan(x), z.imag / (1.0 + x * x))
+
+
+@numba.njit(cache=True)
+def _sqrt_cs(z: complex) -> complex:
+    """Square root of a complex-step argument x + i h, x > 0, |h| negligible against x.
+
+    Exact to round-off: sqrt(x + i h) = sqrt x + i h/(2 sqrt x) · (1 + O(h²/x²)); the
+    arguments here (squared lengths, approaches of loaded contacts, 1 + tan²) carry
+    imaginary parts many orders of magnitude below their real parts (a step of 1e-30 m
+    against approaches of nanometres and more).
+    """
+    r = math.sqrt(z.real)
+    return complex(r, z.imag / (2.0 * r))
+
+
+@numba.njit(cache=True)
+def _hertz(delta: complex, k: complex) -> complex:
+    """K δ^1.5 for Re δ > 0, else 0 (complex step through the load)."""
+    if delta.real > 0.0:
+        return k * delta * _sqrt_cs(delta)
+    return 0.0j
+
+
+@numba.njit(cache=True)
+def _ball_state(x1, x2, a1, a2, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o, speed_on):
+    r"""Ball j at centre (x1, x2) and inner groove centre (a1, a2) [m], complex arguments.
+
+    Seed 001 eq. 3-6 (module docstring of :mod:`runout.models.equilibrium`): the residuals
+    g1, g2 [N] of the ball's two equations, the inner-race force components P_a, P_r [N], the
+    gyroscopic moment M_g [N m], F_c, Q_i, Q_o [N], δ_i, δ_o [m], α_i, α_o [rad], ω_m, ω_R
+    [rad/s], in the order of :data:`STATE_NAMES`.
+    """
+    d = cst[C_D]
+    dm = cst[C_DM]
+    ro = _sqrt_cs(x1 * x1 + x2 * x2)
+    e1 = a1 - x1
+    e2 = a2 - x2
+    ri = _sqrt_cs(e1 * e1 + e2 * e2)
+    cos_o = x2 / ro
+    sin_o = x1 / ro
+    cos_i = e2 / ri
+    sin_i = e1 / ri
+    alpha_o = _atan_cs(x1 / x2)
+    alpha_i = _atan_cs(e1 / e2)
+    d_o = ro - cst[C_RO0]
+    d_i = ri - cst[C_RI0]
+    k_i = ki0 + ki1 * (alpha_i - ai_c)
+    k_o = ko0 + ko1 * (alpha_o - ao_c)
+    q_i = _hertz(d_i, k_i)
+    q_o = _hertz(d_o, k_o)
+    if speed_on:
+        gamma = d / dm
+        wm, wr, sb = _speeds_cs(
+            cos_i, sin_i, cos_o, sin_o, gamma, cst[C_INNER], cst[C_OUTER], cst[C_INNER_CONTROL]
+        )
+        fc = 0.5 * cst[C_MASS] * dm * wm * wm
+        mg = cst[C_INERTIA] * wr * wm * sb
+    else:
+        wm = 0.0 * x1
+        wr = 0.0 * x1
+        fc = 0.0 * x1
+        mg = 0.0 * x1
+    md = mg / d
+    g1 = q_i * sin_i - q_o * sin_o - md * (lam_i * cos_i - lam_o * cos_o)
+    g2 = q_i * cos_i - q_o * cos_o + md * (lam_i * sin_i - lam_o * sin_o) + fc
+    pa = q_i * sin_i - lam_i * md * cos_i
+    pr = q_i * cos_i + lam_i * md * sin_i
+    return g1, g2, pa, pr, mg, fc, q_i, q_o, d_i, d_o, alpha_i, alpha_o, wm, wr
+
+
+@numba.njit(cache=True)
+def _residual_jacobian(x1, x2, a1, a2, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o, speed_on):
+    """g (2,) and ∂g/∂X (2×2) of one ball by complex step; (g1, g2, j00, j01, j10, j11)."""
+    ca1 = complex(a1, 0.0)
+    ca2 = complex(a2, 0.0)
+    s = _ball_state(
+        complex(x1, _H),
+        complex(x2, 0.0),
+        ca1,
+        ca2,
+        ki0,
+        ki1,
+        ai_c,
+        ko0,
+        ko1,
+        ao_c,
+        cst,
+        lam_i,
+        lam_o,
+        speed_on,
+    )
+    g1 = s[0].real
+    g2 = s[1].real
+    j00 = s[0].imag / _H
+    j10 = s[1].imag / _H
+    s = _ball_state(
+        complex(x1, 0.0),
+        complex(x2, _H),
+        ca1,
+        ca2,
+        ki0,
+        ki1,
+        ai_c,
+        ko0,
+        ko1,
+        ao_c,
+        cst,
+        lam_i,
+        lam_o,
+        speed_on,
+    )
+    j01 = s[0].imag / _H
+    j11 = s[1].imag / _H
+    return g1, g2, j00, j01, j10, j11
+
+
+@numba.njit(cache=True)
+def _approaches(
+    x1: float, x2: float, a1: float, a2: float, ri0: float, ro0: float
+) -> tuple[float, float]:
+    """δ_i, δ_o [m] at ball centre (x1, x2) and groove centre (a1, a2) (seed 001 eq. 5-6)."""
+    return math.hypot(a1 - x1, a2 - x2) - ri0, math.hypot(x1, x2) - ro0
+
+
+# --------------------------------------------------------------------------------------------
+# ball equilibrium
+# --------------------------------------------------------------------------------------------
+@numba.njit(cache=True)
+def _ball_newton(
+    xs, aa, idx, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o, speed_on, tol, done
+):
+    """2×2 Newton on eq. 3-4 of the balls ``idx`` (rows of ``xs``, ``aa``), in place.
+
+    Every ball takes its Newton step, shortened so that neither approach shrinks by more than
+    90 % (the Hertz stiffness vanishes at zero approach) and so that no component exceeds
+    0.25 % of the groove radii; all balls iterate until all have converged (a full step at
+    most ``tol`` [m]). ``done`` receives the per-ball convergence.
+    """
+    n = idx.size
+    ri0 = cst[C_RI0]
+    ro0 = cst[C_RO0]
+    limit = 0.25 * (ri0 + ro0) * 0.05
+    for m in range(n):
+        done[m] = False
+    for _ in range(BALL_ITER):
+        all_done = True
+        for m in range(n):
+            j = idx[m]
+            x1 = xs[m, 0]
+            x2 = xs[m, 1]
+            a1 = aa[m, 0]
+            a2 = aa[m, 1]
+            g1, g2, j00, j01, j10, j11 = _residual_jacobian(
+                x1,
+                x2,
+                a1,
+                a2,
+                ki0[j],
+                ki1[j],
+                ai_c[j],
+                ko0[j],
+                ko1[j],
+                ao_c[j],
+                cst,
+                lam_i,
+                lam_o,
+                speed_on,
+            )
+            det = j00 * j11 - j01 * j10
+            ok = abs(det) > 0.0
+            if not ok:
+                det = 1.0
+            s0 = -(j11 * g1 - j01 * g2) / det
+            s1 = -(j00 * g2 - j10 * g1) / det
+            if not ok:
+                s0 = 0.0
+                s1 = 0.0
+            big = max(abs(s0), abs(s1))
+            factor = min(1.0, limit / max(big, 1e-300))
+            d_i, d_o = _approaches(x1, x2, a1, a2, ri0, ro0)
+            for _ in range(_SHRINK):
+                ti, to = _approaches(x1 + factor * s0, x2 + factor * s1, a1, a2, ri0, ro0)
+                if not (ti < 0.1 * d_i or to < 0.1 * d_o):
+                    break
+                factor = 0.5 * factor
+            xs[m, 0] = x1 + factor * s0
+            xs[m, 1] = x2 + factor * s1
+            done[m] = ok and big <= tol  # the full Newton step, not the shortened one
+            if not done[m]:
+                all_done = False
+        if all_done:
+            break
+
+
+@numba.njit(cache=True)
+def _lifted_off(a, ko0, ko1, ao_c, cst, lam_i, lam_o, x_star, lifted):
+    """Balls whose inner contact opens at speed, and their outer-contact-only centres X*.
+
+    With Q_i = 0 the outer contact alone balances F_c and the gyroscopic friction; a short
+    fixed point (the ball speeds depend on the angles), run until no angle of any ball moves
+    by more than 1e-14 rad. A ball is lifted off when δ_i(X*) <= 0 (module Notes of
+    :mod:`runout.models.equilibrium`).
+    """
+    z = a.shape[0]
+    d = cst[C_D]
+    dm = cst[C_DM]
+    gamma = d / dm
+    mass = cst[C_MASS]
+    inertia = cst[C_INERTIA]
+    ri0 = cst[C_RI0]
+    ro0 = cst[C_RO0]
+    ao = np.empty(z)
+    ai = np.empty(z)
+    d_i = np.zeros(z)
+    for j in range(z):
+        ao[j] = math.atan(a[j, 0] / a[j, 1])
+        ai[j] = ao[j]
+        x_star[j, 0] = 0.0
+        x_star[j, 1] = 0.0
+    for _ in range(BALL_ITER):
+        moved = 0.0
+        for j in range(z):
+            ci = math.cos(ai[j])
+            si = math.sin(ai[j])
+            co = math.cos(ao[j])
+            so = math.sin(ao[j])
+            wm, wr, sb = _speeds(
+                ci, si, co, so, gamma, cst[C_INNER], cst[C_OUTER], cst[C_INNER_CONTROL]
+            )
+            fc = 0.5 * mass * dm * wm * wm
+            md = inertia * wr * wm * sb / d
+            v = md * (lam_i * ci - lam_o * co)
+            w = md * (lam_i * si - lam_o * so) + fc
+            q_o = math.hypot(v, w)
+            ao_new = math.atan2(-v, w)
+            k_o = max(ko0[j] + ko1[j] * (ao_new - ao_c[j]), 1e-300)
+            r = ro0 + (q_o / k_o) ** (2.0 / 3.0)
+            x1 = r * math.sin(ao_new)
+            x2 = r * math.cos(ao_new)
+            x_star[j, 0] = x1
+            x_star[j, 1] = x2
+            e1 = a[j, 0] - x1
+            e2 = a[j, 1] - x2
+            ai_new = math.atan(e1 / e2)
+            d_i[j] = math.hypot(e1, e2) - ri0
+            moved = max(moved, abs(ao_new - ao[j]), abs(ai_new - ai[j]))
+            ao[j] = ao_new
+            ai[j] = ai_new
+        if moved <= 1e-14:
+            break
+    for j in range(z):
+        lifted[j] = d_i[j] <= 0.0
+
+
+@numba.njit(cache=True)
+def _start(
+    a1: float, a2: float, ki0: float, ko0: float, ri0: float, ro0: float
+) -> tuple[float, float]:
+    """Zero-speed ball centre: on the line between the groove centres, Hertz split [m]."""
+    dist = math.hypot(a1, a2)
+    s = max(dist - ri0 - ro0, 0.0)
+    ci = ki0 ** (-2.0 / 3.0)
+    co = ko0 ** (-2.0 / 3.0)
+    d_o = s * co / (ci + co)
+    r = ro0 + d_o
+    return a1 / dist * r, a2 / dist * r
+
+
+# Small loops instead of NumPy array expressions (`.all()`, `~done`, fancy indexing, slice
+# assignment): the same work, but several times less compile time.
+@numba.njit(cache=True)
+def _all(flags: NDArray[np.bool_]) -> bool:
+    """Every entry true."""
+    for m in range(flags.size):
+        if not flags[m]:
+            return False
+    return True
+
+
+@numba.njit(cache=True)
+def _copy_rows(dst: NDArray[np.float64], src: NDArray[np.float64]) -> None:
+    """dst[:] = src for arrays of shape (n, 2)."""
+    for m in range(src.shape[0]):
+        dst[m, 0] = src[m, 0]
+        dst[m, 1] = src[m, 1]
+
+
+@numba.njit(cache=True)
+def _positions(flags, value):
+    """Positions m with flags[m] == value, int64."""
+    n = 0
+    for m in range(flags.size):
+        if flags[m] == value:
+            n += 1
+    out = np.empty(n, dtype=np.int64)
+    n = 0
+    for m in range(flags.size):
+        if flags[m] == value:
+            out[n] = m
+            n += 1
+    return out
+
+
+@numba.njit(cache=True)
+def _friction_continuation(
+    xs, aa, idx, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o, speed_on, tol, done
+):
+    """Ball Newton along the gyroscopic friction, λ → s·λ with s from 0 to 1, in place.
+
+    The last resort of the ball solve (near lift-off under inner-race control): without
+    friction (s = 0) the balance is the centrifugal one; each step starts next to its answer
+    (step halved on failure, down to 1/1024).
+    """
+    n = idx.size
+    _ball_newton(xs, aa, idx, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, 0.0, 0.0, speed_on, tol, done)
+    xt = np.empty((n, 2))
+    ok = np.empty(n, dtype=np.bool_)
+    s, ds = 0.0, 0.25
+    for _ in range(_CONT_PASSES):
+        if not (_all(done) and s < 1.0):
+            return
+        t = min(1.0, s + ds)
+        _copy_rows(xt, xs)
+        lam_ti = t * lam_i
+        lam_to = t * lam_o
+        _ball_newton(
+            xt, aa, idx, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_ti, lam_to, speed_on, tol, ok
+        )
+        if _all(ok):
+            _copy_rows(xs, xt)
+            s, ds = t, min(2.0 * ds, 0.5)
+        elif ds > 1.0 / 1024.0:
+            ds *= 0.5
+        else:
+            _copy_rows(xs, xt)
+            for m in range(n):
+                done[m] = ok[m]
+            return
+
+
+@numba.njit(cache=True)
+def _solve_balls(a, x, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o, speed_on, loaded):
+    """Eq. 3-4 for every loaded ball, in place in ``x`` (Z, 2) from its current value.
+
+    Unloaded balls (a gap at rest, lifted off at speed) go to the outer groove bottom. A loaded
+    ball starts with both contacts closed; one that does not converge is restarted from its
+    outer-contact-only centre X*, then by continuation in the friction (at speed). Returns
+    ``False`` when some ball still does not converge.
+    """
+    z = a.shape[0]
+    ri0 = cst[C_RI0]
+    ro0 = cst[C_RO0]
+    x_star = np.empty((z, 2))
+    if speed_on:
+        _lifted_off(a, ko0, ko1, ao_c, cst, lam_i, lam_o, x_star, loaded)
+        for j in range(z):
+            loaded[j] = not loaded[j]
+    else:
+        for j in range(z):
+            loaded[j] = math.hypot(a[j, 0], a[j, 1]) > ri0 + ro0
+    idx = _positions(loaded, True)
+    n = idx.size
+    if n:
+        xs = np.empty((n, 2))
+        aa = np.empty((n, 2))
+        for m in range(n):
+            j = idx[m]
+            xs[m, 0] = x[j, 0]
+            xs[m, 1] = x[j, 1]
+            aa[m, 0] = a[j, 0]
+            aa[m, 1] = a[j, 1]
+            # start with both contacts closed (the previous state may have had one open)
+            d_i, d_o = _approaches(xs[m, 0], xs[m, 1], aa[m, 0], aa[m, 1], ri0, ro0)
+            if d_i <= 0.0 or d_o <= 0.0:
+                if speed_on:  # the inner groove overlaps X*: both contacts closed there
+                    xs[m, 0] = x_star[j, 0]
+                    xs[m, 1] = x_star[j, 1]
+                else:
+                    xs[m, 0], xs[m, 1] = _start(a[j, 0], a[j, 1], ki0[j], ko0[j], ri0, ro0)
+        tol = 1e-13 * cst[C_SCALE]
+        done = np.empty(n, dtype=np.bool_)
+        _ball_newton(
+            xs, aa, idx, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o, speed_on, tol, done
+        )
+        # at speed, restart the balls that did not converge: from X*, then by continuation
+        for attempt in range(2 if speed_on else 0):
+            redo = _positions(done, False)
+            k = redo.size
+            if k == 0:
+                break
+            xr = np.empty((k, 2))
+            ar = np.empty((k, 2))
+            idx_r = np.empty(k, dtype=np.int64)
+            for r in range(k):
+                m = redo[r]
+                j = idx[m]
+                idx_r[r] = j
+                ar[r, 0] = aa[m, 0]
+                ar[r, 1] = aa[m, 1]
+                if attempt == 0:
+                    xr[r, 0] = x_star[j, 0]
+                    xr[r, 1] = x_star[j, 1]
+                else:
+                    xr[r, 0], xr[r, 1] = _start(ar[r, 0], ar[r, 1], ki0[j], ko0[j], ri0, ro0)
+            dr = np.empty(k, dtype=np.bool_)
+            if attempt == 0:
+                _ball_newton(
+                    xr,
+                    ar,
+                    idx_r,
+                    ki0,
+                    ki1,
+                    ai_c,
+                    ko0,
+                    ko1,
+                    ao_c,
+                    cst,
+                    lam_i,
+                    lam_o,
+                    speed_on,
+                    tol,
+                    dr,
+                )
+            else:
+                _friction_continuation(
+                    xr,
+                    ar,
+                    idx_r,
+                    ki0,
+                    ki1,
+                    ai_c,
+                    ko0,
+                    ko1,
+                    ao_c,
+                    cst,
+                    lam_i,
+                    lam_o,
+                    speed_on,
+                    tol,
+                    dr,
+                )
+            for r in range(k):
+                m = redo[r]
+                xs[m, 0] = xr[r, 0]
+                xs[m, 1] = xr[r, 1]
+                done[m] = dr[r]
+        if not _all(done):
+            return False
+        for m in range(n):
+            x[idx[m], 0] = xs[m, 0]
+            x[idx[m], 1] = xs[m, 1]
+    for j in range(z):
+        if not loaded[j]:  # on the outer groove bottom
+            x[j, 0] = 0.0
+            x[j, 1] = ro0
+    return True
+
+
+# --------------------------------------------------------------------------------------------
+# ring force and stiffness
+# --------------------------------------------------------------------------------------------
+@numba.njit(cache=True)
+def _pairwise_sum(v):
+    """Sum in NumPy's order for a contiguous float64 vector of up to 128 entries.
+
+    ``numpy.sum`` adds fewer than 8 numbers in sequence and up to 128 in eight interleaved
+    partial sums; following that order keeps the ring force bit-for-bit where it cancels
+    (e.g. the radial force of a purely axial load).
+    """
+    n = v.size
+    if n < 8 or n > 128:
+        res = 0.0
+        for i in range(n):
+            res += v[i]
+        return res
+    r0, r1, r2, r3 = v[0], v[1], v[2], v[3]
+    r4, r5, r6, r7 = v[4], v[5], v[6], v[7]
+    i = 8
+    top = n - n % 8
+    while i < top:
+        r0 += v[i]
+        r1 += v[i + 1]
+        r2 += v[i + 2]
+        r3 += v[i + 3]
+        r4 += v[i + 4]
+        r5 += v[i + 5]
+        r6 += v[i + 6]
+        r7 += v[i + 7]
+        i += 8
+    res = ((r0 + r1) + (r2 + r3)) + ((r4 + r5) + (r6 + r7))
+    while i < n:
+        res += v[i]
+        i += 1
+    return res
+
+
+@numba.njit(cache=True)
+def ring_forces(
+    q,
+    cos_psi,
+    sin_psi,
+    x,
+    have_x,
+    ki0,
+    ki1,
+    ai_c,
+    ko0,
+    ko1,
+    ao_c,
+    cst,
+    lam_i,
+    lam_o,
+    speed_on,
+    force,
+    jac,
+    state,
+    loaded,
+):
+    r"""Ring force, its Jacobian and every ball's state at ring displacement ``q``.
+
+    Seed 001 eq. 1-6. The groove centres of ball j are
+
+    .. math::
+        A_{1j} = A\sin\alpha^0 + \delta_a + \Re_i(\theta_x\sin\psi_j - \theta_y\cos\psi_j),\quad
+        A_{2j} = A\cos\alpha^0 + \delta_x\cos\psi_j + \delta_y\sin\psi_j ;
+
+    the balls are solved from their previous centres ``x`` (when ``have_x``; else from the
+    Hertz split on the line of groove centres), and the ring force is
+    :math:`(\sum P_a, \sum P_r\cos\psi, \sum P_r\sin\psi, \sum P_m\sin\psi,
+    -\sum P_m\cos\psi)` with :math:`P_m = P_a\Re_i + \lambda_i f_i M_g`. Its Jacobian is
+    :math:`\sum_j C_j\,(dP/dA)_j\,B_j` with :math:`dP/dA = \partial P/\partial A -
+    \partial P/\partial X\,(\partial g/\partial X)^{-1}\partial g/\partial A` (implicit
+    differentiation of the ball balance, complex-step partial derivatives).
+
+    Parameters
+    ----------
+    q : ndarray, shape (5,)
+        δ_a, δ_x, δ_y [m], θ_x, θ_y [rad].
+    cos_psi, sin_psi : ndarray, shape (Z,)
+        Ball azimuths.
+    x : ndarray, shape (Z, 2)
+        Ball centres from the outer groove centre [m]; updated in place.
+    have_x : bool
+        Whether ``x`` holds a previous solution to start from.
+    ki0, ki1, ai_c, ko0, ko1, ao_c : ndarray, shape (Z,)
+        Hertz constants K = k0 + k1 (α − α_c) of the inner and outer contacts
+        [N/m^1.5, N/m^1.5/rad, rad].
+    cst : ndarray, shape (N_CONST,)
+        Bearing constants (:func:`constants`).
+    lam_i, lam_o : float
+        Raceway-control factors λ_i, λ_o [-].
+    speed_on : bool
+        Centrifugal and gyroscopic effects on.
+    force : ndarray, shape (5,)
+        Out: F_a, F_x, F_y [N], M_x, M_y [N m].
+    jac : ndarray, shape (5, 5)
+        Out: ∂force/∂q.
+    state : ndarray, shape (N_STATE, Z)
+        Out: the ball states in the order of :data:`STATE_NAMES` (SI units).
+    loaded : ndarray of bool, shape (Z,)
+        Out: balls in contact with the inner race.
+
+    Returns
+    -------
+    int
+        :data:`OK`, or :data:`BALLS_DID_NOT_CONVERGE`.
+    """
+    z = cos_psi.size
+    ri0 = cst[C_RI0]
+    ro0 = cst[C_RO0]
+    rad_i = cst[C_RAD_I]
+    a = np.empty((z, 2))
+    for j in range(z):
+        a[j, 0] = cst[C_A1] + q[0] + rad_i * (q[3] * sin_psi[j] - q[4] * cos_psi[j])
+        a[j, 1] = cst[C_A2] + q[1] * cos_psi[j] + q[2] * sin_psi[j]
+        if not have_x:
+            x[j, 0], x[j, 1] = _start(a[j, 0], a[j, 1], ki0[j], ko0[j], ri0, ro0)
+    if not _solve_balls(a, x, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o, speed_on, loaded):
+        return BALLS_DID_NOT_CONVERGE
+    lam_fi = lam_i * cst[C_FI]
+    pa = np.zeros(z)
+    prc = np.zeros(z)
+    prs = np.zeros(z)
+    pms = np.zeros(z)
+    pmc = np.zeros(z)
+    jac[:, :] = 0.0
+    dgx = np.empty((2, 2))
+    dga = np.empty((2, 2))
+    dpx = np.empty((3, 2))
+    dpa = np.empty((3, 2))
+    sol = np.empty((2, 2))
+    loc = np.empty((3, 2))
+    b = np.zeros((2, 5))
+    for j in range(z):
+        # complex steps in X_1, X_2, A_1, A_2: columns of ∂(g, P)/∂(X, A)
+        for k in range(4):
+            x1 = complex(x[j, 0], _H if k == 0 else 0.0)
+            x2 = complex(x[j, 1], _H if k == 1 else 0.0)
+            a1 = complex(a[j, 0], _H if k == 2 else 0.0)
+            a2 = complex(a[j, 1], _H if k == 3 else 0.0)
+            s = _ball_state(
+                x1,
+                x2,
+                a1,
+                a2,
+                ki0[j],
+                ki1[j],
+                ai_c[j],
+                ko0[j],
+                ko1[j],
+                ao_c[j],
+                cst,
+                lam_i,
+                lam_o,
+                speed_on,
+            )
+            dg = dgx if k < 2 else dga
+            dp = dpx if k < 2 else dpa
+            c = k % 2
+            dg[0, c] = s[0].imag / _H
+            dg[1, c] = s[1].imag / _H
+            dp[0, c] = s[2].imag / _H
+            dp[1, c] = s[3].imag / _H
+            dp[2, c] = s[4].imag / _H
+            if k == 0:
+                for r in range(N_STATE):
+                    state[r, j] = s[r].real
+        if not loaded[j]:  # an unloaded ball exerts nothing on the inner ring
+            continue
+        st_pa = state[2, j]
+        st_pr = state[3, j]
+        pm = st_pa * rad_i + lam_fi * state[4, j]
+        pa[j] = st_pa
+        prc[j] = st_pr * cos_psi[j]
+        prs[j] = st_pr * sin_psi[j]
+        pms[j] = pm * sin_psi[j]
+        pmc[j] = pm * cos_psi[j]
+        # (∂g/∂X)^{-1} ∂g/∂A by Cramer's rule (2×2)
+        det = dgx[0, 0] * dgx[1, 1] - dgx[0, 1] * dgx[1, 0]
+        for c in range(2):
+            sol[0, c] = (dgx[1, 1] * dga[0, c] - dgx[0, 1] * dga[1, c]) / det
+            sol[1, c] = (dgx[0, 0] * dga[1, c] - dgx[1, 0] * dga[0, c]) / det
+        # local: rows (P_a, P_r, P_m), columns (A_1, A_2)
+        for r in range(3):
+            for c in range(2):
+                loc[r, c] = dpa[r, c] - (dpx[r, 0] * sol[0, c] + dpx[r, 1] * sol[1, c])
+        loc[2, 0] = loc[0, 0] * rad_i + lam_fi * loc[2, 0]
+        loc[2, 1] = loc[0, 1] * rad_i + lam_fi * loc[2, 1]
+        cp = cos_psi[j]
+        sp = sin_psi[j]
+        # B_j: q -> (A_1, A_2)
+        b[0, 0] = 1.0
+        b[0, 3] = rad_i * sp
+        b[0, 4] = -rad_i * cp
+        b[1, 1] = cp
+        b[1, 2] = sp
+        for col in range(5):
+            la = loc[0, 0] * b[0, col] + loc[0, 1] * b[1, col]
+            lr = loc[1, 0] * b[0, col] + loc[1, 1] * b[1, col]
+            lm = loc[2, 0] * b[0, col] + loc[2, 1] * b[1, col]
+            # C_j: (P_a, P_r, P_m) -> (F_a, F_x, F_y, M_x, M_y)
+            jac[0, col] += la
+            jac[1, col] += cp * lr
+            jac[2, col] += sp * lr
+            jac[3, col] += sp * lm
+            jac[4, col] += -cp * lm
+    force[0] = _pairwise_sum(pa)
+    force[1] = _pairwise_sum(prc)
+    force[2] = _pairwise_sum(prs)
+    force[3] = _pairwise_sum(pms)
+    force[4] = -_pairwise_sum(pmc)
+    return OK

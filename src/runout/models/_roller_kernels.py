@@ -1,0 +1,533 @@
+r"""Compiled kernels of the rigid constraint model (seed 004): support functions, gaps, solve.
+
+Split out of :mod:`runout.models.roller_constraint`, which documents the model (Y. Yu et al.,
+"Prediction method for the radial runout of inner ring in cylindrical roller bearings", Math.
+Probl. Eng., 2017, seed 004 eq. 1-16 and §5) and calls :func:`_solve_all`.
+
+Bodies are packed (:data:`Bodies`, built by ``roller_constraint._pack``): index 0 inner
+raceway, 1 outer raceway, 2 + j roller j. ``r0[b]`` is the base radius and the harmonics of
+body b are ``off[b]:off[b+1]``; the profile in the fixed frame is
+:math:`\rho(\theta) = r_0 + \sum_m a_m\cos(k_m(\theta - \chi) + \varphi_m)` (eq. 1, 4-7)
+with the body's current turn χ.
+
+Work saved per rotation angle (results bit for bit those of the direct method)
+--------------------------------------------------------------------------------
+* The gaps reported at the stable position are those the last feasibility check
+  (:func:`_worst`) computed at that very centre; only the two contact rollers are evaluated
+  again (about a quarter of the gap solves per angle).
+* The candidate rollers are ordered by an insertion sort into a preallocated array.
+* :func:`_solve_all` releases the GIL, so independent solves (the order sweep of the
+  extras) run on parallel threads (``roller_constraint.solve_many``).
+
+Rotating phasors (the profile's harmonics and the Newton angles δ and ψ advanced by
+multiplication instead of sine and cosine) were tried: about 10 % faster here, but they move
+the round-off-level figures of VALIDATION.md (the §6.2 ellipse gaps of ~2e-12), so the
+direct libm evaluation is kept.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba
+import numpy as np
+from numpy.typing import NDArray
+
+FloatArray = NDArray[np.float64]
+IntArray = NDArray[np.int64]
+#: Packed bodies: base radii r0, orders k, amplitudes a, phases φ, offsets.
+Bodies = tuple[FloatArray, FloatArray, FloatArray, FloatArray, IntArray]
+
+#: A roller counts as interfering below this gap [m] (rounding of the gap is ~1e-17 m).
+TOL_FEASIBLE = 1e-13
+#: A KKT multiplier below ``-TOL_MULTIPLIER`` means the vertex is not the stable one [-].
+TOL_MULTIPLIER = 1e-9
+
+# status codes of the compiled solver
+_OK = 0
+_NO_STRADDLE = 1
+_NO_VERTEX = 2
+_NO_STABLE = 3
+_SETTLE_FAIL = 4
+_FAR_CONTACT = 5
+
+
+@numba.njit(cache=True)
+def _profile(
+    r0: float, k: FloatArray, a: FloatArray, p: FloatArray, lo: int, hi: int, x: float
+) -> tuple[float, float, float]:
+    r = r0
+    d1 = 0.0
+    d2 = 0.0
+    for i in range(lo, hi):
+        arg = k[i] * x + p[i]
+        c = math.cos(arg)
+        s = math.sin(arg)
+        r += a[i] * c
+        d1 -= a[i] * k[i] * s
+        d2 -= a[i] * k[i] * k[i] * c
+    return r, d1, d2
+
+
+@numba.njit(cache=True)
+def _support(b: int, bt: Bodies, shift: float, psi: float) -> tuple[float, float, float]:
+    """Support value h(ψ), its derivative h'(ψ) and the radius of curvature at the support point."""
+    r0, k, a, p, off = bt
+    lo = off[b]
+    hi = off[b + 1]
+    if hi == lo:
+        return r0[b], 0.0, r0[b]
+    # Newton on the support condition ρ'cos δ - ρ sin δ = 0; quadratic convergence, so once
+    # a step is below 1e-9 rad the next would be below ~1e-16 rad and we stop. h is taken at
+    # the last evaluated δ (it is stationary there, error O(step² ρ)), h' at the updated δ.
+    delta = 0.0
+    r = d1 = d2 = 0.0
+    h = h1 = 0.0
+    for _ in range(40):
+        r, d1, d2 = _profile(r0[b], k, a, p, lo, hi, psi + delta - shift)
+        cd = math.cos(delta)
+        sd = math.sin(delta)
+        f = d1 * cd - r * sd
+        fp = d2 * cd - 2.0 * d1 * sd - r * cd
+        step = f / fp
+        h = r * cd
+        delta -= step
+        if abs(step) < 1e-9:
+            break
+    h1 = r * math.sin(delta)
+    rc = (r * r + d1 * d1) ** 1.5 / (r * r + 2.0 * d1 * d1 - r * d2)
+    return h, h1, rc
+
+
+@numba.njit(cache=True)
+def _gap(
+    ba: int,
+    sa: float,
+    bb: int,
+    sb: float,
+    dx: float,
+    dy: float,
+    bt: Bodies,
+    inside: bool,
+) -> tuple[float, float, float]:
+    """Signed distance between body A (centre 0) and body B (centre d); normal angle; curvature.
+
+    ``inside=False``: B lies outside A (roller on the inner raceway), the gap is
+    d·n − h_A(ψ) − h_B(ψ + π). ``inside=True``: A encloses B (roller in the outer raceway), the
+    gap is h_A(ψ) − h_B(ψ) − d·n. Newton on ψ makes the gap stationary (support functions h).
+    """
+    sign = -1.0 if inside else 1.0  # B's support enters with this sign, the gap with it too
+    turn = 0.0 if inside else math.pi
+    psi = math.atan2(dy, dx)
+    g = 0.0
+    rk = 0.0
+    for _ in range(40):
+        ha, h1a, rca = _support(ba, bt, sa, psi)
+        hb, h1b, rcb = _support(bb, bt, sb, psi + turn)
+        c = math.cos(psi)
+        s = math.sin(psi)
+        nd = c * dx + s * dy
+        g = sign * (nd - ha - sign * hb)
+        rk = rca + sign * rcb
+        f1 = -s * dx + c * dy - h1a - sign * h1b
+        f2 = -nd + ha + sign * hb - rca - sign * rcb
+        step = f1 / f2
+        psi -= step
+        if abs(step) < 1e-9:  # quadratic convergence: g is stationary in ψ, error O(step²|d|)
+            break
+    return g, psi, rk
+
+
+@numba.njit(cache=True)
+def _constraint(
+    mode: int,
+    j: int,
+    cx: float,
+    cy: float,
+    rx: FloatArray,
+    ry: FloatArray,
+    sh: FloatArray,
+    bt: Bodies,
+) -> tuple[float, float, float]:
+    """Gap C_j(c) between roller j and the loaded ring centred at c, and its gradient in c."""
+    dx = rx[j] - cx
+    dy = ry[j] - cy
+    inner_body = 2 + j + (bt[0].size - 2 - rx.size)  # seed 004's reading: see _pack
+    if mode == 0:
+        g, psi, _ = _gap(0, sh[0], inner_body, sh[2], dx, dy, bt, False)
+        return g, -math.cos(psi), -math.sin(psi)
+    g, psi, _ = _gap(1, sh[1], 2 + j, sh[2], dx, dy, bt, True)
+    return g, math.cos(psi), math.sin(psi)
+
+
+@numba.njit(cache=True)
+def _vertex(
+    mode: int,
+    ja: int,
+    jb: int,
+    cx: float,
+    cy: float,
+    ux: float,
+    uy: float,
+    rx: FloatArray,
+    ry: FloatArray,
+    sh: FloatArray,
+    bt: Bodies,
+) -> tuple[float, float, float, float, bool]:
+    """Newton solve of C_a(c) = C_b(c) = 0; returns c, the KKT multipliers and success."""
+    lam_a = lam_b = 0.0
+    for _ in range(60):
+        ca, gax, gay = _constraint(mode, ja, cx, cy, rx, ry, sh, bt)
+        cb, gbx, gby = _constraint(mode, jb, cx, cy, rx, ry, sh, bt)
+        det = gax * gby - gay * gbx
+        if abs(det) < 1e-10:
+            return cx, cy, 0.0, 0.0, False
+        ddx = (-ca * gby + cb * gay) / det
+        ddy = (-gax * cb + gbx * ca) / det
+        lam_a = (-ux * gby + uy * gbx) / det
+        lam_b = (-gax * uy + gay * ux) / det
+        cx += ddx
+        cy += ddy
+        step = math.hypot(ddx, ddy)
+        if step > 1e-2:
+            return cx, cy, 0.0, 0.0, False
+        if step <= 1e-10:  # quadratic convergence: remaining error ~ step² / radius
+            return cx, cy, lam_a, lam_b, True
+    return cx, cy, lam_a, lam_b, False
+
+
+@numba.njit(cache=True)
+def _far_bound(
+    mode: int,
+    j: int,
+    cx: float,
+    cy: float,
+    rx: FloatArray,
+    ry: FloatArray,
+    r0: FloatArray,
+    dev: FloatArray,
+) -> float:
+    """Lower bound on the gap of a roller far from the load zone (placed at its nominal radius).
+
+    Settling moves the roller by at most dev(fixed ring) + dev(roller) along its radius, so
+    the gap is at least the circle gap minus twice the deviations involved.
+    """
+    dist = math.hypot(rx[j] - cx, ry[j] - cy)
+    if mode == 0:
+        gap = dist - r0[0] - r0[2 + j]
+        slack = dev[0] + dev[1] + 2.0 * dev[2 + j]
+    else:
+        gap = r0[1] - r0[2 + j] - dist
+        slack = dev[0] + dev[1] + 2.0 * dev[2 + j]
+    return gap - slack
+
+
+@numba.njit(cache=True)
+def _worst(
+    mode: int,
+    skip1: int,
+    skip2: int,
+    cx: float,
+    cy: float,
+    rx: FloatArray,
+    ry: FloatArray,
+    far: NDArray[np.bool_],
+    dev: FloatArray,
+    sh: FloatArray,
+    bt: Bodies,
+    wg: FloatArray,
+) -> tuple[int, float]:
+    """The roller that interferes most with the loaded ring at c (-1 if none).
+
+    ``wg[j]`` receives the exact gap of every roller it evaluates, NaN for the others (the
+    skipped ones and the far ones cleared by their bound).
+    """
+    worst = -1
+    wgap = -TOL_FEASIBLE
+    for j in range(rx.size):
+        wg[j] = math.nan
+        if j == skip1 or j == skip2:
+            continue
+        if far[j] and _far_bound(mode, j, cx, cy, rx, ry, bt[0], dev) > 0.0:
+            continue
+        gj, _, _ = _constraint(mode, j, cx, cy, rx, ry, sh, bt)
+        wg[j] = gj
+        if gj < wgap:
+            wgap = gj
+            worst = j
+    return worst, wgap
+
+
+@numba.njit(cache=True)
+def _single(
+    j: int,
+    wx: float,
+    wy: float,
+    rx: FloatArray,
+    ry: FloatArray,
+    sh: FloatArray,
+    bt: Bodies,
+) -> tuple[float, float]:
+    """Outer ring hanging on roller j alone: the contact normal points along w = -u.
+
+    With ψ_w the angle of w, G = 0 and stationarity in ψ give the roller centre relative to
+    the ring as d = (h_E - h_B) w + (h_E' - h_B') t, t ⊥ w, in closed form.
+    """
+    psi = math.atan2(wy, wx)
+    cw = math.cos(psi)
+    sw = math.sin(psi)
+    he, h1e, _ = _support(1, bt, sh[1], psi)
+    hb, h1b, _ = _support(2 + j, bt, sh[2], psi)
+    tx = -sw
+    ty = cw
+    dx = (he - hb) * wx + (h1e - h1b) * tx
+    dy = (he - hb) * wy + (h1e - h1b) * ty
+    return rx[j] - dx, ry[j] - dy
+
+
+@numba.njit(cache=True, nogil=True)
+def _solve_all(
+    alphas: FloatArray,
+    mode: int,
+    bt: Bodies,
+    beta0: FloatArray,
+    cage: float,
+    spin: float,
+    inner_turns: float,
+    outer_turns: float,
+    ux: float,
+    uy: float,
+    c0x: float,
+    c0y: float,
+    out_c: FloatArray,
+    out_pair: NDArray[np.int64],
+    out_lam: FloatArray,
+    out_gap: FloatArray,
+    out_rc: FloatArray,
+    out_status: NDArray[np.int64],
+) -> None:
+    z = beta0.size
+    r0, _, a, _, off = bt
+    sh = np.empty(3)  # turns χ of the inner ring, the outer ring and the rollers
+    wg = np.empty(z)  # gaps of the last _worst call
+    kept = np.empty(z)  # gaps at the accepted position, NaN where not known
+    shift = r0.size - 2 - z  # Z with seed 004's roller reading (inner contacts: see _pack)
+    rx = np.empty(z)
+    ry = np.empty(z)
+    phi = np.empty(z)
+    cx = c0x
+    cy = c0y
+    # contact side: rollers around +u (inner ring loaded) or around -u (outer ring loaded)
+    wx = ux if mode == 0 else -ux
+    wy = uy if mode == 0 else -uy
+    cand = np.empty(z, dtype=np.int64)
+    sc = np.empty(z, dtype=np.int64)  # candidates sorted by angle
+    far = np.zeros(z, dtype=np.bool_)
+    lim = 0.5 * math.pi + 2.0 * math.pi / z
+    # largest deviation of each body from its base radius (for the far-roller bound)
+    nb = r0.size
+    dev = np.zeros(nb)
+    for b in range(nb):
+        for i in range(off[b], off[b + 1]):
+            dev[b] += abs(a[i])
+    for n in range(alphas.size):
+        alpha = alphas[n]
+        # e^{-i shift} of the inner ring, the outer ring and the rollers at this angle
+        kept[:] = math.nan
+        sh[0] = inner_turns * alpha
+        sh[1] = outer_turns * alpha
+        sh[2] = spin * alpha
+        status = _OK
+        # 1. rollers near the contact side settle radially onto the fixed ring (§5.1); the
+        #    others only need a safe lower bound on their gap (checked below)
+        nc = 0
+        for j in range(z):
+            beta = beta0[j] + cage * alpha
+            ex = math.cos(beta)
+            ey = math.sin(beta)
+            phi[j] = math.atan2(wx * ey - wy * ex, wx * ex + wy * ey)
+            if abs(phi[j]) >= lim:
+                far[j] = True
+                # nominal circle position, exact settling not needed for a bound
+                s = r0[1] - r0[2 + j] if mode == 0 else r0[0] + r0[2 + j]
+                rx[j] = s * ex
+                ry[j] = s * ey
+                out_rc[n, j, 0] = rx[j]
+                out_rc[n, j, 1] = ry[j]
+                continue
+            far[j] = False
+            cand[nc] = j
+            nc += 1
+            if mode == 0:
+                s = r0[1] - r0[2 + j]
+            else:
+                s = r0[0] + r0[2 + j]
+            ok = False
+            for _ in range(40):
+                if mode == 0:
+                    g, psi, _ = _gap(1, sh[1], 2 + j, sh[2], s * ex, s * ey, bt, True)
+                    ds = g / (math.cos(psi) * ex + math.sin(psi) * ey)
+                else:
+                    g, psi, _ = _gap(0, sh[0], 2 + j + shift, sh[2], s * ex, s * ey, bt, False)
+                    ds = -g / (math.cos(psi) * ex + math.sin(psi) * ey)
+                s += ds
+                if abs(ds) <= 1e-10:  # Newton on a nearly linear gap: next step < 1e-18 m
+                    ok = True
+                    break
+            if not ok:
+                status = _SETTLE_FAIL
+            rx[j] = s * ex
+            ry[j] = s * ey
+            out_rc[n, j, 0] = rx[j]
+            out_rc[n, j, 1] = ry[j]
+        if status != _OK:
+            out_status[n] = status
+            continue
+        # 2. candidates sorted by angle from the contact side
+        for i in range(nc):  # insertion sort (a dozen rollers; no allocation per angle)
+            j = cand[i]
+            m = i
+            while m > 0 and phi[sc[m - 1]] > phi[j]:
+                sc[m] = sc[m - 1]
+                m -= 1
+            sc[m] = j
+        ia = -1
+        for i in range(nc):
+            if phi[sc[i]] <= 0.0:
+                ia = i
+        ib = ia + 1
+        if ia < 0 or ib >= nc:
+            out_status[n] = _NO_STRADDLE
+            continue
+        # 3. active-set walk over two-contact vertices
+        found = False
+        single = -1
+        bx = by = 0.0
+        la = lb = 0.0
+        for _ in range(4 * z):
+            vx, vy, lam_a, lam_b, conv = _vertex(
+                mode,
+                sc[ia],
+                sc[ib],
+                cx,
+                cy,
+                ux,
+                uy,
+                rx,
+                ry,
+                sh,
+                bt,
+            )
+            if not conv:
+                break
+            if lam_a < -TOL_MULTIPLIER or lam_b < -TOL_MULTIPLIER:
+                keep = sc[ib] if lam_a < -TOL_MULTIPLIER else sc[ia]
+                if mode == 1:
+                    # the hoop may hang on the kept roller alone (convex admissible set)
+                    qx, qy = _single(keep, wx, wy, rx, ry, sh, bt)
+                    wj, _ = _worst(mode, keep, keep, qx, qy, rx, ry, far, dev, sh, bt, wg)
+                    if wj < 0:
+                        found = True
+                        kept[:] = wg
+                        bx, by, la, lb = qx, qy, 1.0, 0.0
+                        ia = ib = -1
+                        single = keep
+                        break
+                if lam_a < -TOL_MULTIPLIER:
+                    ia = ib
+                    ib = ib + 1
+                    if ib >= nc:
+                        break
+                else:
+                    ib = ia
+                    ia = ia - 1
+                    if ia < 0:
+                        break
+                continue
+            worst, _ = _worst(mode, sc[ia], sc[ib], vx, vy, rx, ry, far, dev, sh, bt, wg)
+            if worst >= 0 and far[worst]:
+                out_status[n] = _FAR_CONTACT
+                break
+            if worst < 0:
+                found = True
+                kept[:] = wg
+                bx, by, la, lb = vx, vy, lam_a, lam_b
+                break
+            pos = -1
+            for i in range(nc):
+                if sc[i] == worst:
+                    pos = i
+            if pos < 0:
+                break
+            if phi[worst] > 0.0:
+                ib = pos
+            else:
+                ia = pos
+            if ia > ib:
+                ia, ib = ib, ia
+            if ia == ib:
+                break
+        if out_status[n] == _FAR_CONTACT:
+            continue
+        if not found:
+            # 4. fall-back: every pair of candidates, keep the lowest admissible KKT vertex
+            best = -1e300
+            for i1 in range(nc):
+                for i2 in range(i1 + 1, nc):
+                    vx, vy, lam_a, lam_b, conv = _vertex(
+                        mode,
+                        sc[i1],
+                        sc[i2],
+                        cx,
+                        cy,
+                        ux,
+                        uy,
+                        rx,
+                        ry,
+                        sh,
+                        bt,
+                    )
+                    if not conv or lam_a < -TOL_MULTIPLIER or lam_b < -TOL_MULTIPLIER:
+                        continue
+                    wj, _ = _worst(mode, sc[i1], sc[i2], vx, vy, rx, ry, far, dev, sh, bt, wg)
+                    if wj < 0 and ux * vx + uy * vy > best:
+                        best = ux * vx + uy * vy
+                        bx, by, la, lb = vx, vy, lam_a, lam_b
+                        ia, ib = i1, i2
+                        single = -1
+                        found = True
+            if mode == 1:
+                for i1 in range(nc):
+                    qx, qy = _single(sc[i1], wx, wy, rx, ry, sh, bt)
+                    wj, _ = _worst(mode, sc[i1], sc[i1], qx, qy, rx, ry, far, dev, sh, bt, wg)
+                    if wj < 0 and ux * qx + uy * qy > best:
+                        best = ux * qx + uy * qy
+                        bx, by, la, lb = qx, qy, 1.0, 0.0
+                        single = sc[i1]
+                        found = True
+        if not found:
+            out_status[n] = _NO_STABLE
+            continue
+        cx = bx
+        cy = by
+        out_c[n, 0] = cx
+        out_c[n, 1] = cy
+        if single >= 0:
+            out_pair[n, 0] = single
+            out_pair[n, 1] = single
+        else:
+            out_pair[n, 0] = sc[ia]
+            out_pair[n, 1] = sc[ib]
+        out_lam[n, 0] = la
+        out_lam[n, 1] = lb
+        for j in range(z):
+            if far[j]:
+                gj = _far_bound(mode, j, cx, cy, rx, ry, r0, dev)
+                if gj <= 0.0:
+                    out_status[n] = _FAR_CONTACT
+                out_gap[n, j] = gj
+                continue
+            gj = kept[j]
+            if math.isnan(gj):  # else known from the accepted search's last _worst, same c
+                gj, _, _ = _constraint(mode, j, cx, cy, rx, ry, sh, bt)
+            out_gap[n, j] = gj

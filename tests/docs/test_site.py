@@ -1,0 +1,111 @@
+"""The documentation site builds strictly and reads cleanly (issue 17's docs checks).
+
+Builds the whole site with mkdocs (a few seconds; KaTeX is fetched once into ``out/katex``)
+and checks it as a reader would: no raw Sphinx roles, reST tables or TeX outside rendered
+mathematics, no link leaving the site, KaTeX present. The converter and the checker are unit
+tested on small inputs too, so a checker that found nothing cannot pass silently.
+"""
+
+from __future__ import annotations
+
+import pkgutil
+import sys
+from pathlib import Path
+
+import pytest
+import yaml
+
+import runout
+
+ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT / "docs_hooks"))
+
+from build import build  # noqa: E402
+from griffe_rst import rst_to_markdown  # noqa: E402
+from site_check import check_page  # noqa: E402
+
+#: Modules that are tools of the project, not API (the CLI, the generators of docs pages).
+NOT_API = {"runout.cli", "runout.reproduce", "runout.schema_doc"}
+
+
+@pytest.fixture(scope="module")
+def site(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, list[str]]:
+    site_dir = tmp_path_factory.mktemp("site")
+    return site_dir, build(site_dir)
+
+
+def test_built_site_has_no_raw_markup_and_no_link_outside(site: tuple[Path, list[str]]) -> None:
+    site_dir, problems = site
+    assert problems == []
+    assert (site_dir / "assets" / "katex" / "katex.min.js").is_file()
+
+
+def test_mathematics_is_marked_for_katex(site: tuple[Path, list[str]]) -> None:
+    site_dir, _ = site
+    page = (site_dir / "models" / "linear" / "index.html").read_text(encoding="utf-8")
+    assert page.count('class="arithmatex"') >= 5
+    assert "assets/katex/katex.min.js" in page
+    api = (site_dir / "api" / "runout.imperfections" / "index.html").read_text(encoding="utf-8")
+    assert 'class="arithmatex"' in api  # a ``.. math::`` docstring block, converted
+
+
+def test_every_public_module_has_an_api_page_in_the_nav() -> None:
+    nav = (ROOT / "mkdocs.yml").read_text(encoding="utf-8")
+    config = yaml.load(nav, Loader=yaml.BaseLoader)
+    pages = str(config["nav"])
+    public = (
+        {
+            f"runout.{m.name}"
+            for m in pkgutil.iter_modules(runout.__path__)
+            if not m.name.startswith("_")
+        }
+        | {
+            f"runout.models.{m.name}"
+            for m in pkgutil.iter_modules([str(Path(runout.__path__[0]) / "models")])
+            if not m.name.startswith("_")
+        }
+        | {"runout.models"}
+    )
+    for module in sorted(public - NOT_API):
+        page = ROOT / "docs" / "api" / f"{module}.md"
+        assert page.is_file(), f"no API page for {module}"
+        assert f"::: {module}" in page.read_text(encoding="utf-8")
+        assert f"api/{module}.md" in pages, f"{module} missing from the nav"
+
+
+def test_converter_turns_roles_math_and_tables_into_markdown() -> None:
+    text = rst_to_markdown(
+        "See :func:`~runout.models.run_model` and :class:`runout.results.RunResult`,\n"
+        "with :math:`\\alpha` here.\n"
+        "\n"
+        ".. math:: x = y^{2}\n"
+        "\n"
+        "====  =====\n"
+        "a     b\n"
+        "====  =====\n"
+        "1     two\n"
+        "      more\n"
+        "3     four\n"
+        "====  =====\n"
+    )
+    assert "`run_model()`" in text and "`runout.results.RunResult`" in text
+    assert "\\(\\alpha\\)" in text
+    assert "$$\nx = y^{2}\n$$" in text
+    assert "| a | b |" in text and "| 1 | two more |" in text and "| 3 | four |" in text
+    assert ":func:" not in text and "====" not in text
+
+
+def test_checker_finds_what_it_is_for(tmp_path: Path) -> None:
+    page = tmp_path / "p.html"
+    page.write_text(
+        "<p>see :func:<code>x</code> and e^{iθ} and "
+        '<span class="arithmatex">\\(e^{i\\theta}\\)</span></p>'
+        "<p>==== ====</p><code>e^{ok}</code>"
+        '<a href="../../shared/seeds/x.txt">paper</a><a href="missing.html">m</a>',
+        encoding="utf-8",
+    )
+    found = "\n".join(check_page(tmp_path, page))
+    assert "raw Sphinx role" in found
+    assert found.count("raw TeX") == 1  # the one outside math and code
+    assert "reST table" in found
+    assert "link leaves the site" in found and "broken link" in found

@@ -1,0 +1,50 @@
+"""write_columns writes the bytes csv.writer wrote with f"{v:.12g}" per value."""
+
+from __future__ import annotations
+
+import csv
+from pathlib import Path
+
+import numpy as np
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from hypothesis.extra.numpy import arrays
+
+from runout import results
+from runout.results import write_columns
+
+
+def _reference(path: Path, header: list[str], columns: list[np.ndarray]) -> None:
+    """The former row-by-row writer of history.csv."""
+    with path.open("w", newline="") as fh:
+        w = csv.writer(fh)
+        w.writerow(header)
+        for row in zip(*columns, strict=True):
+            w.writerow([f"{v:.12g}" for v in row])
+
+
+floats = st.floats(allow_nan=False, allow_infinity=False, width=64)
+
+
+@settings(max_examples=60, deadline=None)
+@given(data=arrays(np.float64, st.tuples(st.just(4), st.integers(0, 300)), elements=floats))
+def test_same_bytes_as_csv_writer(tmp_path_factory, data: np.ndarray) -> None:
+    d = tmp_path_factory.mktemp("csv")
+    header = ["time_s", "x_m", "y_m", "z_m"]
+    cols = list(data)
+    _reference(d / "a.csv", header, cols)
+    write_columns(d / "b.csv", header, cols)
+    assert (d / "a.csv").read_bytes() == (d / "b.csv").read_bytes()
+
+
+def test_chunks_and_special_values(tmp_path: Path, monkeypatch) -> None:
+    monkeypatch.setattr(results, "_CSV_CHUNK", 7)  # several chunks, a partial last one
+    rng = np.random.default_rng(1)
+    cols = [np.arange(50) * 1e-5, rng.normal(size=50) * 1e-8, np.zeros(50), -np.zeros(50)]
+    cols[1][3] = np.inf
+    cols[1][4] = np.nan
+    cols[2][5] = 1e300
+    cols[2][6] = 5e-324
+    _reference(tmp_path / "a.csv", ["t", "x", "y", "z"], cols)
+    write_columns(tmp_path / "b.csv", ["t", "x", "y", "z"], cols)
+    assert (tmp_path / "a.csv").read_bytes() == (tmp_path / "b.csv").read_bytes()
