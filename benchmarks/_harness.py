@@ -17,6 +17,9 @@ class BenchResult:
     reference: str
     target: str
     met: bool
+    #: Unit of ``ours_s`` and ``reference_s``: "s" for times (the default) or "B/instant" for
+    #: memory benchmarks, whose two fields then hold bytes per instant.
+    unit: str = "s"
 
     @property
     def ratio(self) -> float:

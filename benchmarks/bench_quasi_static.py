@@ -386,3 +386,50 @@ def bench_cli_run_warm_start() -> BenchResult:
         target="< 2 s on a warm cache",
         met=times[1] < 2.0,
     )
+
+
+def _peak_rss(cmd: list[str]) -> float:
+    """Peak resident memory of one command [B], measured by a fresh parent of its own.
+
+    ``ru_maxrss`` of the children is the largest child a process ever had, so a parent that
+    ran anything bigger before could not see this one: a new Python process runs only it.
+    Linux reports ru_maxrss in KiB.
+    """
+    probe = (
+        "import resource, subprocess, sys; "
+        "subprocess.run(sys.argv[1:], check=True, capture_output=True); "
+        "print(resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)"
+    )
+    done = subprocess.run(
+        [sys.executable, "-c", probe, *cmd], check=True, capture_output=True, text=True
+    )
+    return 1024.0 * float(done.stdout.strip())
+
+
+def bench_memory_per_instant_2e22() -> BenchResult:
+    """Peak memory growth per instant of ``runout run --json`` from 2^20 to 2^22 instants.
+
+    The slope of the whole command's peak RSS (Python, NumPy, numba and the imports cancel):
+    the record, the solve and the decomposition. Issue target: <= 100 B per instant; the
+    reference column is the previous code's 376 B per instant, measured the same way (not
+    re-run: it is the figure the target was set against).
+    """
+    exe = Path(sys.executable).with_name("runout")
+    with tempfile.TemporaryDirectory() as tmp:
+        (Path(tmp) / "small").mkdir()
+        (Path(tmp) / "large").mkdir()
+        small = _big_case(Path(tmp) / "small", 1 << 20)
+        large = _big_case(Path(tmp) / "large", 1 << 22)
+        rss_small = _peak_rss([str(exe), "run", str(small), "--json"])
+        rss_large = _peak_rss([str(exe), "run", str(large), "--json"])
+    per_instant = (rss_large - rss_small) / float((1 << 22) - (1 << 20))
+    print(f"  peak RSS: 2^20 {rss_small / 2**20:.0f} MiB, 2^22 {rss_large / 2**20:.0f} MiB")
+    return BenchResult(
+        name="quasi_static_3d peak memory per instant, 2^20 -> 2^22 (runout run --json)",
+        ours_s=per_instant,
+        reference_s=376.0,
+        reference="before issue 16 (same measure)",
+        target="<= 100 B per instant at 2^22 instants",
+        met=per_instant <= 100.0,
+        unit="B/instant",
+    )

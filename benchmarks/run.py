@@ -33,6 +33,11 @@ def _load(path: Path):  # type: ignore[no-untyped-def]
     return module
 
 
+def _value(value: float, unit: str) -> str:
+    """A benchmark's figure in its unit (durations scaled to s, ms or µs)."""
+    return _time(value) if unit == "s" else f"{value:.3g} {unit}"
+
+
 def _time(seconds: float) -> str:
     """A duration with a unit that keeps 3-4 significant digits."""
     if seconds >= 1.0:
@@ -57,8 +62,8 @@ def markdown(results: list[BenchResult], machine: str) -> str:
     ]
     for r in results:
         lines.append(
-            f"| {_cell(r.name)} | {_time(r.ours_s)} | {_cell(r.reference)}: "
-            f"{_time(r.reference_s)} | ×{r.ratio:.3g} | {_cell(r.target)} | "
+            f"| {_cell(r.name)} | {_value(r.ours_s, r.unit)} | {_cell(r.reference)}: "
+            f"{_value(r.reference_s, r.unit)} | ×{r.ratio:.3g} | {_cell(r.target)} | "
             f"{'yes' if r.met else '**no**'} |"
         )
     return "\n".join(lines) + "\n"
@@ -81,6 +86,7 @@ def write_outputs(results: list[BenchResult], out: Path = OUT) -> tuple[Path, Pa
                 "ratio": r.ratio,
                 "target": r.target,
                 "met": r.met,
+                "unit": r.unit,
             }
             for r in results
         ],
@@ -103,8 +109,8 @@ def main() -> int:
             result = getattr(module, name)()
             results.append(result)
             print(
-                f"{result.name:<48} ours {result.ours_s * 1e3:10.3f} ms   "
-                f"{result.reference:<28} {result.reference_s * 1e3:10.3f} ms   "
+                f"{result.name:<48} ours {_value(result.ours_s, result.unit):>12}   "
+                f"{result.reference:<28} {_value(result.reference_s, result.unit):>12}   "
                 f"x{result.ratio:9.1f}   target: {result.target}   "
                 f"{'met' if result.met else 'MISSED'}",
                 flush=True,
