@@ -1001,6 +1001,13 @@ def _build_bearing(spec: CaseSpec) -> Bearing:
             material=material,
         )
     assert b.pitch_diameter is not None
+    if not b.element_diameter > 0.0 and (
+        b.inner_groove_radius is not None or b.outer_groove_radius is not None
+    ):  # groove radii are read as conformities r / D below
+        raise GeometryError(
+            "bearing.element_diameter",
+            f"must be a positive finite number, got {b.element_diameter!r}",
+        )
     f_i = b.inner_conformity
     if b.inner_groove_radius is not None:
         f_i = b.inner_groove_radius / b.element_diameter

@@ -112,7 +112,8 @@ BYTES_QUASI_STATIC = 192.0
 #: Bytes per instant and fitted line of the line fit (3 directions x 16 B per block of 256
 #: instants: 0.19 B measured), doubled.
 BYTES_LINE_INSTANT = 0.5
-#: Largest angle the quasi-static models evaluate, 2π x revolutions x the highest order [rad]:
+#: Largest angle the quasi-static models evaluate, 2π x revolutions x the highest order x the
+#: balls' spin ratio d_m / (2 D) (a ball's harmonics turn with its spin) [rad]:
 #: a double holds an angle of 1e9 rad to 1e-7 rad, so beyond it the phases of the record, not
 #: the bearing, set the smallest lines (a perfect bearing over 1e9 revolutions shows 1e-13 m
 #: of round-off runout).
@@ -446,14 +447,17 @@ def estimate_run(case: Any, model: str) -> Estimate:
     elif model in ("quasi_static_2d", "quasi_static_3d"):
         # one solve on the analysis grid; the deviations are evaluated inside the kernel
         n, key = s.samples, "analysis.samples"
-        angle = 2.0 * math.pi * s.revolutions * max(1, s.max_order)
+        # a ball's harmonics turn with its spin, up to d_m / (2 D) times the ring's rotation
+        bearing = case.bearing
+        spin = max(1.0, bearing.pitch_diameter / (2.0 * bearing.element_diameter))
+        angle = 2.0 * math.pi * s.revolutions * max(1, s.max_order) * spin
         if angle > MAX_PHASE_ANGLE:
             raise LimitError(
                 "analysis.revolutions",
                 f"the angles of the record would reach {angle:.3g} rad (2 pi x revolutions x "
-                f"highest order {max(1, s.max_order)}), beyond the {MAX_PHASE_ANGLE:.0e} rad "
-                "within which double precision keeps their phase to 1e-7 rad; lower "
-                "analysis.revolutions",
+                f"highest order {max(1, s.max_order)} x ball spin ratio {spin:.3g}), beyond "
+                f"the {MAX_PHASE_ANGLE:.0e} rad within which double precision keeps their "
+                "phase to 1e-7 rad; lower analysis.revolutions",
             )
         # the line fit keeps partial sums per line, direction and block of 256 instants, and
         # blocks of 2048 instants per line; pairs of ring harmonics add lines (seed 000 eq. 7)
@@ -540,7 +544,7 @@ STUDY_BYTES_PER_RUN = 2048.0
 COST_BATCH = 1.5e-8
 
 
-def _batched_study(case: Any) -> bool:
+def batched_study(case: Any) -> bool:
     """The ball-size Monte Carlo of the unloaded 2-D model, which runs batched (runout.study)."""
     study = case.study
     models = tuple(study.models) if study.models else (case.analysis.model,)
@@ -552,18 +556,50 @@ def _batched_study(case: Any) -> bool:
     )
 
 
+def batched_memory(case: Any, workers: int = 1) -> float:
+    """Memory of a batched ball-size Monte Carlo's arrays [B], summaries apart.
+
+    The shared arrays (time, the balls' approaches and angles, the line projector:
+    :class:`runout._study_pool.BatchArrays`) exist once in this process, and with worker
+    processes once more in every worker and in the pickles of its chunks in flight (two per
+    worker); each concurrent evaluation (a Numba thread in this process, or a worker) holds one
+    pass of rows (:data:`runout._study_pool.PASS_BYTES` at most).
+
+    Parameters
+    ----------
+    case : Case
+    workers : int
+        Worker processes (1: the study runs in this process, one chunk per Numba thread).
+    """
+    from runout._study_pool import BYTES_PER_ROW_INSTANT, PASS_BYTES
+
+    s = sizes_of(case)
+    n = float(s.samples)
+    shared = n * (8.0 + 16.0 * s.elements + 8.0 * (1.0 + 2.0 * s.lines))
+    if workers <= 1:
+        copies, concurrent = 1.0, float(max(2, os.cpu_count() or 1))
+    else:
+        copies, concurrent = 1.0 + 3.0 * workers, float(workers)
+    chunk = float(min(case.study.chunk_size, case.study.samples))
+    one_pass = min(float(PASS_BYTES), max(1.0, chunk) * n * BYTES_PER_ROW_INSTANT)
+    return copies * shared + concurrent * one_pass
+
+
 def estimate_study(case: Any, per_run: Estimate) -> Estimate:
     """Memory and time of a case's whole ``[study]`` from the estimate of one run.
 
     The records are not kept (each chunk is summarised as it finishes): memory is one run's
-    plus :data:`STUDY_BYTES_PER_RUN` per run; a batched ball-size Monte Carlo costs
+    plus :data:`STUDY_BYTES_PER_RUN` per run; a batched ball-size Monte Carlo holds its shared
+    arrays and one pass of rows per concurrent evaluation (:func:`batched_memory`, in this
+    process; :func:`runout.study.run_study` checks again for worker processes) and costs
     :data:`COST_BATCH` per instant and ball instead of a whole run.
     """
     points = study_points(case)
     key = _study_key(case)
     memory = per_run.memory + points * STUDY_BYTES_PER_RUN
     each = per_run.seconds
-    if _batched_study(case):
+    if batched_study(case):
+        memory = max(memory, batched_memory(case) + points * STUDY_BYTES_PER_RUN)
         each = case.analysis.samples * case.bearing.n_elements * COST_BATCH
     seconds = points * each
     what = f"{points} runs x about {format_seconds(each)} each"

@@ -80,6 +80,7 @@ from typing import Any, TextIO
 import numpy as np
 from numpy.typing import NDArray
 
+from runout import limits
 from runout._study_pool import (
     BatchArrays,
     die_with_parent,
@@ -1402,6 +1403,21 @@ def run_study(
 
     for model in plan.models:  # a key a model refuses ends the study before any work
         enforce(case, model)
+    if executor is None and workers > 1 and limits.batched_study(case):
+        # the case's estimate assumed this process; worker processes each hold the shared
+        # arrays too (and the chunks in flight): check the budget for them before starting
+        needed = limits.batched_memory(case, workers) + limits.study_points(case) * (
+            limits.STUDY_BYTES_PER_RUN
+        )
+        budget = limits.case_budget(case)
+        if needed > budget.memory:
+            raise limits.LimitError(
+                "study.samples",
+                f"{workers} worker processes would need about {limits.format_bytes(needed)} "
+                f"of memory (each holds the study's shared arrays); use fewer --workers, "
+                f"lower analysis.samples or raise the limit ({limits.format_bytes(budget.memory)})"
+                f" with [analysis] max_memory or {limits.ENV_MAX_MEMORY}",
+            )
     notify = notify or _log.warning
     if out is None:
         return _run(None, case, plan, executor, workers, False, False, progress, plots, notify)
