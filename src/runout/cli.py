@@ -335,7 +335,7 @@ def run(
         ),
     ] = False,
 ) -> None:
-    """Run the model named in the case's [analysis] table.
+    r"""Run the model named in the case's \[analysis] table.
 
     --out DIR refuses a DIR whose case.toml is another case, unless --force.
 
@@ -539,7 +539,7 @@ def study_command(
         ),
     ] = False,
 ) -> None:
-    """Run the case's [study]: Monte Carlo over drawn quantities or a sweep (docs/studies.md).
+    r"""Run the case's \[study]: Monte Carlo over drawn quantities or a sweep (docs/studies.md).
 
     A sample whose model fails is recorded with its error; the study goes on.
 

@@ -62,9 +62,10 @@ def case_file_reference() -> str:
         "Generated from the schema by `python -m runout.schema_doc`; do not edit by hand.",
         "",
         "A bare number is SI (m, N, Pa, kg, s, rad; speeds in Hz = rev/s). A string carries its",
-        'unit: `"3.9688 mm"`, `"7200 rpm"`, `"10 deg"`, `"208 GPa"`. Amplitudes are zero-to-peak',
-        "radius deviations unless the key says `peak_to_peak`. Array entries in error messages",
-        "are counted from 1 (`waviness[2].order`). `title` (string) is the only top-level key.",
+        'unit: `"3.9688 mm"`, `"7200 rpm"` (or `"7200 rev/min"`), `"10 deg"`, `"208 GPa"`.',
+        "Amplitudes are zero-to-peak radius deviations unless the key says `peak_to_peak`. Array",
+        "entries in error messages are counted from 1 (`waviness[2].order`). `title` (string) is",
+        "the only top-level key.",
         "",
     ]
     for name, model in TABLES:

@@ -56,6 +56,7 @@ def _registry() -> Any:
     except OSError:
         ureg = pint.UnitRegistry()
     ureg.define("micron = micrometer")
+    ureg.define("rev = revolution")  # "1800 rev/min", as drawings and ISO 15242 write speeds
     return ureg
 
 

@@ -81,3 +81,9 @@ def test_rpm_converts_exactly() -> None:
     # through revolutions, not rad/s and back: no 119.99999999999999 Hz in the output
     assert to_si("7200 rpm", "speed") == 120.0
     assert to_si("90 deg/s", "speed") == pytest.approx(0.25, rel=1e-15)
+
+
+@pytest.mark.parametrize("text", ["1800 rev/min", "1800 rev / min", "30 rev/s", "1800 rpm"])
+def test_revolutions_per_minute_read_as_engineers_write_them(text: str) -> None:
+    """``rev/min`` (how drawings and ISO 15242 write speeds) reads like ``rpm``."""
+    assert to_si(text, "speed") == 30.0
