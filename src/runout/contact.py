@@ -55,6 +55,7 @@ from typing import Literal, NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from runout._elliptic import complete_elliptic
 from runout.bearing import BallBearing, Material, RollerBearing
 from runout.errors import ConvergenceError, GeometryError
 
@@ -262,12 +263,9 @@ class HertzIntegrals(NamedTuple):
 
 def _integrals(x: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray, FloatArray]:
     """p = 1 - m, m, K(m), E(m) and D(m) = (K - E)/m at x = ln(1 - m) = -2 ln κ (x <= 0)."""
-    from scipy.special import ellipe, ellipkm1  # lazily: ~0.1 s of start-up, when needed
-
     p = np.exp(x)  # p = 1 - m = 1/κ², precise even when m -> 1
     m = -np.expm1(x)
-    k = ellipkm1(p)  # K(m) from 1 - m (SciPy's ellipk(m) is this same function of 1 - m)
-    e = ellipe(m)
+    k, e = complete_elliptic(p, m)  # by the AGM; scipy.special costs ~0.1 s of start-up
     small = m < _SMALL_M
     if np.any(small):
         with np.errstate(divide="ignore", invalid="ignore"):
@@ -382,8 +380,10 @@ def ellipticity(
     (κ → 1) and 1 (κ → ∞), and the root is bracketed by :math:`[\tfrac83\ln(1-F),
     \ln(1-F)]`; Newton is kept inside the bracket (bisection otherwise). The first guess
     is interpolated in a small table of exact solutions, so two or three steps reach
-    round-off. :math:`\mathcal{K}` uses ``scipy.special.ellipkm1(1 - m)`` so that 1 - m keeps
-    its digits near m = 1; below m = 1e-3 short Maclaurin series replace the closed forms,
+    round-off. :math:`\mathcal{K}` and :math:`\mathcal{E}` come from
+    :func:`runout._elliptic.complete_elliptic` (arithmetic-geometric mean, within a few ulp
+    of SciPy's ``ellipkm1(1 - m)`` and ``ellipe(m)``), given 1 - m so that it keeps its
+    digits near m = 1; below m = 1e-3 short Maclaurin series replace the closed forms,
     which lose digits to cancellation there.
     """
     f_target = _as_float_array(curvature_difference, "curvature_difference")

@@ -456,6 +456,35 @@ def _start(
     return a1 / dist * r, a2 / dist * r
 
 
+@numba.njit(cache=True)
+def _closed_start(a1, a2, ko0, cst, side):
+    """A ball centre with both contacts closed off the line of groove centres [m].
+
+    For a ball with no rest overlap (|A| <= ℜ_i⁰ + ℜ_o⁰, the zero-speed start has an open
+    contact) that only the gyroscopic friction presses onto the inner race (inner-race
+    control): without friction it would lift off, so neither X* (which may not exist: the
+    fixed point can leave the groove) nor the friction continuation (no loaded state at
+    λ = 0) reaches it. The ball centre is put where both approaches equal the centrifugal
+    one, δ = (F_c/K_o)^(2/3) (F_c at the orbit speed of the free contact angle), on the side
+    ``side`` (±1) of the line of groove centres; the Newton step limits keep both contacts
+    closed from there.
+    """
+    ri0 = cst[C_RI0]
+    ro0 = cst[C_RO0]
+    dist = math.hypot(a1, a2)
+    u1 = a1 / dist
+    u2 = a2 / dist
+    gamma = cst[C_D] / cst[C_DM]
+    wm, _, _ = _speeds(u2, u1, u2, u1, gamma, cst[C_INNER], cst[C_OUTER], cst[C_INNER_CONTROL])
+    fc = 0.5 * cst[C_MASS] * cst[C_DM] * wm * wm
+    e = max((fc / max(ko0, 1e-300)) ** (2.0 / 3.0), 1e-9 * cst[C_D])
+    r_o = ro0 + e
+    r_i = ri0 + e
+    along = (dist * dist + r_o * r_o - r_i * r_i) / (2.0 * dist)
+    h = side * math.sqrt(max(r_o * r_o - along * along, 0.0))
+    return along * u1 + h * u2, along * u2 - h * u1
+
+
 # Small loops instead of NumPy array expressions (`.all()`, `~done`, fancy indexing, slice
 # assignment): the same work, but several times less compile time.
 @numba.njit(cache=True)
@@ -534,7 +563,8 @@ def _solve_balls(a, x, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o, speed_
 
     Unloaded balls (a gap at rest, lifted off at speed) go to the outer groove bottom. A loaded
     ball starts with both contacts closed; one that does not converge is restarted from its
-    outer-contact-only centre X*, then by continuation in the friction (at speed). Returns
+    outer-contact-only centre X*, then by continuation in the friction, then from both contacts
+    closed off the line of groove centres (:func:`_closed_start`; at speed). Returns
     ``False`` when some ball still does not converge.
     """
     z = a.shape[0]
@@ -573,7 +603,8 @@ def _solve_balls(a, x, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o, speed_
             xs, aa, idx, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o, speed_on, tol, done
         )
         # at speed, restart the balls that did not converge: from X*, then by continuation
-        for attempt in range(2 if speed_on else 0):
+        # and then from both contacts closed off the line of groove centres (_closed_start)
+        for attempt in range(4 if speed_on else 0):
             redo = _positions(done, False)
             k = redo.size
             if k == 0:
@@ -590,10 +621,13 @@ def _solve_balls(a, x, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o, speed_
                 if attempt == 0:
                     xr[r, 0] = x_star[j, 0]
                     xr[r, 1] = x_star[j, 1]
-                else:
+                elif attempt == 1:
                     xr[r, 0], xr[r, 1] = _start(ar[r, 0], ar[r, 1], ki0[j], ko0[j], ri0, ro0)
+                else:
+                    side = 1.0 if attempt == 2 else -1.0
+                    xr[r, 0], xr[r, 1] = _closed_start(ar[r, 0], ar[r, 1], ko0[j], cst, side)
             dr = np.empty(k, dtype=np.bool_)
-            if attempt == 0:
+            if attempt != 1:
                 _ball_newton(
                     xr,
                     ar,

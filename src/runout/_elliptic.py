@@ -1,0 +1,153 @@
+r"""Complete elliptic integrals K(m) and E(m) by the arithmetic-geometric mean, in NumPy.
+
+A few array operations per AGM step replace ``scipy.special.ellipkm1`` and ``ellipe``, whose
+import costs about 0.1 s of the start-up of the light commands (``runout frequencies``).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from typing import Any, TypeVar
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+FloatArray = NDArray[np.float64]
+
+#: AGM steps allowed. From b₀ = √p with p the smallest subnormal double (b₀ ≈ 2e-162) the
+#: AGM of (1, b₀) meets the stopping test after 12 steps, from any p >= 1e-30 after at most
+#: 9, and from p >= 1/2 after 4.
+_MAX_STEPS = 16
+
+#: Stop once every c_n <= 2⁻²⁷ a_n: then a_n - M <= a_n - b_n = c_n²/(2a_{n+1}) <= 2⁻⁵⁵ a_n
+#: (an eighth of an ulp), and the terms of the sum still to come are below 2⁻¹⁰⁰ relative.
+_TOLERANCE = 2.0**-27
+
+_TINY = 5e-324
+_HALF_PI = 0.5 * math.pi
+_T = TypeVar("_T", float, FloatArray)
+
+
+def complete_elliptic(p: ArrayLike, m: ArrayLike) -> tuple[FloatArray, FloatArray]:
+    r"""Complete elliptic integrals of the first and second kind, parameter m, vectorised.
+
+    .. math::
+
+        \mathcal{K}(m) = \int_0^{\pi/2}\frac{d\theta}{\sqrt{1 - m\sin^2\theta}},\qquad
+        \mathcal{E}(m) = \int_0^{\pi/2}\sqrt{1 - m\sin^2\theta}\,d\theta
+
+    (SciPy's convention: the modulus is :math:`\sqrt m`). Both :math:`m` and its complement
+    :math:`p = 1 - m` are passed, each to full relative precision, so that neither loses
+    digits to the subtraction: :math:`\mathcal{K}` uses only :math:`p` (like
+    ``scipy.special.ellipkm1(p)``), :math:`\mathcal{E}` uses :math:`m` for :math:`m \le 1/2`
+    and :math:`p` above.
+
+    Parameters
+    ----------
+    p : array_like
+        Complementary parameter :math:`p = 1 - m`, in [0, 1] [-]; may be as small as the
+        smallest positive double.
+    m : array_like
+        Parameter :math:`m` in [0, 1] [-], consistent with ``p``.
+
+    Returns
+    -------
+    K, E : ndarray
+        :math:`\mathcal{K}(m)` in [π/2, ∞] and :math:`\mathcal{E}(m)` in [1, π/2] [-], arrays
+        of the broadcast shape of ``p`` and ``m`` (``K`` is infinite at ``p = 0``). NaN
+        propagates. Outside [0, 1] NumPy warns of an invalid value; p < 0 or m > 1 gives NaN
+        (m < 0 gives the analytic continuation, not tested).
+
+    Raises
+    ------
+    ArithmeticError
+        If the AGM has not converged after ``_MAX_STEPS`` steps (cannot happen for arguments
+        in [0, 1]; a guard for the bounded loop).
+
+    Notes
+    -----
+    Gauss's arithmetic-geometric mean, :math:`a_0 = 1`, :math:`b_0 = \sqrt p`,
+    :math:`c_0^2 = m`, :math:`a_{n+1} = (a_n + b_n)/2`, :math:`b_{n+1} = \sqrt{a_n b_n}`,
+    :math:`c_{n+1} = c_n^2/(4a_{n+1})` (:math:`= (a_n - b_n)/2` without the cancellation)
+    converges quadratically to :math:`M(1, \sqrt p)`, and (Abramowitz & Stegun 17.6.1-17.6.4;
+    DLMF 19.8.1, 19.8.5, 19.8.6)
+
+    .. math::
+
+        \mathcal{K}(m) = \frac{\pi}{2M(1, \sqrt p)},\qquad
+        \mathcal{E}(m) = \mathcal{K}(m)\,\Big(1 - \Sigma(m)\Big),\qquad
+        \Sigma(m) = \sum_{n\ge0} 2^{n-1}c_n^2 .
+
+    :math:`1 - \Sigma(m) = \mathcal{E}/\mathcal{K}` is at least 0.728 for :math:`m \le 1/2`
+    but tends to 0 as :math:`m \to 1`, so above :math:`m = 1/2` the second kind comes instead
+    from Legendre's relation (A&S 17.3.13; DLMF 19.7.1) with the complementary integrals
+    :math:`\mathcal{K}(p) = \pi/(2M(1, \sqrt m))` and :math:`\mathcal{K}(p) - \mathcal{E}(p)
+    = \mathcal{K}(p)\,\Sigma(p)`:
+
+    .. math::
+
+        \mathcal{E}(m) = \frac{\pi/2 + \mathcal{K}(m)\,[\mathcal{K}(p) - \mathcal{E}(p)]}
+        {\mathcal{K}(p)} = M(1, \sqrt m) + \mathcal{K}(m)\,\Sigma(p),
+
+    a sum of two positive terms. Both means run together, as one AGM on a stacked array.
+    Against a 60-digit evaluation, K is within 4 ulp (relative 6.7e-16, the round-off of up
+    to nine AGM steps) and E within 2 ulp over the whole range.
+    """
+    p_arr = np.asarray(p, dtype=np.float64)
+    m_arr = np.asarray(m, dtype=np.float64)
+    if p_arr.shape != m_arr.shape:
+        p_arr, m_arr = np.broadcast_arrays(p_arr, m_arr)
+    if p_arr.size == 1:
+        # one contact at a time (the common call, from a Newton solve): Python floats are
+        # some ten times faster than NumPy's per-call overhead on one-element arrays
+        k1, e1 = _scalar(float(p_arr.flat[0]), float(m_arr.flat[0]))
+        return np.full(p_arr.shape, k1), np.full(p_arr.shape, e1)
+    # row 0: M(1, √p) with c₀² = m, for K(m) and Σ(m); row 1: M(1, √m) with c₀² = p. b₀ = 0
+    # (K(1) = ∞, set below) would never meet the stopping test: start at the least double
+    b0_sq = np.stack((p_arr, m_arr))
+    b0 = np.sqrt(np.where(b0_sq == 0.0, _TINY, b0_sq))
+    mean, total = _agm(b0, np.stack((m_arr, p_arr)), np.sqrt, _any)
+    k = _HALF_PI / mean[0]
+    e = np.where(m_arr <= 0.5, k * (1.0 - total[0]), mean[1] + k * total[1])
+    if (p_arr == 0.0).any():
+        k = np.where(p_arr == 0.0, np.inf, k)
+        e = np.where(p_arr == 0.0, 1.0, e)
+    return k, e
+
+
+def _scalar(p: float, m: float) -> tuple[float, float]:
+    """:func:`complete_elliptic` of one pair of Python floats."""
+    if not (0.0 <= p <= 1.0 and 0.0 <= m <= 1.0):  # NaN or outside [0, 1]: as arrays do
+        k_arr, e_arr = complete_elliptic(np.array([p, p]), np.array([m, m]))
+        return float(k_arr[0]), float(e_arr[0])
+    if p == 0.0:
+        return math.inf, 1.0
+    mean, total = _agm(math.sqrt(p), m, math.sqrt, bool)
+    k = _HALF_PI / mean
+    if m <= 0.5:
+        return k, k * (1.0 - total)
+    mean_c, total_c = _agm(math.sqrt(m), p, math.sqrt, bool)
+    return k, mean_c + k * total_c
+
+
+def _any(x: NDArray[np.bool_]) -> bool:
+    return bool(x.any())
+
+
+def _agm(b: _T, c_sq: _T, sqrt: Callable[[_T], _T], any_: Callable[[Any], bool]) -> tuple[_T, _T]:
+    """M(1, b) and Σ = Σ 2^(n-1) c_n² with c₀² = ``c_sq``, on floats or arrays alike."""
+    a: Any = 1.0
+    total: Any = 0.5 * c_sq
+    weight = 1.0
+    for _ in range(_MAX_STEPS):
+        a_next = 0.5 * (a + b)
+        b = sqrt(a * b)
+        a = a_next
+        c = c_sq / (4.0 * a)
+        c_sq = c * c
+        total = total + weight * c_sq
+        weight *= 2.0
+        if not any_(c > _TOLERANCE * a):  # NaN counts as converged
+            return a, total
+    raise ArithmeticError("the arithmetic-geometric mean did not converge")  # pragma: no cover
