@@ -24,6 +24,10 @@ _MAX_STEPS = 16
 #: (an eighth of an ulp), and the terms of the sum still to come are below 2⁻¹⁰⁰ relative.
 _TOLERANCE = 2.0**-27
 
+#: Arrays from this size on use the compiled loop (:mod:`runout._elliptic_kernel`); smaller
+#: ones (a single bearing's contacts) stay in NumPy, which does not need numba imported.
+_COMPILED_SIZE = 256
+
 _TINY = 5e-324
 _HALF_PI = 0.5 * math.pi
 _T = TypeVar("_T", float, FloatArray)
@@ -103,17 +107,40 @@ def complete_elliptic(p: ArrayLike, m: ArrayLike) -> tuple[FloatArray, FloatArra
         # some ten times faster than NumPy's per-call overhead on one-element arrays
         k1, e1 = _scalar(float(p_arr.flat[0]), float(m_arr.flat[0]))
         return np.full(p_arr.shape, k1), np.full(p_arr.shape, e1)
-    # row 0: M(1, √p) with c₀² = m, for K(m) and Σ(m); row 1: M(1, √m) with c₀² = p. b₀ = 0
-    # (K(1) = ∞, set below) would never meet the stopping test: start at the least double
-    b0_sq = np.stack((p_arr, m_arr))
-    b0 = np.sqrt(np.where(b0_sq == 0.0, _TINY, b0_sq))
-    mean, total = _agm(b0, np.stack((m_arr, p_arr)), np.sqrt, _any)
-    k = _HALF_PI / mean[0]
-    e = np.where(m_arr <= 0.5, k * (1.0 - total[0]), mean[1] + k * total[1])
+    if p_arr.size >= _COMPILED_SIZE and np.all((p_arr >= 0.0) & (p_arr <= 1.0)):
+        # many contacts at once: the float loop compiled, entry by entry (bit for bit)
+        from runout._elliptic_kernel import complete_elliptic_all
+
+        k_all, e_all, converged = complete_elliptic_all(
+            np.ascontiguousarray(p_arr).ravel(),
+            np.ascontiguousarray(m_arr).ravel(),
+            _MAX_STEPS,
+            _TOLERANCE,
+            _TINY,
+        )
+        if not converged:  # pragma: no cover - cannot happen for arguments in [0, 1]
+            raise ArithmeticError("the arithmetic-geometric mean did not converge")
+        return k_all.reshape(p_arr.shape), e_all.reshape(p_arr.shape)
+    # M(1, √p) with c₀² = m gives K(m) and Σ(m) for every entry; M(1, √m) with c₀² = p is
+    # needed only above m = 1/2 (Legendre). Each entry stops at its own convergence, so
+    # evaluating a subset changes no bit. b₀ = 0 (K(1) = ∞, set below) would never meet the
+    # stopping test: start at the least double.
+    mean, total = _agm_array(np.sqrt(np.where(p_arr == 0.0, _TINY, p_arr)), m_arr)
+    k = _HALF_PI / mean
+    e = k * (1.0 - total)
+    high = m_arr > 0.5
+    if high.any():
+        mean_c, total_c = _agm_array(np.sqrt(m_arr[high]), p_arr[high])
+        e[high] = mean_c + k[high] * total_c
     if (p_arr == 0.0).any():
         k = np.where(p_arr == 0.0, np.inf, k)
         e = np.where(p_arr == 0.0, 1.0, e)
     return k, e
+
+
+def _agm_array(b: FloatArray, c_sq: FloatArray) -> tuple[FloatArray, FloatArray]:
+    """:func:`_agm` of arrays."""
+    return _agm(b, c_sq, np.sqrt, _any)
 
 
 def _scalar(p: float, m: float) -> tuple[float, float]:
@@ -136,18 +163,41 @@ def _any(x: NDArray[np.bool_]) -> bool:
 
 
 def _agm(b: _T, c_sq: _T, sqrt: Callable[[_T], _T], any_: Callable[[Any], bool]) -> tuple[_T, _T]:
-    """M(1, b) and Σ = Σ 2^(n-1) c_n² with c₀² = ``c_sq``, on floats or arrays alike."""
-    a: Any = 1.0
-    total: Any = 0.5 * c_sq
-    weight = 1.0
-    for _ in range(_MAX_STEPS):
-        a_next = 0.5 * (a + b)
-        b = sqrt(a * b)
-        a = a_next
-        c = c_sq / (4.0 * a)
-        c_sq = c * c
-        total = total + weight * c_sq
-        weight *= 2.0
-        if not any_(c > _TOLERANCE * a):  # NaN counts as converged
-            return a, total
+    """M(1, b) and Σ = Σ 2^(n-1) c_n² with c₀² = ``c_sq``, on floats or arrays alike.
+
+    Every entry stops at its own convergence (arrays keep a converged entry as it is), so an
+    entry's value never depends on the other entries of the array: floats, arrays and the
+    compiled loop (:func:`runout._elliptic_kernel.complete_elliptic_all`) agree bit for bit.
+    """
+    if isinstance(b, float):
+        a, total, weight = 1.0, 0.5 * c_sq, 1.0
+        for _ in range(_MAX_STEPS):
+            a_next = 0.5 * (a + b)
+            b = sqrt(a * b)
+            a = a_next
+            c = c_sq / (4.0 * a)
+            c_sq = c * c
+            total = total + weight * c_sq
+            weight *= 2.0
+            if not c > _TOLERANCE * a:  # NaN counts as converged
+                return a, total
+    else:
+        a_arr = np.ones_like(b)
+        total_arr = 0.5 * c_sq
+        weight = 1.0
+        active = np.ones(np.shape(b), dtype=np.bool_)
+        for _ in range(_MAX_STEPS):
+            a_next = 0.5 * (a_arr + b)
+            b_next = sqrt(a_arr * b)
+            c = c_sq / (4.0 * a_next)
+            c_sq_next = c * c
+            total_next = total_arr + weight * c_sq_next
+            a_arr = np.where(active, a_next, a_arr)
+            b = np.where(active, b_next, b)
+            c_sq = np.where(active, c_sq_next, c_sq)
+            total_arr = np.where(active, total_next, total_arr)
+            active &= c > _TOLERANCE * a_next  # NaN counts as converged
+            weight *= 2.0
+            if not any_(active):
+                return a_arr, total_arr
     raise ArithmeticError("the arithmetic-geometric mean did not converge")  # pragma: no cover

@@ -103,3 +103,25 @@ def test_monotone_in_m(m1: float, m2: float) -> None:
     k, e = complete_elliptic(np.array([1.0 - lo, 1.0 - hi]), np.array([lo, hi]))
     assert k[0] <= k[1] * (1.0 + 4 * EPS)
     assert e[0] >= e[1] * (1.0 - 4 * EPS)
+
+
+def test_compiled_loop_is_the_numpy_loop_bit_for_bit() -> None:
+    """Large arrays take the compiled AGM (runout._elliptic_kernel): same bits as NumPy's."""
+    from runout import _elliptic
+
+    rng = np.random.default_rng(5)
+    p = np.concatenate(
+        [np.geomspace(1e-30, 1.0, 3000), rng.uniform(0.0, 1.0, 3000), [0.0, 1.0, 0.5]]
+    )
+    m = 1.0 - p
+    k_fast, e_fast = _elliptic.complete_elliptic(p, m)
+    b0_sq = np.stack((p, m))
+    b0 = np.sqrt(np.where(b0_sq == 0.0, _elliptic._TINY, b0_sq))
+    mean, total = _elliptic._agm(b0, np.stack((m, p)), np.sqrt, _elliptic._any)
+    k_ref = _elliptic._HALF_PI / mean[0]
+    e_ref = np.where(m <= 0.5, k_ref * (1.0 - total[0]), mean[1] + k_ref * total[1])
+    k_ref = np.where(p == 0.0, np.inf, k_ref)
+    e_ref = np.where(p == 0.0, 1.0, e_ref)
+    assert p.size >= _elliptic._COMPILED_SIZE
+    np.testing.assert_array_equal(k_fast, k_ref)
+    np.testing.assert_array_equal(e_fast, e_ref)
