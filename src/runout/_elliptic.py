@@ -7,6 +7,7 @@ import costs about 0.1 s of the start-up of the light commands (``runout frequen
 from __future__ import annotations
 
 import math
+import sys
 from collections.abc import Callable
 from typing import Any, TypeVar
 
@@ -24,9 +25,11 @@ _MAX_STEPS = 16
 #: (an eighth of an ulp), and the terms of the sum still to come are below 2⁻¹⁰⁰ relative.
 _TOLERANCE = 2.0**-27
 
-#: Arrays from this size on use the compiled loop (:mod:`runout._elliptic_kernel`); smaller
-#: ones (a single bearing's contacts) stay in NumPy, which does not need numba imported.
-_COMPILED_SIZE = 256
+#: Arrays from this size on use the compiled loop (:mod:`runout._elliptic_kernel`), and so do
+#: smaller ones once numba is loaded anyway (a model is running); the light commands
+#: (``frequencies``, ``check``: the ellipticity's starting table has 406 entries) stay in NumPy
+#: and never import numba. Every path gives the same bits.
+_COMPILED_SIZE = 4096
 
 _TINY = 5e-324
 _HALF_PI = 0.5 * math.pi
@@ -107,7 +110,8 @@ def complete_elliptic(p: ArrayLike, m: ArrayLike) -> tuple[FloatArray, FloatArra
         # some ten times faster than NumPy's per-call overhead on one-element arrays
         k1, e1 = _scalar(float(p_arr.flat[0]), float(m_arr.flat[0]))
         return np.full(p_arr.shape, k1), np.full(p_arr.shape, e1)
-    if p_arr.size >= _COMPILED_SIZE and np.all((p_arr >= 0.0) & (p_arr <= 1.0)):
+    compiled = p_arr.size >= _COMPILED_SIZE or "numba" in sys.modules
+    if compiled and np.all((p_arr >= 0.0) & (p_arr <= 1.0)):
         # many contacts at once: the float loop compiled, entry by entry (bit for bit)
         from runout._elliptic_kernel import complete_elliptic_all
 

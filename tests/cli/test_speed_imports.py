@@ -72,3 +72,11 @@ def test_frequencies_of_a_roller_bearing_needs_no_scipy_subpackage() -> None:
 def test_help_imports_neither_scipy_nor_numba_nor_pint() -> None:
     loaded = _modules("--help")
     assert not [m for m in (*NEVER, "scipy", "numba", "pint", "pydantic") if m in loaded]
+
+
+@pytest.mark.parametrize("case", ["seed000_tada_fig7.toml", "seed004_nu209.toml"])
+def test_frequencies_compile_nothing(case: str) -> None:
+    """``frequencies`` solves the loaded contact angle (Hertz, elliptic integrals) in NumPy:
+    numba (~0.2 s to import, and it pulls scipy.linalg) is for the models."""
+    loaded = _modules("frequencies", str(EXAMPLES / case))
+    assert "numba" not in loaded and "runout._elliptic_kernel" not in loaded
