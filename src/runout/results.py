@@ -370,7 +370,11 @@ class RunResult:
     def summary_sections(self) -> list[tuple[str, Rows]]:
         """Readable tables: runout figures, the largest lines, band values."""
         r = self.runout
-        figures: Rows = [("radial p-p (measuring direction)", f"{r.radial_pp_m * 1e9:.4g}", "nm")]
+        label = "radial p-p (measuring direction)"
+        iso492 = self.extras.get("iso492")  # the roller model: Kia or Kea
+        if isinstance(iso492, dict) and "quantity" in iso492:
+            label += f" = {iso492['quantity']} (ISO 492)"
+        figures: Rows = [(label, f"{r.radial_pp_m * 1e9:.4g}", "nm")]
         across = self.extras.get("horizontal_pp_m")  # models that move freely across the load
         if across is not None:
             figures.append(("radial p-p across the load", f"{across * 1e9:.4g}", "nm"))

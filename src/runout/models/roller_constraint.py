@@ -1195,6 +1195,11 @@ def run(case: Case) -> RunResult:
         },
         "rotating_ring": geo.rotating_ring,
         "radial_clearance_m": geo.radial_clearance,
+        # what ISO 492 calls this radial runout of the assembled bearing's turning ring
+        "iso492": {
+            "quantity": "Kia" if geo.rotating_ring == "inner" else "Kea",
+            "radial_runout_m": sol.runout,
+        },
     }
     if speed == 0.0:
         freqs = bearing_frequencies(
