@@ -129,22 +129,17 @@ def complete_elliptic(p: ArrayLike, m: ArrayLike) -> tuple[FloatArray, FloatArra
     # needed only above m = 1/2 (Legendre). Each entry stops at its own convergence, so
     # evaluating a subset changes no bit. b₀ = 0 (K(1) = ∞, set below) would never meet the
     # stopping test: start at the least double.
-    mean, total = _agm_array(np.sqrt(np.where(p_arr == 0.0, _TINY, p_arr)), m_arr)
+    mean, total = _agm(np.sqrt(np.where(p_arr == 0.0, _TINY, p_arr)), m_arr, np.sqrt, _any)
     k = _HALF_PI / mean
     e = k * (1.0 - total)
     high = m_arr > 0.5
     if high.any():
-        mean_c, total_c = _agm_array(np.sqrt(m_arr[high]), p_arr[high])
+        mean_c, total_c = _agm(np.sqrt(m_arr[high]), p_arr[high], np.sqrt, _any)
         e[high] = mean_c + k[high] * total_c
     if (p_arr == 0.0).any():
         k = np.where(p_arr == 0.0, np.inf, k)
         e = np.where(p_arr == 0.0, 1.0, e)
     return k, e
-
-
-def _agm_array(b: FloatArray, c_sq: FloatArray) -> tuple[FloatArray, FloatArray]:
-    """:func:`_agm` of arrays."""
-    return _agm(b, c_sq, np.sqrt, _any)
 
 
 def _scalar(p: float, m: float) -> tuple[float, float]:
