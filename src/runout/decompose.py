@@ -43,6 +43,7 @@ from typing import Any, Literal
 import numpy as np
 from numpy.typing import NDArray
 
+from runout._threads import halves, in_spans
 from runout.results import Component, Runout, Source
 
 __all__ = [
@@ -81,6 +82,8 @@ LEAKAGE_MERGED = 3.0
 FLOOR = 1e-7
 #: Integer coefficient bounds of the combination search |a f_r + b f_c + c f_b|.
 MAX_COMBINATION = 3
+#: Records of at least this many instants form their RRO record on two threads.
+PARALLEL_MIN = 1 << 16
 #: Element-passage harmonics n Z f_c the combination search reaches (rigid contacts switch
 #: abruptly from one pair of elements to the next: many harmonics).
 MAX_PASSAGE_HARMONIC = 12
@@ -734,9 +737,14 @@ def split_runout(
 
     def rro_lines(t: FloatArray) -> FloatArray:
         out = np.zeros_like(t)
-        for c in rep:
-            w = u[0] if c.direction == "x" else u[1]
-            out += w * 0.5 * c.pp_m * np.cos(2.0 * math.pi * c.frequency_hz * t + c.phase_rad)
+
+        def fill(first: int, last: int) -> None:  # elementwise: the halves of a long record
+            part, ts = out[first:last], t[first:last]  # on two threads give the same values
+            for c in rep:
+                w = u[0] if c.direction == "x" else u[1]
+                part += w * 0.5 * c.pp_m * np.cos(2.0 * math.pi * c.frequency_hz * ts + c.phase_rad)
+
+        in_spans(fill, halves(t.size, PARALLEL_MIN))
         return out
 
     rro_wave_rev = rro_lines(one_rev)

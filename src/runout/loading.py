@@ -33,6 +33,7 @@ would make the equation dimensionally wrong).
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 from typing import Literal
@@ -222,6 +223,15 @@ def axial_loading(
     alpha0 = _free_angle(bearing, free_contact_angle)
     if stiffness not in ("at_angle", "free"):
         raise GeometryError("stiffness", f'must be "at_angle" or "free", got {stiffness!r}')
+    return _axial_loading(bearing, fa, alpha0, stiffness, xtol)
+
+
+# a run asks for the same operating point several times (input checks, model set-up, summary);
+# the bearing is a frozen dataclass and the result immutable, so the solution is kept
+@functools.lru_cache(maxsize=64)
+def _axial_loading(
+    bearing: BallBearing, fa: float, alpha0: float, stiffness: StiffnessMode, xtol: float
+) -> AxialLoading:
     if fa == 0.0:
         contacts = ball_race_contacts(bearing, alpha0)
         return AxialLoading(0.0, alpha0, alpha0, 0.0, 0.0, 0.0, 0.0, 0.0, contacts)

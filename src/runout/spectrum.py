@@ -45,6 +45,8 @@ import numpy as np
 import numpy.typing as npt
 from numpy.typing import ArrayLike
 
+from runout._threads import halves, in_spans
+
 __all__ = [
     "ANDERON_BANDS",
     "ANDERON_BANDS_PRINTED",
@@ -203,21 +205,26 @@ _WINDOW_ALIASES = {
 }
 
 
+@functools.lru_cache(maxsize=1)
 def _hann(n: int) -> FloatArray:
-    """Periodic (DFT-even) Hann window of length ``n`` [-].
+    """Periodic (DFT-even) Hann window of length ``n`` [-] (read-only).
 
     The same operations as ``scipy.signal.get_window("hann", n, fftbins=True)`` (a cosine sum
     over ``n + 1`` points, the last dropped), so the values are identical to the bit, without
-    importing scipy.signal (about a second of start-up).
+    importing scipy.signal (about a second of start-up). The last window is kept: a run
+    takes the spectrum of each direction of one record.
     """
     if n <= 1:
-        return np.ones(n)
+        ones = np.ones(n)
+        ones.flags.writeable = False
+        return ones
     # SciPy: w = 0; w += 0.5 cos(0 fac); w += 0.5 cos(1 fac), i.e. 0.5 + 0.5 cos(fac) with the
     # same roundings (cos 0 = 1; 0.5 x is exact); computed in place, one array of n + 1
     w = np.linspace(-np.pi, np.pi, n + 1)
     np.cos(w, out=w)
     w *= 0.5
     w += 0.5
+    w.flags.writeable = False
     return w[:-1]
 
 
@@ -536,30 +543,25 @@ def peak_bin_gain(
 _ANCHOR = 256
 
 
-@numba.njit(cache=True)
-def _project_uniform_kernel(x, dt, omega):
-    """C[k, j] = sum_i x[k, i] cos(omega_j i dt), S[k, j] = sum_i x[k, i] sin(omega_j i dt).
+#: Records of at least this many samples are projected and synthesised on two threads.
+_PARALLEL_MIN = 1 << 16
 
-    Goertzel-like: one rotating phasor per line, advanced sample by sample (the inner loop
-    over lines vectorises). Each block of ``_ANCHOR`` samples restarts the phasors from an
-    exact cos/sin so that rounding drift stays at the 1e-14 level, and keeps its own partial
-    sums (pairwise-like summation). :func:`_project_numpy` is the reference it is tested
-    against.
-    """
+
+@numba.njit(cache=True, nogil=True)
+def _project_blocks(x, dt, omega, first, last, part_c, part_s):
+    """Blocks ``first <= blk < last`` of :func:`_project_uniform_kernel`: each block's own
+    sums into ``part_c[blk]``, ``part_s[blk]`` (compiled; releases the GIL)."""
     nc, n = x.shape
     m = omega.shape[0]
-    nb = (n + _ANCHOR - 1) // _ANCHOR
     rc = np.cos(omega * dt)
     rs = np.sin(omega * dt)
-    part_c = np.zeros((nb, nc, m))
-    part_s = np.zeros((nb, nc, m))
-    for blk in range(nb):
+    for blk in range(first, last):
         i0 = blk * _ANCHOR
         i1 = min(i0 + _ANCHOR, n)
         zc = np.cos(omega * (dt * i0))
         zs = np.sin(omega * (dt * i0))
-        acc_c = np.zeros((nc, m))
-        acc_s = np.zeros((nc, m))
+        acc_c = part_c[blk]
+        acc_s = part_s[blk]
         for i in range(i0, i1):
             for k in range(nc):
                 xi = x[k, i]
@@ -572,29 +574,52 @@ def _project_uniform_kernel(x, dt, omega):
                 tc = zc[j] * rc[j] - zs[j] * rs[j]
                 zs[j] = zc[j] * rs[j] + zs[j] * rc[j]
                 zc[j] = tc
-        part_c[blk] = acc_c
-        part_s[blk] = acc_s
-    out_c = np.zeros((nc, m))
-    out_s = np.zeros((nc, m))
-    for blk in range(nb):
+
+
+@numba.njit(cache=True)
+def _sum_blocks(part_c, part_s):
+    """The blocks' sums added in block order (compiled)."""
+    out_c = np.zeros(part_c.shape[1:])
+    out_s = np.zeros(part_s.shape[1:])
+    for blk in range(part_c.shape[0]):
         out_c += part_c[blk]
         out_s += part_s[blk]
     return out_c, out_s
 
 
-@numba.njit(cache=True, fastmath={"reassoc"})
-def _synthesize_uniform_kernel(const, a, b, dt, omega, n):
-    """y[k, i] = const[k] + sum_j a[k, j] cos(omega_j i dt) + b[k, j] sin(omega_j i dt).
+def _project_uniform_kernel(
+    x: FloatArray, dt: float, omega: FloatArray
+) -> tuple[FloatArray, FloatArray]:
+    """C[k, j] = sum_i x[k, i] cos(omega_j i dt), S[k, j] = sum_i x[k, i] sin(omega_j i dt).
 
-    Same rotating phasors as :func:`_project_uniform_kernel`; the sum over lines may be
-    reassociated (vectorised), which changes only the last bits.
+    Goertzel-like: one rotating phasor per line, advanced sample by sample (the inner loop
+    over lines vectorises). Each block of ``_ANCHOR`` samples restarts the phasors from an
+    exact cos/sin so that rounding drift stays at the 1e-14 level, and keeps its own partial
+    sums (pairwise-like summation), added in block order at the end. The blocks are
+    independent: a long record's halves run on two threads (:mod:`runout._threads`) with the
+    same result to the bit. :func:`_project_numpy` is the reference it is tested against.
     """
-    nc, m = a.shape
-    y = np.empty((nc, n))
+    nc, n = x.shape
     nb = (n + _ANCHOR - 1) // _ANCHOR
+    part_c = np.zeros((nb, nc, omega.shape[0]))
+    part_s = np.zeros((nb, nc, omega.shape[0]))
+    in_spans(
+        lambda first, last: _project_blocks(x, dt, omega, first, last, part_c, part_s),
+        halves(nb, _PARALLEL_MIN // _ANCHOR),
+    )
+    out_c, out_s = _sum_blocks(part_c, part_s)
+    return out_c, out_s
+
+
+@numba.njit(cache=True, nogil=True, fastmath={"reassoc"})
+def _synthesize_blocks(const, a, b, dt, omega, first, last, y):
+    """Blocks ``first <= blk < last`` of :func:`_synthesize_uniform_kernel` into ``y``
+    (compiled; releases the GIL)."""
+    nc, m = a.shape
+    n = y.shape[1]
     rc = np.cos(omega * dt)
     rs = np.sin(omega * dt)
-    for blk in range(nb):
+    for blk in range(first, last):
         i0 = blk * _ANCHOR
         i1 = min(i0 + _ANCHOR, n)
         zc = np.cos(omega * (dt * i0))
@@ -611,6 +636,23 @@ def _synthesize_uniform_kernel(const, a, b, dt, omega, n):
                 tc = zc[j] * rc[j] - zs[j] * rs[j]
                 zs[j] = zc[j] * rs[j] + zs[j] * rc[j]
                 zc[j] = tc
+
+
+def _synthesize_uniform_kernel(
+    const: FloatArray, a: FloatArray, b: FloatArray, dt: float, omega: FloatArray, n: int
+) -> FloatArray:
+    """y[k, i] = const[k] + sum_j a[k, j] cos(omega_j i dt) + b[k, j] sin(omega_j i dt).
+
+    Same rotating phasors as :func:`_project_uniform_kernel`; the sum over lines may be
+    reassociated (vectorised), which changes only the last bits. Blocks are independent: a
+    long record's halves run on two threads with the same result to the bit.
+    """
+    y = np.empty((a.shape[0], n))
+    nb = (n + _ANCHOR - 1) // _ANCHOR
+    in_spans(
+        lambda first, last: _synthesize_blocks(const, a, b, dt, omega, first, last, y),
+        halves(nb, _PARALLEL_MIN // _ANCHOR),
+    )
     return y
 
 

@@ -28,6 +28,7 @@ import numba
 import numpy as np
 from numpy.typing import NDArray
 
+from runout._threads import halves, in_spans
 from runout.decompose import Candidate, Direction, Kinematic, Phasors, fit_lines, split_runout
 from runout.errors import GeometryError
 from runout.imperfections import Harmonics, Imperfections
@@ -53,6 +54,7 @@ __all__ = [
     "on_grid",
     "predict",
     "predicted_lines",
+    "solve_in_halves",
     "time_grid",
     "time_step",
 ]
@@ -180,6 +182,35 @@ def contact_deviations(
 ANCHOR = 256
 #: Tolerance of the uniform-grid test of :func:`on_grid`, relative to the instant (4 ulp).
 GRID_RTOL = 4.0 * 2.0**-52
+#: Records of at least this many instants are solved as two halves (:func:`solve_in_halves`).
+SPLIT_MIN = 1 << 17
+
+
+def solve_in_halves(
+    kernel: Callable[..., tuple[int, int]], args: tuple[Any, ...], n: int
+) -> tuple[int, int]:
+    """Run a fused quasi-static kernel over instants ``[0, n)``, long records as two halves.
+
+    The kernels take the instants to solve as their last two arguments ``first, last`` and
+    write the global instants of their output arrays, so two halves fill one record. A record
+    of at least :data:`SPLIT_MIN` instants is cut at a multiple of :data:`ANCHOR` (the phasors
+    are anchored at the same instants as in one pass) and its halves run on two threads (the
+    kernels release the GIL) when the caller is the main thread of a machine with two cores
+    or more; elsewhere (a study's worker threads) one after the other. The second half starts
+    Newton's method from rest, as the first instant does: its first solutions agree with one
+    pass to the solver's tolerance, whatever the machine, so a result does not depend on the
+    number of cores.
+
+    Returns
+    -------
+    status, instant : int
+        The kernel's status and failing instant: of the first half that fails, in time order.
+    """
+    spans = halves(n, SPLIT_MIN, ANCHOR)
+    for status, instant in in_spans(lambda first, last: kernel(*args, first, last), spans):
+        if status != 0:
+            return status, instant
+    return 0, -1
 
 
 @dataclass(frozen=True)

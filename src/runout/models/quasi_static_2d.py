@@ -72,6 +72,7 @@ from runout.models._quasi_static import (
     on_grid,
     predict,
     run_quasi_static,
+    solve_in_halves,
     time_step,
 )
 from runout.results import RunResult
@@ -295,10 +296,10 @@ def solve_kernel_loaded(c, theta, k, d_ref, max_iter, force):
     return q, unloaded, 0, -1
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, nogil=True)
 def solve_fused(
     t, rates, base, pitch, ring, n_inner, ball, ball_offsets, gains, planar,
-    k, d_ref, max_iter, force, disp, unloaded,
+    k, d_ref, max_iter, force, disp, unloaded, first, last,
 ):  # fmt: skip
     """Seed 001 eq. 16-17 at every instant, the deviations evaluated on the fly (compiled).
 
@@ -317,6 +318,9 @@ def solve_fused(
         Filled with the shaft centre (x, y, 0) [m].
     unloaded : ndarray of int16 or int64, shape (n,)
         Filled with the balls without load at each instant.
+    first, last : int
+        The instants ``first <= i < last`` are solved (and written at i), Newton's method
+        starting from rest at ``first`` (:func:`runout.models._quasi_static.solve_in_halves`).
 
     Returns
     -------
@@ -325,7 +329,6 @@ def solve_fused(
     instant : int
         Instant of the failure (-1 when status is 0).
     """
-    n = t.size
     z = base.size
     state = contact_state(z, ring, ball)
     h = time_step(t)
@@ -336,7 +339,7 @@ def solve_fused(
     a0 = a1 = b0 = b1 = c0 = c1 = 0.0  # the last three solutions
     smooth = 0  # last instants with every ball loaded (up to 3)
     anchor = -1
-    for i in range(n):
+    for i in range(first, last):
         if on_grid(i, t, h, anchor):
             contact_advance(state)
         else:
@@ -513,7 +516,7 @@ def solve(
         disp,
         unloaded,
     )
-    status, instant = solve_fused(*args)
+    status, instant = solve_in_halves(solve_fused, args, t.size)
     if status != OK:
         cause, when = CAUSES[int(status)], float(t[int(instant)])
         if status == TOO_FEW_LOADED:

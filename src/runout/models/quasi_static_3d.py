@@ -88,6 +88,7 @@ from runout.models._quasi_static import (
     on_grid,
     predict,
     run_quasi_static,
+    solve_in_halves,
     time_grid,
     time_step,
 )
@@ -328,10 +329,10 @@ def solve_kernel(c, theta, cos_a, sin_a, k, force, q_start, d_ref, max_iter):
     return q, unloaded, 0, -1
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, nogil=True)
 def solve_fused(
     t, rates, base, pitch, ring, n_inner, ball, ball_offsets, gains, planar,
-    cos_a, sin_a, k, force, d_ref, max_iter, disp, unloaded,
+    cos_a, sin_a, k, force, d_ref, max_iter, disp, unloaded, first, last,
 ):  # fmt: skip
     """Seed 000 eq. 5 at every instant, the deviations evaluated on the fly (compiled).
 
@@ -352,6 +353,9 @@ def solve_fused(
         Filled with the shaft centre relative to the outer ring, -q [m] (the reported frame).
     unloaded : ndarray of int16 or int64, shape (n,)
         Filled with the balls without load at each instant.
+    first, last : int
+        The instants ``first <= i < last`` are solved (and written at i), Newton's method
+        starting from rest at ``first`` (:func:`runout.models._quasi_static.solve_in_halves`).
 
     Returns
     -------
@@ -360,7 +364,6 @@ def solve_fused(
     instant : int
         Instant of the failure (-1 when status is 0).
     """
-    n = t.size
     z = base.size
     state = contact_state(z, ring, ball)
     h = time_step(t)
@@ -371,7 +374,7 @@ def solve_fused(
     a0 = a1 = a2 = b0 = b1 = b2 = c0 = c1 = c2 = 0.0  # the last three solutions
     smooth = 0  # last instants with every ball loaded (up to 3)
     anchor = -1
-    for i in range(n):
+    for i in range(first, last):
         if on_grid(i, t, h, anchor):
             contact_advance(state)
         else:
@@ -666,7 +669,7 @@ def solve(
         disp,
         unloaded,
     )
-    status, instant = solve_fused(*args)
+    status, instant = solve_in_halves(solve_fused, args, t.size)
     if status != OK:
         _raise(int(status), int(instant), t)
     return disp, unloaded

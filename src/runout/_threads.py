@@ -1,0 +1,50 @@
+"""Long records on both cores: independent spans of a record on two threads.
+
+The compiled kernels that walk a record instant by instant release the GIL (``nogil``), so
+two threads fill two spans of one record at once. Work is split only where the spans are
+independent (the result does not depend on how it is split: each block of the spectral
+kernels restarts from exact values; the quasi-static solves start the second half from rest,
+see :func:`runout.models._quasi_static.solve_in_halves`), so a result never depends on the
+machine's number of cores. Threads are used from the main thread only: a study's worker
+threads already keep the cores busy and run the spans one after the other.
+"""
+
+from __future__ import annotations
+
+import os
+import threading
+from collections.abc import Callable
+from concurrent.futures import ThreadPoolExecutor
+from typing import TypeVar
+
+__all__ = ["halves", "in_spans", "parallel_allowed"]
+
+T = TypeVar("T")
+
+
+def _cores() -> int:
+    try:
+        return len(os.sched_getaffinity(0))
+    except AttributeError:  # not on Linux
+        return os.cpu_count() or 1
+
+
+def parallel_allowed() -> bool:
+    """True in the main thread of a process allowed two cores or more."""
+    return threading.current_thread() is threading.main_thread() and _cores() >= 2
+
+
+def halves(n: int, minimum: int, align: int = 1) -> tuple[tuple[int, int], ...]:
+    """``[0, n)`` whole below ``minimum``, else cut in two at a multiple of ``align``."""
+    if n < max(minimum, 2 * align):
+        return ((0, n),)
+    cut = (n // 2) // align * align
+    return ((0, cut), (cut, n))
+
+
+def in_spans(work: Callable[[int, int], T], spans: tuple[tuple[int, int], ...]) -> list[T]:
+    """``work(first, last)`` for each span, in order; on two threads where allowed."""
+    if len(spans) > 1 and parallel_allowed():
+        with ThreadPoolExecutor(len(spans), thread_name_prefix="runout-span") as pool:
+            return list(pool.map(lambda span: work(*span), spans))
+    return [work(*span) for span in spans]
