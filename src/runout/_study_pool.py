@@ -274,13 +274,16 @@ def spawn_context() -> Any:
 def init_worker(parent: int | None = None) -> None:  # pragma: no cover - runs in workers
     """Set up a pool worker once for all its chunks.
 
-    Numba single-threaded (the workers are the parallelism), tied to the life of ``parent``,
-    and the study code and its kernels loaded now, while the parent plans the study, instead
-    of in the first chunk.
+    Numba single-threaded and no threads for long records (the workers are the parallelism),
+    tied to the life of ``parent``, and the study code and its kernels loaded now, while the
+    parent plans the study, instead of in the first chunk.
     """
     import numba
 
+    from runout._threads import use_threads
+
     numba.set_num_threads(1)
+    use_threads(False)  # nor two threads per long record: the workers are the parallelism
     if parent is not None:
         die_with_parent(parent)
     warm_kernels()

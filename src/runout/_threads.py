@@ -5,8 +5,9 @@ two threads fill two spans of one record at once. Work is split only where the s
 independent (the result does not depend on how it is split: each block of the spectral
 kernels restarts from exact values; the quasi-static solves start the second half from rest,
 see :func:`runout.models._quasi_static.solve_in_halves`), so a result never depends on the
-machine's number of cores. Threads are used from the main thread only: a study's worker
-threads already keep the cores busy and run the spans one after the other.
+machine's number of cores. Threads are used from the main thread only, and not in a study's
+pool workers (:func:`use_threads`): a study's workers already keep the cores busy and run the
+spans one after the other.
 """
 
 from __future__ import annotations
@@ -17,9 +18,17 @@ from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
 from typing import TypeVar
 
-__all__ = ["halves", "in_spans", "parallel_allowed"]
+__all__ = ["halves", "in_spans", "parallel_allowed", "use_threads"]
 
 T = TypeVar("T")
+
+_enabled = True
+
+
+def use_threads(enabled: bool) -> None:
+    """Allow or forbid the spans' threads in this process (a study's pool workers forbid them)."""
+    global _enabled
+    _enabled = bool(enabled)
 
 
 def _cores() -> int:
@@ -30,8 +39,8 @@ def _cores() -> int:
 
 
 def parallel_allowed() -> bool:
-    """True in the main thread of a process allowed two cores or more."""
-    return threading.current_thread() is threading.main_thread() and _cores() >= 2
+    """True in the main thread of a process allowed two cores or more, threads not forbidden."""
+    return _enabled and threading.current_thread() is threading.main_thread() and _cores() >= 2
 
 
 def halves(n: int, minimum: int, align: int = 1) -> tuple[tuple[int, int], ...]:

@@ -109,3 +109,13 @@ def test_the_axial_load_solution_is_reused_and_errors_are_not_kept() -> None:
     assert loading.axial_loading(case.bearing, 21.0).contact_angle > first.contact_angle
     with pytest.raises(loading.GeometryError):
         loading.axial_loading(case.bearing, -1.0)
+
+
+def test_a_process_can_forbid_the_threads(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(_threads, "_enabled", True)
+    _threads.use_threads(False)
+    assert not _threads.parallel_allowed()
+    seen: list[str] = []
+    _threads.in_spans(lambda a, b: seen.append(threading.current_thread().name), ((0, 1), (1, 2)))
+    assert seen == [threading.current_thread().name] * 2
+    _threads.use_threads(True)
