@@ -133,6 +133,7 @@ __all__ = [
     "EquilibriumResult",
     "EquilibriumSolution",
     "ball_speeds",
+    "radial_stiffness",
     "run",
     "solve_equilibrium",
 ]
@@ -885,6 +886,48 @@ class EquilibriumResult(RunResult):
         return sections
 
 
+#: Stiffness entries below this fraction of the radial block's largest are the derivative's
+#: round-off (complex-step derivatives are exact to ~1e-16) and are reported as 0.
+STIFFNESS_ROUNDOFF = 1e-12
+
+
+def radial_stiffness(sol: EquilibriumSolution, speed_hz: float) -> dict[str, float]:
+    r"""The radial 2×2 block of the bearing stiffness, as rotordynamics codes take it [N/m].
+
+    :math:`k_{xx} = \partial F_x/\partial\delta_x`, :math:`k_{xy} = \partial F_x/\partial
+    \delta_y`, :math:`k_{yx}`, :math:`k_{yy}` of the Jones–Harris equilibrium (seed 001 §2.1;
+    Kim et al., 2015) at the operating point, the axial displacement and the tilts held at
+    their solution: the direct radial stiffness of a linear bearing element (for instance
+    ``ross.BearingElement(kxx=..., kxy=..., kyx=..., kyy=...)``). The couplings to the tilts
+    and the moment stiffness are in the 5×5 ``stiffness_matrix``. The force is the one the
+    rings carry for a displacement of the inner ring relative to the outer ring, so the block
+    is the bearing's restoring stiffness (positive diagonal). Entries below
+    :data:`STIFFNESS_ROUNDOFF` of the block's largest are round-off and reported as 0.
+
+    Parameters
+    ----------
+    sol : EquilibriumSolution
+    speed_hz : float
+        Speed of the rotating ring [Hz] (reported as ``speed_rpm``).
+
+    Returns
+    -------
+    dict
+        ``kxx_n_per_m``, ``kxy_n_per_m``, ``kyx_n_per_m``, ``kyy_n_per_m`` [N/m] and
+        ``speed_rpm`` [rev/min].
+    """
+    block = np.array(sol.stiffness[1:3, 1:3], dtype=float)
+    scale = float(np.abs(block).max(initial=0.0))
+    block[np.abs(block) < STIFFNESS_ROUNDOFF * scale] = 0.0
+    return {
+        "kxx_n_per_m": float(block[0, 0]),
+        "kxy_n_per_m": float(block[0, 1]),
+        "kyx_n_per_m": float(block[1, 0]),
+        "kyy_n_per_m": float(block[1, 1]),
+        "speed_rpm": 60.0 * float(speed_hz),
+    }
+
+
 def _writer(sol: EquilibriumSolution, title: str) -> Callable[[Path], list[Path]]:
     def write(directory: Path) -> list[Path]:
         from runout import plotting
@@ -963,6 +1006,7 @@ def run(case: object) -> RunResult:
             "units": "rows F_a, F_x, F_y [N], M_x, M_y [N m]; columns per m or per rad",
             "matrix": [[float(v) for v in row] for row in sol.stiffness],
         },
+        "radial_stiffness": radial_stiffness(sol, op.speed),
         "inner_contact_angle_deg": [math.degrees(v) for v in sol.inner_contact_angle],
         "outer_contact_angle_deg": [math.degrees(v) for v in sol.outer_contact_angle],
         "balls": sol.ball_table(),
