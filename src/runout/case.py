@@ -447,6 +447,50 @@ class ElementsSpec(_Table):
     )
 
 
+RawQuantity = int | float | str
+
+#: Quantities a spec limit applies to (``[analysis] limit_on``).
+LIMIT_QUANTITIES = (
+    "radial_pp",
+    "rro_pp",
+    "nrro_pp",
+    "axial_pp",
+    "iso15242.L",
+    "iso15242.M",
+    "iso15242.H",
+)
+LimitQuantity = Literal[
+    "radial_pp", "rro_pp", "nrro_pp", "axial_pp", "iso15242.L", "iso15242.M", "iso15242.H"
+]
+
+
+def is_band_quantity(quantity: str) -> bool:
+    """True for an ISO 15242 band (a velocity), False for a runout p-p (a length)."""
+    return quantity.startswith("iso15242.")
+
+
+def limit_si(value: RawQuantity, quantity: str) -> float:
+    """A spec limit in SI: [m] for a runout p-p, [m/s] for a band.
+
+    A number is SI (metres, or metres per second for a band), as every case-file number;
+    a string carries its unit. The dimension must match ``quantity``.
+
+    Raises
+    ------
+    _KeyedError
+        Key ``limit``: a value of the wrong dimension, not finite or not positive.
+    """
+    band = is_band_quantity(quantity)
+    try:
+        result = to_si(value, "velocity" if band else "length")
+    except UnitError as exc:
+        what = 'a velocity (e.g. "50 um/s")' if band else 'a length (e.g. "0.5 um")'
+        raise _KeyedError("limit", f'limit_on = "{quantity}" needs {what}: {exc}') from None
+    if not result > 0.0:
+        raise _KeyedError("limit", f"must be > 0, got {_Short(value)!r}")
+    return result
+
+
 class AnalysisSpec(_Table):
     """``[analysis]``: which model and how long."""
 
@@ -491,6 +535,46 @@ class AnalysisSpec(_Table):
             "gyroscopic moment in the ball balance; seed 001 eq. 3-4)."
         ),
     )
+    bands: Literal["anderon", "iso15242"] | None = Field(
+        None,
+        description=(
+            'Band values from the lines: "iso15242" (rms velocity [um/s] in the ISO 15242-1 '
+            "bands L, M, H, edges scaled from 1800 rpm to the speed; JSON iso15242) or "
+            '"anderon" (Anderon bands in orders; JSON anderon). Along the measuring direction; '
+            "the linear model always gives anderon (x, seed 002). Refused by a model without "
+            "lines (equilibrium); docs/concepts.md."
+        ),
+    )
+    limit: RawQuantity | None = Field(
+        None,
+        description=(
+            'Spec limit on limit_on: a length (e.g. "0.5 um") for a runout p-p, a velocity '
+            '(e.g. "50 um/s") for a band. run: JSON verdict (pass: value <= limit); study: '
+            "JSON yield with a Clopper-Pearson 95 % interval."
+        ),
+    )
+    limit_on: LimitQuantity = Field(
+        "radial_pp",
+        description=(
+            'Quantity the limit applies to: "radial_pp", "rro_pp", "nrro_pp", "axial_pp" '
+            '(runout p-p [m]) or "iso15242.L", "iso15242.M", "iso15242.H" (band rms, needs '
+            'bands = "iso15242"; run only).'
+        ),
+    )
+
+    @model_validator(mode="after")
+    def _check_limit(self) -> AnalysisSpec:
+        if self.limit is None:
+            # a case re-serialised with its defaults (study variants) names the default
+            if self.limit_on != "radial_pp":
+                raise _KeyedError("limit_on", "needs analysis.limit (the spec limit)")
+            return self
+        limit_si(self.limit, self.limit_on)  # raises _KeyedError("limit", ...)
+        if is_band_quantity(self.limit_on) and self.bands != "iso15242":
+            raise _KeyedError(
+                "limit_on", f'"{self.limit_on}" is a band: it needs bands = "iso15242"'
+            )
+        return self
 
 
 class DynamicsSpec(_Table):
@@ -536,9 +620,6 @@ class DynamicsSpec(_Table):
         if value is not None and not value > 0:
             raise ValueError(f"must be > 0, got {value!r} s")
         return value
-
-
-RawQuantity = int | float | str
 
 
 class VarySpec(_Table):
@@ -938,6 +1019,9 @@ class Analysis:
     samples: int = 4096
     linear_variant: str = "radial_spring"
     race_control: str = "outer"
+    bands: str | None = None
+    limit: float | None = None
+    limit_on: str = "radial_pp"
 
 
 @dataclass(frozen=True)
@@ -1486,6 +1570,13 @@ def parse_case(data: dict[str, Any], path: str = "<case>", base_dir: Path | None
         samples=spec.analysis.samples,
         linear_variant=spec.analysis.linear_variant,
         race_control=spec.analysis.race_control,
+        bands=spec.analysis.bands,
+        limit=(
+            None
+            if spec.analysis.limit is None
+            else limit_si(spec.analysis.limit, spec.analysis.limit_on)
+        ),
+        limit_on=spec.analysis.limit_on,
     )
     case = Case(
         path=path,

@@ -178,6 +178,17 @@ def _rows_table(title: str, rows: list[tuple[str, str, str]]) -> Table:
     return table
 
 
+def _print_sections(sections: list[tuple[str, list[tuple[str, str, str]]]]) -> None:
+    """Titled tables; a section whose rows have no value and no unit prints as a list."""
+    for title, rows in sections:
+        if rows and all(not value and not unit for _, value, unit in rows):
+            _out.print(f"[bold]{escape(title)}[/]", soft_wrap=True)
+            for text, _, _ in rows:
+                _out.print(f"- {escape(text)}", highlight=False, soft_wrap=True, emoji=False)
+        else:
+            _out.print(_rows_table(title, rows))
+
+
 def _version_callback(value: bool) -> None:
     if value:
         _out.print(f"runout {__version__}")
@@ -265,24 +276,30 @@ def _imperfection_table(case: Any) -> Table:
 @app.command()
 @_guard
 def frequencies(case_file: CaseArg, as_json: JsonOpt = False) -> None:
-    """Print cage, ball-spin and ball-pass frequencies in Hz and in orders.
+    """Print cage, element-spin and element-pass frequencies in Hz and in orders.
+
+    A roller bearing's JSON also has roller_pass_inner/roller_pass_outer (equal to
+    ball_pass_inner/ball_pass_outer, which stay for every bearing).
 
     Example: runout frequencies examples/seed002_608.toml --json
     """
+    from runout.bearing import RollerBearing
     from runout.case import load_case
+    from runout.results import frequencies_json
     from runout.summary import bearing_summary
 
     case = load_case(case_file)
     summary = bearing_summary(case.bearing, case.operation)
     freqs = summary.frequencies
+    element = "roller" if isinstance(case.bearing, RollerBearing) else "ball"
     if as_json:
         _print_json(
             {
                 "title": case.title,
                 "case": str(case_file),
                 "contact_angle_deg": math.degrees(summary.contact_angle),
-                "frequencies_hz": freqs.to_dict(),
-                "orders": freqs.orders() if freqs.rotation > 0 else None,
+                "frequencies_hz": frequencies_json(freqs.to_dict(), element),
+                "orders": frequencies_json(freqs.orders(), element) if freqs.rotation > 0 else None,
             }
         )
         return
@@ -300,9 +317,9 @@ def frequencies(case_file: CaseArg, as_json: JsonOpt = False) -> None:
     labels = {
         "rotation": "rotating ring",
         "cage": "cage (f_c)",
-        "ball_spin": "element spin about its axis, rel. cage (f_b)",
-        "ball_pass_inner": "element pass, inner raceway (BPFI)",
-        "ball_pass_outer": "element pass, outer raceway (BPFO)",
+        "ball_spin": f"{element} spin about its axis, rel. cage (f_b)",
+        "ball_pass_inner": f"{element} pass, inner raceway (BPFI)",
+        "ball_pass_outer": f"{element} pass, outer raceway (BPFO)",
     }
     for key, value in freqs.to_dict().items():
         order = "-" if orders is None else f"{orders[key]:.6g}"
@@ -337,12 +354,15 @@ def run(
 ) -> None:
     r"""Run the model named in the case's \[analysis] table.
 
+    \[analysis] bands adds band values, \[analysis] limit a PASS/FAIL verdict (docs/concepts.md).
+
     --out DIR refuses a DIR whose case.toml is another case, unless --force.
 
     Example: runout run examples/seed000_tada_fig7.toml --out out/tada --report
     """
     from runout.case import load_case
     from runout.models import run_model
+    from runout.results import apply_analysis
     from runout.summary import bearing_summary
 
     case = load_case(case_file)
@@ -350,12 +370,11 @@ def run(
         out = str(Path("out") / case_file.stem)
     # checked before the model runs: a refused directory costs nothing and is left untouched
     directory = None if out is None else _run_directory(out, case_file, force)
-    result = run_model(case)
+    result = apply_analysis(run_model(case), case)
     if as_json:
         _print_json(result.to_json())
     else:
-        for title, rows in result.summary_sections():
-            _out.print(_rows_table(title, rows))
+        _print_sections(result.summary_sections())
     if directory is not None:
         try:
             written = result.write(directory)
@@ -612,29 +631,50 @@ def _study_failures(summary: dict[str, Any]) -> None:
 
 
 def _print_study(summary: dict[str, Any], title: str, out: str | None) -> None:
+    """The study's statistics in one length unit chosen over the figures shown."""
+    from runout.display import format_length, length_unit
+
+    comps = summary["components"][:20]
+    stat_keys = ("mean", "std", "p5", "p50", "p95")
+    shown = [stats[k] for stats in summary["runout"].values() for k in stat_keys]
+    shown += [comp["pp_m"][k] for comp in comps for k in stat_keys]
+    unit = length_unit(v for v in shown if v is not None)
     table = Table(
         title=f"{title}: {summary['kind']} of {summary['samples']} samples"
         f" ({summary['failed']} failed)",
         title_justify="left",
         header_style="bold",
     )
-    for col in ("quantity", "Hz", "mean [nm]", "std [nm]", "p5 [nm]", "p50 [nm]", "p95 [nm]"):
+    columns = ("quantity", "Hz", *(f"{k} [{unit[0]}]" for k in stat_keys))
+    for col in columns:
         table.add_column(escape(col), justify="left" if col == "quantity" else "right")
 
     def fmt(value: float | None) -> str:
-        return "-" if value is None else f"{value * 1e9:.4g}"
+        return "-" if value is None else format_length(value, unit).rsplit(" ", 1)[0]
 
     for name, stats in summary["runout"].items():
-        table.add_row(
-            escape(name), "", *(fmt(stats[k]) for k in ("mean", "std", "p5", "p50", "p95"))
-        )
-    for comp in summary["components"][:20]:
+        table.add_row(escape(name), "", *(fmt(stats[k]) for k in stat_keys))
+    for comp in comps:
         table.add_row(
             escape(f"{comp['direction']} {comp['label']}"[:70]),
             f"{comp['frequency_hz']:.5g}",
-            *(fmt(comp["pp_m"][k]) for k in ("mean", "std", "p5", "p50", "p95")),
+            *(fmt(comp["pp_m"][k]) for k in stat_keys),
         )
     _out.print(table)
+    lot = summary.get("yield")
+    if lot is not None:
+        limit = format_length(lot["limit_m"], length_unit([lot["limit_m"]]))
+        if lot["fraction"] is None:
+            _out.print(f"yield: no sample succeeded (limit {limit} on {lot['quantity']})")
+        else:
+            _out.print(
+                f"yield: {lot['passed']} of {lot['samples']} bearings within {limit} on "
+                f"{lot['quantity']} ({100 * lot['fraction']:.1f} %; "
+                f"{100 * lot['confidence']:.0f} % interval {100 * lot['ci_low']:.1f}-"
+                f"{100 * lot['ci_high']:.1f} %, {lot['method']})",
+                soft_wrap=True,
+                highlight=False,
+            )
     if out is not None:
         _out.print(f"wrote {escape(out)}/ (manifest.json, chunks/, summary.json, samples.csv)")
 

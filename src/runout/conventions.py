@@ -175,10 +175,16 @@ def _analysis_range(spec: CaseSpec) -> list[str]:
     return [f"analysis.{name}" for name in sorted(given)]
 
 
+def _axial_limit(spec: CaseSpec) -> list[str]:
+    a = spec.analysis
+    return ["analysis.limit_on"] if a.limit is not None and a.limit_on == "axial_pp" else []
+
+
 # --------------------------------------------------------------------------------------------
 # the table
 # --------------------------------------------------------------------------------------------
 _NOT_SOLVED = "the equilibrium model solves the nominal (perfect) bearing at one instant"
+_NO_LINES = "it solves one static instant: there are no lines to form bands from"
 _TWO_D = "it is planar"
 _RIGID = "the rigid constraint model has no contact elasticity"
 _ANGLE_FROM_CLEARANCE = (
@@ -444,6 +450,41 @@ KEYS: tuple[KeyConvention, ...] = (
         "-",
         "it is an equilibrium-model option",
         _table_key("analysis", "race_control"),
+    ),
+    KeyConvention(
+        "analysis.bands",
+        'Band values from the lines along the measuring direction: "iso15242" (rms velocity '
+        "in the ISO 15242-1 bands, edges scaled from 1800 rpm to the speed; JSON iso15242) or "
+        '"anderon" (Anderon bands in orders; the linear model always gives them, from x).',
+        "-",
+        (H, H, H, R, H, H),
+        {"equilibrium": _NO_LINES},
+        _table_key("analysis", "bands"),
+    ),
+    KeyConvention(
+        'analysis.limit_on = "axial_pp"',
+        "A spec limit on the axial runout p-p.",
+        "-",
+        (R, R, H, R, R, R),
+        {
+            "linear": "it gives the radial displacement only",
+            "quasi_static_2d": _TWO_D,
+            "equilibrium": _NOT_SOLVED,
+            "dynamic": "its rotor is held axially unless [dynamics] axial_dof = true",
+            "roller_constraint": _TWO_D,
+        },
+        _axial_limit,
+        {"dynamic": lambda spec: spec.dynamics is not None and spec.dynamics.axial_dof},
+    ),
+    KeyConvention(
+        "analysis.limit",
+        "Spec limit on analysis.limit_on (default the radial p-p): a length [m], or a velocity "
+        "[m/s] for an ISO 15242 band; run: JSON verdict (pass: value <= limit), study: JSON "
+        "yield with a Clopper-Pearson 95 % interval.",
+        "m or m/s",
+        (H, H, H, R, H, H),
+        {"equilibrium": _NOT_SOLVED + ": it gives no runout to compare"},
+        _table_key("analysis", "limit"),
     ),
     _option_of(
         "dynamic",

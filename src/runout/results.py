@@ -29,6 +29,8 @@ __all__ = [
     "RunResult",
     "Runout",
     "Source",
+    "apply_analysis",
+    "frequencies_json",
     "write_columns",
 ]
 
@@ -43,6 +45,30 @@ DISPLACEMENT_OF = (
 )
 
 Rows = list[tuple[str, str, str]]
+
+#: Passage-frequency keys of the JSON contract, and their aliases for roller bearings (the
+#: ``ball_pass_*`` keys stay for every bearing: the contract is not broken).
+ROLLER_ALIASES = {
+    "ball_pass_inner": "roller_pass_inner",
+    "ball_pass_outer": "roller_pass_outer",
+}
+
+
+def frequencies_json(values: dict[str, float], element: str) -> dict[str, float]:
+    """``frequencies_hz`` (or ``orders``) of the JSON contract for ``element`` bearings.
+
+    Parameters
+    ----------
+    values : dict
+        :meth:`runout.kinematics.Frequencies.to_dict` or ``orders()`` [Hz or -].
+    element : {"ball", "roller"}
+        Rolling elements of the bearing: a roller bearing also gets ``roller_pass_inner`` and
+        ``roller_pass_outer``, equal to ``ball_pass_inner`` and ``ball_pass_outer``.
+    """
+    out = dict(values)
+    if element == "roller":
+        out.update({alias: values[key] for key, alias in ROLLER_ALIASES.items() if key in values})
+    return out
 
 
 @dataclass(frozen=True)
@@ -292,6 +318,9 @@ class RunResult:
     writers : tuple of callables
         Model-specific extra outputs: each ``writer(directory) -> list[Path]`` is called by
         :meth:`write` after the standard files (e.g. contact tables, sweeps, extra plots).
+    element : {"ball", "roller"}
+        Rolling elements of the bearing (set by :func:`apply_analysis`): names the passage
+        frequencies (``roller_pass_*`` aliases in the JSON of a roller bearing).
     """
 
     model: str
@@ -307,6 +336,7 @@ class RunResult:
     extras: dict[str, Any] = field(default_factory=dict)
     notes: tuple[str, ...] = ()
     writers: tuple[Callable[[Path], list[Path]], ...] = field(default=(), repr=False, compare=False)
+    element: str = "ball"
 
     # ---------------------------------------------------------------- analysis
     @property
@@ -341,6 +371,31 @@ class RunResult:
         mean = [float(np.mean(v)) for v in self.displacement]
         return mean if self.axial_motion else mean[:2]
 
+    def resolution_m(self) -> float | None:
+        """The solver's resolution of this record [m]: smaller figures are numerical noise.
+
+        How it is chosen: every model solves the position of the inner ring's centre, whose
+        magnitude is at most ``scale`` = max |displacement| over the record (approaches,
+        play and offsets included). The quasi-static models stop their Newton iterations at a
+        step of ``RTOL`` (1e-11) times the reference approach, and the dynamic model at
+        ``NEWTON_RTOL`` (1e-12) times it; the reference approach is below ``scale`` and the
+        gain from a contact approach to the centre's motion is of order one, so the relative
+        tolerance times ``scale`` bounds the error of each instant. The linear and roller
+        models evaluate closed forms or exact constraints: their floor is the float64
+        round-off of positions of size ``scale``, bounded generously by
+        :data:`ROUND_OFF` (1e-13, about 450 ulp) times ``scale``. Time-integration error
+        (dynamic model) is not included: it is a modelling accuracy, not a resolution.
+
+        Returns
+        -------
+        float or None
+            [m]; None for a record that is all zero (nothing to resolve).
+        """
+        scale = float(np.max(np.abs(self.displacement))) if self.displacement.size else 0.0
+        if not (scale > 0.0 and math.isfinite(scale)):
+            return None
+        return _relative_resolution(self.model) * scale
+
     def lines(self, direction: str | None = None, top: int | None = None) -> list[Component]:
         """Components, optionally of one direction, largest first, at most ``top`` of them."""
         chosen = [c for c in self.components if direction is None or c.direction == direction]
@@ -353,7 +408,7 @@ class RunResult:
         out: dict[str, Any] = {
             "model": self.model,
             "title": self.title,
-            "frequencies_hz": self.frequencies.to_dict(),
+            "frequencies_hz": frequencies_json(self.frequencies.to_dict(), self.element),
             "contact_angle_deg": math.degrees(self.contact_angle),
             "runout": self.runout.to_json(),
             "components": [c.to_json() for c in self.lines()],
@@ -368,57 +423,106 @@ class RunResult:
         return out
 
     def summary_sections(self) -> list[tuple[str, Rows]]:
-        """Readable tables: runout figures, the largest lines, band values."""
+        """Readable tables: runout figures, the largest lines, band values, verdict, notes.
+
+        Lengths are shown in one unit per table, chosen over the figures it shows
+        (:func:`runout.display.length_unit`); figures below :meth:`resolution_m` print as 0,
+        and a note states the resolution once. A section whose rows carry no value and no
+        unit (the notes, the verdict) is a list of sentences.
+        """
+        from runout.display import length_unit
+
         r = self.runout
+        resolution = self.resolution_m()
+        zeroed: list[float] = []  # figures shown as 0 for being below the resolution
+
+        def show(value: float, unit: tuple[str, float]) -> str:
+            if resolution is not None and 0.0 < abs(value) < resolution:
+                zeroed.append(value)
+            return _length_number(value, unit, resolution)
+
         label = "radial p-p (measuring direction)"
         iso492 = self.extras.get("iso492")  # the roller model: Kia or Kea
         if isinstance(iso492, dict) and "quantity" in iso492:
             label += f" = {iso492['quantity']} (ISO 492)"
-        figures: Rows = [(label, f"{r.radial_pp_m * 1e9:.4g}", "nm")]
+        figures: list[tuple[str, list[float]]] = [(label, [r.radial_pp_m])]
         across = self.extras.get("horizontal_pp_m")  # models that move freely across the load
         if across is not None:
-            figures.append(("radial p-p across the load", f"{across * 1e9:.4g}", "nm"))
+            figures.append(("radial p-p across the load", [float(across)]))
         figures += [
-            ("axial p-p", f"{r.axial_pp_m * 1e9:.4g}", "nm"),
-            ("RRO p-p", f"{r.rro_pp_m * 1e9:.4g}", "nm"),
-            ("NRRO p-p", f"{r.nrro_pp_m * 1e9:.4g}", "nm"),
+            ("axial p-p", [r.axial_pp_m]),
+            ("RRO p-p", [r.rro_pp_m]),
+            ("NRRO p-p", [r.nrro_pp_m]),
+        ]
+        # the p-p figures share one unit; the mean position (play, approaches: often far
+        # larger) has its own, so that a nm-size runout is not shown as 0.01 um
+        unit = length_unit(v for _, values in figures for v in values)
+        rows: Rows = [
+            (name, ", ".join(show(v, unit) for v in values), unit[0]) for name, values in figures
         ]
         if self.time.size:
             mean = self.mean_displacement()
-            figures.append(
+            mean_unit = length_unit(mean)
+            rows.append(
                 (
                     "mean shaft position rel. outer ring (" + ", ".join("xyz"[: len(mean)]) + ")",
-                    ", ".join(f"{v * 1e9:.4g}" for v in mean),
-                    "nm",
+                    ", ".join(show(v, mean_unit) for v in mean),
+                    mean_unit[0],
                 )
             )
         sections: list[tuple[str, Rows]] = [
             (
                 f"{self.title or self.model}: runout ({self.model} model, contact angle "
                 f"{math.degrees(self.contact_angle):.4g} deg)",
-                figures,
+                rows,
             )
         ]
-        rows: Rows = []
-        for c in self.lines(top=15):
-            rows.append(
+        top = self.lines(top=15)
+        line_unit = length_unit(c.pp_m for c in top)
+        line_rows: Rows = [
+            (
+                f"{c.direction}  {c.label}",
+                f"{show(c.pp_m, line_unit)} {line_unit[0]} at {c.frequency_hz:.5g} Hz",
+                f"order {c.order:.5g}",
+            )
+            for c in top
+        ]
+        if line_rows:
+            sections.append(("Largest lines (peak-to-peak)", line_rows))
+        iso = self.extras.get("iso15242")
+        if isinstance(iso, dict):
+            sections.append(
                 (
-                    f"{c.direction}  {c.label}",
-                    f"{c.pp_m * 1e9:.4g} nm at {c.frequency_hz:.5g} Hz",
-                    f"order {c.order:.5g}",
+                    "ISO 15242-1 velocity bands (rms along the measuring direction"
+                    + ("" if iso["direction"] == "measuring" else f" {iso['direction']}")
+                    + f", {_plain(iso['speed_rpm'], 6)} rpm)",
+                    [
+                        (
+                            f"{name}  {_plain(b['low_hz'], 4)}-{_plain(b['high_hz'], 4)} Hz",
+                            _plain(b["rms_um_per_s"], 4),
+                            iso["unit"],
+                        )
+                        for name, b in iso["bands"].items()
+                    ],
                 )
             )
-        if rows:
-            sections.append(("Largest lines (peak-to-peak)", rows))
         if self.anderon is not None:
             sections.append(
                 (
                     "Anderon band values",
-                    [(band, f"{value:.4g}", "Anderon") for band, value in self.anderon.items()],
+                    [(band, _plain(value, 4), "Anderon") for band, value in self.anderon.items()],
                 )
             )
-        if self.notes:
-            sections.append(("Notes", [(note, "", "") for note in self.notes]))
+        verdict = self.extras.get("verdict")
+        if isinstance(verdict, dict):
+            sections.append(("Spec limit", [(verdict_line(verdict), "", "")]))
+        notes = list(self.notes)
+        if zeroed and resolution is not None:
+            from runout.display import resolution_note
+
+            notes.insert(0, resolution_note(resolution, unit))
+        if notes:
+            sections.append(("Notes", [(note, "", "") for note in notes]))
         return sections
 
     def write(self, directory: Path) -> list[Path]:
@@ -459,3 +563,193 @@ class RunResult:
         for writer in self.writers:
             written += writer(directory)
         return written
+
+
+# -------------------------------------------------------------------------------------------
+# readable figures
+# -------------------------------------------------------------------------------------------
+#: Relative round-off floor of a model without an iterative solver (closed forms, exact
+#: constraints): about 450 ulp of float64, well above the round-off of a few operations.
+ROUND_OFF = 1e-13
+
+
+def _relative_resolution(model: str) -> float:
+    """Relative tolerance of ``model``'s solved positions [-] (:meth:`RunResult.resolution_m`)."""
+    if model in ("quasi_static_2d", "quasi_static_3d"):
+        import importlib
+
+        rtol = float(importlib.import_module(f"runout.models.{model}").RTOL)
+        return max(rtol, ROUND_OFF)
+    if model == "dynamic":
+        from runout.models.dynamic import NEWTON_RTOL
+
+        return max(float(NEWTON_RTOL), ROUND_OFF)
+    return ROUND_OFF
+
+
+def _length_number(value: float, unit: tuple[str, float], resolution: float | None) -> str:
+    """The number of :func:`runout.display.format_length`, without the unit."""
+    from runout.display import format_length
+
+    return format_length(value, unit, resolution_m=resolution).rsplit(" ", 1)[0]
+
+
+def _plain(value: float, digits: int) -> str:
+    from runout.display import format_number
+
+    return format_number(value, digits)
+
+
+def verdict_line(verdict: dict[str, Any]) -> str:
+    """The PASS/FAIL sentence of a ``verdict`` JSON object."""
+    from runout.display import format_length, length_unit
+
+    word = "PASS" if verdict["pass"] else "FAIL"
+    relation = "within" if verdict["pass"] else "exceeds"
+    quantity = verdict["quantity"]
+    if "limit_m" in verdict:
+        unit = length_unit([verdict["value_m"], verdict["limit_m"]])
+        value = format_length(verdict["value_m"], unit)
+        limit = format_length(verdict["limit_m"], unit)
+    else:
+        value = f"{_plain(verdict['value_um_per_s'], 4)} um/s"
+        limit = f"{_plain(verdict['limit_um_per_s'], 4)} um/s"
+    return f"{word}: {quantity} = {value} {relation} the limit {limit}"
+
+
+# -------------------------------------------------------------------------------------------
+# the [analysis] outputs computed from a model's result
+# -------------------------------------------------------------------------------------------
+def measured_lines(result: RunResult) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Radial lines along the measuring direction: frequencies [Hz], 0-p amplitudes [m].
+
+    The x and y lines of one frequency are combined as phasors,
+    ``|u_x X + u_y Y|`` with ``X = (pp_x / 2) exp(i φ_x)``: the line a probe along the
+    measuring direction ``u`` would see. Axial (z) lines are left out.
+    """
+    u = result.measuring_direction
+    phasors: dict[float, complex] = {}
+    for c in result.components:
+        if c.direction not in ("x", "y"):
+            continue
+        weight = float(u[0] if c.direction == "x" else u[1])
+        phasor = 0.5 * c.pp_m * complex(math.cos(c.phase_rad), math.sin(c.phase_rad))
+        phasors[c.frequency_hz] = phasors.get(c.frequency_hz, 0j) + weight * phasor
+    freqs = np.array(list(phasors), dtype=np.float64)
+    amps = np.array([abs(p) for p in phasors.values()], dtype=np.float64)
+    return freqs, amps
+
+
+def _direction_name(u: NDArray[np.float64]) -> str:
+    """``"x"`` or ``"y"`` for a measuring direction along an axis, else ``"measuring"``."""
+    # a direction given as an angle (-90 deg) leaves cos/sin round-off on the other axis
+    if abs(u[1]) < 1e-12:
+        return "x"
+    if abs(u[0]) < 1e-12:
+        return "y"
+    return "measuring"
+
+
+def iso15242_json(result: RunResult) -> dict[str, Any]:
+    """The ``iso15242`` JSON object: rms velocity per ISO 15242-1 band from the lines.
+
+    Bands L, M, H with the edges of 1800 rpm scaled to the rotating ring's speed
+    (:func:`runout.spectrum.iso15242_band_set`), from the radial lines along the measuring
+    direction (:func:`measured_lines`).
+    """
+    from runout.spectrum import iso15242_band_set, iso15242_bands_from_lines
+
+    rotation = float(result.frequencies.rotation)
+    bands = iso15242_band_set(rotation)
+    freqs, amps = measured_lines(result)
+    values = iso15242_bands_from_lines(freqs, amps, bands).as_dict()
+    u = result.measuring_direction
+    return {
+        "unit": "um/s",
+        "speed_rpm": rotation * 60.0,
+        "direction": _direction_name(u),
+        "measuring_direction": [float(u[0]), float(u[1])],
+        "bands": {
+            b.name[0]: {"low_hz": b.low, "high_hz": b.high, "rms_um_per_s": values[b.name]}
+            for b in bands.bands
+        },
+    }
+
+
+def anderon_json(result: RunResult) -> dict[str, float]:
+    """Anderon band values from the lines along the measuring direction, in orders."""
+    from runout.spectrum import anderon_bands_from_lines
+
+    freqs, amps = measured_lines(result)
+    orders = freqs / float(result.frequencies.rotation)
+    return anderon_bands_from_lines(orders, amps).as_dict()
+
+
+def verdict_json(result: RunResult, limit: float, quantity: str) -> dict[str, Any]:
+    """The ``verdict`` JSON object: ``quantity`` of ``result`` against ``limit``.
+
+    Parameters
+    ----------
+    limit : float
+        [m] for a runout p-p, [m/s] for a band (``iso15242.L`` ...).
+    quantity : str
+        ``radial_pp``, ``rro_pp``, ``nrro_pp``, ``axial_pp`` or ``iso15242.<band>``.
+    """
+    if quantity.startswith("iso15242."):
+        iso = result.extras["iso15242"]
+        value = float(iso["bands"][quantity.split(".", 1)[1]]["rms_um_per_s"])
+        limit_um = limit * 1e6
+        return {
+            "quantity": quantity,
+            "limit_um_per_s": limit_um,
+            "value_um_per_s": value,
+            "pass": bool(value <= limit_um),
+        }
+    value_m = float(getattr(result.runout, f"{quantity}_m"))
+    return {
+        "quantity": quantity,
+        "limit_m": limit,
+        "value_m": value_m,
+        "pass": bool(value_m <= limit),
+    }
+
+
+def apply_analysis(result: RunResult, case: Any) -> RunResult:
+    """``result`` with what the case's ``[analysis]`` asks beyond the model: bands, verdict.
+
+    ``bands = "iso15242"`` adds the ``iso15242`` JSON, ``bands = "anderon"`` the Anderon
+    values from the lines (the linear model keeps its own, from its exact x lines as seed 002
+    measured), ``limit`` the ``verdict``; the bearing's element type names the passage
+    frequencies. Idempotent: applying it twice gives the same result.
+
+    Raises
+    ------
+    CaseError
+        A model without a record (one instant) given bands or a limit, or a zero speed with
+        bands (band edges scale with the speed).
+    """
+    from runout.bearing import RollerBearing
+    from runout.errors import CaseError
+
+    analysis = case.analysis
+    bands = getattr(analysis, "bands", None)
+    limit = getattr(analysis, "limit", None)
+    limit_on = getattr(analysis, "limit_on", "radial_pp")
+    element = "roller" if isinstance(case.bearing, RollerBearing) else "ball"
+    extras = dict(result.extras)
+    anderon = result.anderon
+    if (bands is not None or limit is not None) and result.time.size < 2:
+        key = "analysis.bands" if bands is not None else "analysis.limit"
+        raise CaseError(
+            case.path, key, f"the {result.model} model gives no record (one instant): no lines"
+        )
+    if bands is not None and not result.frequencies.rotation > 0.0:
+        raise CaseError(case.path, "analysis.bands", "band edges need a rotating ring (speed > 0)")
+    if bands == "iso15242":
+        extras["iso15242"] = iso15242_json(result)
+    elif bands == "anderon" and result.model != "linear":
+        anderon = anderon_json(result)
+    if limit is not None:
+        probe = replace(result, extras=extras)
+        extras["verdict"] = verdict_json(probe, float(limit), limit_on)
+    return replace(result, extras=extras, anderon=anderon, element=element)

@@ -731,6 +731,8 @@ def statistics(values: ArrayLikeF, bins: int = 20) -> dict[str, Any]:
 
 ArrayLikeF = Sequence[float] | NDArray[np.float64]
 _CONTRACT = ("mean", "std", "p5", "p50", "p95")
+#: Confidence of the interval of a lot's yield [-].
+YIELD_CONFIDENCE = 0.95
 
 
 # --------------------------------------------------------------------------------------------
@@ -758,6 +760,9 @@ class StudyResult:
         Sample index -> message, for samples whose model failed.
     bins : int
         Histogram bins.
+    limit : (str, float) or None
+        ``[analysis] limit_on`` and ``limit`` [m] when the case gives a spec limit: the
+        Monte Carlo JSON gets ``yield``, a sweep's points get ``pass``.
     """
 
     kind: str
@@ -770,6 +775,7 @@ class StudyResult:
     lines: dict[str, tuple[float, NDArray[np.float64]]]
     errors: dict[int, str]
     bins: int = 20
+    limit: tuple[str, float] | None = None
 
     @property
     def samples(self) -> int:
@@ -852,7 +858,45 @@ class StudyResult:
         }
         if self.kind == "sweep":
             out["points"] = self.points()
+        elif self.limit is not None:
+            out["yield"] = self.lot_yield()
         return out
+
+    def lot_yield(self, confidence: float = YIELD_CONFIDENCE) -> dict[str, Any]:
+        """The ``yield`` JSON object: fraction of the lot within the limit, with its interval.
+
+        Over the samples whose model succeeded (failed samples are neither passes nor
+        failures). A sample passes when its figure is at most the limit. The interval is the
+        exact binomial (Clopper-Pearson) one: ``ci_low`` = B(α/2; k, n-k+1) and ``ci_high`` =
+        B(1-α/2; k+1, n-k) with B the beta quantile, α = 1 - ``confidence``; 0 when no sample
+        passed and 1 when all did. ``fraction`` and the interval are null with no sample.
+        """
+        if self.limit is None:
+            raise ValueError("the study has no spec limit")
+        quantity, limit = self.limit
+        values = self.runout[f"{quantity}_m"]
+        ok = values[np.isfinite(values)]
+        n = int(ok.size)
+        k = int(np.sum(ok <= limit))
+        low: float | None = None
+        high: float | None = None
+        if n:
+            from scipy.stats import beta
+
+            alpha = 1.0 - confidence
+            low = 0.0 if k == 0 else float(beta.ppf(alpha / 2.0, k, n - k + 1))
+            high = 1.0 if k == n else float(beta.ppf(1.0 - alpha / 2.0, k + 1, n - k))
+        return {
+            "quantity": quantity,
+            "limit_m": limit,
+            "passed": k,
+            "samples": n,
+            "fraction": k / n if n else None,
+            "ci_low": low,
+            "ci_high": high,
+            "confidence": confidence,
+            "method": "Clopper-Pearson",
+        }
 
     def points(self) -> list[dict[str, Any]]:
         """Per-sample records: values, model, runout and non-zero lines."""
@@ -873,6 +917,9 @@ class StudyResult:
                     "error": self.errors.get(i),
                 }
             )
+            if self.limit is not None:
+                value = float(self.runout[f"{self.limit[0]}_m"][i])
+                rows[-1]["pass"] = bool(value <= self.limit[1]) if math.isfinite(value) else None
         return rows
 
     # ------------------------------------------------------------ files
@@ -880,12 +927,20 @@ class StudyResult:
         """Write ``summary.json``, ``samples.csv`` and plots into ``directory``."""
         directory.mkdir(parents=True, exist_ok=True)
         summary = _nan_to_none(self.summary())  # every sample failed: no statistics, null
+        if self.limit is not None and self.kind == "montecarlo":
+            summary["yield"] = self.lot_yield()
         written = [_write_text(directory / "summary.json", _dumps(summary, indent=2))]
         written.append(self._write_csv(directory / "samples.csv"))
         if plots:
             from runout.plotting import plot_study
 
-            written += plot_study(self, directory)
+            if self.limit is None:
+                written += plot_study(self, directory)
+            else:
+                # the spec limit as a line on the histogram of its quantity
+                written += plot_study(
+                    self, directory, limit_quantity=f"{self.limit[0]}_m", limit_m=self.limit[1]
+                )
         return written
 
     def columns(self) -> list[tuple[str, NDArray[Any]]]:
@@ -1403,6 +1458,7 @@ def run_study(
 
     for model in plan.models:  # a key a model refuses ends the study before any work
         enforce(case, model)
+    _check_analysis_outputs(case, notify or _log.warning)
     if executor is None and workers > 1 and limits.batched_study(case):
         # the case's estimate assumed this process; worker processes each hold the shared
         # arrays too (and the chunks in flight): check the budget for them before starting
@@ -1426,6 +1482,24 @@ def run_study(
     with output_lock(directory):
         return _run(
             directory, case, plan, executor, workers, resume, force, progress, plots, notify
+        )
+
+
+def _check_analysis_outputs(case: Case, notify: Callable[[str], None]) -> None:
+    """Refuse a band limit and say that bands are not computed: a study keeps the runout
+    figures and line p-p of each sample, not the phases a band value needs."""
+    analysis = case.analysis
+    if getattr(analysis, "limit", None) is not None and analysis.limit_on.startswith("iso15242"):
+        raise CaseError(
+            case.path,
+            "analysis.limit_on",
+            f'"{analysis.limit_on}": a study\'s yield is over the runout p-p of each sample '
+            '("radial_pp", "rro_pp", "nrro_pp", "axial_pp"); band limits apply to runout run',
+        )
+    if getattr(analysis, "bands", None) is not None:
+        notify(
+            f"{case.path}: analysis.bands: not applied by runout study (band values are "
+            "computed by runout run)"
         )
 
 
@@ -1853,7 +1927,17 @@ def _assemble(
         lines=lines,
         errors=errors,
         bins=study.bins,
+        limit=study_limit(case),
     )
+
+
+def study_limit(case: Case) -> tuple[str, float] | None:
+    """``(limit_on, limit [m])`` of the case's spec limit on a runout figure, or None."""
+    analysis = case.analysis
+    limit = getattr(analysis, "limit", None)
+    if limit is None:
+        return None
+    return str(analysis.limit_on), float(limit)
 
 
 def load_study(directory: Path | str, case: Case) -> StudyResult:

@@ -14,6 +14,7 @@ from runout.bearing import BallBearing, Bearing, Operation, RollerBearing
 from runout.contact import BallContacts, RollerContacts, ball_race_contacts, roller_race_contacts
 from runout.kinematics import Frequencies, bearing_frequencies
 from runout.loading import AxialLoading, axial_loading, axial_loading_fixed_angle
+from runout.results import ROLLER_ALIASES, frequencies_json
 
 __all__ = ["BearingSummary", "ModelUse", "bearing_summary", "model_use", "operating_contact_angle"]
 
@@ -88,9 +89,19 @@ class BearingSummary:
                 "axial_displacement_m": ld.axial_displacement,
             }
         out["contact_angle_deg"] = math.degrees(self.contact_angle)
-        out["frequencies_hz"] = self.frequencies.to_dict()
-        out["orders"] = self.frequencies.orders() if self.frequencies.rotation > 0 else None
+        element = self.element
+        out["frequencies_hz"] = frequencies_json(self.frequencies.to_dict(), element)
+        out["orders"] = (
+            frequencies_json(self.frequencies.orders(), element)
+            if self.frequencies.rotation > 0
+            else None
+        )
         return out
+
+    @property
+    def element(self) -> str:
+        """``"roller"`` or ``"ball"``: the name of the passage frequencies."""
+        return "roller" if isinstance(self.bearing, RollerBearing) else "ball"
 
     # ------------------------------------------------------------------------ tables
     def sections(self) -> list[tuple[str, Rows]]:
@@ -172,7 +183,9 @@ class BearingSummary:
         freq_rows: Rows = []
         for key, value in f.to_dict().items():
             order = "" if orders is None else f"   ({orders[key]:.6g} /rev)"
-            freq_rows.append((key, f"{value:.6g}{order}", "Hz"))
+            # a roller bearing's passages are named for rollers (JSON: both names)
+            name = ROLLER_ALIASES.get(key, key) if self.element == "roller" else key
+            freq_rows.append((name, f"{value:.6g}{order}", "Hz"))
         sections.append(
             (
                 f"Frequencies ({self.operation.rotating_ring} ring rotating, contact angle "

@@ -77,6 +77,7 @@ KINDS: dict[str, tuple[str, str, str]] = {
     "moment": ("[force] * [length]", "N*m", "a moment"),
     "mass_length": ("[mass] * [length]", "kg*m", "an unbalance (mass x length)"),
     "frequency": ("1 / [time]", "Hz", "a frequency"),
+    "velocity": ("[length] / [time]", "m/s", 'a velocity (e.g. "50 um/s")'),
     "angle": ("", "rad", "an angle"),
     "speed": ("1 / [time]", "Hz", "a rotational speed"),
     "dimensionless": ("", "", "a plain number"),

@@ -92,6 +92,11 @@ def _moment_for_equilibrium(data: Data, model: str) -> None:
         data["operation"]["moment_load"] = 0.01
 
 
+def _axial_limit(data: Data) -> None:
+    data["analysis"]["limit"] = "1 um"
+    data["analysis"]["limit_on"] = "axial_pp"
+
+
 #: key -> (patch of the base for this key, the change of the key alone)
 CHANGES: dict[str, tuple[Callable[[Data, str], None], Callable[[Data], None]]] = {
     'bearing.type = "cylindrical_roller"': (_no_patch, _roller),
@@ -139,6 +144,9 @@ CHANGES: dict[str, tuple[Callable[[Data, str], None], Callable[[Data], None]]] =
         _no_patch,
         lambda d: d.__setitem__("dynamics", {"mass": 0.03, "damping": 20.0}),
     ),
+    "analysis.bands": (_no_patch, _set("analysis.bands", "iso15242")),
+    'analysis.limit_on = "axial_pp"': (_no_patch, _axial_limit),
+    "analysis.limit": (_no_patch, _set("analysis.limit", "1 um")),
 }
 
 

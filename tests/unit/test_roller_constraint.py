@@ -343,10 +343,12 @@ def test_summary_shows_the_motion_across_the_load() -> None:
     # the inner ring of a roller bearing moves far more across the load than along it: the
     # readable table says so, next to the measuring-direction figure
     from runout.case import load_case
+    from runout.display import LENGTH_UNITS
     from runout.models import run_model
 
     result = run_model(load_case(Path(__file__).parents[2] / "examples" / "seed004_nu209.toml"))
-    rows = {name: value for name, value, _ in result.summary_sections()[0][1]}
+    rows = {name: (value, unit) for name, value, unit in result.summary_sections()[0][1]}
     across = result.extras["horizontal_pp_m"]
-    assert rows["radial p-p across the load"] == f"{across * 1e9:.4g}"
+    value, unit = rows["radial p-p across the load"]  # shown at the table's scale (um here)
+    assert float(value) == pytest.approx(across * dict(LENGTH_UNITS)[unit], rel=1e-3)
     assert across > result.runout.radial_pp_m

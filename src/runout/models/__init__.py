@@ -74,4 +74,7 @@ def run_model(case: Any) -> Any:
         raise as_case_error(case, exc) from None
     if notes or warnings:
         result = dataclasses.replace(result, notes=(*result.notes, *warnings, *notes))
-    return result
+    # the case's [analysis] outputs beyond the model: bands, verdict, passage names
+    from runout.results import apply_analysis
+
+    return apply_analysis(result, case)

@@ -101,6 +101,7 @@ from runout.contact import (
     stiffness_from_delta_star_table,
 )
 from runout.decompose import Candidate, Direction, fit_lines, split_runout
+from runout.display import format_resolution
 from runout.errors import ConvergenceError, GeometryError, NumericalError
 from runout.imperfections import pack_harmonics
 from runout.kinematics import ball_spin_frequency, bearing_frequencies, cage_frequency
@@ -1353,8 +1354,8 @@ def run(case: Any, progress: Callable[[float], None] | None = None) -> RunResult
         notes.append("no steady state detected within the step budget; the record may be biased")
     if not comps:
         notes.append(
-            f"no line above the solver's resolution ({noise:.2g} m p-p): the response is "
-            "steady to within it"
+            f"no line above the solver's resolution ({format_resolution(noise)} p-p): the "
+            "response is steady to within it"
         )
     if integ.min_loaded < st.n_elements:
         notes.append(
