@@ -90,6 +90,13 @@ window.addEventListener('load', function () {
       }
     }
   }
+  var longest = 0;
+  for (var k = 0; k < boxes.length; k++) {
+    if (!boxes[k].el.closest('td')) continue;  // table cells: labels, values
+    longest = Math.max(longest, boxes[k].r - boxes[k].l);
+  }
+  document.body.dataset.height = document.documentElement.scrollHeight;
+  document.body.dataset.widest = Math.round(longest);
   document.body.dataset.textboxes = boxes.length;
   document.body.dataset.overlaps = count;
   document.body.dataset.overlapping = JSON.stringify(found);
@@ -206,8 +213,9 @@ def text_overlaps(page: Path, work: Path) -> dict[str, Any]:
     Returns
     -------
     dict
-        ``overlaps`` (count of intersecting pairs), ``textboxes`` (runs measured) and
-        ``examples`` (up to five overlapping pairs, as text).
+        ``overlaps`` (count of intersecting pairs), ``textboxes`` (runs measured),
+        ``examples`` (up to five overlapping pairs, as text), ``height`` (of the page [px])
+        and ``widest`` (the widest line of text in a table cell [px]).
     """
     import json
 
@@ -241,6 +249,8 @@ def text_overlaps(page: Path, work: Path) -> dict[str, Any]:
         "overlaps": int(attrs["overlaps"]),
         "textboxes": int(attrs.get("textboxes", "0")),
         "examples": examples,
+        "height": int(attrs.get("height", "0")),
+        "widest": int(attrs.get("widest", "0")),
     }
 
 

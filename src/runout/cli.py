@@ -351,6 +351,15 @@ def run(
             "--force", help="Replace the results of another case in --out (its case.toml differs)."
         ),
     ] = False,
+    history_revolutions: Annotated[
+        float,
+        typer.Option(
+            "--history-revolutions",
+            min=0.01,
+            max=1e6,
+            help="Revolutions of the rotating ring the time-history figure shows (the last ones).",
+        ),
+    ] = 3.0,
 ) -> None:
     r"""Run the model named in the case's \[analysis] table.
 
@@ -362,7 +371,6 @@ def run(
     """
     from runout.case import load_case
     from runout.models import run_model
-    from runout.results import apply_analysis
     from runout.summary import bearing_summary
 
     case = load_case(case_file)
@@ -370,14 +378,14 @@ def run(
         out = str(Path("out") / case_file.stem)
     # checked before the model runs: a refused directory costs nothing and is left untouched
     directory = None if out is None else _run_directory(out, case_file, force)
-    result = apply_analysis(run_model(case), case)
+    result = run_model(case)  # with the case's [analysis] outputs (bands, verdict)
     if as_json:
         _print_json(result.to_json())
     else:
         _print_sections(result.summary_sections())
     if directory is not None:
         try:
-            written = result.write(directory)
+            written = result.write(directory, history_revolutions=history_revolutions)
             # The inputs travel with the results, so a report can be rebuilt from the directory.
             summary = bearing_summary(case.bearing, case.operation)
             (directory / "summary.json").write_text(

@@ -525,8 +525,15 @@ class RunResult:
             sections.append(("Notes", [(note, "", "") for note in notes]))
         return sections
 
-    def write(self, directory: Path) -> list[Path]:
+    def write(self, directory: Path, *, history_revolutions: float = 3.0) -> list[Path]:
         """Write ``result.json``, ``history.csv``, ``lines.csv`` and plots into ``directory``.
+
+        Parameters
+        ----------
+        directory : Path
+            Output directory (created).
+        history_revolutions : float
+            Revolutions of the rotating ring the time-history figure shows (the last ones).
 
         Returns
         -------
@@ -559,7 +566,7 @@ class RunResult:
         written.append(path)
         from runout import plotting
 
-        written += plotting.plot_result(self, directory)
+        written += plotting.plot_result(self, directory, history_revolutions=history_revolutions)
         for writer in self.writers:
             written += writer(directory)
         return written

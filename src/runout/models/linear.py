@@ -929,9 +929,9 @@ class LinearResult(RunResult):
             sections.append(("Frequency attribution", attribution_table_rows(self.attribution)))
         return sections
 
-    def write(self, directory: Path) -> list[Path]:
+    def write(self, directory: Path, *, history_revolutions: float = 3.0) -> list[Path]:
         """The common files plus the linear model's waveform, spectrum and band plots."""
-        written = super().write(directory)
+        written = super().write(directory, history_revolutions=history_revolutions)
         if self.spectral_lines is None or not len(self.spectral_lines):
             return written
         from runout import plotting
