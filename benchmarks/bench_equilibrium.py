@@ -46,13 +46,13 @@ def reference_static(
     Q_j = K_n [L_j − A]₊^1.5 along that line. Returns u and the number of function calls.
     """
     kn = ball_race_contacts(bearing, bearing.free_contact_angle).combined_stiffness
-    z = bearing.n_elements
+    z = bearing.elements
     cpsi = np.cos(2.0 * math.pi * np.arange(z) / z)
     a = bearing.curvature_distance
     alpha0 = bearing.free_contact_angle
     rad = 0.5 * bearing.pitch_diameter + (
         bearing.inner_conformity - 0.5
-    ) * bearing.ball_diameter * math.cos(alpha0)
+    ) * bearing.element_diameter * math.cos(alpha0)
     s0, c0 = a * math.sin(alpha0), a * math.cos(alpha0)
     load = np.array([radial, axial, moment])
     scale = np.array([1.0, 1.0, 1.0 / rad])  # equations in N

@@ -32,8 +32,8 @@ def _case() -> tuple[Imperfections, lin.Rates]:
         inner=inner, outer=outer, elements=[ball] + [Harmonics.empty()] * 6, slant=Slant(0.05 * UM)
     )
     bearing = BallBearing(
-        n_elements=7,
-        ball_diameter=3.9688e-3,
+        elements=7,
+        element_diameter=3.9688e-3,
         pitch_diameter=15e-3,
         inner_conformity=0.52,
         outer_conformity=0.53,

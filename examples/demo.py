@@ -55,7 +55,7 @@ def main() -> None:
         b = case.bearing
         table.add_row(
             path.stem,
-            str(b.n_elements),
+            str(b.elements),
             f"{b.element_diameter * 1e3:.4g}",
             f"{b.pitch_diameter * 1e3:.5g}",
             f"{math.degrees(summary.contact_angle):.3f}",

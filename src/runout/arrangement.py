@@ -339,8 +339,8 @@ def verify(
 
     d = np.asarray(size_errors, dtype=np.float64)
     z = d.size
-    if z != case.bearing.n_elements:
-        raise GeometryError("size_errors", f"needs {case.bearing.n_elements} values, got {z}")
+    if z != case.bearing.elements:
+        raise GeometryError("size_errors", f"needs {case.bearing.elements} values, got {z}")
     f = np.zeros((z, 0), np.complex128) if form is None else np.asarray(form, np.complex128)
     f = f.reshape(z, -1)
     k = np.asarray(orders if orders is not None else 2 * np.arange(1, f.shape[1] + 1), np.int64)

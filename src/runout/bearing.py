@@ -9,8 +9,8 @@ Symbols used by the five source papers map onto these names as follows.
 ============================  =========  =========  =========  ==========  ==========
 quantity                      seed 000   seed 001   seed 002   seed 003    seed 004
 ============================  =========  =========  =========  ==========  ==========
-``n_elements``                Z          Z          Z          N_b         Z
-``ball_diameter`` [m]         2 r_b      d          d_b, 2r_b  d_b, 2r_b   D_w
+``elements``                  Z          Z          Z          N_b         Z
+``element_diameter`` [m]      2 r_b      d          d_b, 2r_b  d_b, 2r_b   D_w
 ``pitch_diameter`` [m]        —          D          d_c, 2r_c  d_m, 2r_m   (d_i+d_e)/2
 ``inner_conformity``          —          f_i        —          r_gi / d_b  —
 ``radial_clearance`` [m]      —          P_d        —          γ (see §)   d_e-d_i-2D_w
@@ -23,15 +23,66 @@ approach exceeds γ; we read that γ as the radial play P_d / 2 (the dynamic mod
 
 from __future__ import annotations
 
+import functools
 import math
+import warnings
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Literal
+from typing import Any, Literal, TypeVar
 
 from runout.errors import GeometryError
 
 __all__ = ["BallBearing", "Bearing", "Material", "Operation", "RollerBearing"]
 
 RingName = Literal["inner", "outer"]
+
+_T = TypeVar("_T")
+
+
+def _deprecated_names(renamed: dict[str, str]) -> Callable[[type[_T]], type[_T]]:
+    """Accept a class's former argument and attribute names for one release, with a warning.
+
+    The names of :class:`BallBearing`, :class:`RollerBearing` and :class:`Operation` equal the
+    case-file keys (``elements``, ``element_diameter``, ``radial_load_direction``, ...); the
+    names of runout 0.1 (``n_elements``, ``ball_diameter``, ``roller_diameter``,
+    ``radial_load_angle``, ``moment_load_angle``) still work as keyword arguments and
+    attributes and raise a :class:`DeprecationWarning` naming the new one.
+    """
+
+    def decorate(cls: type[_T]) -> type[_T]:
+        init = cls.__init__
+
+        @functools.wraps(init)
+        def __init__(self: Any, *args: Any, **kwargs: Any) -> None:
+            for old, new in renamed.items():
+                if old in kwargs:
+                    if new in kwargs:
+                        raise TypeError(f"{cls.__name__}() got both {new}= and its old name {old}=")
+                    warnings.warn(
+                        f"{cls.__name__}({old}=...) is deprecated: write {new}= (the case-file "
+                        "key); the old name goes in the next release",
+                        DeprecationWarning,
+                        stacklevel=2,
+                    )
+                    kwargs[new] = kwargs.pop(old)
+            init(self, *args, **kwargs)
+
+        cls.__init__ = __init__  # type: ignore[method-assign]
+        for old, new in renamed.items():
+
+            def getter(self: Any, _old: str = old, _new: str = new) -> Any:
+                warnings.warn(
+                    f"{type(self).__name__}.{_old} is deprecated: read .{_new} (the case-file "
+                    "key); the old name goes in the next release",
+                    DeprecationWarning,
+                    stacklevel=2,
+                )
+                return getattr(self, _new)
+
+            setattr(cls, old, property(getter, doc=f"Deprecated name of :attr:`{new}`."))
+        return cls
+
+    return decorate
 
 
 def _positive(name: str, value: float) -> None:
@@ -71,15 +122,16 @@ class Material:
         return self.youngs_modulus / (1.0 - self.poisson_ratio**2)
 
 
+@_deprecated_names({"n_elements": "elements", "ball_diameter": "element_diameter"})
 @dataclass(frozen=True)
 class BallBearing:
     """A deep-groove or angular-contact ball bearing.
 
     Parameters
     ----------
-    n_elements : int
+    elements : int
         Number of balls Z (>= 3).
-    ball_diameter : float
+    element_diameter : float
         Ball diameter D [m].
     pitch_diameter : float
         Pitch diameter d_m [m], mean of the groove-bottom diameters.
@@ -96,8 +148,8 @@ class BallBearing:
         Material of rings and balls.
     """
 
-    n_elements: int
-    ball_diameter: float
+    elements: int
+    element_diameter: float
     pitch_diameter: float
     inner_conformity: float = 0.52
     outer_conformity: float = 0.53
@@ -108,26 +160,26 @@ class BallBearing:
     kind = "ball"
 
     def __post_init__(self) -> None:
-        if isinstance(self.n_elements, bool) or not isinstance(self.n_elements, int):
-            raise GeometryError("n_elements", f"must be an integer, got {self.n_elements!r}")
-        if self.n_elements < 3:
-            raise GeometryError("n_elements", f"must be an integer >= 3, got {self.n_elements}")
-        _positive("ball_diameter", self.ball_diameter)
+        if isinstance(self.elements, bool) or not isinstance(self.elements, int):
+            raise GeometryError("elements", f"must be an integer, got {self.elements!r}")
+        if self.elements < 3:
+            raise GeometryError("elements", f"must be an integer >= 3, got {self.elements}")
+        _positive("element_diameter", self.element_diameter)
         _positive("pitch_diameter", self.pitch_diameter)
-        if self.ball_diameter >= self.pitch_diameter:
+        if self.element_diameter >= self.pitch_diameter:
             raise GeometryError(
-                "ball_diameter",
-                f"{self.ball_diameter * 1e3:.6g} mm is not smaller than the pitch diameter "
+                "element_diameter",
+                f"{self.element_diameter * 1e3:.6g} mm is not smaller than the pitch diameter "
                 f"{self.pitch_diameter * 1e3:.6g} mm",
             )
-        chord = self.pitch_diameter * math.sin(math.pi / self.n_elements)
-        if self.ball_diameter >= chord:
+        chord = self.pitch_diameter * math.sin(math.pi / self.elements)
+        if self.element_diameter >= chord:
             raise GeometryError(
-                "n_elements",
-                f"{self.n_elements} balls of {self.ball_diameter * 1e3:.6g} mm overlap on a "
+                "elements",
+                f"{self.elements} balls of {self.element_diameter * 1e3:.6g} mm overlap on a "
                 f"{self.pitch_diameter * 1e3:.6g} mm pitch circle (centre spacing "
                 f"{chord * 1e3:.6g} mm); at most "
-                f"{_max_elements(self.ball_diameter, self.pitch_diameter)} fit",
+                f"{_max_elements(self.element_diameter, self.pitch_diameter)} fit",
             )
         for name in ("inner_conformity", "outer_conformity"):
             value = getattr(self, name)
@@ -155,19 +207,14 @@ class BallBearing:
 
     # --- derived geometry -------------------------------------------------------------
     @property
-    def element_diameter(self) -> float:
-        """Alias of :attr:`ball_diameter` shared with roller bearings [m]."""
-        return self.ball_diameter
-
-    @property
     def inner_groove_radius(self) -> float:
         """r_i = f_i D [m]."""
-        return self.inner_conformity * self.ball_diameter
+        return self.inner_conformity * self.element_diameter
 
     @property
     def outer_groove_radius(self) -> float:
         """r_o = f_o D [m]."""
-        return self.outer_conformity * self.ball_diameter
+        return self.outer_conformity * self.element_diameter
 
     @property
     def total_curvature(self) -> float:
@@ -177,17 +224,17 @@ class BallBearing:
     @property
     def curvature_distance(self) -> float:
         """A = r_i + r_o - D between the groove curvature centres [m] (seed 003 eq. 2.22)."""
-        return self.total_curvature * self.ball_diameter
+        return self.total_curvature * self.element_diameter
 
     @property
     def inner_raceway_diameter(self) -> float:
         """Groove-bottom diameter of the inner raceway d_i = d_m - D - P_d/2 [m]."""
-        return self.pitch_diameter - self.ball_diameter - 0.5 * self.radial_clearance
+        return self.pitch_diameter - self.element_diameter - 0.5 * self.radial_clearance
 
     @property
     def outer_raceway_diameter(self) -> float:
         """Groove-bottom diameter of the outer raceway d_o = d_m + D + P_d/2 [m]."""
-        return self.pitch_diameter + self.ball_diameter + 0.5 * self.radial_clearance
+        return self.pitch_diameter + self.element_diameter + 0.5 * self.radial_clearance
 
     @property
     def free_contact_angle(self) -> float:
@@ -210,15 +257,16 @@ def _max_elements(diameter: float, pitch_diameter: float) -> int:
     return math.floor(math.pi / math.asin(min(1.0, diameter / pitch_diameter)) - 1e-12)
 
 
+@_deprecated_names({"n_elements": "elements", "roller_diameter": "element_diameter"})
 @dataclass(frozen=True)
 class RollerBearing:
     """A cylindrical roller bearing (line contact, contact angle 0).
 
     Parameters
     ----------
-    n_elements : int
+    elements : int
         Number of rollers Z (>= 3).
-    roller_diameter : float
+    element_diameter : float
         Roller diameter D_w [m].
     inner_raceway_diameter : float
         Inner raceway diameter d_i [m].
@@ -230,8 +278,8 @@ class RollerBearing:
         Material of rings and rollers.
     """
 
-    n_elements: int
-    roller_diameter: float
+    elements: int
+    element_diameter: float
     inner_raceway_diameter: float
     outer_raceway_diameter: float
     roller_length: float | None = None
@@ -241,11 +289,11 @@ class RollerBearing:
     contact_angle = 0.0
 
     def __post_init__(self) -> None:
-        if isinstance(self.n_elements, bool) or not isinstance(self.n_elements, int):
-            raise GeometryError("n_elements", f"must be an integer, got {self.n_elements!r}")
-        if self.n_elements < 3:
-            raise GeometryError("n_elements", f"must be an integer >= 3, got {self.n_elements}")
-        _positive("roller_diameter", self.roller_diameter)
+        if isinstance(self.elements, bool) or not isinstance(self.elements, int):
+            raise GeometryError("elements", f"must be an integer, got {self.elements!r}")
+        if self.elements < 3:
+            raise GeometryError("elements", f"must be an integer >= 3, got {self.elements}")
+        _positive("element_diameter", self.element_diameter)
         _positive("inner_raceway_diameter", self.inner_raceway_diameter)
         _positive("outer_raceway_diameter", self.outer_raceway_diameter)
         if self.roller_length is not None:
@@ -256,19 +304,14 @@ class RollerBearing:
                 f"d_e - d_i - 2 D_w = {self.radial_clearance * 1e6:.6g} um: negative clearance "
                 "(rollers do not fit between the raceways)",
             )
-        chord = self.pitch_diameter * math.sin(math.pi / self.n_elements)
-        if self.roller_diameter >= chord:
+        chord = self.pitch_diameter * math.sin(math.pi / self.elements)
+        if self.element_diameter >= chord:
             raise GeometryError(
-                "n_elements",
-                f"{self.n_elements} rollers of {self.roller_diameter * 1e3:.6g} mm overlap on a "
+                "elements",
+                f"{self.elements} rollers of {self.element_diameter * 1e3:.6g} mm overlap on a "
                 f"{self.pitch_diameter * 1e3:.6g} mm pitch circle; at most "
-                f"{_max_elements(self.roller_diameter, self.pitch_diameter)} fit",
+                f"{_max_elements(self.element_diameter, self.pitch_diameter)} fit",
             )
-
-    @property
-    def element_diameter(self) -> float:
-        """Alias of :attr:`roller_diameter` shared with ball bearings [m]."""
-        return self.roller_diameter
 
     @property
     def pitch_diameter(self) -> float:
@@ -279,7 +322,7 @@ class RollerBearing:
     def radial_clearance(self) -> float:
         """Diametral play P_d = d_e - d_i - 2 D_w [m]."""
         return (
-            self.outer_raceway_diameter - self.inner_raceway_diameter - 2.0 * self.roller_diameter
+            self.outer_raceway_diameter - self.inner_raceway_diameter - 2.0 * self.element_diameter
         )
 
     @property
@@ -291,6 +334,9 @@ class RollerBearing:
 Bearing = BallBearing | RollerBearing
 
 
+@_deprecated_names(
+    {"radial_load_angle": "radial_load_direction", "moment_load_angle": "moment_load_direction"}
+)
 @dataclass(frozen=True)
 class Operation:
     """How the bearing runs and what loads it.
@@ -308,12 +354,12 @@ class Operation:
         Axial load or constant-pressure preload [N] (>= 0).
     radial_load : float
         Radial load magnitude [N] (>= 0).
-    radial_load_angle : float
+    radial_load_direction : float
         Direction of the radial load, counter-clockwise from +x [rad]. Default -π/2 (along -y).
     moment_load : float
         Magnitude of a tilting moment on the inner ring [N m] (>= 0); only the
         ``equilibrium`` model uses it.
-    moment_load_angle : float
+    moment_load_direction : float
         Direction of the moment vector in the x-y plane, counter-clockwise from +x [rad].
     """
 
@@ -322,16 +368,16 @@ class Operation:
     other_ring_speed: float = 0.0
     axial_load: float = 0.0
     radial_load: float = 0.0
-    radial_load_angle: float = -math.pi / 2
+    radial_load_direction: float = -math.pi / 2
     moment_load: float = 0.0
-    moment_load_angle: float = 0.0
+    moment_load_direction: float = 0.0
 
     def __post_init__(self) -> None:
         if self.rotating_ring not in ("inner", "outer"):
             raise GeometryError(
                 "operation.rotating_ring", f'must be "inner" or "outer", got {self.rotating_ring!r}'
             )
-        for name in ("speed", "other_ring_speed", "radial_load_angle", "moment_load_angle"):
+        for name in ("speed", "other_ring_speed", "radial_load_direction", "moment_load_direction"):
             if not math.isfinite(getattr(self, name)):
                 raise GeometryError(f"operation.{name}", "must be finite")
         for name in ("axial_load", "radial_load", "moment_load"):

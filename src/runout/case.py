@@ -1048,9 +1048,8 @@ class Case:
 
 
 _GEOMETRY_KEYS = {
-    "n_elements": "bearing.elements",
-    "ball_diameter": "bearing.element_diameter",
-    "roller_diameter": "bearing.element_diameter",
+    "elements": "bearing.elements",
+    "element_diameter": "bearing.element_diameter",
     "pitch_diameter": "bearing.pitch_diameter",
     "inner_conformity": "bearing.inner_conformity",
     "outer_conformity": "bearing.outer_conformity",
@@ -1077,8 +1076,8 @@ def _build_bearing(spec: CaseSpec) -> Bearing:
     if b.type == "cylindrical_roller":
         assert b.inner_raceway_diameter is not None and b.outer_raceway_diameter is not None
         return RollerBearing(
-            n_elements=b.elements,
-            roller_diameter=b.element_diameter,
+            elements=b.elements,
+            element_diameter=b.element_diameter,
             inner_raceway_diameter=b.inner_raceway_diameter,
             outer_raceway_diameter=b.outer_raceway_diameter,
             roller_length=b.roller_length,
@@ -1119,8 +1118,8 @@ def _build_bearing(spec: CaseSpec) -> Bearing:
             b, f_i, f_o, "radial_clearance" in b.model_fields_set
         )
     return BallBearing(
-        n_elements=b.elements,
-        ball_diameter=b.element_diameter,
+        elements=b.elements,
+        element_diameter=b.element_diameter,
         pitch_diameter=b.pitch_diameter,
         inner_conformity=f_i,
         outer_conformity=f_o,
@@ -1327,7 +1326,7 @@ def _read_profile(p: ProfileSpec, key: str, base_dir: Path, limits: Budget) -> H
 def _build_imperfections(
     spec: CaseSpec, bearing: Bearing, base_dir: Path, limits: Budget | None = None
 ) -> Imperfections:
-    z = bearing.n_elements
+    z = bearing.elements
     limits = case_budget(spec) if limits is None else limits
     _check_harmonics_budget(spec, z, limits)
     imp = Imperfections.perfect(z)
@@ -1550,9 +1549,9 @@ def parse_case(data: dict[str, Any], path: str = "<case>", base_dir: Path | None
             other_ring_speed=spec.operation.other_ring_speed,
             axial_load=spec.operation.axial_load,
             radial_load=spec.operation.radial_load,
-            radial_load_angle=spec.operation.radial_load_direction,
+            radial_load_direction=spec.operation.radial_load_direction,
             moment_load=spec.operation.moment_load,
-            moment_load_angle=spec.operation.moment_load_direction,
+            moment_load_direction=spec.operation.moment_load_direction,
         )
     except GeometryError as exc:
         raise CaseError(path, exc.key, exc.message) from None

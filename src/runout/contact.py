@@ -689,7 +689,7 @@ def ball_race_contacts(bearing: BallBearing, contact_angle: float | None = None)
         ("outer", bearing.outer_conformity),
     )
     for race, f in races:
-        s, fr = ball_race_curvature(bearing.ball_diameter, bearing.pitch_diameter, f, alpha, race)
+        s, fr = ball_race_curvature(bearing.element_diameter, bearing.pitch_diameter, f, alpha, race)
         contacts.append(point_contact(float(s), float(fr), ep))
     inner, outer = contacts
     kn = float(combined_stiffness(inner.stiffness, outer.stiffness))
@@ -1112,7 +1112,7 @@ def roller_race_contacts(bearing: RollerBearing) -> RollerContacts:
     ep = bearing.material.effective_modulus
     scale = (_STEEL_EFFECTIVE_MODULUS / ep) ** _LINE_EXP
     k = (length**0.8 / (scale * PALMGREN_LINE_CONSTANT)) ** (1.0 / _LINE_EXP)
-    d = bearing.roller_diameter
+    d = bearing.element_diameter
     inner = LineContact(length, ep, 2.0 / d + 2.0 / bearing.inner_raceway_diameter, k)
     outer = LineContact(length, ep, 2.0 / d - 2.0 / bearing.outer_raceway_diameter, k)
     kn = float(combined_stiffness(k, k, exponent=1.0 / _LINE_EXP))
@@ -1233,7 +1233,7 @@ def ball_load_validity(
             f"{what} ({race} raceway)",
             float(pc.max_pressure(load)),
             float(a),
-            bearing.ball_diameter,
+            bearing.element_diameter,
             ISO76_BALL_PRESSURE,
             "ellipse length",
         )
@@ -1260,7 +1260,7 @@ def roller_load_validity(
             f"{what} ({race} raceway)",
             float(lc.max_pressure(load)),
             float(lc.semi_width(load)),
-            bearing.roller_diameter,
+            bearing.element_diameter,
             ISO76_ROLLER_PRESSURE,
             "width",
         )

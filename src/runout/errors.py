@@ -19,7 +19,7 @@ class GeometryError(RunoutError, ValueError):
     Parameters
     ----------
     key : str
-        Name of the offending quantity, e.g. ``"ball_diameter"``.
+        Name of the offending quantity, e.g. ``"element_diameter"``.
     message : str
         What is wrong, in words a bearing engineer understands.
     """

@@ -199,7 +199,7 @@ def bearing_frequencies(
         bearing.pitch_diameter,
         alpha,
     )
-    z = bearing.n_elements
+    z = bearing.elements
     return Frequencies(
         rotation=abs(operation.speed),
         cage=float(abs(cage_frequency(*args))),

@@ -387,7 +387,7 @@ def sizes_of(case: Any) -> Sizes:
     orders = [imp.inner.max_order, imp.outer.max_order]
     orders += [h.max_order for h in imp.elements]
     return Sizes(
-        elements=int(case.bearing.n_elements),
+        elements=int(case.bearing.elements),
         ring_harmonics=len(imp.inner) + len(imp.outer),
         element_harmonics=sum(elements),
         largest_element=max(elements, default=1),
@@ -600,7 +600,7 @@ def estimate_study(case: Any, per_run: Estimate) -> Estimate:
     each = per_run.seconds
     if batched_study(case):
         memory = max(memory, batched_memory(case) + points * STUDY_BYTES_PER_RUN)
-        each = case.analysis.samples * case.bearing.n_elements * COST_BATCH
+        each = case.analysis.samples * case.bearing.elements * COST_BATCH
     seconds = points * each
     what = f"{points} runs x about {format_seconds(each)} each"
     return Estimate(memory, seconds, key, key, f"{points} runs", what)

@@ -162,7 +162,7 @@ def _kn(bearing: BallBearing, alpha: float, stiffness: str) -> float:
 def _load_at(bearing: BallBearing, alpha: float, alpha0: float, kn: float) -> float:
     a = bearing.curvature_distance
     stretch = max(math.cos(alpha0) / math.cos(alpha) - 1.0, 0.0)
-    return bearing.n_elements * kn * (a * stretch) ** 1.5 * math.sin(alpha)
+    return bearing.elements * kn * (a * stretch) ** 1.5 * math.sin(alpha)
 
 
 def axial_loading(
@@ -262,7 +262,7 @@ def _axial_loading(
 def _result(
     bearing: BallBearing, fa: float, alpha0: float, alpha: float, contacts: BallContacts
 ) -> AxialLoading:
-    q = fa / (bearing.n_elements * math.sin(alpha))
+    q = fa / (bearing.elements * math.sin(alpha))
     d_i = (q / contacts.inner.stiffness) ** (2.0 / 3.0)
     d_o = (q / contacts.outer.stiffness) ** (2.0 / 3.0)
     a = bearing.curvature_distance
@@ -305,7 +305,7 @@ def axial_loading_fixed_angle(
         raise GeometryError(
             "contact_angle", "a zero contact angle cannot carry an axial load when it is fixed"
         )
-    q = fa / (bearing.n_elements * math.sin(alpha))
+    q = fa / (bearing.elements * math.sin(alpha))
     d_i = (q / contacts.inner.stiffness) ** (2.0 / 3.0)
     d_o = (q / contacts.outer.stiffness) ** (2.0 / 3.0)
     d_n = d_i + d_o

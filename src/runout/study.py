@@ -218,8 +218,8 @@ def _convert(
 ) -> Any:
     """SI value of ``raw`` placed at ``path``: validated as the case key itself would be."""
     trial = copy.deepcopy(data)
-    size = case.bearing.n_elements if path == ("elements", None, "diameter_errors") else 0
-    size = case.bearing.n_elements if path == ("elements", None, "pitch_errors") else size
+    size = case.bearing.elements if path == ("elements", None, "diameter_errors") else 0
+    size = case.bearing.elements if path == ("elements", None, "pitch_errors") else size
     _set_at(trial, path, [raw] * size if size else raw)
     try:
         spec = CaseSpec.model_validate(trial)
@@ -253,7 +253,7 @@ def plan_quantities(case: Case, data: dict[str, Any] | None = None) -> list[Quan
     """
     study = _study_of(case)
     data = _case_data(case) if data is None else data
-    z = case.bearing.n_elements
+    z = case.bearing.elements
     out: list[Quantity] = []
     for key in sorted(study.vary):
         entry = study.vary[key]
@@ -584,7 +584,7 @@ def _batch_base(task: ChunkTask) -> BatchArrays:
     from runout.conventions import enforce
 
     enforce(case, "quasi_static_2d")  # the batch shares the model's refusals
-    z = case.bearing.n_elements
+    z = case.bearing.elements
     base = Case(
         path=case.path,
         title=case.title,

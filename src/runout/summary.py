@@ -109,7 +109,7 @@ class BearingSummary:
         b = self.bearing
         geometry: Rows = [
             ("type", b.kind, ""),
-            ("elements Z", str(b.n_elements), ""),
+            ("elements Z", str(b.elements), ""),
             ("element diameter D", f"{b.element_diameter * 1e3:.6g}", "mm"),
             ("pitch diameter d_m", f"{b.pitch_diameter * 1e3:.6g}", "mm"),
             ("inner raceway diameter d_i", f"{b.inner_raceway_diameter * 1e3:.6g}", "mm"),
@@ -199,7 +199,7 @@ class BearingSummary:
 def _bearing_json(b: Bearing) -> dict[str, Any]:
     common = {
         "type": b.kind,
-        "elements": b.n_elements,
+        "elements": b.elements,
         "element_diameter_m": b.element_diameter,
         "pitch_diameter_m": b.pitch_diameter,
         "radial_clearance_m": b.radial_clearance,

@@ -35,6 +35,8 @@ _MODEL_KEYS = {
     "alpha": "analysis.revolutions",
     "preload": "operation.axial_load",
     "imperfections.elements": "elements",
+    "elements": "bearing.elements",
+    "element_diameter": "bearing.element_diameter",
     "n_elements": "bearing.elements",
     "ball_diameter": "bearing.element_diameter",
     "roller_diameter": "bearing.element_diameter",
@@ -84,7 +86,7 @@ def _element_loads(case: Any, model: str) -> list[tuple[str, float, str]]:
     from runout.summary import operating_contact_angle
 
     bearing, op = case.bearing, case.operation
-    z = bearing.n_elements
+    z = bearing.elements
     try:
         alpha, _ = operating_contact_angle(bearing, op)
     except (GeometryError, NumericalError):

@@ -82,7 +82,7 @@ def test_series_stiffness_below_both_contacts(
 def test_contact_angle_increases_with_axial_load(
     bearing: BallBearing, load: float, factor: float
 ) -> None:
-    scale = bearing.material.youngs_modulus * bearing.ball_diameter**2 * 1e-6
+    scale = bearing.material.youngs_modulus * bearing.element_diameter**2 * 1e-6
     fa = load * scale / 1e4  # keep loads physical for every ball size and modulus
     low = axial_loading(bearing, fa)
     high = axial_loading(bearing, fa * factor)

@@ -30,8 +30,8 @@ def cases(draw: st.DrawFn) -> tuple[BallBearing, Operation, float, Imperfections
     d = draw(st.floats(1e-3, 0.9 * dm * math.sin(math.pi / z)))
     alpha = math.radians(draw(st.floats(0.0, 40.0)))
     bearing = BallBearing(
-        n_elements=z,
-        ball_diameter=d,
+        elements=z,
+        element_diameter=d,
         pitch_diameter=dm,
         inner_conformity=0.52,
         outer_conformity=0.53,

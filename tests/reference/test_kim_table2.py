@@ -31,8 +31,8 @@ FIT_Z = 10
 
 def _bearing(z: int) -> BallBearing:
     return BallBearing(
-        n_elements=z,
-        ball_diameter=1.5875e-3,
+        elements=z,
+        element_diameter=1.5875e-3,
         pitch_diameter=9.1e-3,
         inner_conformity=0.529,
         outer_conformity=0.535,
@@ -86,7 +86,7 @@ def test_kim2002_table2_total_deflection_is_geometric_at_printed_angles() -> Non
 def test_kim2002_table2_speed_effects_too_small_to_explain_gap() -> None:
     # centrifugal force of one ball at the cage speed of 7200 rpm (f_c = 50 Hz, seed 001 §5.1)
     b = _bearing(FIT_Z)
-    mass = b.material.density * math.pi / 6 * b.ball_diameter**3
+    mass = b.material.density * math.pi / 6 * b.element_diameter**3
     centrifugal = mass * 0.5 * b.pitch_diameter * (2 * math.pi * 50.0) ** 2
     q = _solve(FIT_Z).ball_load
     assert centrifugal == pytest.approx(7.4e-3, rel=0.01)

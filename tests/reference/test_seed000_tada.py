@@ -59,7 +59,7 @@ def tada_case(
 def tada_frequencies(case: Case) -> dict[str, float]:
     """f_c, f_b, f_r and Tada's f_i = Z f_c, f_o = Z (f_r - f_c), outer ring rotating."""
     alpha = qs3.setup(case).contact_angle
-    d, dm, z = 1e-3, 7e-3, case.bearing.n_elements
+    d, dm, z = 1e-3, 7e-3, case.bearing.elements
     fc = float(cage_frequency(0.0, SPEED_HZ, d, dm, alpha))
     fb = float(ball_spin_frequency(0.0, SPEED_HZ, d, dm, alpha))
     return {"f_c": fc, "f_b": fb, "f_r": SPEED_HZ, "f_i": z * fc, "f_o": z * (SPEED_HZ - fc)}

@@ -82,7 +82,7 @@ def test_kim_centrifugal_force_is_the_cage_orbit() -> None:
     # F_c = m d_m ω_m² / 2 with ω_m the cage speed (seed 001 eq. 7 gives f_c ≈ 50 Hz)
     b = kim_bearing(10)
     sol = solve_equilibrium(b, Operation("inner", SPEED, axial_load=PRELOAD))
-    mass = 7850.0 * math.pi * b.ball_diameter**3 / 6.0
+    mass = 7850.0 * math.pi * b.element_diameter**3 / 6.0
     wm = sol.orbit_speed[0]
     assert wm / (2 * math.pi) == pytest.approx(50.0, rel=0.01)
     assert sol.centrifugal_force[0] == pytest.approx(0.5 * mass * 9.1e-3 * wm**2, rel=1e-12)
@@ -107,7 +107,7 @@ def iso_bearing(clearance: float) -> BallBearing:
 
 def _suite_radius_ratio(b: BallBearing) -> float:
     """ℜ_i / (d_m/2) [-]."""
-    rad_i = 0.5 * b.pitch_diameter + (b.inner_conformity - 0.5) * b.ball_diameter * math.cos(
+    rad_i = 0.5 * b.pitch_diameter + (b.inner_conformity - 0.5) * b.element_diameter * math.cos(
         b.free_contact_angle
     )
     return rad_i / (0.5 * b.pitch_diameter)
@@ -127,7 +127,7 @@ ISO_DISPLACEMENTS = {
 def test_iso_ts_16281_suite_displacements(name: str) -> None:
     clearance, fa, fr, radial_um, axial_um = ISO_DISPLACEMENTS[name]
     b = iso_bearing(clearance)
-    op = Operation("inner", 0.0, axial_load=fa, radial_load=fr, radial_load_angle=0.0)
+    op = Operation("inner", 0.0, axial_load=fa, radial_load=fr, radial_load_direction=0.0)
     q = solve_equilibrium(b, op).displacement
     if radial_um is not None:
         assert math.hypot(q[1], q[2]) / UM == pytest.approx(radial_um, rel=ISO_TOL)
@@ -138,7 +138,7 @@ def test_iso_ts_16281_suite_displacements(name: str) -> None:
 def test_iso_ts_16281_suite_case5_free_tilt() -> None:
     # no moment: the ring tilts freely under the combined load; 2.6872 mrad in the suite
     b = iso_bearing(10 * UM)
-    op = Operation("inner", 0.0, axial_load=ISO_FORCE, radial_load=ISO_FORCE, radial_load_angle=0.0)
+    op = Operation("inner", 0.0, axial_load=ISO_FORCE, radial_load=ISO_FORCE, radial_load_direction=0.0)
     q = solve_equilibrium(b, op).displacement
     tilt = math.hypot(q[3], q[4])
     assert tilt * _suite_radius_ratio(b) == pytest.approx(2.6872e-3, rel=ISO_TOL)

@@ -18,8 +18,8 @@ D, DM, ALPHA, Z = 3.9688e-3, 15e-3, math.radians(10.0), 7
 
 def _bearing() -> BallBearing:
     return BallBearing(
-        n_elements=Z,
-        ball_diameter=D,
+        elements=Z,
+        element_diameter=D,
         pitch_diameter=DM,
         inner_conformity=0.52,
         outer_conformity=0.53,

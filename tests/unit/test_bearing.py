@@ -13,7 +13,7 @@ def test_harris_derived_geometry() -> None:
     b = BallBearing(10, 1.5875e-3, 9.1e-3, 0.529, 0.535, 5e-6)
     assert b.total_curvature == pytest.approx(0.064)
     assert b.curvature_distance == pytest.approx(0.064 * 1.5875e-3)
-    assert b.outer_raceway_diameter - b.inner_raceway_diameter - 2 * b.ball_diameter == (
+    assert b.outer_raceway_diameter - b.inner_raceway_diameter - 2 * b.element_diameter == (
         pytest.approx(5e-6)
     )
     assert 0.5 * (b.inner_raceway_diameter + b.outer_raceway_diameter) == pytest.approx(9.1e-3)
@@ -42,11 +42,11 @@ def test_roller_bearing_derives_pitch_and_clearance() -> None:
 @pytest.mark.parametrize(
     ("kwargs", "key", "words"),
     [
-        ({"n_elements": 2}, "n_elements", ">= 3"),
-        ({"n_elements": 7.0}, "n_elements", "integer"),
-        ({"ball_diameter": -1e-3}, "ball_diameter", "positive"),
-        ({"ball_diameter": 8e-3}, "ball_diameter", "not smaller than the pitch"),
-        ({"n_elements": 30}, "n_elements", "overlap"),
+        ({"elements": 2}, "elements", ">= 3"),
+        ({"elements": 7.0}, "elements", "integer"),
+        ({"element_diameter": -1e-3}, "element_diameter", "positive"),
+        ({"element_diameter": 8e-3}, "element_diameter", "not smaller than the pitch"),
+        ({"elements": 30}, "elements", "overlap"),
         ({"inner_conformity": 0.5}, "inner_conformity", "> 0.5"),
         ({"outer_conformity": 0.49}, "outer_conformity", "> 0.5"),
         ({"radial_clearance": -1e-6}, "radial_clearance", "negative"),
@@ -55,7 +55,7 @@ def test_roller_bearing_derives_pitch_and_clearance() -> None:
     ],
 )
 def test_impossible_ball_bearing_is_refused(kwargs, key, words) -> None:
-    base = {"n_elements": 8, "ball_diameter": 1e-3, "pitch_diameter": 7e-3}
+    base = {"elements": 8, "element_diameter": 1e-3, "pitch_diameter": 7e-3}
     base.update(kwargs)
     with pytest.raises(GeometryError) as info:
         BallBearing(**base)
@@ -100,3 +100,30 @@ def test_operation_ring_speeds() -> None:
         Operation("cage", speed=1.0)  # type: ignore[arg-type]
     with pytest.raises(GeometryError):
         Operation("inner", axial_load=-1.0)
+
+
+def test_former_names_work_for_one_release_with_a_warning() -> None:
+    """runout 0.1's argument and attribute names still work and say what to write."""
+    new = BallBearing(elements=8, element_diameter=1e-3, pitch_diameter=7e-3)
+    with pytest.warns(DeprecationWarning) as record:
+        old = BallBearing(n_elements=8, ball_diameter=1e-3, pitch_diameter=7e-3)
+    assert old == new
+    said = " ".join(str(w.message) for w in record)
+    assert "write elements=" in said and "write element_diameter=" in said
+    with pytest.warns(DeprecationWarning, match=r"read \.element_diameter"):
+        assert new.ball_diameter == 1e-3
+    with pytest.warns(DeprecationWarning, match="write element_diameter="):
+        roller = RollerBearing(
+            elements=12,
+            roller_diameter=9e-3,
+            inner_raceway_diameter=40e-3,
+            outer_raceway_diameter=58e-3,
+        )
+    assert roller.element_diameter == 9e-3
+    with pytest.warns(DeprecationWarning, match="write radial_load_direction="):
+        op = Operation(radial_load_angle=0.25)
+    assert op.radial_load_direction == 0.25
+    with pytest.warns(DeprecationWarning, match=r"read \.moment_load_direction"):
+        assert op.moment_load_angle == 0.0
+    with pytest.raises(TypeError, match="both elements= and its old name n_elements="):
+        BallBearing(elements=8, n_elements=8, element_diameter=1e-3, pitch_diameter=7e-3)

@@ -30,10 +30,10 @@ def _with(**tables):  # type: ignore[no-untyped-def]
 
 def test_units_reach_si() -> None:
     case = _with()
-    assert case.bearing.ball_diameter == pytest.approx(3.9688e-3)
+    assert case.bearing.element_diameter == pytest.approx(3.9688e-3)
     assert case.bearing.radial_clearance == pytest.approx(10e-6)
     assert case.operation.speed == pytest.approx(30.0)
-    assert case.operation.radial_load_angle == pytest.approx(-math.pi / 2)
+    assert case.operation.radial_load_direction == pytest.approx(-math.pi / 2)
     assert case.imperfections.is_perfect
 
 
@@ -118,4 +118,4 @@ def test_both_rings_turning() -> None:
 @pytest.mark.parametrize("path", sorted(EXAMPLES.glob("*.toml")), ids=lambda p: p.stem)
 def test_examples_load(path: Path) -> None:
     case = load_case(path)
-    assert case.bearing.n_elements >= 3
+    assert case.bearing.elements >= 3

@@ -44,8 +44,8 @@ STEEL = Material(207.5e9, 0.3)
 
 def _bearing(**kw: object) -> BallBearing:
     args: dict[str, object] = {
-        "n_elements": 9,
-        "ball_diameter": 12.7e-3,
+        "elements": 9,
+        "element_diameter": 12.7e-3,
         "pitch_diameter": 65e-3,
         "inner_conformity": 0.52,
         "outer_conformity": 0.52,
@@ -308,7 +308,7 @@ def test_axial_loading_is_self_consistent(
     a = b.curvature_distance
     alpha0 = b.free_contact_angle
     # force balance and geometry
-    assert b.n_elements * r.ball_load * math.sin(r.contact_angle) == pytest.approx(fa, rel=1e-12)
+    assert b.elements * r.ball_load * math.sin(r.contact_angle) == pytest.approx(fa, rel=1e-12)
     geometric = a * (math.cos(alpha0) / math.cos(r.contact_angle) - 1.0)
     assert r.total_approach == pytest.approx(geometric, rel=1e-9)
     assert r.inner_approach + r.outer_approach == pytest.approx(r.total_approach, rel=1e-14)

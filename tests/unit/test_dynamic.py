@@ -93,7 +93,7 @@ def test_preloaded_contact_angle_zero_clearance_is_eq_2_21() -> None:
     case = make_case(clearance=0.0, axial=50.0)
     b = case.bearing
     alpha, kn = dy.preloaded_contact_angle(b, 50.0, 0.0, "exact")
-    pl = b.n_elements * kn * (b.curvature_distance * (1 / math.cos(alpha) - 1)) ** 1.5
+    pl = b.elements * kn * (b.curvature_distance * (1 / math.cos(alpha) - 1)) ** 1.5
     assert pl * math.sin(alpha) == pytest.approx(50.0, rel=1e-10)
 
 

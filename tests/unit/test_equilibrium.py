@@ -29,10 +29,10 @@ def _ring_balance(
     """Loads recomputed from the per-ball outputs minus the applied (module docstring)."""
     lam_i = 2.0 if race_control == "inner" else 0.0
     psi, ai = sol.azimuth, sol.inner_contact_angle
-    md = sol.gyroscopic_moment / b.ball_diameter
+    md = sol.gyroscopic_moment / b.element_diameter
     qa = sol.inner_load * np.sin(ai) - lam_i * md * np.cos(ai)
     qr = sol.inner_load * np.cos(ai) + lam_i * md * np.sin(ai)
-    rad = 0.5 * b.pitch_diameter + (b.inner_conformity - 0.5) * b.ball_diameter * math.cos(
+    rad = 0.5 * b.pitch_diameter + (b.inner_conformity - 0.5) * b.element_diameter * math.cos(
         b.free_contact_angle
     )
     # unloaded balls exert nothing on the inner ring (no contact, no friction)
@@ -50,10 +50,10 @@ def _ring_balance(
     want = np.array(
         [
             op.axial_load,
-            op.radial_load * math.cos(op.radial_load_angle),
-            op.radial_load * math.sin(op.radial_load_angle),
-            op.moment_load * math.cos(op.moment_load_angle),
-            op.moment_load * math.sin(op.moment_load_angle),
+            op.radial_load * math.cos(op.radial_load_direction),
+            op.radial_load * math.sin(op.radial_load_direction),
+            op.moment_load * math.cos(op.moment_load_direction),
+            op.moment_load * math.sin(op.moment_load_direction),
         ]
     )
     return got - want
@@ -65,7 +65,7 @@ def _ball_balance(
     """Seed 001 eq. 3-4 recomputed from the outputs [N], shape (2, Z)."""
     lam_i, lam_o = {"outer": (0.0, 2.0), "inner": (2.0, 0.0), "none": (0.0, 0.0)}[race_control]
     ai, ao = sol.inner_contact_angle, sol.outer_contact_angle
-    md = sol.gyroscopic_moment / b.ball_diameter
+    md = sol.gyroscopic_moment / b.element_diameter
     g1 = (
         sol.inner_load * np.sin(ai)
         - sol.outer_load * np.sin(ao)
@@ -82,7 +82,7 @@ def _ball_balance(
 
 def _compatibility(b: BallBearing, sol: eq.EquilibriumSolution) -> np.ndarray:
     """Distance between groove centres along the two contact lines vs A_1, A_2 [m]."""
-    d = b.ball_diameter
+    d = b.element_diameter
     ri = (b.inner_conformity - 0.5) * d + sol.inner_approach
     ro = (b.outer_conformity - 0.5) * d + sol.outer_approach
     a1 = ri * np.sin(sol.inner_contact_angle) + ro * np.sin(sol.outer_contact_angle)
@@ -119,9 +119,9 @@ def test_equilibrium_satisfies_every_equation(
         speed,
         axial_load=axial,
         radial_load=radial,
-        radial_load_angle=direction,
+        radial_load_direction=direction,
         moment_load=moment,
-        moment_load_angle=direction + 1.0,
+        moment_load_direction=direction + 1.0,
     )
     sol = eq.solve_equilibrium(b, op, race_control=control)
     loaded = sol.loaded
@@ -137,9 +137,9 @@ def test_equilibrium_satisfies_every_equation(
     [
         Operation("inner", 0.0, axial_load=60.68),
         Operation("inner", 120.0, axial_load=60.68, radial_load=30.0, moment_load=0.05),
-        Operation("outer", 500.0, axial_load=40.0, radial_load=50.0, radial_load_angle=0.3),
-        Operation("inner", 0.0, moment_load=0.1, moment_load_angle=0.4),
-        Operation("inner", 900.0, moment_load=0.1, moment_load_angle=0.4),
+        Operation("outer", 500.0, axial_load=40.0, radial_load=50.0, radial_load_direction=0.3),
+        Operation("inner", 0.0, moment_load=0.1, moment_load_direction=0.4),
+        Operation("inner", 900.0, moment_load=0.1, moment_load_direction=0.4),
     ],
     ids=[
         "axial_static",
@@ -294,7 +294,7 @@ def test_reversed_moment_mirrors_the_solution() -> None:
     b = BallBearing(7, 1.5875e-3, 9.1e-3, 0.529, 0.535, 5e-6)
     fwd = eq.solve_equilibrium(b, Operation("inner", 120.0, moment_load=0.05))
     rev = eq.solve_equilibrium(
-        b, Operation("inner", 120.0, moment_load=0.05, moment_load_angle=math.pi)
+        b, Operation("inner", 120.0, moment_load=0.05, moment_load_direction=math.pi)
     )
     assert rev.displacement[3] == pytest.approx(-fwd.displacement[3], rel=1e-9)
     assert rev.displacement[:3] == pytest.approx(fwd.displacement[:3], rel=1e-9, abs=1e-16)
@@ -315,14 +315,14 @@ def test_pure_moment_held_by_two_balls_only_is_refused_clearly() -> None:
     with pytest.raises(NumericalError, match="fewer than 3 balls carry load"):
         eq.solve_equilibrium(b, Operation("inner", 0.0, moment_load=0.05))
     sol = eq.solve_equilibrium(
-        b, Operation("inner", 0.0, moment_load=0.05, moment_load_angle=math.pi / 4)
+        b, Operation("inner", 0.0, moment_load=0.05, moment_load_direction=math.pi / 4)
     )
     assert sol.loaded.all()
 
 
 def test_pure_moment_start_is_centred_and_carries_the_moment() -> None:
     b = BallBearing(7, 1.5875e-3, 9.1e-3, 0.529, 0.535, 5e-6)
-    op = Operation("inner", 0.0, moment_load=0.05, moment_load_angle=1.0)
+    op = Operation("inner", 0.0, moment_load=0.05, moment_load_direction=1.0)
     ring = eq._Ring(b, op, "outer", speed_on=False)
     side = np.sin(ring.psi - 1.0)
     start = np.where(side < 0.0, -b.free_contact_angle, b.free_contact_angle)
@@ -363,7 +363,7 @@ def _case(**extra: Any) -> Any:
 def test_case_keys_and_json_output(tmp_path: Any) -> None:
     case = _case()
     assert case.operation.moment_load == pytest.approx(0.02)
-    assert case.operation.moment_load_angle == pytest.approx(math.pi / 2)
+    assert case.operation.moment_load_direction == pytest.approx(math.pi / 2)
     assert case.analysis.race_control == "inner"
     result = run_model(case)
     out = json.loads(json.dumps(result.to_json(), allow_nan=False))
@@ -386,18 +386,18 @@ def test_case_keys_and_json_output(tmp_path: Any) -> None:
             895.0,
             axial_load=23.5,
             radial_load=59.0,
-            radial_load_angle=3.5625,
+            radial_load_direction=3.5625,
             moment_load=0.0859375,
-            moment_load_angle=4.5625,
+            moment_load_direction=4.5625,
         ),
         Operation(
             "outer",
             764.0,
             axial_load=23.0,
             radial_load=24.0,
-            radial_load_angle=3.5625,
+            radial_load_direction=3.5625,
             moment_load=0.0859375,
-            moment_load_angle=4.5625,
+            moment_load_direction=4.5625,
         ),
     ],
     ids=["inner_895hz", "outer_764hz"],
@@ -424,9 +424,9 @@ def test_inner_race_control_ball_near_lift_off_converges() -> None:
         484.88,
         axial_load=20.18,
         radial_load=49.16,
-        radial_load_angle=4.717,
+        radial_load_direction=4.717,
         moment_load=0.0593,
-        moment_load_angle=5.717,
+        moment_load_direction=5.717,
     )
     sol = eq.solve_equilibrium(b, op, race_control="inner")
     assert sol.loaded.all()

@@ -419,12 +419,12 @@ CASES = {
     ),
     "combined_no_friction": (
         kim(12),
-        Operation("outer", 500.0, axial_load=40.0, radial_load=50.0, radial_load_angle=0.3),
+        Operation("outer", 500.0, axial_load=40.0, radial_load=50.0, radial_load_direction=0.3),
         "none",
     ),
     "pure_moment_static": (
         kim(),
-        Operation("inner", 0.0, moment_load=0.1, moment_load_angle=0.4),
+        Operation("inner", 0.0, moment_load=0.1, moment_load_direction=0.4),
         "outer",
     ),
     "lifted_off": (
@@ -434,9 +434,9 @@ CASES = {
             1246.9122519966918,
             axial_load=7.209074334506057,
             radial_load=49.52926880361335,
-            radial_load_angle=1.0331056334573563,
+            radial_load_direction=1.0331056334573563,
             moment_load=0.03751469964966419,
-            moment_load_angle=1.989115685977736,
+            moment_load_direction=1.989115685977736,
         ),
         "outer",
     ),
@@ -447,9 +447,9 @@ CASES = {
             484.88,
             axial_load=20.18,
             radial_load=49.16,
-            radial_load_angle=4.717,
+            radial_load_direction=4.717,
             moment_load=0.0593,
-            moment_load_angle=5.717,
+            moment_load_direction=5.717,
         ),
         "inner",
     ),
@@ -694,9 +694,9 @@ def test_cold_start_converges_at_solutions_under_inner_control(
         speed,
         axial_load=axial,
         radial_load=radial,
-        radial_load_angle=radial_angle,
+        radial_load_direction=radial_angle,
         moment_load=moment,
-        moment_load_angle=moment_angle,
+        moment_load_direction=moment_angle,
     )
     try:
         sol = eq.solve_equilibrium(b, op, race_control="inner")
@@ -740,9 +740,9 @@ def test_solve_converges_where_the_friction_alone_loads_a_ball(point: tuple[floa
         speed,
         axial_load=axial,
         radial_load=radial,
-        radial_load_angle=radial_angle,
+        radial_load_direction=radial_angle,
         moment_load=moment,
-        moment_load_angle=moment_angle,
+        moment_load_direction=moment_angle,
     )
     sol = eq.solve_equilibrium(b, op, race_control="inner")
     ring = _cold_ring(b, op, sol, 0)

@@ -18,8 +18,8 @@ ALPHA = math.radians(10.0)
 
 def _bearing(z: int = 7) -> BallBearing:
     return BallBearing(
-        n_elements=z,
-        ball_diameter=3.9688e-3,
+        elements=z,
+        element_diameter=3.9688e-3,
         pitch_diameter=15e-3,
         inner_conformity=0.52,
         outer_conformity=0.53,

@@ -130,7 +130,7 @@ def _random_imperfections(rng: np.random.Generator, z: int, amp: float) -> Imper
 def test_solution_is_a_stable_two_contact_vertex(ring: str, seed: int) -> None:
     rng = np.random.default_rng(seed)
     imp = _random_imperfections(rng, 14, 1.5 * UM)
-    op = Operation(ring, radial_load_angle=float(rng.uniform(-np.pi, np.pi)))
+    op = Operation(ring, radial_load_direction=float(rng.uniform(-np.pi, np.pi)))
     geo = rc.geometry_from(NU209, imp, op)
     sol = rc.solve(geo, rc.rotation_angles(1.0, 361))
     rows = np.arange(sol.alpha.size)

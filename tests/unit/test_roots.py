@@ -53,8 +53,8 @@ def test_polynomials_and_transcendentals(c, a, b, xtol, rtol) -> None:  # type: 
 def test_axial_loading_contact_angle_unchanged(load: float) -> None:
     """The load-angle relation of runout.loading gives the same angle with SciPy's brentq."""
     b = BallBearing(
-        n_elements=8,
-        ball_diameter=1e-3,
+        elements=8,
+        element_diameter=1e-3,
         pitch_diameter=7e-3,
         inner_conformity=0.52,
         outer_conformity=0.53,

@@ -908,7 +908,7 @@ SolveFn = Callable[[NDArray[np.float64]], tuple[NDArray[np.float64], NDArray[np.
 def measuring_direction(operation: Any) -> NDArray[np.float64]:
     """Unit vector of the radial measuring direction: the radial load's, else +x."""
     if operation.radial_load > 0.0:
-        angle = operation.radial_load_angle
+        angle = operation.radial_load_direction
         return np.array([math.cos(angle), math.sin(angle)])
     return np.array([1.0, 0.0])
 

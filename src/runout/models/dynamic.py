@@ -45,7 +45,7 @@ Equations of motion (eq. 2.16, derived)
         + F_u (\cos\Omega t, \sin\Omega t, 0),
 
 with the radial load :math:`F_r` along :math:`e_\beta = (\cos\beta, \sin\beta, 0)`
-(``Operation.radial_load_angle``, default −y), :math:`F_u = m_u e\,\Omega^2` the unbalance
+(``Operation.radial_load_direction``, default −y), :math:`F_u = m_u e\,\Omega^2` the unbalance
 force at the inner ring's angular speed Ω and :math:`F_a` the axial preload (axial degree of
 freedom only). With only x, y the z row is dropped.
 
@@ -199,7 +199,7 @@ def _law_stiffness(bearing: BallBearing, alpha: float, law: str) -> float:
         ks = []
         for race, f in (("inner", bearing.inner_conformity), ("outer", bearing.outer_conformity)):
             s, fr = ball_race_curvature(
-                bearing.ball_diameter,
+                bearing.element_diameter,
                 bearing.pitch_diameter,
                 f,
                 alpha,
@@ -240,7 +240,7 @@ def _preloaded_contact_angle(
     """:func:`preloaded_contact_angle`, remembered: a run sets the same bearing up twice (the
     case check and the model), and each solve takes some 40 Hertz solutions."""
     a = bearing.curvature_distance
-    z = bearing.n_elements
+    z = bearing.elements
     if preload <= 0.0:
         return free_contact_angle, _law_stiffness(bearing, free_contact_angle, law)
 
@@ -408,7 +408,7 @@ def setup(case: Any) -> DynamicSetup:
         kin_alpha = 0.0  # rings axially centred: the balls touch at the groove bottoms
         alpha_p = 0.0
     g0 = -0.5 * bearing.radial_clearance  # radial play γ = P_d/2 of seed 003 eq. 2.3-2.4
-    beta = op.radial_load_angle
+    beta = op.radial_load_direction
     force = np.array(
         [
             op.radial_load * math.cos(beta),
@@ -438,7 +438,7 @@ def setup(case: Any) -> DynamicSetup:
             "(with neither, it has no static position and no contact stiffness); an "
             "unbalance alone does not hold it",
         )
-    z = bearing.n_elements
+    z = bearing.elements
     d, dm = bearing.element_diameter, bearing.pitch_diameter
     kin = Kinematics(
         inner=op.inner_speed,
@@ -1263,7 +1263,7 @@ def candidate_lines(
 
 def _measuring_direction(op: Any) -> NDArray[np.float64]:
     if op.radial_load > 0.0:
-        return np.array([math.cos(op.radial_load_angle), math.sin(op.radial_load_angle)])
+        return np.array([math.cos(op.radial_load_direction), math.sin(op.radial_load_direction)])
     return np.array([1.0, 0.0])
 
 
@@ -1468,7 +1468,7 @@ def _point(case: Any, result: RunResult) -> SweepPoint:
         radial_bp = 0.0
     keep = spec.frequencies <= 8.0 * fbp
     return SweepPoint(
-        elements=case.bearing.n_elements,
+        elements=case.bearing.elements,
         preload_n=case.operation.axial_load,
         contact_angle_deg=math.degrees(result.contact_angle),
         ball_passage_hz=fbp,
@@ -1584,7 +1584,7 @@ def sweep(
         A point failed with an exception that is not a runout error (the points finished
         before it are kept).
     """
-    zs = list(elements) or [case.bearing.n_elements]
+    zs = list(elements) or [case.bearing.elements]
     ps = list(preloads) or [case.operation.axial_load]
     for p in ps:
         if not (math.isfinite(p) and p >= 0.0):

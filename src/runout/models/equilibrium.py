@@ -334,13 +334,13 @@ class _Ring:
         self, bearing: BallBearing, op: Operation, control: str, speed_on: bool = True
     ) -> None:
         self.bearing = bearing
-        d = bearing.ball_diameter
+        d = bearing.element_diameter
         self.alpha0 = bearing.free_contact_angle
         self.a = bearing.curvature_distance
         self.ri0 = (bearing.inner_conformity - 0.5) * d
         self.ro0 = (bearing.outer_conformity - 0.5) * d
         self.rad_i = 0.5 * bearing.pitch_diameter + self.ri0 * math.cos(self.alpha0)
-        z = bearing.n_elements
+        z = bearing.elements
         self.psi = TWO_PI * np.arange(z) / z
         self.cos_psi, self.sin_psi = np.cos(self.psi), np.sin(self.psi)
         mass = bearing.material.density * math.pi * d**3 / 6.0
@@ -514,10 +514,10 @@ def _external(op: Operation) -> NDArray[np.float64]:
     return np.array(
         [
             op.axial_load,
-            op.radial_load * math.cos(op.radial_load_angle),
-            op.radial_load * math.sin(op.radial_load_angle),
-            op.moment_load * math.cos(op.moment_load_angle),
-            op.moment_load * math.sin(op.moment_load_angle),
+            op.radial_load * math.cos(op.radial_load_direction),
+            op.radial_load * math.sin(op.radial_load_direction),
+            op.moment_load * math.cos(op.moment_load_direction),
+            op.moment_load * math.sin(op.moment_load_direction),
         ]
     )
 
@@ -585,7 +585,7 @@ def _hertz_constants(
     ep = bearing.material.effective_modulus
     s = np.empty(2 * n)
     f = np.empty(2 * n)
-    d, dm = bearing.ball_diameter, bearing.pitch_diameter
+    d, dm = bearing.element_diameter, bearing.pitch_diameter
     s[:n], f[:n] = ball_race_curvature(d, dm, bearing.inner_conformity, alphas, "inner")
     s[n:], f[n:] = ball_race_curvature(d, dm, bearing.outer_conformity, alphas, "outer")
     k = hertz_point_stiffness(s, f, ep)
@@ -614,7 +614,7 @@ def _axial_start(bearing: BallBearing, axial_load: float, kn: float) -> tuple[fl
     """
     a = bearing.curvature_distance
     alpha0 = bearing.free_contact_angle
-    z = bearing.n_elements
+    z = bearing.elements
     c0 = math.cos(alpha0)
 
     def excess(alpha: float) -> float:
@@ -645,12 +645,12 @@ def _initial_displacement(bearing: BallBearing, op: Operation) -> tuple[NDArray[
     if op.axial_load > 0.0:
         alpha, q[0] = _axial_start(bearing, op.axial_load, kn)
     if op.radial_load > 0.0:
-        z = bearing.n_elements
+        z = bearing.elements
         guess = (2.5 * op.radial_load / (z * kn)) ** (2.0 / 3.0)
         if op.axial_load == 0.0:
             guess += 0.5 * bearing.radial_clearance
-        q[1] = guess * math.cos(op.radial_load_angle)
-        q[2] = guess * math.sin(op.radial_load_angle)
+        q[1] = guess * math.cos(op.radial_load_direction)
+        q[2] = guess * math.sin(op.radial_load_direction)
     return q, alpha
 
 
@@ -688,7 +688,7 @@ def _moment_start(ring: _Ring, op: Operation) -> NDArray[np.float64]:
     ndarray, shape (5,)
         Ring displacement (δ_a [m], δ_x [m], δ_y [m], θ_x [rad], θ_y [rad]).
     """
-    c, s = math.cos(op.moment_load_angle), math.sin(op.moment_load_angle)
+    c, s = math.cos(op.moment_load_direction), math.sin(op.moment_load_direction)
     lever = float(np.abs(ring.sin_psi * c - ring.cos_psi * s).max())
     offset = ring.a * math.sin(ring.alpha0)
     play = offset / (ring.rad_i * lever)
@@ -778,10 +778,10 @@ def solve_equilibrium(
     stages = ["static"]
     if op.inner_speed != 0.0 or op.outer_speed != 0.0:
         stages.append("at speed")
-    z = bearing.n_elements
+    z = bearing.elements
     if _pure_moment(op):
         # balls on either side of the moment axis press on opposite flanks (α of either sign)
-        side = np.sin(ring.psi - op.moment_load_angle)
+        side = np.sin(ring.psi - op.moment_load_direction)
         start = np.where(side < 0.0, -alpha, alpha)
         ring.set_angles(start, start)
         q = _moment_start(ring, op)

@@ -987,7 +987,7 @@ def _components(lines: SpectralLines) -> tuple[Component, ...]:
 
 def _measuring_direction(operation: Operation) -> NDArray[np.float64]:
     if operation.radial_load > 0.0:
-        a = operation.radial_load_angle
+        a = operation.radial_load_direction
         return np.array([math.cos(a), math.sin(a)])
     return np.array([1.0, 0.0])
 
@@ -1061,7 +1061,7 @@ def run(case: Any) -> LinearResult:
         ball_diameter=bearing.element_diameter,
         pitch_diameter=bearing.pitch_diameter,
         contact_angle=alpha,
-        n_elements=bearing.n_elements,
+        n_elements=bearing.elements,
         rotating_ring=operation.rotating_ring,
         speed_hz=rt.rotation_hz,
     )

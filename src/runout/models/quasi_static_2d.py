@@ -457,9 +457,9 @@ def setup(case: object) -> Setup:
         cage=float(cage_frequency(op.inner_speed, op.outer_speed, d, dm, alpha)),
         spin=float(ball_spin_frequency(op.inner_speed, op.outer_speed, d, dm, alpha)),
         rotating_ring=op.rotating_ring,
-        n_elements=bearing.n_elements,
+        n_elements=bearing.elements,
     )
-    beta = op.radial_load_angle
+    beta = op.radial_load_direction
     force = np.array([op.radial_load * math.cos(beta), op.radial_load * math.sin(beta)])
     return Setup(alpha, kn, d0, kin, force)
 

@@ -31,7 +31,7 @@ balance (eq. 5), with the unit contact normal :math:`n_j = (\cos\alpha\cos\theta
 
 .. math:: \sum_j Q_j\,n_j = (-F_r\cos\beta,\; -F_r\sin\beta,\; F_a),
 
-where the radial load :math:`F_r` acts on the shaft along β (``Operation.radial_load_angle``),
+where the radial load :math:`F_r` acts on the shaft along β (``Operation.radial_load_direction``),
 i.e. pushes the outer ring along -β relative to the inner ring; Tada's eq. 5 is the case
 :math:`F_r = 0`.
 
@@ -601,12 +601,12 @@ def setup(case: object) -> Setup:
     if not alpha > 0.0:
         raise GeometryError("contact_angle", "the quasi_static_3d model needs a contact angle > 0")
     kn = ball_race_contacts(bearing, alpha).combined_stiffness
-    z = bearing.n_elements
+    z = bearing.elements
     dpl = preload_approach(kn, z, alpha, op.axial_load)
     check_axial_room(case.imperfections, bearing, alpha, dpl)  # type: ignore[attr-defined]
     # The radial load acts on the shaft along β; in the paper's frame (outer ring moving
     # relative to the inner ring) that is the outer ring pushed along -β.
-    beta = op.radial_load_angle
+    beta = op.radial_load_direction
     force = np.array(
         [op.radial_load * math.cos(beta), op.radial_load * math.sin(beta), op.axial_load]
     )

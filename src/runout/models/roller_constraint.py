@@ -311,7 +311,7 @@ def geometry_from(
         phases: pass ``imperfections.element_phases_from_fixed_frame()`` (case key
         ``[elements] phase_frame = "fixed"``).
     operation : Operation, optional
-        Rotating ring and the measuring-load direction (``radial_load_angle``).
+        Rotating ring and the measuring-load direction (``radial_load_direction``).
 
     Raises
     ------
@@ -319,7 +319,7 @@ def geometry_from(
         Wrong number of elements, or a profile that is not convex.
     """
     op = operation if operation is not None else Operation()
-    z = bearing.n_elements
+    z = bearing.elements
     if imperfections.n_elements != z:
         raise GeometryError(
             "imperfections.elements",
@@ -347,7 +347,7 @@ def geometry_from(
         elements=elements_to_fixed_frame(imperfections.elements, positions),
         pitch_errors=pitch,
         rotating_ring=op.rotating_ring,
-        load_angle=op.radial_load_angle,
+        load_angle=op.radial_load_direction,
     )
     _check_convex(geo)
     return geo
