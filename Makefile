@@ -9,7 +9,7 @@ export MPLBACKEND ?= Agg
 
 $(STAMP): pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install --quiet -e '.[dev,dask,docs]'
+	$(BIN)/python -m pip install --quiet -e '.[dev,dask,docs,data]'
 	# compile every model's kernels into numba's cache now, so that no first command waits
 	$(BIN)/python -m runout._warm examples || echo "warning: warming the kernel cache failed"
 	touch $(STAMP)

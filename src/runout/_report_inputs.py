@@ -137,7 +137,7 @@ def inputs_section(result: dict[str, Any], summary: dict[str, Any], case: Any) -
             row("speed", speed)
         if op.other_ring_speed:
             row("other ring speed", f"{fmt_number(op.other_ring_speed * 60.0, 5)} rpm")
-        direction = math.degrees(op.radial_load_angle)
+        direction = math.degrees(op.radial_load_direction)
         if op.radial_load > 0.0 and "operation.radial_load" not in unused:
             row("radial load", f"{fmt_number(op.radial_load, 5)} N", f"along {direction:.4g} deg")
         elif model in ("linear", "roller_constraint") or op.radial_load > 0.0:

@@ -689,7 +689,9 @@ def ball_race_contacts(bearing: BallBearing, contact_angle: float | None = None)
         ("outer", bearing.outer_conformity),
     )
     for race, f in races:
-        s, fr = ball_race_curvature(bearing.element_diameter, bearing.pitch_diameter, f, alpha, race)
+        s, fr = ball_race_curvature(
+            bearing.element_diameter, bearing.pitch_diameter, f, alpha, race
+        )
         contacts.append(point_contact(float(s), float(fr), ep))
     inner, outer = contacts
     kn = float(combined_stiffness(inner.stiffness, outer.stiffness))

@@ -436,7 +436,7 @@ def _seed003_bpf_error() -> float:
     case = _load("seed003_purohit.toml")
     b = case.bearing
     f = bearing_frequencies(b, Operation("inner", speed=case.operation.speed), 0.0)
-    expected = 0.5 * b.n_elements * case.operation.speed * (1 - b.ball_diameter / b.pitch_diameter)
+    expected = 0.5 * b.elements * case.operation.speed * (1 - b.element_diameter / b.pitch_diameter)
     return abs(float(f.ball_pass_outer) / expected - 1.0)
 
 
@@ -447,7 +447,7 @@ def _seed004_cage_error() -> float:
     b = _load("seed004_nu209.toml").bearing
     f = bearing_frequencies(b, Operation("inner", speed=1.0))
     d_i, d_e = b.inner_raceway_diameter, b.outer_raceway_diameter
-    expected = 0.5 * (1 - 2 * b.roller_diameter / (d_i + d_e))
+    expected = 0.5 * (1 - 2 * b.element_diameter / (d_i + d_e))
     return abs(float(f.cage) / expected - 1.0)
 
 
@@ -1041,7 +1041,7 @@ class _Geometry608:
 @functools.cache
 def _g608() -> _Geometry608:
     b = _load("seed002_608.toml").bearing
-    return _Geometry608(b.ball_diameter, b.pitch_diameter, b.n_elements, math.cos(b.contact_angle))
+    return _Geometry608(b.element_diameter, b.pitch_diameter, b.elements, math.cos(b.contact_angle))
 
 
 def _waviness(k: int) -> float:
@@ -1310,7 +1310,7 @@ def _seed002_bands(case: Any) -> tuple[dict[str, float], dict[str, float]]:
     b, op = case.bearing, case.operation
     rates = lin.rates(b, op, b.contact_angle)
     terms = lin.closed_form_terms(case.imperfections, rates, b.contact_angle)
-    lines = lin.spectral_lines(terms, op.speed, b.n_elements, op.rotating_ring == "inner")
+    lines = lin.spectral_lines(terms, op.speed, b.elements, op.rotating_ring == "inner")
     keep = lines.order > 0
     exact = anderon_bands_from_lines(lines.order[keep], lines.x_amplitude[keep]).as_dict()
     n = DFT_REVOLUTIONS * DFT_SAMPLES_PER_REV
@@ -1513,9 +1513,9 @@ def _tada_freqs(case: Any) -> dict[str, float]:
 
     alpha = qs3.setup(case).contact_angle
     b, fr = case.bearing, case.operation.speed
-    fc = float(cage_frequency(0.0, fr, b.ball_diameter, b.pitch_diameter, alpha))
-    fb = float(ball_spin_frequency(0.0, fr, b.ball_diameter, b.pitch_diameter, alpha))
-    z = b.n_elements
+    fc = float(cage_frequency(0.0, fr, b.element_diameter, b.pitch_diameter, alpha))
+    fb = float(ball_spin_frequency(0.0, fr, b.element_diameter, b.pitch_diameter, alpha))
+    z = b.elements
     return {"f_c": fc, "f_b": fb, "f_r": fr, "f_i": z * fc, "f_o": z * (fr - fc)}
 
 
@@ -2221,12 +2221,12 @@ def _roller_eq17() -> float:
     b = _load("seed004_nu209.toml").bearing
     worst = 0.0
     for clearance in (0.031e-3, 0.041e-3, 0.050e-3):
-        d_i = b.outer_raceway_diameter - 2 * b.roller_diameter - clearance
-        bearing = RollerBearing(b.n_elements, b.roller_diameter, d_i, b.outer_raceway_diameter)
+        d_i = b.outer_raceway_diameter - 2 * b.element_diameter - clearance
+        bearing = RollerBearing(b.elements, b.element_diameter, d_i, b.outer_raceway_diameter)
         alpha = rc.rotation_angles(1.0, 1441)
-        sol = rc.solve(rc.geometry_from(bearing, Imperfections.perfect(b.n_elements)), alpha)
+        sol = rc.solve(rc.geometry_from(bearing, Imperfections.perfect(b.elements)), alpha)
         ref = rc.analytic_circular(
-            d_i, b.outer_raceway_diameter, b.roller_diameter, b.n_elements, alpha
+            d_i, b.outer_raceway_diameter, b.element_diameter, b.elements, alpha
         )
         worst = max(worst, float(np.max(np.abs(sol.centre[:, 1] - ref[:, 1]) / np.abs(ref[:, 1]))))
     return worst
@@ -2240,7 +2240,7 @@ def _roller_ellipse(semi_minor: float) -> tuple[float, float]:
     from runout.models import roller_constraint as rc
 
     b = _load("seed004_nu209.toml").bearing
-    z, dw, de = b.n_elements, b.roller_diameter, b.outer_raceway_diameter
+    z, dw, de = b.elements, b.element_diameter, b.outer_raceway_diameter
     a = 27.4955e-3
     mean, harm = rc.ellipse_harmonics(a, semi_minor)
     bearing = RollerBearing(z, dw, 2 * a, de)

@@ -102,9 +102,14 @@ def test_runout_split_invariants(
         _no_cause_no_rro(result, rotating_wave)
     # 1 % of the total, or the solvers' round-off (odd ball lobes cancel: nothing moves)
     limit = max(1e-2 * long.runout.radial_pp_m, 1e-15)
+    # RRO comes from the repeatable lines: the same from 16 and from 32 revolutions
     assert abs(long.runout.rro_pp_m - short.runout.rro_pp_m) < limit
-    if model != "roller_constraint":  # rigid contacts: a sawtooth, slower to converge
-        assert abs(long.runout.nrro_pp_m - short.runout.nrro_pp_m) < limit
+    # The long record holds the short one (the same start; the same step except for the
+    # roller model's angle grid), so its p-p is at least as large; NRRO, a sum of
+    # incommensurate lines, keeps growing as their beats line up (by a few % between 16 and 32
+    # revolutions), so it is not expected to agree, only not to shrink beyond the RRO refit.
+    assert long.runout.radial_pp_m >= short.runout.radial_pp_m - limit
+    assert long.runout.nrro_pp_m >= short.runout.nrro_pp_m - limit
 
 
 @settings(max_examples=3, deadline=None, suppress_health_check=[HealthCheck.too_slow])

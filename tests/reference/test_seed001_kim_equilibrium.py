@@ -138,7 +138,9 @@ def test_iso_ts_16281_suite_displacements(name: str) -> None:
 def test_iso_ts_16281_suite_case5_free_tilt() -> None:
     # no moment: the ring tilts freely under the combined load; 2.6872 mrad in the suite
     b = iso_bearing(10 * UM)
-    op = Operation("inner", 0.0, axial_load=ISO_FORCE, radial_load=ISO_FORCE, radial_load_direction=0.0)
+    op = Operation(
+        "inner", 0.0, axial_load=ISO_FORCE, radial_load=ISO_FORCE, radial_load_direction=0.0
+    )
     q = solve_equilibrium(b, op).displacement
     tilt = math.hypot(q[3], q[4])
     assert tilt * _suite_radius_ratio(b) == pytest.approx(2.6872e-3, rel=ISO_TOL)
