@@ -13,8 +13,10 @@ from __future__ import annotations
 
 import difflib
 import math
+import re
 import stat
 import tomllib
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Annotated, Any, Literal
@@ -71,9 +73,12 @@ __all__ = [
     "Analysis",
     "Case",
     "CaseSpec",
+    "apply_overrides",
     "first_validation_error",
     "load_case",
     "parse_case",
+    "parse_override",
+    "read_case_data",
 ]
 
 TWO_PI = 2.0 * math.pi
@@ -1024,9 +1029,36 @@ class Analysis:
     limit_on: str = "radial_pp"
 
 
+#: Measured profiles held in memory: file name in ``[[profile]] file`` -> (angles [rad],
+#: deviations [m]), read instead of a file (profiles given to the Python API as arrays).
+ProfileData = Mapping[str, tuple[np.ndarray, np.ndarray]]
+
+
 @dataclass(frozen=True)
 class Case:
-    """A validated case: every quantity SI, ready for the models."""
+    """A validated case: every quantity SI, ready for the models.
+
+    Build one from a case file with :func:`load_case`, or in code with
+    :meth:`Case.from_inputs` (or let :func:`runout.run` build and run it); do not call the
+    constructor yourself: ``spec``, the validated case-file document, is what the models and
+    :meth:`to_toml` read.
+
+    Attributes
+    ----------
+    path : str
+        The case file as given, or ``"<python>"`` for a case built in code.
+    title : str
+    bearing : BallBearing or RollerBearing
+    operation : Operation
+    imperfections : runout.imperfections.Imperfections
+        The resolved harmonics of every part (what the models use).
+    analysis : Analysis
+    spec : CaseSpec
+        The validated case-file document.
+    profile_data : mapping
+        Measured profiles given as arrays: ``[[profile]] file`` name -> (angles [rad],
+        deviations [m]); empty for a case read from a file.
+    """
 
     path: str
     title: str
@@ -1035,6 +1067,7 @@ class Case:
     imperfections: Imperfections
     analysis: Analysis
     spec: CaseSpec = field(repr=False)
+    profile_data: ProfileData = field(default_factory=dict, repr=False, compare=False)
 
     @property
     def dynamics(self) -> DynamicsSpec | None:
@@ -1045,6 +1078,124 @@ class Case:
     def study(self) -> StudySpec | None:
         """The ``[study]`` table, if any."""
         return self.spec.study
+
+    @classmethod
+    def from_inputs(
+        cls,
+        bearing: Bearing,
+        operation: Operation | None = None,
+        imperfections: Any = None,
+        *,
+        title: str = "",
+        analysis: Mapping[str, Any] | None = None,
+        dynamics: Mapping[str, Any] | None = None,
+        study: Mapping[str, Any] | None = None,
+        base_dir: str | Path | None = None,
+    ) -> Case:
+        """The case a case file with these tables would give, validated the same way.
+
+        Parameters
+        ----------
+        bearing : BallBearing or RollerBearing
+            Geometry and material (``[bearing]``, ``[material]``).
+        operation : Operation, optional
+            ``[operation]``; default a bearing at rest without load.
+        imperfections : runout.Imperfections, optional
+            The builder of ``[[waviness]]``, ``[[waviness_spectrum]]``, ``[[profile]]``,
+            ``[slant]`` and ``[elements]`` (:class:`runout.api.Imperfections`); default none.
+        title : str
+        analysis, dynamics, study : mapping, optional
+            The ``[analysis]``, ``[dynamics]`` and ``[study]`` keys, by their case-file names:
+            SI numbers or strings with units.
+        base_dir : str or Path, optional
+            Directory that ``[[profile]]`` files are read from; default the working directory.
+
+        Raises
+        ------
+        CaseError
+            Naming ``<python>`` and the case key, with the message a case file would give.
+        """
+        from runout.api import build_case
+
+        return build_case(
+            bearing,
+            operation,
+            imperfections,
+            title=title,
+            analysis=analysis,
+            dynamics=dynamics,
+            study=study,
+            base_dir=base_dir,
+        )
+
+    def to_document(self) -> dict[str, Any]:
+        """The case-file document (tables of SI numbers) that gives this case again."""
+        return self.spec.model_dump(mode="python", exclude_unset=True, exclude_none=True)
+
+    def to_toml(self) -> str:
+        """The case as case-file text (SI numbers), for ``runout run`` or :func:`load_case`.
+
+        Keys given at their defaults are written only when they were given; ``[[profile]]``
+        files are named as in the case and read relative to the saved file.
+
+        Raises
+        ------
+        CaseError
+            A profile given as arrays has no file to name: use :meth:`save`, which writes it.
+        """
+        if self.profile_data:
+            name = next(iter(self.profile_data))
+            raise CaseError(
+                self.path,
+                _profile_key(self.spec, name),
+                "was given as arrays and has no file; Case.save(path) writes the case with "
+                "its profiles as CSV files next to it",
+            )
+        return self._toml()
+
+    def _toml(self) -> str:
+        import tomli_w
+
+        # tables in the order of the case-file reference, and every entry of an array of
+        # tables as its own [[table]] (tomli_w would write short ones inline)
+        document = self.to_document()
+        chunks = []
+        top = {k: v for k, v in document.items() if not isinstance(v, dict | list)}
+        if top:
+            chunks.append(tomli_w.dumps(top))
+        for name in CaseSpec.model_fields:
+            value = document.get(name)
+            if isinstance(value, dict):
+                chunks.append(tomli_w.dumps({name: value}))
+            elif isinstance(value, list):
+                chunks.extend(f"[[{name}]]\n" + tomli_w.dumps(entry) for entry in value)
+        return "\n".join(chunk.strip("\n") + "\n" for chunk in chunks)
+
+    def save(self, path: str | Path) -> Path:
+        """Write :meth:`to_toml` to ``path``, and profiles given as arrays as CSV beside it.
+
+        Returns
+        -------
+        Path
+            The case file written.
+        """
+        target = Path(path)
+        for name, (angles, deviations) in self.profile_data.items():
+            rows = "".join(
+                f"{float(a)!r},{float(d)!r}\n" for a, d in zip(angles, deviations, strict=True)
+            )
+            (target.parent / name).write_text(
+                "# angle [rad], radius deviation [m]\n" + rows, encoding="utf-8"
+            )
+        target.write_text(self._toml(), encoding="utf-8")
+        return target
+
+
+def _profile_key(spec: CaseSpec, name: str) -> str:
+    for i, p in enumerate(spec.profile, start=1):
+        if p.file == name:
+            return f"profile[{i}].file"
+    return "profile"
 
 
 _GEOMETRY_KEYS = {
@@ -1270,13 +1421,30 @@ def _check_element_errors(bearing: Bearing, imp: Imperfections) -> None:
             )
 
 
-def _read_profile(p: ProfileSpec, key: str, base_dir: Path, limits: Budget) -> Harmonics:
+def _read_profile(
+    p: ProfileSpec, key: str, base_dir: Path, limits: Budget, data: ProfileData | None = None
+) -> Harmonics:
     """Harmonics of a ``[[profile]]`` entry, read within the budget and the case's directory.
 
     Only a regular file inside the case file's directory (or a directory named by
     RUNOUT_PROFILE_DIRS) is opened: /dev/zero, a FIFO or ../../etc/passwd never are. Errors name
-    the file and the line, never echo its contents.
+    the file and the line, never echo its contents. A profile given as arrays (``data``, in
+    the units of its entry) is taken as read.
     """
+    if data is not None and p.file in data:
+        angles, deviations = data[p.file]
+        try:
+            # the conversions of read_profile_csv, so that saving it as CSV changes nothing
+            ang = np.array(angles, dtype=np.float64)
+            if p.angle_unit == "deg":
+                ang = np.deg2rad(ang)
+            devs = np.array(deviations, dtype=np.float64) * to_si(f"1 {p.deviation_unit}", "length")
+            return from_profile(ang, devs, orders=p.orders)
+        except ProfileError as exc:
+            field_name = "orders" if "order" in exc.message else "file"
+            raise _CaseKeyError(f"{key}.{field_name}", exc.message) from None
+        except (GeometryError, ValueError) as exc:
+            raise _CaseKeyError(f"{key}.file", str(exc)) from None
     path = base_dir / p.file
     if not profile_allowed(path, base_dir):
         raise _CaseKeyError(
@@ -1324,7 +1492,11 @@ def _read_profile(p: ProfileSpec, key: str, base_dir: Path, limits: Budget) -> H
 
 
 def _build_imperfections(
-    spec: CaseSpec, bearing: Bearing, base_dir: Path, limits: Budget | None = None
+    spec: CaseSpec,
+    bearing: Bearing,
+    base_dir: Path,
+    limits: Budget | None = None,
+    profile_data: ProfileData | None = None,
 ) -> Imperfections:
     z = bearing.elements
     limits = case_budget(spec) if limits is None else limits
@@ -1390,7 +1562,7 @@ def _build_imperfections(
     for i, p in enumerate(spec.profile, start=1):
         key = f"profile[{i}]"
         check(key, p.part, p.element)
-        harmonics = _read_profile(p, key, base_dir, limits)
+        harmonics = _read_profile(p, key, base_dir, limits, profile_data)
         _check_amplitude_exists(f"{key}.file", p.part, harmonics, bearing)
         imp = imp.add(target(p.part), harmonics, element=p.element)
     if spec.slant is not None:
@@ -1508,7 +1680,13 @@ def _check_limits(case: Case) -> None:
     check_estimate(per_run, limits)
 
 
-def parse_case(data: dict[str, Any], path: str = "<case>", base_dir: Path | None = None) -> Case:
+def parse_case(
+    data: dict[str, Any],
+    path: str = "<case>",
+    base_dir: Path | None = None,
+    *,
+    profile_data: ProfileData | None = None,
+) -> Case:
     """Validate a parsed TOML document and build the domain objects.
 
     Parameters
@@ -1520,6 +1698,9 @@ def parse_case(data: dict[str, Any], path: str = "<case>", base_dir: Path | None
     base_dir : Path or None
         Directory that relative file references (profiles) are resolved against, and the only
         one profiles may come from (with those of RUNOUT_PROFILE_DIRS).
+    profile_data : mapping, optional
+        Profiles given as arrays: ``[[profile]] file`` name -> (angles, deviations) in the
+        units of the entry, used instead of reading that file.
 
     Raises
     ------
@@ -1556,7 +1737,9 @@ def parse_case(data: dict[str, Any], path: str = "<case>", base_dir: Path | None
     except GeometryError as exc:
         raise CaseError(path, exc.key, exc.message) from None
     try:
-        imperfections = _build_imperfections(spec, bearing, base_dir or Path.cwd(), limits)
+        imperfections = _build_imperfections(
+            spec, bearing, base_dir or Path.cwd(), limits, profile_data
+        )
     except _CaseKeyError as exc:
         raise CaseError(path, exc.key, exc.message) from None
     except GeometryError as exc:
@@ -1585,6 +1768,7 @@ def parse_case(data: dict[str, Any], path: str = "<case>", base_dir: Path | None
         imperfections=imperfections,
         analysis=analysis,
         spec=spec,
+        profile_data=dict(profile_data or {}),
     )
     try:
         _check_limits(case)
@@ -1593,7 +1777,12 @@ def parse_case(data: dict[str, Any], path: str = "<case>", base_dir: Path | None
     return case
 
 
-def load_case(path: str | Path) -> Case:
+def load_case(
+    path: str | Path,
+    *,
+    model: str | None = None,
+    overrides: Mapping[str, Any] | None = None,
+) -> Case:
     """Read and validate a TOML case file.
 
     Only a regular file of at most :data:`runout.limits.MAX_CASE_FILE_BYTES` is read (a FIFO
@@ -1604,6 +1793,12 @@ def load_case(path: str | Path) -> Case:
     ----------
     path : str or Path
         The case file.
+    model : str, optional
+        Model id replacing ``[analysis] model`` (``runout run --model``).
+    overrides : mapping, optional
+        Case keys by dotted path (``"operation.axial_load"``, ``"waviness[2].order"``,
+        ``"title"``) -> value as the file would give it (SI number or string with unit),
+        replacing or adding that key before validation (``runout run --set``).
 
     Returns
     -------
@@ -1612,7 +1807,36 @@ def load_case(path: str | Path) -> Case:
     Raises
     ------
     CaseError
-        If the file cannot be read, is not TOML, or is invalid.
+        If the file cannot be read, is not TOML, or is invalid (with the overrides), naming
+        the file and the key.
+    """
+    name = str(path)
+    data = read_case_data(path)
+    changes = dict(overrides or {})
+    if model is not None:
+        if "analysis.model" in changes:  # one would silently replace the other
+            raise CaseError(name, "analysis.model", "given both as --model and with --set")
+        changes["analysis.model"] = model
+    if not changes:
+        return parse_case(data, name, Path(path).parent)
+    try:
+        apply_overrides(data, changes, name)
+        return parse_case(data, name, Path(path).parent)
+    except CaseError as exc:
+        given = next((k for k in changes if exc.key == k or exc.key.startswith(f"{k}[")), None)
+        if given is None:
+            raise
+        how = "--model" if given == "analysis.model" and model is not None else "--set"
+        raise CaseError(name, exc.key, f"{exc.message} (given by {how})") from None
+
+
+def read_case_data(path: str | Path) -> dict[str, Any]:
+    """The TOML document of a case file, read within the size limit, not yet validated.
+
+    Raises
+    ------
+    CaseError
+        If the file cannot be read or is not TOML.
     """
     p = Path(path)
     name = str(path)
@@ -1648,11 +1872,89 @@ def load_case(path: str | Path) -> Case:
             name, "", f"is not UTF-8 text (byte {exc.start + 1} cannot be decoded)"
         ) from None
     try:
-        data = tomllib.loads(text)
+        return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise CaseError(name, "", f"is not valid TOML: {exc}") from None
     except RecursionError:
         raise CaseError(
             name, "", f"is not valid TOML: nested deeper than {MAX_TOML_DEPTH} levels"
         ) from None
-    return parse_case(data, name, p.parent)
+
+
+def parse_override(text: str) -> tuple[str, Any]:
+    """``KEY=VALUE`` of ``--set`` as (dotted key, value).
+
+    The value is read as a TOML value (``8192``, ``"30 N"``, ``[1, 2]``, ``true``); a bare
+    word that is not one (``30 N`` without quotes, ``outer``) is taken as a string.
+
+    Raises
+    ------
+    ValueError
+        Without ``=`` or without a key.
+    """
+    key, sep, value = text.partition("=")
+    key = key.strip()
+    if not sep or not key:
+        raise ValueError(f"expected KEY=VALUE (e.g. operation.axial_load='30 N'), got {text!r}")
+    value = value.strip()
+    try:
+        parsed = tomllib.loads(f"v = {value}")
+        if set(parsed) == {"v"}:
+            return key, parsed["v"]
+    except tomllib.TOMLDecodeError:
+        pass
+    return key, value
+
+
+_OVERRIDE_KEY = re.compile(r"([a-z_]+)(?:\[(\d+)\])?(?:\.([a-z_]+))?")
+
+
+def apply_overrides(data: dict[str, Any], overrides: Mapping[str, Any], path: str) -> None:
+    """Set case keys by dotted path in a TOML document, in place, before it is validated.
+
+    ``title``, ``table.key`` or ``table[i].key`` (entries counted from 1); a table the
+    document lacks is created. A key the case does not have is left to the validation, which
+    names it with a did-you-mean hint.
+
+    Raises
+    ------
+    CaseError
+        A path that is not a case key's shape, or an array entry the document does not have.
+    """
+    for key, value in overrides.items():
+        match = _OVERRIDE_KEY.fullmatch(key)
+        if match is None:
+            raise CaseError(
+                path,
+                _one_line(key),
+                "not a case key: expected 'title', 'table.key' or 'table[i].key' (e.g. "
+                "operation.axial_load or waviness[1].order)",
+            )
+        table, index, name = match.group(1), match.group(2), match.group(3)
+        if name is None:
+            if index is not None or (table in CaseSpec.model_fields and table != "title"):
+                raise CaseError(path, key, "name a key of the table, e.g. 'operation.speed'")
+            data[table] = value
+            continue
+        if index is None:
+            section = data.setdefault(table, {})
+            if not isinstance(section, dict):
+                raise CaseError(
+                    path, table, "is an array of tables: name one, e.g. " + table + "[1]"
+                )
+            section[name] = value
+            continue
+        entries = data.get(table, [])
+        position = int(index)
+        if not isinstance(entries, list) or not 1 <= position <= len(entries):
+            count = len(entries) if isinstance(entries, list) else 0
+            raise CaseError(
+                path,
+                f"{table}[{position}]",
+                f"the case has {count} [[{table}]] entries (counted from 1)",
+            )
+        entries[position - 1][name] = value
+
+
+def _one_line(text: str) -> str:
+    return "".join(ch if ch.isprintable() else repr(ch)[1:-1] for ch in text)

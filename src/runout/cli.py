@@ -51,6 +51,26 @@ CaseArg = Annotated[
     Path, typer.Argument(help="TOML case file (see docs/case-file.md).", show_default=False)
 ]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON object on stdout.")]
+ModelOpt = Annotated[
+    str | None,
+    typer.Option(
+        "--model",
+        metavar="NAME",
+        help="Model id replacing the case's [analysis] model (e.g. linear).",
+        show_default=False,
+    ),
+]
+SetOpt = Annotated[
+    list[str] | None,
+    typer.Option(
+        "--set",
+        metavar="KEY=VALUE",
+        help="Set one case key by its dotted path before validation (repeatable), e.g. "
+        '--set operation.axial_load="30 N" --set analysis.samples=8192 --set '
+        "waviness[1].order=9. VALUE is read as a TOML value; a bare word is a string.",
+        show_default=False,
+    ),
+]
 
 
 #: Width of tables written to a pipe or a file (not to a terminal).
@@ -164,6 +184,24 @@ def _guard(fn: F) -> F:
     return wrapper  # type: ignore[return-value]
 
 
+def _load(case_file: Path, model: str | None = None, sets: list[str] | None = None) -> Any:
+    """The case of ``case_file`` with ``--model`` and ``--set`` applied, validated as a file."""
+    from runout.case import load_case, parse_override
+    from runout.errors import CaseError
+
+    overrides: dict[str, Any] = {}
+    for text in sets or ():
+        try:
+            key, value = parse_override(text)
+        except ValueError as exc:
+            raise CaseError(str(case_file), "", f"--set: {exc}") from None
+        if key in overrides:
+            # the later one would silently replace the first
+            raise CaseError(str(case_file), key, "given twice with --set")
+        overrides[key] = value
+    return load_case(case_file, model=model, overrides=overrides or None)
+
+
 def _print_json(payload: dict[str, Any]) -> None:
     sys.stdout.write(json.dumps(payload, indent=2, allow_nan=False) + "\n")
 
@@ -211,21 +249,25 @@ def _main(
 
 @app.command()
 @_guard
-def check(case_file: CaseArg, as_json: JsonOpt = False) -> None:
+def check(
+    case_file: CaseArg,
+    as_json: JsonOpt = False,
+    model: ModelOpt = None,
+    sets: SetOpt = None,
+) -> None:
     """Validate a case file and print the derived geometry, contact constants and frequencies.
 
     Runs every check a run does (the model's input checks, the memory and time budget, Hertz
     validity), so a case called valid is not refused on input later; warnings go to one
-    warning: line (--json: "warnings").
+    warning: line (--json: "warnings"). --model and --set check the case as run would run it.
 
     Example: runout check examples/seed001_kim_spindle.toml --json
     """
-    from runout.case import load_case
     from runout.errors import CaseError
     from runout.summary import bearing_summary, model_use
     from runout.validation import validate
 
-    case = load_case(case_file)
+    case = _load(case_file, model, sets)
     summary = bearing_summary(case.bearing, case.operation)
     use = model_use(case)
     named = "model" in case.spec.analysis.model_fields_set
@@ -351,6 +393,8 @@ def run(
             "--force", help="Replace the results of another case in --out (its case.toml differs)."
         ),
     ] = False,
+    model: ModelOpt = None,
+    sets: SetOpt = None,
     history_revolutions: Annotated[
         float,
         typer.Option(
@@ -361,23 +405,26 @@ def run(
         ),
     ] = 3.0,
 ) -> None:
-    r"""Run the model named in the case's \[analysis] table.
+    r"""Run the model named in the case's \[analysis] table (or --model).
 
     \[analysis] bands adds band values, \[analysis] limit a PASS/FAIL verdict (docs/concepts.md).
+
+    --model NAME runs another model on the same case; --set KEY=VALUE changes one case key
+    (validated like the file). With either, --out's case.toml is the case as run.
 
     --out DIR refuses a DIR whose case.toml is another case, unless --force.
 
     Example: runout run examples/seed000_tada_fig7.toml --out out/tada --report
     """
-    from runout.case import load_case
     from runout.models import run_model
     from runout.summary import bearing_summary
 
-    case = load_case(case_file)
+    case = _load(case_file, model, sets)
     if report and out is None:
         out = str(Path("out") / case_file.stem)
+    case_text = _case_text(case_file, case, model, sets)
     # checked before the model runs: a refused directory costs nothing and is left untouched
-    directory = None if out is None else _run_directory(out, case_file, force)
+    directory = None if out is None else _run_directory(out, case_file, force, case_text)
     result = run_model(case)  # with the case's [analysis] outputs (bands, verdict)
     if as_json:
         _print_json(result.to_json())
@@ -392,9 +439,7 @@ def run(
                 json.dumps({"title": case.title, **summary.to_json()}, indent=2, allow_nan=False)
                 + "\n"
             )
-            (directory / "case.toml").write_text(
-                case_file.read_text(encoding="utf-8"), encoding="utf-8"
-            )
+            (directory / "case.toml").write_text(case_text, encoding="utf-8")
             written += [directory / "summary.json", directory / "case.toml"]
             if report:
                 from runout.report import build_report
@@ -407,7 +452,17 @@ def run(
                 _out.print(f"wrote {escape(str(path))}")
 
 
-def _run_directory(out: str, case_file: Path, force: bool) -> Path:
+def _case_text(case_file: Path, case: Any, model: str | None, sets: list[str] | None) -> str:
+    """Text of the case as run: the file itself, or with --model/--set the case rewritten."""
+    if model is None and not sets:
+        return case_file.read_text(encoding="utf-8")
+    given = [f"--model {model}"] if model is not None else []
+    given += [f"--set {text}" for text in sets or ()]
+    header = f"# {case_file} run with {' '.join(given)}\n"
+    return _one_line(header.rstrip("\n")) + "\n" + case.to_toml()
+
+
+def _run_directory(out: str, case_file: Path, force: bool, case_text: str) -> Path:
     """The ``run --out`` directory, created; refused when its case.toml is another case.
 
     ``runout report DIR`` rebuilds the report from DIR/case.toml and the results next to it:
@@ -423,7 +478,7 @@ def _run_directory(out: str, case_file: Path, force: bool) -> Path:
     if force or not (target.exists() or target.is_symlink()):
         return directory
     try:
-        same = target.read_text(encoding="utf-8") == case_file.read_text(encoding="utf-8")
+        same = target.read_text(encoding="utf-8") == case_text
     except (OSError, ValueError):
         same = False
     if not same:
@@ -565,6 +620,8 @@ def study_command(
             "corrupted manifest or a different study.",
         ),
     ] = False,
+    model: ModelOpt = None,
+    sets: SetOpt = None,
 ) -> None:
     r"""Run the case's \[study]: Monte Carlo over drawn quantities or a sweep (docs/studies.md).
 
@@ -576,12 +633,11 @@ def study_command(
     """
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TimeRemainingColumn
 
-    from runout.case import load_case
     from runout.study import dask_executor, run_study
 
     if resume and out is None:
         _fail("--resume needs --out DIR (the directory of the interrupted run)")
-    case = load_case(case_file)
+    case = _load(case_file, model, sets)
     if case.study is None:
         _fail(f"{case_file}: study: the case has no [study] table (see docs/studies.md)")
     executor = None
@@ -684,7 +740,10 @@ def _print_study(summary: dict[str, Any], title: str, out: str | None) -> None:
                 highlight=False,
             )
     if out is not None:
-        _out.print(f"wrote {escape(out)}/ (manifest.json, chunks/, summary.json, samples.csv)")
+        files = "manifest.json, chunks/, summary.json, samples.csv"
+        if (Path(out) / "stiffness.csv").is_file():  # equilibrium: the stiffness of every point
+            files += ", stiffness.csv"
+        _out.print(f"wrote {escape(out)}/ ({files})")
 
 
 @app.command("reproduce")

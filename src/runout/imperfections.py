@@ -1136,8 +1136,9 @@ class Imperfections:
     ----------
     inner, outer : Harmonics
         Radius deviation of the inner and outer raceway in the ring's own frame [m].
-    elements : sequence of Harmonics
-        Radius deviation of each rolling element (length Z), in the element's frame [m].
+    elements : sequence of Harmonics, or int
+        Radius deviation of each rolling element (length Z), in the element's frame [m]; or
+        the number of elements Z, all perfect.
     diameter_errors : array_like, shape (Z,)
         Diameter deviation of each element from the nominal diameter [m].
     pitch_errors : array_like, shape (Z,)
@@ -1149,7 +1150,10 @@ class Imperfections:
     Notes
     -----
     Z is taken from ``elements``, else from ``diameter_errors`` or ``pitch_errors``; missing
-    per-element data default to perfect. Use :meth:`perfect` to start from Z perfect elements.
+    per-element data default to perfect: ``Imperfections(elements=8, outer=...)`` is a bearing
+    of 8 perfect elements with a wavy outer raceway. Without any of them Z is unknown and the
+    constructor refuses. :class:`runout.Imperfections` (:mod:`runout.api`) is the builder
+    that reads like the case file and takes Z from the bearing.
     Element *indices* are 0-based (tuple positions, ``index`` arguments); element *numbers*
     in :meth:`add` and :meth:`summary` are 1-based like the case file's ``element`` key.
     """
@@ -1165,7 +1169,7 @@ class Imperfections:
         self,
         inner: Harmonics | None = None,
         outer: Harmonics | None = None,
-        elements: Iterable[Harmonics] = (),
+        elements: Iterable[Harmonics] | int = (),
         diameter_errors: ArrayLike | None = None,
         pitch_errors: ArrayLike | None = None,
         slant: Slant | None = None,
@@ -1177,6 +1181,17 @@ class Imperfections:
                 raise ImperfectionError(
                     f"imperfections.{name}", f"must be Harmonics, got {type(h).__name__}"
                 )
+        if isinstance(elements, bool):
+            raise ImperfectionError(
+                "imperfections.elements",
+                f"must be Z or one Harmonics per element, got {elements!r}",
+            )
+        if isinstance(elements, int | np.integer):
+            if elements < 1:
+                raise ImperfectionError(
+                    "imperfections.elements", f"must be >= 1 (the number Z), got {elements}"
+                )
+            elements = (Harmonics.empty(),) * int(elements)
         elems = tuple(elements)
         for j, h in enumerate(elems):
             if not isinstance(h, Harmonics):
@@ -1193,7 +1208,9 @@ class Imperfections:
         else:
             raise ImperfectionError(
                 "imperfections.elements",
-                "cannot tell the number of rolling elements; use Imperfections.perfect(Z)",
+                "cannot tell the number of rolling elements: pass elements=Z (the number of "
+                "balls or rollers), or use runout.Imperfections, which takes Z from the "
+                "bearing",
             )
         if n < 1:
             raise ImperfectionError("imperfections.elements", "need at least one rolling element")
