@@ -39,6 +39,7 @@ bench: install
 docs: install
 	$(BIN)/python -m runout.schema_doc > docs/case-file.md
 	$(BIN)/python -m runout.conventions > docs/conventions.md
+	$(BIN)/python -m runout.glossary > docs/glossary.md
 	$(BIN)/python docs_hooks/build.py out/site
 
 clean:

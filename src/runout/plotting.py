@@ -38,7 +38,9 @@ __all__ = [
     "plot_orbit",
     "plot_order_sweep",
     "plot_result",
+    "plot_run",
     "plot_study",
+    "plot_study_kind",
     "plot_time_history",
     "pyplot",
     "result_figures",
@@ -1619,3 +1621,123 @@ def _sweep_figures(result: Any, top: int) -> dict[str, Any]:
         name = "".join(ch if ch.isalnum() or ch in "._-" else "_" for ch in q.key)
         written[f"sweep_{name}.png"] = _finish(fig)
     return written
+
+
+# -------------------------------------------------------------------------------------------
+# result.plot(kind=...): one figure of a result or study, from Python
+# -------------------------------------------------------------------------------------------
+#: Kinds of :meth:`runout.results.RunResult.plot`, with what each draws.
+RUN_KINDS = {
+    "lines": "p-p of the labelled lines against their order",
+    "history": "x, y (and z) about their mean against revolutions (or time)",
+    "orbit": "the orbit of the ring centre in the x-y plane",
+    "spectrum": "the amplitude spectrum of x and y against frequency",
+}
+#: Kinds of :meth:`runout.study.StudyResult.plot`.
+STUDY_KINDS = {
+    "histograms": "Monte Carlo: histograms of the runout outputs and the largest lines",
+    "sweep": "sweep: runout outputs and the largest lines against a swept quantity",
+}
+
+
+@style.styled
+def plot_run(result: RunResult, kind: str = "lines", ax: Any = None, **options: Any) -> Any:
+    """One figure of a run result, by name (:meth:`runout.results.RunResult.plot`).
+
+    Parameters
+    ----------
+    result : RunResult
+        The result.
+    kind : {"lines", "history", "orbit", "spectrum"}
+        Which figure (:data:`RUN_KINDS`): :func:`plot_lines`, :func:`plot_time_history`,
+        :func:`plot_orbit` or :func:`plot_dynamic_spectrum`.
+    ax : matplotlib Axes, optional
+        Where to draw (a new figure by default).
+    **options
+        Keyword arguments of the drawing function (``top``, ``revolutions``, ``f_max``, ...).
+
+    Returns
+    -------
+    matplotlib Axes
+
+    Raises
+    ------
+    ValueError
+        An unknown ``kind``, or a result of one instant (the equilibrium model) asked for a
+        figure of a record.
+    """
+    drawers: dict[str, Any] = {
+        "lines": plot_lines,
+        "history": plot_time_history,
+        "orbit": plot_orbit,
+        "spectrum": plot_dynamic_spectrum,
+    }
+    if kind not in drawers:
+        raise ValueError(f"kind must be one of {', '.join(map(repr, drawers))}; got {kind!r}")
+    if result.time.size < 2:
+        raise ValueError(
+            f"the {result.model} model gives one instant, not a record: no {kind} figure "
+            "(its numbers are in result.to_json())"
+        )
+    return drawers[kind](result, ax=ax, **options)
+
+
+def plot_study_kind(result: Any, kind: str, quantity: str | None = None, top: int = 4) -> Any:
+    """One figure of a study, by name (:meth:`runout.study.StudyResult.plot`).
+
+    Parameters
+    ----------
+    result : StudyResult
+        The study.
+    kind : {"histograms", "sweep"}
+        ``"histograms"`` for a Monte Carlo study, ``"sweep"`` for a sweep (:data:`STUDY_KINDS`).
+    quantity : str, optional
+        Sweep: the swept key drawn on the horizontal axis (needed when several scalar keys are
+        swept).
+    top : int
+        Number of lines drawn.
+
+    Returns
+    -------
+    matplotlib Figure
+
+    Raises
+    ------
+    ValueError
+        An unknown kind, a kind of the other study type, or an unknown or ambiguous quantity.
+    """
+    expected = {"histograms": "montecarlo", "sweep": "sweep"}
+    if kind not in expected:
+        raise ValueError(f"kind must be one of {', '.join(map(repr, expected))}; got {kind!r}")
+    if result.kind != expected[kind]:
+        other = next(k for k, v in expected.items() if v == result.kind)
+        raise ValueError(f"a {result.kind} study draws kind={other!r}, not {kind!r}")
+    figures = study_figures(result, top)
+    if kind == "histograms":
+        return figures["histograms.png"]
+    by_key = {
+        "sweep_"
+        + "".join(ch if ch.isalnum() or ch in "._-" else "_" for ch in q.key)
+        + ".png": q.key
+        for q in result.quantities
+    }
+    drawn = {by_key[name]: fig for name, fig in figures.items() if name in by_key}
+    if quantity is None:
+        if len(drawn) != 1:
+            for fig in drawn.values():
+                pyplot().close(fig)
+            raise ValueError(
+                f"the sweep draws {len(drawn)} figures ({', '.join(drawn) or 'none'}): "
+                "name one with quantity="
+            )
+        return next(iter(drawn.values()))
+    if quantity not in drawn:
+        for fig in drawn.values():
+            pyplot().close(fig)
+        raise ValueError(
+            f"quantity {quantity!r} is not a drawn swept key; drawn: {', '.join(drawn) or 'none'}"
+        )
+    for key, fig in drawn.items():
+        if key != quantity:
+            pyplot().close(fig)
+    return drawn[quantity]

@@ -3,7 +3,8 @@
 A model fills a :class:`RunResult`: the time (or angle) history of the measured ring's centre,
 the labelled spectral lines (``components``), the runout figures and model-specific extras. The
 JSON it prints is the documented contract (README, docs/conventions.md, docs/decomposition.md);
-``write`` puts data and plots in a directory.
+``write`` puts data and plots in a directory; ``to_dataframe`` and ``to_xarray`` give the lines
+and the history to pandas and xarray (the ``data`` extra, imported when called).
 Plotting is delegated to :mod:`runout.plotting` (the only module that imports matplotlib).
 """
 
@@ -402,6 +403,112 @@ class RunResult:
         chosen.sort(key=lambda c: -c.pp_m)
         return chosen[:top] if top is not None else chosen
 
+    # ---------------------------------------------------------------- data
+    def to_dataframe(self) -> Any:
+        """The spectral lines as a :class:`pandas.DataFrame`, one row per line, largest first.
+
+        Columns: ``direction`` (x, y, z), ``frequency_hz`` [Hz], ``order`` [-],
+        ``pp_m`` (peak-to-peak [m]), ``phase_rad`` [rad], ``repeatable`` (True for RRO),
+        ``label`` (the line's short label, as in the JSON) and ``top_source`` (the label of
+        its largest source, empty for a line with no source). ``df.attrs`` holds ``units``
+        (column -> unit), ``model``, ``title`` and ``displacement_of``.
+
+        Returns
+        -------
+        pandas.DataFrame
+
+        Raises
+        ------
+        ImportError
+            pandas is not installed (``pip install "runout[data]"``).
+        """
+        pd = _optional("pandas")
+        rows = [
+            {
+                "direction": c.direction,
+                "frequency_hz": c.frequency_hz,
+                "order": c.order,
+                "pp_m": c.pp_m,
+                "phase_rad": c.phase_rad,
+                "repeatable": c.repeatable,
+                "label": c.label,
+                "top_source": c.sources[0].label() if c.sources else "",
+            }
+            for c in self.lines()
+        ]
+        # the columns exist even without a line: code selecting them must not break
+        df = pd.DataFrame(rows, columns=list(LINE_COLUMNS))
+        df.attrs.update(
+            {
+                "units": dict(LINE_COLUMNS),
+                "model": self.model,
+                "title": self.title,
+                "displacement_of": DISPLACEMENT_OF,
+            }
+        )
+        return df
+
+    def to_xarray(self) -> Any:
+        """The history as an :class:`xarray.DataArray` of dims ``(direction, time)``.
+
+        Coordinates: ``direction`` = x, y, z and ``time`` [s]; values [m] are the
+        displacement of :data:`DISPLACEMENT_OF` (z is zero for planar models). ``attrs``:
+        ``units`` (m), ``model``, ``title``, ``displacement_of`` and ``measuring_direction``
+        (unit vector, x and y); the time coordinate's ``attrs["units"]`` is s.
+
+        Returns
+        -------
+        xarray.DataArray
+
+        Raises
+        ------
+        ImportError
+            xarray is not installed (``pip install "runout[data]"``).
+        """
+        xr = _optional("xarray")
+        time = xr.Variable(
+            "time",
+            np.asarray(self.time, dtype=np.float64),
+            attrs={"units": "s", "long_name": "time"},
+        )
+        return xr.DataArray(
+            np.asarray(self.displacement, dtype=np.float64),
+            dims=("direction", "time"),
+            coords={"direction": ["x", "y", "z"], "time": time},
+            name="displacement",
+            attrs={
+                "units": "m",
+                "long_name": "displacement of the inner ring's centre",
+                "model": self.model,
+                "title": self.title,
+                "displacement_of": DISPLACEMENT_OF,
+                "measuring_direction": [float(v) for v in self.measuring_direction],
+            },
+        )
+
+    def plot(self, kind: str = "lines", ax: Any = None, **options: Any) -> Any:
+        """Draw one figure of this result (matplotlib, through :mod:`runout.plotting`).
+
+        Parameters
+        ----------
+        kind : {"lines", "history", "orbit", "spectrum"}
+            ``"lines"``: p-p [m] of the labelled lines against their order;
+            ``"history"``: x, y (and z) about their mean [m] against revolutions of the
+            rotating ring (time [s] at zero speed); ``"orbit"``: y against x [m];
+            ``"spectrum"``: the amplitude spectrum (p-p [m]) of x and y against frequency [Hz].
+        ax : matplotlib.axes.Axes, optional
+            Axes to draw into; a new figure when None.
+        **options
+            Passed to the drawing function (e.g. ``revolutions`` for ``"history"``).
+
+        Returns
+        -------
+        matplotlib.axes.Axes
+        """
+        from runout import plotting
+
+        return plotting.plot_run(self, kind, ax=ax, **options)
+
     # ---------------------------------------------------------------- output
     def to_json(self) -> dict[str, Any]:
         """One JSON object: the documented contract (README, docs/conventions.md)."""
@@ -570,6 +677,32 @@ class RunResult:
         for writer in self.writers:
             written += writer(directory)
         return written
+
+
+#: Columns of :meth:`RunResult.to_dataframe` and their units.
+LINE_COLUMNS: dict[str, str] = {
+    "direction": "-",
+    "frequency_hz": "Hz",
+    "order": "-",
+    "pp_m": "m",
+    "phase_rad": "rad",
+    "repeatable": "-",
+    "label": "-",
+    "top_source": "-",
+}
+
+
+def _optional(module: str) -> Any:
+    """Import ``module`` of the ``data`` extra, or say how to install it."""
+    import importlib
+
+    try:
+        return importlib.import_module(module)
+    except ImportError as exc:
+        raise ImportError(
+            f"{module} is needed for this (tables and labelled arrays of results): "
+            'pip install "runout[data]"'
+        ) from exc
 
 
 # -------------------------------------------------------------------------------------------

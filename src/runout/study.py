@@ -462,6 +462,23 @@ def _empty_chunk(task: ChunkTask) -> dict[str, Any]:
         "runout": {k: [] for k in RUNOUT_KEYS},
         "lines": {},
         "errors": {},
+        "stiffness": {},
+    }
+
+
+def _stiffness_entry(extras: dict[str, Any]) -> dict[str, Any] | None:
+    """What a study keeps of an equilibrium result's stiffness, or None for other models.
+
+    ``radial_stiffness`` (the run JSON's object: kxx, kxy, kyx, kyy [N/m], speed_rpm) and
+    ``axial_stiffness_n_per_m``, the axial diagonal K_aa of the 5×5 ``stiffness_matrix``.
+    """
+    radial = extras.get("radial_stiffness")
+    matrix = extras.get("stiffness_matrix")
+    if not isinstance(radial, dict) or not isinstance(matrix, dict):
+        return None
+    return {
+        "radial_stiffness": {k: float(v) for k, v in radial.items()},
+        "axial_stiffness_n_per_m": float(matrix["matrix"][0][0]),
     }
 
 
@@ -512,6 +529,7 @@ def evaluate_chunk(task: ChunkTask) -> dict[str, Any]:
             "runout": {k: [] for k in RUNOUT_KEYS},
             "lines": {},
             "errors": {},
+            "stiffness": {},
         }
         try:
             _evaluate_batched(task, points, batch)
@@ -530,6 +548,7 @@ def evaluate_chunk(task: ChunkTask) -> dict[str, Any]:
                 (c.direction, c.frequency_hz, study_key(c.sources) or c.label, c.pp_m)
                 for c in result.components
             ]
+            stiffness = _stiffness_entry(result.extras)
         except Exception as exc:  # recorded with its sample: the study goes on
             chunk["errors"][str(task.start + row)] = error_text(exc)
             for k in RUNOUT_KEYS:
@@ -538,6 +557,8 @@ def evaluate_chunk(task: ChunkTask) -> dict[str, Any]:
         for k, v in zip(RUNOUT_KEYS, runout, strict=True):
             chunk["runout"][k].append(v)
         _add_lines(chunk, row, comps)
+        if stiffness is not None:
+            chunk["stiffness"][str(task.start + row)] = stiffness
     return chunk
 
 
@@ -731,6 +752,10 @@ def statistics(values: ArrayLikeF, bins: int = 20) -> dict[str, Any]:
 
 ArrayLikeF = Sequence[float] | NDArray[np.float64]
 _CONTRACT = ("mean", "std", "p5", "p50", "p95")
+#: Stiffness columns of stiffness.csv and :meth:`StudyResult.to_dataframe` [N/m].
+_STIFFNESS_COLUMNS = ("kxx_n_per_m", "kxy_n_per_m", "kyx_n_per_m", "kyy_n_per_m", "kzz_n_per_m")
+#: Runout columns of :meth:`StudyResult.to_dataframe`, in this order.
+_FRAME_RUNOUT = ("radial_pp_m", "rro_pp_m", "nrro_pp_m", "axial_pp_m")
 #: Confidence of the interval of a lot's yield [-].
 YIELD_CONFIDENCE = 0.95
 
@@ -763,6 +788,10 @@ class StudyResult:
     limit : (str, float) or None
         ``[analysis] limit_on`` and ``limit`` [m] when the case gives a spec limit: the
         Monte Carlo JSON gets ``yield``, a sweep's points get ``pass``.
+    stiffness : dict
+        Sample index -> ``{"radial_stiffness": {...}, "axial_stiffness_n_per_m": K_aa}`` for
+        every equilibrium sample that ran (the run JSON's ``radial_stiffness`` [N/m, rpm] and
+        the axial diagonal of its ``stiffness_matrix`` [N/m]); written as ``stiffness.csv``.
     """
 
     kind: str
@@ -776,6 +805,7 @@ class StudyResult:
     errors: dict[int, str]
     bins: int = 20
     limit: tuple[str, float] | None = None
+    stiffness: dict[int, dict[str, Any]] = field(default_factory=dict)
 
     @property
     def samples(self) -> int:
@@ -917,10 +947,97 @@ class StudyResult:
                     "error": self.errors.get(i),
                 }
             )
+            if i in self.stiffness:
+                rows[-1]["radial_stiffness"] = dict(self.stiffness[i]["radial_stiffness"])
+                rows[-1]["axial_stiffness_n_per_m"] = self.stiffness[i]["axial_stiffness_n_per_m"]
             if self.limit is not None:
                 value = float(self.runout[f"{self.limit[0]}_m"][i])
                 rows[-1]["pass"] = bool(value <= self.limit[1]) if math.isfinite(value) else None
         return rows
+
+    # ------------------------------------------------------------ data
+    def to_dataframe(self) -> Any:
+        """One row per sample (Monte Carlo) or point (sweep) as a :class:`pandas.DataFrame`.
+
+        Columns: ``sample`` (index), ``model``, one column per varied quantity named by its
+        ``[study.vary]`` key (the case key, e.g. ``operation.speed``; SI values, a list per
+        row for a per-element key), the runout figures ``radial_pp_m``, ``rro_pp_m``,
+        ``nrro_pp_m``, ``axial_pp_m`` [m] (NaN for a failed sample), one p-p column [m] per
+        line (``"<direction> <frequency> Hz <label> pp_m"``, as in ``samples.csv``; 0 where the
+        line is below the model's reporting floor), ``pass`` when the case gives a spec limit,
+        for a study of the equilibrium model ``kxx_n_per_m``, ``kxy_n_per_m``,
+        ``kyx_n_per_m``, ``kyy_n_per_m`` and ``kzz_n_per_m`` [N/m] (as in ``stiffness.csv``;
+        NaN for a point of another model or a failed one), and ``error`` (the failure's
+        ``"Type: message"``, empty when the sample ran).
+        ``df.attrs`` holds ``units``, ``kind``, ``title`` and ``seed``.
+
+        Returns
+        -------
+        pandas.DataFrame
+
+        Raises
+        ------
+        ImportError
+            pandas is not installed (``pip install "runout[data]"``).
+        """
+        from runout.results import _optional
+
+        pd = _optional("pandas")
+        n = self.samples
+        data: dict[str, Any] = {"sample": np.arange(n), "model": list(self.model)}
+        units: dict[str, str] = {"sample": "-", "model": "-"}
+        for q in self.quantities:
+            values = self.values[q.key]
+            data[q.key] = [list(v) for v in values] if q.size > 1 else list(values)
+            units[q.key] = _si_unit(q)
+        for k in _FRAME_RUNOUT:
+            data[k] = np.asarray(self.runout[k], dtype=np.float64)
+            units[k] = "m"
+        for d, f, label, pp in self.line_table():
+            name = f"{d} {f:.6g} Hz {label} pp_m"  # unique: lines are keyed by direction|label
+            data[name] = np.asarray(pp, dtype=np.float64)
+            units[name] = "m"
+        if self.limit is not None:
+            figure = np.asarray(self.runout[f"{self.limit[0]}_m"], dtype=np.float64)
+            data["pass"] = [bool(v <= self.limit[1]) if math.isfinite(v) else None for v in figure]
+            units["pass"] = "-"
+        if self.stiffness:  # equilibrium points: the columns of stiffness.csv, NaN elsewhere
+            table = dict(self.stiffness_columns())
+            for name in _STIFFNESS_COLUMNS:
+                values = table[name]
+                column = np.full(n, np.nan)
+                column[sorted(self.stiffness)] = values
+                data[name] = column
+                units[name] = "N/m"
+        data["error"] = [self.errors.get(i, "") for i in range(n)]
+        units["error"] = "-"
+        df = pd.DataFrame(data)
+        df.attrs.update({"units": units, "kind": self.kind, "title": self.title, "seed": self.seed})
+        if self.limit is not None:
+            df.attrs["limit"] = {"quantity": self.limit[0], "limit_m": self.limit[1]}
+        return df
+
+    def plot(self, kind: str | None = None, quantity: str | None = None, top: int = 4) -> Any:
+        """One figure of the study (matplotlib, through :mod:`runout.plotting`).
+
+        Parameters
+        ----------
+        kind : {"histograms", "sweep"}, optional
+            ``"histograms"`` (Monte Carlo) or ``"sweep"``; by default the study's own kind.
+        quantity : str, optional
+            Sweep: the swept key on the horizontal axis (needed when several are swept).
+        top : int
+            Number of lines drawn.
+
+        Returns
+        -------
+        matplotlib.figure.Figure
+        """
+        from runout.plotting import plot_study_kind
+
+        if kind is None:
+            kind = "histograms" if self.kind == "montecarlo" else "sweep"
+        return plot_study_kind(self, kind, quantity=quantity, top=top)
 
     # ------------------------------------------------------------ files
     def write(self, directory: Path, plots: bool = True) -> list[Path]:
@@ -931,6 +1048,8 @@ class StudyResult:
             summary["yield"] = self.lot_yield()
         written = [_write_text(directory / "summary.json", _dumps(summary, indent=2))]
         written.append(self._write_csv(directory / "samples.csv"))
+        if self.stiffness:
+            written.append(self._write_stiffness(directory / "stiffness.csv"))
         if plots:
             from runout.plotting import plot_study
 
@@ -961,6 +1080,44 @@ class StudyResult:
             cols.append((f"{d} {f:.6g} Hz {label} pp_m", pp))
         return cols
 
+    def stiffness_columns(self) -> list[tuple[str, list[Any]]]:
+        """The table of ``stiffness.csv``: one row per equilibrium point that ran.
+
+        Columns: ``sample``, the varied values by case key [SI] (``key[j]`` per element of a
+        per-element key), ``speed_rpm`` [rev/min], ``frequency_rad_per_s`` (the speed as the
+        rotor's angular frequency [rad/s], what rotordynamics codes index bearing
+        coefficients by), ``kxx_n_per_m``, ``kxy_n_per_m``, ``kyx_n_per_m``, ``kyy_n_per_m``
+        (the radial block, tilts held) and ``kzz_n_per_m`` (the axial stiffness K_aa) [N/m].
+        A point whose model failed has no row (its error is in the points and summary).
+        """
+        rows = sorted(self.stiffness)
+        cols: list[tuple[str, list[Any]]] = [("sample", rows)]
+        for q in self.quantities:
+            vals = self.values[q.key]
+            if q.size > 1:
+                cols += [(f"{q.key}[{j + 1}]", [vals[i][j] for i in rows]) for j in range(q.size)]
+            else:
+                cols.append((q.key, [vals[i] for i in rows]))
+        radial = [self.stiffness[i]["radial_stiffness"] for i in rows]
+        cols.append(("speed_rpm", [r["speed_rpm"] for r in radial]))
+        cols.append(
+            ("frequency_rad_per_s", [r["speed_rpm"] * 2.0 * math.pi / 60.0 for r in radial])
+        )
+        for k in _STIFFNESS_COLUMNS[:4]:
+            cols.append((k, [r[k] for r in radial]))
+        cols.append(("kzz_n_per_m", [self.stiffness[i]["axial_stiffness_n_per_m"] for i in rows]))
+        return cols
+
+    def _write_stiffness(self, path: Path) -> Path:
+        cols = self.stiffness_columns()
+
+        def rows(fh: TextIO) -> None:
+            writer = csv.writer(fh, lineterminator="\n")
+            writer.writerow([name for name, _ in cols])
+            writer.writerows(zip(*([_cell(v) for v in col] for _, col in cols), strict=True))
+
+        return write_atomic(path, rows)
+
     def _write_csv(self, path: Path) -> Path:
         cols = self.columns()
 
@@ -972,6 +1129,15 @@ class StudyResult:
             writer.writerows(zip(*cells, strict=True))
 
         return write_atomic(path, rows)
+
+
+def _si_unit(q: Quantity) -> str:
+    """SI unit of a varied quantity's values (``"-"`` for a count, a ratio or a text)."""
+    from runout.plotting import _key_unit_kind  # the case schema's kind of the key
+    from runout.units import KINDS
+
+    kind = _key_unit_kind(q.path)
+    return (KINDS[kind][1] if kind is not None else "") or "-"
 
 
 def _cell(value: Any) -> str:
@@ -1792,6 +1958,41 @@ def _chunk_problem(chunk: Any, task: ChunkTask, digest: str) -> str | None:
         for k, v in errors.items()
     ):
         return "errors is not an object of sample numbers and messages"
+    return _stiffness_problem(chunk, task)
+
+
+#: The model whose points carry a stiffness (``runout.models.equilibrium.MODEL``; not imported:
+#: checking a chunk must not load the model).
+_EQUILIBRIUM = "equilibrium"
+#: Keys of a point's ``radial_stiffness`` (:func:`runout.models.equilibrium.radial_stiffness`).
+_RADIAL_KEYS = ("kxx_n_per_m", "kxy_n_per_m", "kyx_n_per_m", "kyy_n_per_m", "speed_rpm")
+
+
+def _stiffness_problem(chunk: dict[str, Any], task: ChunkTask) -> str | None:
+    """What is wrong with the chunk's ``stiffness`` entries, or None.
+
+    Every equilibrium point that ran must have one: a chunk written before studies kept the
+    stiffness (no ``stiffness`` object) is recomputed rather than giving a stiffness.csv with
+    points missing.
+    """
+    stiffness = chunk.get("stiffness", {})
+    if not isinstance(stiffness, dict):
+        return "stiffness is not an object"
+    for k, entry in stiffness.items():
+        radial = entry.get("radial_stiffness") if isinstance(entry, dict) else None
+        if (
+            not k.isdigit()
+            or not task.start <= int(k) < task.stop
+            or not isinstance(radial, dict)
+            or set(radial) != set(_RADIAL_KEYS)
+            or not all(_is_number(v) for v in radial.values())
+            or not _is_number(entry.get("axial_stiffness_n_per_m"))
+        ):
+            return f"stiffness of sample {k!r} is damaged"
+    for row, model in enumerate(chunk["model"]):
+        i = str(task.start + row)
+        if model == _EQUILIBRIUM and i not in chunk["errors"] and i not in stiffness:
+            return f"sample {i} has no stiffness (written by an earlier version)"
     return None
 
 
@@ -1822,7 +2023,7 @@ def _load_chunks(
 
 #: Files a study writes at the top of its output directory (replaced by a fresh run).
 _STUDY_FILES = re.compile(
-    r"^(manifest\.json|summary\.json|samples\.csv|histograms\.png|sweep_.+\.png)$"
+    r"^(manifest\.json|summary\.json|samples\.csv|stiffness\.csv|histograms\.png|sweep_.+\.png)$"
 )
 
 
@@ -1904,6 +2105,7 @@ def _assemble(
     runout = {k: np.full(total, np.nan) for k in RUNOUT_KEYS}
     lines: dict[str, tuple[float, NDArray[np.float64]]] = {}
     errors: dict[int, str] = {}
+    stiffness: dict[int, dict[str, Any]] = {}
     for c in chunks:
         s, e = c["start"], c["stop"]
         model += c["model"]
@@ -1916,6 +2118,7 @@ def _assemble(
                 lines[key] = (entry["frequency_hz"], np.zeros(total))
             lines[key][1][s:e] = entry["pp_m"]
         errors.update({int(k): v for k, v in c["errors"].items()})
+        stiffness.update({int(k): v for k, v in c.get("stiffness", {}).items()})
     return StudyResult(
         kind=study.kind,
         title=case.title,
@@ -1928,6 +2131,7 @@ def _assemble(
         errors=errors,
         bins=study.bins,
         limit=study_limit(case),
+        stiffness=stiffness,
     )
 
 
