@@ -426,7 +426,7 @@ def estimate_run(case: Any, model: str) -> Estimate:
     """Memory and time of one run of ``model`` on ``case`` (before any allocation).
 
     The dynamic model's step count needs its natural frequencies;
-    :func:`runout.models.dynamic.window_estimate` refines this estimate once they are known.
+    :func:`runout.models.dynamic.plan_integration` refines this estimate once they are known.
     """
     from runout.case import harmonic_counts
 
