@@ -55,6 +55,19 @@ def _call(f: Callable[[float], float], x: float) -> float:
     return value
 
 
+def _div(num: float, den: float) -> float:
+    """``num / den`` as SciPy's C code computes it (IEEE 754): ±inf or nan, never an exception.
+
+    Products of tiny function values underflow to 0 (f ~ 1e-117 squared); C then divides by
+    zero into an infinite or undefined step, which the step test rejects (bisection).
+    """
+    if den != 0.0:
+        return num / den
+    if num == 0.0 or math.isnan(num):
+        return math.nan
+    return math.copysign(math.inf, num) * math.copysign(1.0, den)
+
+
 @overload
 def brentq(
     f: Callable[[float], float],
@@ -156,11 +169,11 @@ def brentq(
             return done(xcur, True)
         if abs(spre) > delta and abs(fcur) < abs(fpre):
             if xpre == xblk:  # interpolate (secant)
-                stry = -fcur * (xcur - xpre) / (fcur - fpre)
+                stry = _div(-fcur * (xcur - xpre), fcur - fpre)
             else:  # extrapolate (inverse quadratic)
-                dpre = (fpre - fcur) / (xpre - xcur)
-                dblk = (fblk - fcur) / (xblk - xcur)
-                stry = -fcur * (fblk * dblk - fpre * dpre) / (dblk * dpre * (fblk - fpre))
+                dpre = _div(fpre - fcur, xpre - xcur)
+                dblk = _div(fblk - fcur, xblk - xcur)
+                stry = _div(-fcur * (fblk * dblk - fpre * dpre), dblk * dpre * (fblk - fpre))
             if 2.0 * abs(stry) < min(abs(spre), 3.0 * abs(sbis) - delta):
                 spre = scur  # a good short step
                 scur = stry

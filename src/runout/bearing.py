@@ -377,6 +377,23 @@ class Operation:
             raise GeometryError(
                 "operation.rotating_ring", f'must be "inner" or "outer", got {self.rotating_ring!r}'
             )
+        units = {
+            "speed": "Hz, revolutions per second",
+            "other_ring_speed": "Hz, revolutions per second",
+            "radial_load_direction": "rad",
+            "moment_load_direction": "rad",
+            "axial_load": "N",
+            "radial_load": "N",
+            "moment_load": "N m",
+        }
+        for name, unit in units.items():
+            value = getattr(self, name)
+            if isinstance(value, bool) or not isinstance(value, int | float):
+                raise GeometryError(
+                    f"operation.{name}",
+                    f"must be a number in SI units [{unit}], got {value!r} (a string with a "
+                    "unit is read in case files and by runout.load_case, not here)",
+                )
         for name in ("speed", "other_ring_speed", "radial_load_direction", "moment_load_direction"):
             if not math.isfinite(getattr(self, name)):
                 raise GeometryError(f"operation.{name}", "must be finite")

@@ -127,3 +127,12 @@ def test_former_names_work_for_one_release_with_a_warning() -> None:
         assert op.moment_load_angle == 0.0
     with pytest.raises(TypeError, match="both elements= and its old name n_elements="):
         BallBearing(elements=8, n_elements=8, element_diameter=1e-3, pitch_diameter=7e-3)
+
+
+def test_a_string_with_a_unit_is_refused_with_the_si_unit_to_write() -> None:
+    with pytest.raises(GeometryError) as info:
+        Operation(speed="1800 rpm")  # type: ignore[arg-type]
+    assert info.value.key == "operation.speed"
+    assert "[Hz, revolutions per second]" in info.value.message
+    with pytest.raises(GeometryError, match=r"\[N\]"):
+        Operation(axial_load="20 N")  # type: ignore[arg-type]

@@ -72,3 +72,14 @@ def test_axial_loading_contact_angle_unchanged(load: float) -> None:
     finally:
         roots.brentq = saved
     assert ours == ref
+
+
+def test_underflowing_function_values_bisect_like_scipy() -> None:
+    """Found by hypothesis: f ~ 1e-117 makes the interpolation's denominator underflow to 0;
+    Python raised ZeroDivisionError where SciPy's C divides into inf and bisects."""
+    c = [4.754897394447338e-117, 9.020990381927154e-112]
+
+    def poly(x: float) -> float:
+        return sum(ci * x**i for i, ci in enumerate(c))
+
+    _compare(poly, -2.5, 2.0, xtol=2e-12, rtol=8.881784197001252e-16)
