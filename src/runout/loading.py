@@ -245,13 +245,21 @@ def _axial_loading(
             kn = ball_race_contacts(bearing, alpha).combined_stiffness
         return _load_at(bearing, alpha, alpha0, kn) / fa - 1.0
 
+    if not residual(_ALPHA_MAX) >= 0.0:  # no angle short of 90 degrees carries it
+        kn = (free_contacts or ball_race_contacts(bearing, _ALPHA_MAX)).combined_stiffness
+        raise GeometryError(
+            "operation.axial_load",
+            f"{fa:.4g} N is more than the {_load_at(bearing, _ALPHA_MAX, alpha0, kn):.4g} N "
+            "the balls carry at a contact angle of 90 deg (the Hertz contacts would be "
+            "crushed long before)",
+        )
     try:
         from runout._roots import brentq  # SciPy's Brent steps without scipy.optimize's import
 
         alpha, info = brentq(
             residual, alpha0, _ALPHA_MAX, xtol=xtol, rtol=8.9e-16, full_output=True
         )
-    except ValueError as exc:  # no sign change: cannot happen for F_a > 0, but be explicit
+    except ValueError as exc:  # no sign change: excluded above, but be explicit
         raise ConvergenceError(f"axial load-angle relation has no root: {exc}") from exc
     if not info.converged:
         raise ConvergenceError(f"axial load-angle relation did not converge: {info.flag}")

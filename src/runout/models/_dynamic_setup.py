@@ -118,12 +118,21 @@ def _preloaded_contact_angle(
     if preload <= 0.0:
         return free_contact_angle, _law_stiffness(bearing, free_contact_angle, law)
 
-    def residual(alpha: float) -> float:
+    def carried(alpha: float) -> float:
         stretch = max(math.cos(free_contact_angle) / math.cos(alpha) - 1.0, 0.0)
         k = _law_stiffness(bearing, alpha, law)
-        return z * k * (a * stretch) ** 1.5 * math.sin(alpha) / preload - 1.0
+        return z * k * (a * stretch) ** 1.5 * math.sin(alpha)
+
+    def residual(alpha: float) -> float:
+        return carried(alpha) / preload - 1.0
 
     hi = 0.5 * math.pi * (1.0 - 1e-6)
+    if not carried(hi) >= preload:  # no angle short of 90 degrees carries the preload
+        raise GeometryError(
+            "operation.axial_load",
+            f"the preload {preload:.4g} N is more than the {carried(hi):.4g} N the balls carry "
+            "at a contact angle of 90 deg (the Hertz contacts would be crushed long before)",
+        )
     from scipy.optimize import brentq  # lazily: ~0.1 s of CLI start-up
 
     alpha = float(brentq(residual, free_contact_angle, hi, xtol=1e-15, rtol=8.9e-16))
