@@ -145,7 +145,7 @@ def _render(
     return pos + 2
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, nogil=True)  # a run writes it while plotting
 def _plan(
     block: npt.NDArray[np.float64],
 ) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.int64], npt.NDArray[np.int64]]:
@@ -169,7 +169,7 @@ def _plan(
     return digits, exps, length
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, nogil=True)  # a run writes it while plotting
 def _write(
     block: npt.NDArray[np.float64],
     digits: npt.NDArray[np.int64],

@@ -10,6 +10,8 @@ import functools
 from collections.abc import Callable, Iterable
 from typing import Any, TypeVar
 
+import numpy as np
+
 __all__ = [
     "ANNOTATION_SIZE",
     "DIRECTION_COLOURS",
@@ -108,8 +110,8 @@ def length_scale(values_m: Iterable[float]) -> tuple[str, float]:
 
     Parameters
     ----------
-    values_m : iterable of float
-        Lengths [m] (NaN and inf are ignored).
+    values_m : array_like of float
+        Lengths [m] (NaN and inf are ignored), read in one vectorised pass.
 
     Returns
     -------
@@ -118,4 +120,4 @@ def length_scale(values_m: Iterable[float]) -> tuple[str, float]:
     """
     from runout.display import length_unit
 
-    return length_unit(float(v) for v in values_m)
+    return length_unit(np.asarray(values_m, dtype=np.float64))

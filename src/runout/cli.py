@@ -21,7 +21,7 @@ import sys
 import warnings
 from collections.abc import Callable
 from pathlib import Path
-from typing import Annotated, Any, TypeVar
+from typing import Annotated, Any, NoReturn, TypeVar
 
 import click
 import typer
@@ -809,8 +809,44 @@ def reproduce_command(
 
 
 def main() -> None:
-    """Console-script entry point."""
-    app()
+    """Console-script entry point.
+
+    The command's exit status is final once it returns: the streams are flushed and the
+    ``atexit`` handlers run (logging, Dask, temporary files), then the process ends without
+    the interpreter's teardown of every module, which frees Numba's and LLVM's compiled code
+    object by object (about 0.2 s of every command). Should a non-daemon thread still run, the
+    interpreter exits the usual way and waits for it.
+    """
+    try:
+        app()
+        code: object = 0
+    except SystemExit as exc:
+        code = exc.code
+    _exit(code)
+
+
+def _exit(code: object) -> NoReturn:
+    """End the process with ``code`` as ``SystemExit`` would, without the interpreter's teardown."""
+    import atexit
+    import threading
+
+    main = threading.main_thread()
+    if any(t is not main and t.is_alive() and not t.daemon for t in threading.enumerate()):
+        raise SystemExit(code)
+    if code is None:
+        status = 0
+    elif isinstance(code, int):
+        status = code
+    else:  # SystemExit("message"): printed to stderr, status 1
+        print(code, file=sys.stderr)
+        status = 1
+    try:
+        sys.stdout.flush()
+        sys.stderr.flush()
+    except (OSError, ValueError):  # a closed pipe: the output is gone either way
+        status = status or 1
+    atexit._run_exitfuncs()
+    os._exit(status)
 
 
 if __name__ == "__main__":

@@ -737,12 +737,17 @@ def split_runout(
 
     def rro_lines(t: FloatArray) -> FloatArray:
         out = np.zeros_like(t)
+        work = np.empty_like(t)  # one record-sized buffer, no temporaries per line
 
         def fill(first: int, last: int) -> None:  # elementwise: the halves of a long record
-            part, ts = out[first:last], t[first:last]  # on two threads give the same values
-            for c in rep:
+            part, ts, buf = out[first:last], t[first:last], work[first:last]  # on two threads
+            for c in rep:  # give the same values as one pass
                 w = u[0] if c.direction == "x" else u[1]
-                part += w * 0.5 * c.pp_m * np.cos(2.0 * math.pi * c.frequency_hz * ts + c.phase_rad)
+                np.multiply(ts, 2.0 * math.pi * c.frequency_hz, out=buf)
+                buf += c.phase_rad
+                np.cos(buf, out=buf)
+                buf *= w * 0.5 * c.pp_m
+                part += buf
 
         in_spans(fill, halves(t.size, PARALLEL_MIN))
         return out

@@ -19,6 +19,8 @@ from __future__ import annotations
 import math
 from collections.abc import Iterable
 
+import numpy as np
+
 __all__ = [
     "LENGTH_UNITS",
     "format_length",
@@ -45,8 +47,9 @@ def length_unit(values_m: Iterable[float]) -> tuple[str, float]:
 
     Parameters
     ----------
-    values_m : iterable of float
-        Lengths shown together [m]. Non-finite values are ignored (they are never printed).
+    values_m : iterable of float or ndarray
+        Lengths shown together [m] (an array of any shape is read in one vectorised pass).
+        Non-finite values are ignored (they are never printed).
 
     Returns
     -------
@@ -57,11 +60,18 @@ def length_unit(values_m: Iterable[float]) -> tuple[str, float]:
         [0.1, 1000) for any largest magnitude from 1e-10 m to below 1000 m, and in [1, 1000)
         above 1 nm. All zero, all non-finite or empty gives ``("nm", 1e9)``.
     """
-    largest = 0.0
-    for value in values_m:
-        magnitude = abs(float(value))
-        if math.isfinite(magnitude) and magnitude > largest:
-            largest = magnitude
+    if isinstance(values_m, np.ndarray):  # a record: one vectorised pass, not a Python loop
+        magnitudes = np.abs(values_m.astype(np.float64, copy=False).ravel())
+        largest = float(magnitudes.max(initial=0.0))
+        if not math.isfinite(largest):  # rare: leave out the non-finite values
+            finite = magnitudes[np.isfinite(magnitudes)]
+            largest = float(finite.max(initial=0.0))
+    else:
+        largest = 0.0
+        for value in values_m:
+            magnitude = abs(float(value))
+            if math.isfinite(magnitude) and magnitude > largest:
+                largest = magnitude
     for name, scale in LENGTH_UNITS:
         # Decide on the reading as printed: 999.97 nm would show as "1000 nm".
         if float(f"{largest * scale:.{_UNIT_CHOICE_DIGITS}g}") < 1000.0:

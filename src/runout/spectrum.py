@@ -205,26 +205,21 @@ _WINDOW_ALIASES = {
 }
 
 
-@functools.lru_cache(maxsize=1)
 def _hann(n: int) -> FloatArray:
-    """Periodic (DFT-even) Hann window of length ``n`` [-] (read-only).
+    """Periodic (DFT-even) Hann window of length ``n`` [-].
 
     The same operations as ``scipy.signal.get_window("hann", n, fftbins=True)`` (a cosine sum
     over ``n + 1`` points, the last dropped), so the values are identical to the bit, without
-    importing scipy.signal (about a second of start-up). The last window is kept: a run
-    takes the spectrum of each direction of one record.
+    importing scipy.signal (about a second of start-up).
     """
     if n <= 1:
-        ones = np.ones(n)
-        ones.flags.writeable = False
-        return ones
+        return np.ones(n)
     # SciPy: w = 0; w += 0.5 cos(0 fac); w += 0.5 cos(1 fac), i.e. 0.5 + 0.5 cos(fac) with the
     # same roundings (cos 0 = 1; 0.5 x is exact); computed in place, one array of n + 1
     w = np.linspace(-np.pi, np.pi, n + 1)
     np.cos(w, out=w)
     w *= 0.5
     w += 0.5
-    w.flags.writeable = False
     return w[:-1]
 
 

@@ -20,9 +20,9 @@ EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 _PROBE = """
 import json, sys
 sys.argv = ["runout", *json.loads(sys.argv[1])]
-from runout.cli import main
+from runout.cli import app  # main() would end the process before the probe prints
 try:
-    main()
+    app()
 except SystemExit as exc:
     code = exc.code
 else:

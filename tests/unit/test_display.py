@@ -130,3 +130,15 @@ def test_a_tiny_resolution_is_stated_as_a_bound_not_as_noise_digits() -> None:
     assert format_resolution(7.3e-16) == "under 0.001 nm"
     with pytest.raises(ValueError):
         format_resolution(0.0)
+
+
+def test_an_array_is_read_in_one_pass_like_the_same_values_in_a_list() -> None:
+    import numpy as np
+
+    rng = np.random.default_rng(4)
+    for scale in (1e-10, 3e-8, 2e-5, 0.4):
+        values = rng.normal(size=(3, 500)) * scale
+        assert length_unit(values) == length_unit(values.ravel().tolist())
+    values = np.array([np.nan, 2.5e-6, -np.inf, -7e-7])
+    assert length_unit(values) == length_unit([2.5e-6, -7e-7]) == ("um", 1e6)
+    assert length_unit(np.array([])) == ("nm", 1e9)
