@@ -815,7 +815,8 @@ def main() -> None:
     ``atexit`` handlers run (logging, Dask, temporary files), then the process ends without
     the interpreter's teardown of every module, which frees Numba's and LLVM's compiled code
     object by object (about 0.2 s of every command). Should a non-daemon thread still run, the
-    interpreter exits the usual way and waits for it.
+    interpreter exits the usual way and waits for it; ``python -m runout.cli`` (under a
+    profiler, say) always does.
     """
     try:
         app()
@@ -850,4 +851,6 @@ def _exit(code: object) -> NoReturn:
 
 
 if __name__ == "__main__":
-    main()
+    # ``python -m runout.cli``: the usual exit, so that a profiler or debugger wrapping the
+    # module gets control back (the console script ``runout`` takes the fast one)
+    app()

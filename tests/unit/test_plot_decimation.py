@@ -56,3 +56,20 @@ def test_orbit_drops_only_instants_in_the_cell_just_drawn(xy: np.ndarray, cells:
     for i in range(1, x.size - 1):  # a dropped instant lies in the cell of the one before it
         if not kept[i]:
             assert np.array_equal(cell[:, i], cell[:, i - 1])
+
+
+def test_orbit_indices_are_sorted_unique_and_end_on_the_last_instant() -> None:
+    """Built without np.unique (its sort dominated): the same indices as the set of moves."""
+    t = np.linspace(0.0, 200.0, 50_000)
+    x, y = np.cos(t) + 0.1 * np.cos(7.3 * t), np.sin(t) + 0.1 * np.sin(5.1 * t)
+    for cells in (500, 50, 3):
+        keep = orbit_indices(x, y, cells)
+        scale = cells / max(np.ptp(x), np.ptp(y))
+        cx = ((x - x.min()) * scale).astype(np.int64)
+        cy = ((y - y.min()) * scale).astype(np.int64)
+        moved = np.flatnonzero((cx[1:] != cx[:-1]) | (cy[1:] != cy[:-1])) + 1
+        assert np.array_equal(keep, np.unique(np.concatenate([[0], moved, [x.size - 1]])))
+    still = np.zeros(5000)
+    still[-1] = 1.0  # the last instant is a move: kept once
+    keep = orbit_indices(still, np.zeros(5000), 10)
+    assert keep.tolist() == [0, 4999]
