@@ -22,6 +22,23 @@ axial_load = "60.68 N"
 """
 
 
+#: The same bearing and operating point as tables (case-file keys and strings with units).
+KIM_BEARING: dict[str, Any] = {
+    "type": "ball",
+    "elements": 10,
+    "element_diameter": "1.5875 mm",
+    "pitch_diameter": "9.1 mm",
+    "inner_conformity": 0.529,
+    "outer_conformity": 0.535,
+    "radial_clearance": "5 um",
+}
+KIM_OPERATION: dict[str, Any] = {
+    "rotating_ring": "inner",
+    "speed": "7200 rpm",
+    "axial_load": "60.68 N",
+}
+
+
 #: Tada's standard HDD bearing (seed 000 Table 1) with 10 um clearance, as a [bearing] table.
 TADA_BEARING: dict[str, Any] = {
     "type": "ball",

@@ -7,14 +7,16 @@ import csv
 import io
 import os
 import re
-import shutil
-import subprocess
+import sys
 from pathlib import Path
 
 import pytest
 from typer.testing import CliRunner
 
 from runout.cli import app
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "docs_hooks"))
+import screenshots
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 runner = CliRunner()
@@ -69,38 +71,12 @@ def test_report_of_a_directory_without_results_is_a_clear_error(tmp_path: Path) 
     assert "holds no result.json" in " ".join(result.stderr.split())
 
 
-def _chromium() -> str | None:
-    return shutil.which("chromium") or shutil.which("chromium-browser")
-
-
 def test_report_renders_in_headless_chromium(report_608: Path, tmp_path: Path) -> None:
-    browser = _chromium()
-    if browser is None:
+    if screenshots.chromium() is None:
         if os.environ.get("CI"):
             pytest.fail("CI must install Debian's chromium (see .ci/run)")
         pytest.skip("headless Chromium is not installed here; CI installs it and runs this")
-    shot = tmp_path / "page.png"
-    subprocess.run(
-        [
-            browser,
-            "--headless",
-            "--no-sandbox",
-            "--disable-gpu",
-            "--disable-quic",
-            "--no-first-run",
-            "--disable-background-networking",
-            "--disable-component-update",
-            "--disable-sync",
-            f"--user-data-dir={tmp_path / 'profile'}",
-            "--window-size=1200,1600",
-            f"--screenshot={shot}",
-            report_608.as_uri(),
-        ],
-        check=True,
-        capture_output=True,
-        timeout=120,
-    )
-    data = shot.read_bytes()
+    data = screenshots.screenshot(report_608, tmp_path / "page.png").read_bytes()
     assert data[:8] == b"\x89PNG\r\n\x1a\n"
     assert len(data) > 20_000  # a rendered page with tables and figures, not a blank one
 

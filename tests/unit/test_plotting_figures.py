@@ -19,7 +19,7 @@ import pytest
 from plot_checks import MAX_LINE_POINTS, figure_problems, png_problems
 from typer.testing import CliRunner
 
-from cases import dynamic_case
+from cases import KIM_BEARING, KIM_OPERATION, dynamic_case
 from runout import plotting
 from runout.case import parse_case
 from runout.cli import app
@@ -32,16 +32,8 @@ EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 KIM: dict[str, Any] = {
     "title": "Kim spindle bearing",
-    "bearing": {
-        "type": "ball",
-        "elements": 10,
-        "element_diameter": "1.5875 mm",
-        "pitch_diameter": "9.1 mm",
-        "inner_conformity": 0.529,
-        "outer_conformity": 0.535,
-        "radial_clearance": "5 um",
-    },
-    "operation": {"rotating_ring": "inner", "speed": "7200 rpm", "axial_load": "60.68 N"},
+    "bearing": dict(KIM_BEARING),
+    "operation": dict(KIM_OPERATION),
     "analysis": {
         "model": "quasi_static_2d",
         "revolutions": 4,
