@@ -269,8 +269,11 @@ def _finish(fig: Any) -> Any:
     return fig
 
 
-def _save(fig: Any, path: Path, dpi: int = 120) -> Path:
-    """Save ``fig`` (laid out unless its layout is fixed) to ``path`` and close it."""
+def _save(fig: Any, path: Path, dpi: int = 100) -> Path:
+    """Save ``fig`` (laid out unless its layout is fixed) to ``path`` and close it.
+
+    100 dpi: a 9 in figure is 900 pixels, the width the report shows it at.
+    """
     plt = pyplot()
     # zlib level 1: a third of the encoding time for files about 5 % larger
     _finish(fig).savefig(path, dpi=dpi, pil_kwargs={"compress_level": 1})
@@ -508,15 +511,15 @@ def animate_bearing(
     path: Path,
     *,
     n_elements: int | None = None,
-    frames: int = 72,
-    fps: int = 12,
+    frames: int = 48,
+    fps: int = 8,
 ) -> Path:
     """Write a GIF of the ring centre and the balls (the animation seed 000 §4 describes).
 
     Left: the bearing seen along its axis, balls at their cage positions, a reference mark
     turning with the rotating ring and the measured ring's centre displaced by its magnified
     displacement; right: the orbit traced so far (nm, equal aspect). Frames are spread evenly
-    over the record (at most ``frames``, never more than 120; by default 72 frames shown for
+    over the record (at most ``frames``, never more than 120; by default 48 frames shown for
     six seconds: the GIF of a 900 × 450 pixel figure costs about 2.5 ms a frame to write).
 
     Notes
