@@ -36,6 +36,10 @@ __all__ = ["BallBearing", "Bearing", "Material", "Operation", "RollerBearing"]
 
 RingName = Literal["inner", "outer"]
 
+#: Largest ring speed read [Hz] (6e7 rpm, a hundred times the fastest bearings): far beyond it
+#: the centrifugal and unbalance forces overflow (1e300 rpm did in the dynamic model).
+MAX_SPEED = 1e6
+
 _T = TypeVar("_T")
 
 
@@ -397,6 +401,14 @@ class Operation:
         for name in ("speed", "other_ring_speed", "radial_load_direction", "moment_load_direction"):
             if not math.isfinite(getattr(self, name)):
                 raise GeometryError(f"operation.{name}", "must be finite")
+        for name in ("speed", "other_ring_speed"):
+            value = getattr(self, name)
+            if abs(value) > MAX_SPEED:  # squared into centrifugal and unbalance forces
+                raise GeometryError(
+                    f"operation.{name}",
+                    f"{value * 60:.4g} rpm is beyond any rolling bearing (at most "
+                    f"{MAX_SPEED * 60:.0e} rpm)",
+                )
         for name in ("axial_load", "radial_load", "moment_load"):
             value = getattr(self, name)
             if not (math.isfinite(value) and value >= 0.0):

@@ -1153,12 +1153,14 @@ class Case:
             )
         return self._toml()
 
-    def _toml(self) -> str:
+    def _toml(self, files: dict[str, str] | None = None) -> str:
         import tomli_w
 
         # tables in the order of the case-file reference, and every entry of an array of
         # tables as its own [[table]] (tomli_w would write short ones inline)
         document = self.to_document()
+        for entry in document.get("profile", []):  # profiles saved under other names
+            entry["file"] = (files or {}).get(entry.get("file", ""), entry.get("file"))
         chunks = []
         top = {k: v for k, v in document.items() if not isinstance(v, dict | list)}
         if top:
@@ -1174,20 +1176,26 @@ class Case:
     def save(self, path: str | Path) -> Path:
         """Write :meth:`to_toml` to ``path``, and profiles given as arrays as CSV beside it.
 
+        Each profile's CSV is named after the case file (``<stem>.<part>_profile_<k>.csv``), so
+        that cases saved into one directory do not share a profile file.
+
         Returns
         -------
         Path
             The case file written.
         """
         target = Path(path)
+        # named after the case file: two cases saved in one directory keep their own profiles
+        files = {name: f"{target.stem}.{name}" for name in self.profile_data}
         for name, (angles, deviations) in self.profile_data.items():
             rows = "".join(
                 f"{float(a)!r},{float(d)!r}\n" for a, d in zip(angles, deviations, strict=True)
             )
-            (target.parent / name).write_text(
-                "# angle [rad], radius deviation [m]\n" + rows, encoding="utf-8"
+            (target.parent / files[name]).write_text(
+                "# angle, radius deviation (units: the case file's [[profile]] entry)\n" + rows,
+                encoding="utf-8",
             )
-        target.write_text(self._toml(), encoding="utf-8")
+        target.write_text(self._toml(files), encoding="utf-8")
         return target
 
 
@@ -1953,7 +1961,10 @@ def apply_overrides(data: dict[str, Any], overrides: Mapping[str, Any], path: st
                 f"{table}[{position}]",
                 f"the case has {count} [[{table}]] entries (counted from 1)",
             )
-        entries[position - 1][name] = value
+        entry = entries[position - 1]
+        if not isinstance(entry, dict):  # a malformed file: `waviness = [1, 2]`
+            raise CaseError(path, f"{table}[{position}]", "is not a table; fix the file first")
+        entry[name] = value
 
 
 def _one_line(text: str) -> str:

@@ -13,6 +13,7 @@ width (:data:`PIPE_WIDTH`), whatever the terminal or ``COLUMNS``.
 
 from __future__ import annotations
 
+import errno
 import functools
 import json
 import math
@@ -167,6 +168,8 @@ def _guard(fn: F) -> F:
             except Exception as exc:
                 if os.environ.get("RUNOUT_DEBUG"):
                     raise
+                if _output_lost(exc):  # stdout closed or its disk full: not runout's bug
+                    _fail(_named(f"cannot write the output ({exc})", file), 1)
                 _fail(
                     _named(
                         f"internal error ({type(exc).__name__}: {exc}); this is a bug in "
@@ -826,6 +829,13 @@ def main() -> None:
     _exit(code)
 
 
+def _output_lost(exc: Exception) -> bool:
+    """Whether ``exc`` is the standard output failing (closed, or its disk full)."""
+    if sys.stdout is None or getattr(sys.stdout, "closed", False):
+        return True
+    return isinstance(exc, OSError) and exc.errno in (errno.ENOSPC, errno.EPIPE, errno.EBADF)
+
+
 def _exit(code: object) -> NoReturn:
     """End the process with ``code`` as ``SystemExit`` would, without the interpreter's teardown."""
     import atexit
@@ -841,11 +851,12 @@ def _exit(code: object) -> NoReturn:
     else:  # SystemExit("message"): printed to stderr, status 1
         print(code, file=sys.stderr)
         status = 1
-    try:
-        sys.stdout.flush()
-        sys.stderr.flush()
-    except (OSError, ValueError):  # a closed pipe: the output is gone either way
-        status = status or 1
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            if stream is not None:  # None: started with the stream closed
+                stream.flush()
+        except (OSError, ValueError):  # a closed pipe or a full disk: the output is gone
+            status = status or 1
     atexit._run_exitfuncs()
     os._exit(status)
 

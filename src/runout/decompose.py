@@ -82,6 +82,10 @@ LEAKAGE_MERGED = 3.0
 FLOOR = 1e-7
 #: Integer coefficient bounds of the combination search |a f_r + b f_c + c f_b|.
 MAX_COMBINATION = 3
+#: The words of the notes saying that predicted lines lie outside what the record resolves
+#: (above the Nyquist frequency, or below 1/T): a verdict cannot pass on such a record.
+NOT_FITTED = "are not fitted"
+NOT_FITTED_NYQUIST = "Nyquist frequency"
 #: Records of at least this many instants form their RRO record on two threads.
 PARALLEL_MIN = 1 << 16
 #: Element-passage harmonics n Z f_c the combination search reaches (rigid contacts switch
@@ -250,16 +254,16 @@ def _resolve(
         need = math.ceil(2.0 * max(g.frequency for g in high) * duration / 0.999) + 1
         names = "; ".join(_short(g) for g in high[:4])
         notes.append(
-            f"{len(high)} line(s) at or above the Nyquist frequency {f_hi / 0.999:.4g} Hz are "
-            f"not fitted (they alias onto lower frequencies: {names}); at least {need} samples "
-            "over this record would resolve them"
+            f"{len(high)} line(s) at or above the Nyquist frequency {f_hi / 0.999:.4g} Hz "
+            f"{NOT_FITTED} (they alias onto lower frequencies: {names}); at least {need} "
+            "samples over this record would resolve them"
         )
     low = [g for g in groups if 0.0 < g.frequency <= f_lo and not g.optional]
     if low:
         names = "; ".join(_short(g) for g in low[:4])
         notes.append(
             f"{len(low)} line(s) below 1/T = {f_lo:.4g} Hz (less than one period in the record) "
-            f"are not fitted ({names}); a longer record would resolve them"
+            f"{NOT_FITTED} ({names}); a longer record would resolve them"
         )
     ranked = sorted(inside, key=lambda g: (g.optional, -len(g.sources)))
     kept: list[_Group] = []

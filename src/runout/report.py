@@ -508,7 +508,15 @@ def _other_results(result: dict[str, Any], summary: dict[str, Any]) -> list[str]
         keys = [k for k in balls[0] if k != "ball"]
         rows = [
             [esc(b.get("ball", ""))]
-            + [esc(length(b[k]) if k.endswith("_m") else fmt_number(num(b[k]), 5)) for k in keys]
+            # "_m" is metres, but "_n_m" newton-metres (the gyroscopic moment): not a length
+            + [
+                esc(
+                    length(b[k])
+                    if k.endswith("_m") and not k.endswith("_n_m")
+                    else fmt_number(num(b[k]), 5)
+                )
+                for k in keys
+            ]
             for b in balls
         ]
         parts.append(

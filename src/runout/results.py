@@ -906,5 +906,37 @@ def apply_analysis(result: RunResult, case: Any) -> RunResult:
         anderon = anderon_json(result)
     if limit is not None:
         probe = replace(result, extras=extras)
-        extras["verdict"] = verdict_json(probe, float(limit), limit_on)
+        verdict = verdict_json(probe, float(limit), limit_on)
+        if verdict["pass"]:
+            _refuse_unseen_pass(probe, case.path, limit_on)
+        extras["verdict"] = verdict
     return replace(result, extras=extras, anderon=anderon, element=element)
+
+
+def _refuse_unseen_pass(result: RunResult, path: str, quantity: str) -> None:
+    """Refuse a PASS the record cannot support: predicted lines it does not resolve.
+
+    A line above the Nyquist frequency or below 1/T is left out of the fit (the notes say
+    which): the figures and bands are then lower bounds, enough to fail a limit but not to
+    pass it. A band also needs the record to reach the band's upper edge.
+    """
+    from runout.decompose import NOT_FITTED, NOT_FITTED_NYQUIST
+    from runout.errors import CaseError
+
+    unseen = [n for n in result.notes if NOT_FITTED in n]
+    if quantity.startswith("iso15242.") and result.time.size >= 2:
+        band = result.extras["iso15242"]["bands"][quantity.split(".", 1)[1]]
+        nyquist = 0.5 / float(result.time[1] - result.time[0])
+        if band["high_hz"] > nyquist:
+            unseen.append(f"the band reaches {band['high_hz']:.6g} Hz, the record {nyquist:.6g} Hz")
+    if not unseen:
+        return
+    high = any(NOT_FITTED_NYQUIST in n or "the band reaches" in n for n in unseen)
+    key = "analysis.samples" if high else "analysis.revolutions"
+    what = "more samples" if high else "more revolutions"
+    raise CaseError(
+        path,
+        key,
+        f"the record does not resolve every predicted line ({unseen[0]}), so {quantity} "
+        f"within the limit cannot be shown (it could only fail); give {what}",
+    )

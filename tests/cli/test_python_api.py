@@ -161,7 +161,7 @@ def test_a_profile_given_as_arrays_is_saved_as_csv_and_runs_to_the_same_json(
     with pytest.raises(CaseError, match=r"profile\[1\]\.file.*Case\.save"):
         case.to_toml()
     saved = case.save(tmp_path / "profiled.toml")
-    assert (tmp_path / "outer_profile_1.csv").is_file()
+    assert (tmp_path / "profiled.outer_profile_1.csv").is_file()  # named after the case
     assert _cli_json(saved) == _dumps(run_model(case).to_json())
 
 
