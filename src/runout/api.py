@@ -295,6 +295,16 @@ class Imperfections:
                 )
             a = np.array(angles, dtype=np.float64).ravel()
             d = np.array(deviations, dtype=np.float64).ravel()
+            finite = a[np.isfinite(a)]
+            span = float(np.ptp(finite)) if finite.size else 0.0
+            if angle_unit is None and span > 2.0 * np.pi * (1.0 + 1e-9):
+                # degrees read as radians would wrap the profile 57 times: refuse, say why
+                raise CaseError(
+                    PYTHON_PATH,
+                    f"profile[{sum(t == 'profile' for t, _ in self.entries) + 1}].angle_unit",
+                    f"the angles span {span:.4g}, more than a turn in radians (the default for "
+                    'arrays): give angle_unit="deg" for angles in degrees',
+                )
             a.flags.writeable = False
             d.flags.writeable = False
             number = sum(name is not None for name, *_ in self.profile_arrays) + 1

@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import functools
 import math
+import numbers
 import warnings
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -164,8 +165,9 @@ class BallBearing:
     kind = "ball"
 
     def __post_init__(self) -> None:
-        if isinstance(self.elements, bool) or not isinstance(self.elements, int):
+        if isinstance(self.elements, bool) or not isinstance(self.elements, numbers.Integral):
             raise GeometryError("elements", f"must be an integer, got {self.elements!r}")
+        object.__setattr__(self, "elements", int(self.elements))  # numpy integers too
         if self.elements < 3:
             raise GeometryError("elements", f"must be an integer >= 3, got {self.elements}")
         _positive("element_diameter", self.element_diameter)
@@ -293,8 +295,9 @@ class RollerBearing:
     contact_angle = 0.0
 
     def __post_init__(self) -> None:
-        if isinstance(self.elements, bool) or not isinstance(self.elements, int):
+        if isinstance(self.elements, bool) or not isinstance(self.elements, numbers.Integral):
             raise GeometryError("elements", f"must be an integer, got {self.elements!r}")
+        object.__setattr__(self, "elements", int(self.elements))  # numpy integers too
         if self.elements < 3:
             raise GeometryError("elements", f"must be an integer >= 3, got {self.elements}")
         _positive("element_diameter", self.element_diameter)

@@ -1824,6 +1824,15 @@ def load_case(
     if model is not None:
         if "analysis.model" in changes:  # one would silently replace the other
             raise CaseError(name, "analysis.model", "given both as --model and with --set")
+        study = data.get("study")
+        if isinstance(study, dict) and "models" in study and "study.models" not in changes:
+            # a study's models list decides which models run: --model would be ignored
+            raise CaseError(
+                name,
+                "study.models",
+                f"the study runs the models it lists; write --set study.models='[\"{model}\"]' "
+                "instead of --model",
+            )
         changes["analysis.model"] = model
     if not changes:
         return parse_case(data, name, Path(path).parent)

@@ -54,3 +54,43 @@ def test_the_equilibrium_report_shows_the_gyroscopic_moment_as_a_moment(tmp_path
     page = (out / "report.html").read_text(encoding="utf-8")
     assert "gyroscopic moment" in page
     assert "755.4 nm" not in page  # 7.554e-7 N m read as metres
+
+
+def test_study_model_cannot_be_silently_ignored_by_the_study_models_list(tmp_path: Path) -> None:
+    case = str(EXAMPLES / "seed001_kim_table9.toml")
+    text = (EXAMPLES / "seed001_kim_table9.toml").read_text(encoding="utf-8")
+    listed = tmp_path / "listed.toml"
+    listed.write_text(text.replace("[study]\n", '[study]\nmodels = ["quasi_static_2d"]\n', 1))
+    result = runner.invoke(app, ["study", str(listed), "--model", "linear", "--json"])
+    assert result.exit_code == 2
+    assert "study.models" in _said(result)
+    # without a list, --model chooses the model
+    result = runner.invoke(
+        app, ["study", case, "--model", "linear", "--set", "study.samples=4", "--json"]
+    )
+    assert result.exit_code == 0, result.stderr
+    assert '"linear"' in result.stdout
+
+
+def test_numpy_integers_are_integers_and_degrees_are_not_radians() -> None:
+    import numpy as np
+    import pytest
+
+    import runout
+    from runout.errors import CaseError
+
+    bearing = runout.BallBearing(elements=np.int64(8), element_diameter=1e-3, pitch_diameter=7e-3)
+    assert type(bearing.elements) is int and bearing.elements == 8
+    theta = np.linspace(0.0, 360.0, 360, endpoint=False)
+    with pytest.raises(CaseError, match='angle_unit="deg"'):
+        runout.Imperfections().profile(
+            "inner", orders=(2, 12), angles=theta, deviations=np.cos(9 * theta)
+        )
+    ok = runout.Imperfections().profile(
+        "inner",
+        orders=(2, 12),
+        angles=theta,
+        deviations=1e-8 * np.cos(np.radians(9 * theta)),
+        angle_unit="deg",
+    )
+    assert ok.entries
