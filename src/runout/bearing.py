@@ -90,6 +90,16 @@ def _deprecated_names(renamed: dict[str, str]) -> Callable[[type[_T]], type[_T]]
     return decorate
 
 
+def _check_elements(bearing: Any) -> None:
+    """``bearing.elements`` an integer >= 3 (numpy integers too, stored as ``int``)."""
+    z = bearing.elements
+    if isinstance(z, bool) or not isinstance(z, numbers.Integral):
+        raise GeometryError("elements", f"must be an integer, got {z!r}")
+    object.__setattr__(bearing, "elements", int(z))
+    if z < 3:
+        raise GeometryError("elements", f"must be an integer >= 3, got {z}")
+
+
 def _positive(name: str, value: float) -> None:
     if not (isinstance(value, int | float) and math.isfinite(value) and value > 0.0):
         raise GeometryError(name, f"must be a positive finite number, got {value!r}")
@@ -165,11 +175,7 @@ class BallBearing:
     kind = "ball"
 
     def __post_init__(self) -> None:
-        if isinstance(self.elements, bool) or not isinstance(self.elements, numbers.Integral):
-            raise GeometryError("elements", f"must be an integer, got {self.elements!r}")
-        object.__setattr__(self, "elements", int(self.elements))  # numpy integers too
-        if self.elements < 3:
-            raise GeometryError("elements", f"must be an integer >= 3, got {self.elements}")
+        _check_elements(self)
         _positive("element_diameter", self.element_diameter)
         _positive("pitch_diameter", self.pitch_diameter)
         if self.element_diameter >= self.pitch_diameter:
@@ -295,11 +301,7 @@ class RollerBearing:
     contact_angle = 0.0
 
     def __post_init__(self) -> None:
-        if isinstance(self.elements, bool) or not isinstance(self.elements, numbers.Integral):
-            raise GeometryError("elements", f"must be an integer, got {self.elements!r}")
-        object.__setattr__(self, "elements", int(self.elements))  # numpy integers too
-        if self.elements < 3:
-            raise GeometryError("elements", f"must be an integer >= 3, got {self.elements}")
+        _check_elements(self)
         _positive("element_diameter", self.element_diameter)
         _positive("inner_raceway_diameter", self.inner_raceway_diameter)
         _positive("outer_raceway_diameter", self.outer_raceway_diameter)

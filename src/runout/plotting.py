@@ -754,17 +754,35 @@ def plot_lines(result: RunResult, ax: Any = None, top: int = 6) -> Any:
         ax.text(0.5, 0.5, floor_text, transform=ax.transAxes, ha="center", va="center", color="0.4")
     items = _line_labels(comps, top, lambda c: c.order, lambda v: f"at {v:.3g}/rev", offsets)
     head = "spectral lines (full labels in lines.csv)"
-    count = f"{len(items)} largest labelled; " if items else ""
-    ax.set_title(f"{head}\n{count}{floor_text}", fontsize=8)
+    _label_largest(ax, items, scale, head, floor_text, own, "largest")
+    return ax
+
+
+def _label_largest(
+    ax: Any,
+    items: list[tuple[float, float, str]],
+    scale: float,
+    head: str,
+    tail: str,
+    own: bool,
+    noun: str,
+) -> None:
+    """Title a spectrum with how many of its largest lines are labelled, and label them.
+
+    The layout is fixed first on a figure of our own (:func:`_fix_layout`), so that the labels
+    placed by :func:`place_labels` stay where they were checked; labels without room are
+    dropped and the title says how many.
+    """
+    count = f"{len(items)} {noun} labelled; " if items else ""
+    ax.set_title(f"{head}\n{count}{tail}", fontsize=8)
     if own:
         _fix_layout(ax.figure)
     dropped = place_labels(ax, [(x, y * scale, s) for x, y, s in items])
     if dropped:
         ax.set_title(
-            f"{head}\n{len(items) - dropped} largest labelled, +{dropped} unlabelled; {floor_text}",
+            f"{head}\n{len(items) - dropped} {noun} labelled, +{dropped} unlabelled; {tail}",
             fontsize=8,
         )
-    return ax
 
 
 @style.styled
@@ -1131,17 +1149,7 @@ def plot_dynamic_spectrum(result: RunResult, ax: Any = None, f_max: float | None
     items = _line_labels(lines, 6, lambda c: c.frequency_hz, lambda v: f"at {v:.4g} Hz")
     head = f"{result.title or result.model}: spectrum of the rotor displacement"
     note = _decimated(drawn, int(np.count_nonzero(keep)), "min and max of each pixel column")
-    count = f"{len(items)} largest lines labelled; " if items else ""
-    ax.set_title(f"{_shorten(head, 90)}\n{count}{floor_text}{note}", fontsize=8)
-    if own:
-        _fix_layout(ax.figure)
-    dropped = place_labels(ax, [(x, y * scale, s) for x, y, s in items])
-    if dropped:
-        ax.set_title(
-            f"{_shorten(head, 90)}\n{len(items) - dropped} largest lines labelled, "
-            f"+{dropped} unlabelled; {floor_text}{note}",
-            fontsize=8,
-        )
+    _label_largest(ax, items, scale, _shorten(head, 90), floor_text + note, own, "largest lines")
     return ax
 
 

@@ -12,6 +12,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from cases import KIM_BEARING, KIM_OPERATION
 from runout import _study_pool as pool_mod
 from runout import study as st_mod
 from runout._study_kernels import _contacts, solve_batch, solve_batch_reference
@@ -21,16 +22,8 @@ from runout.models import quasi_static_2d as qs2
 from runout.study import run_study
 
 KIM: dict[str, Any] = {
-    "bearing": {
-        "type": "ball",
-        "elements": 10,
-        "element_diameter": "1.5875 mm",
-        "pitch_diameter": "9.1 mm",
-        "inner_conformity": 0.529,
-        "outer_conformity": 0.535,
-        "radial_clearance": "5 um",
-    },
-    "operation": {"rotating_ring": "inner", "speed": "7200 rpm", "axial_load": "60.68 N"},
+    "bearing": dict(KIM_BEARING),
+    "operation": dict(KIM_OPERATION),
     "analysis": {"model": "quasi_static_2d", "revolutions": 4, "samples": 256},
 }
 
