@@ -268,7 +268,7 @@ def check(
     """
     from runout.errors import CaseError
     from runout.summary import bearing_summary, model_use
-    from runout.validation import validate
+    from runout.input_checks import validate
 
     case = _load(case_file, model, sets)
     summary = bearing_summary(case.bearing, case.operation)

@@ -73,7 +73,7 @@ def _check(data: dict[str, Any]) -> None:
         return
     try:
         result = run_model(case)
-    except CaseError:  # the model-level input checks (runout.validation) name the key
+    except CaseError:  # the model-level input checks (runout.input_checks) name the key
         return
     except (ContactLossError, NumericalError) as exc:
         assert not isinstance(exc, ConvergenceError), f"{exc}\n{json.dumps(data)}"

@@ -50,7 +50,7 @@ def run_model(case: Any) -> Any:
     CaseError
         If the case sets a key the model refuses, fails the model's input checks, exceeds the
         budget of :mod:`runout.limits` or loads a contact beyond Hertz theory
-        (:func:`runout.validation.validate`); its warnings join the result's notes.
+        (:func:`runout.input_checks.validate`); its warnings join the result's notes.
     """
     model = case.analysis.model
     if model not in available_models():
@@ -61,7 +61,7 @@ def run_model(case: Any) -> Any:
         )
     from runout.conventions import enforce
     from runout.errors import GeometryError
-    from runout.validation import as_case_error, validate
+    from runout.input_checks import as_case_error, validate
 
     # One meaning per key: refuse what this model cannot honour, note what it does not apply.
     notes = enforce(case, model)
