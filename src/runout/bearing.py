@@ -24,6 +24,7 @@ approach exceeds γ; we read that γ as the radial play P_d / 2 (the dynamic mod
 from __future__ import annotations
 
 import functools
+import inspect
 import math
 import numbers
 import warnings
@@ -90,6 +91,80 @@ def _deprecated_names(renamed: dict[str, str]) -> Callable[[type[_T]], type[_T]]
     return decorate
 
 
+def _alternative_inputs(cls: type[_T]) -> type[_T]:
+    """Accept a ball bearing's alternative case-file keys as keyword arguments.
+
+    As in a ``[bearing]`` table, ``inner_groove_radius`` / ``outer_groove_radius`` [m] may be
+    given instead of the conformities (f = r / D) and ``nominal_contact_angle`` [rad], the
+    free (catalogue) contact angle α⁰, instead of the clearance: P_d = 2A(1 - cos α⁰),
+    A = (f_i + f_o - 1) D (Harris, *Rolling Bearing Analysis*). Giving both a key and its
+    alternative is refused, as the case file refuses it (a clearance that agrees with the
+    angle to 0.1 % is accepted, as there).
+    """
+    init = cls.__init__
+    signature = inspect.signature(init)
+
+    @functools.wraps(init)
+    def __init__(self: Any, *args: Any, **kwargs: Any) -> None:
+        alternatives = {
+            key: kwargs.pop(key)
+            for key in ("inner_groove_radius", "outer_groove_radius", "nominal_contact_angle")
+            if key in kwargs
+        }
+        if not alternatives:
+            init(self, *args, **kwargs)
+            return
+        bound = signature.bind_partial(self, *args, **kwargs)
+        given = dict(bound.arguments)
+        given.pop("self", None)
+        diameter = given.get("element_diameter", given.get("ball_diameter"))
+        if diameter is not None:
+            _positive("element_diameter", diameter)
+        for side in ("inner", "outer"):
+            key = f"{side}_groove_radius"
+            if key not in alternatives:
+                continue
+            if f"{side}_conformity" in given:
+                raise GeometryError(key, f"give {side}_conformity or {key}, not both")
+            radius = alternatives[key]
+            _positive(key, radius)
+            if diameter is None:
+                raise GeometryError(key, "needs element_diameter to give the conformity r / D")
+            given[f"{side}_conformity"] = radius / diameter
+        if "nominal_contact_angle" in alternatives:
+            value = alternatives["nominal_contact_angle"]
+            if isinstance(value, bool) or not isinstance(value, numbers.Real):
+                raise GeometryError(
+                    "nominal_contact_angle", f"must be a number [rad], got {value!r}"
+                )
+            alpha0 = float(value)
+            if not 0.0 <= alpha0 < 0.5 * math.pi:
+                raise GeometryError(
+                    "nominal_contact_angle",
+                    f"must lie in [0, 90) deg, got {math.degrees(alpha0):.6g} deg",
+                )
+            if diameter is None:
+                raise GeometryError(
+                    "nominal_contact_angle", "needs element_diameter to give the clearance"
+                )
+            f_i = given.get("inner_conformity", signature.parameters["inner_conformity"].default)
+            f_o = given.get("outer_conformity", signature.parameters["outer_conformity"].default)
+            clearance = 2.0 * (f_i + f_o - 1.0) * diameter * (1.0 - math.cos(alpha0))
+            stated = given.get("radial_clearance")
+            if stated is not None and abs(stated - clearance) > max(1e-9, 1e-3 * clearance):
+                raise GeometryError(
+                    "radial_clearance",
+                    f"{stated * 1e6:.6g} um disagrees with nominal_contact_angle = "
+                    f"{math.degrees(alpha0):.6g} deg, which sets P_d = 2A(1 - cos a0) = "
+                    f"{clearance * 1e6:.6g} um; give one of the two",
+                )
+            given["radial_clearance"] = clearance
+        init(self, **given)
+
+    cls.__init__ = __init__  # type: ignore[method-assign]
+    return cls
+
+
 def _check_elements(bearing: Any) -> None:
     """``bearing.elements`` an integer >= 3 (numpy integers too, stored as ``int``)."""
     z = bearing.elements
@@ -137,6 +212,7 @@ class Material:
         return self.youngs_modulus / (1.0 - self.poisson_ratio**2)
 
 
+@_alternative_inputs
 @_deprecated_names({"n_elements": "elements", "ball_diameter": "element_diameter"})
 @dataclass(frozen=True)
 class BallBearing:
@@ -161,6 +237,14 @@ class BallBearing:
         or from clearance and axial load (see :mod:`runout.loading`).
     material : Material
         Material of rings and balls.
+
+    Notes
+    -----
+    As in a case file's ``[bearing]`` table, keyword arguments ``inner_groove_radius`` and
+    ``outer_groove_radius`` [m] may replace the conformities and ``nominal_contact_angle``
+    [rad], the free (catalogue) contact angle α⁰, may replace the clearance:
+    P_d = 2A(1 - cos α⁰), A = (f_i + f_o - 1) D (Harris). The bearing stores the conformities
+    and the clearance; the same names read back as properties.
     """
 
     elements: int
@@ -260,7 +344,19 @@ class BallBearing:
 
     @property
     def nominal_contact_angle(self) -> float:
-        """The fixed contact angle when given, else the free contact angle [rad]."""
+        """Nominal (free, catalogue) contact angle α⁰ [rad]: the case key of that name.
+
+        The angle of the unloaded bearing pushed axially, set by the clearance (equal to
+        :attr:`free_contact_angle`); a fixed ``contact_angle`` does not change it.
+        """
+        return self.free_contact_angle
+
+    @property
+    def unloaded_contact_angle(self) -> float:
+        """The fixed contact angle when given, else the free contact angle α⁰ [rad].
+
+        The angle the kinematics and the contact formulas take when no other is given.
+        """
         return self.free_contact_angle if self.contact_angle is None else self.contact_angle
 
 
@@ -336,6 +432,11 @@ class RollerBearing:
 
     @property
     def nominal_contact_angle(self) -> float:
+        """Always 0 for a cylindrical roller bearing [rad]."""
+        return 0.0
+
+    @property
+    def unloaded_contact_angle(self) -> float:
         """Always 0 for a cylindrical roller bearing [rad]."""
         return 0.0
 

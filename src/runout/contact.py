@@ -671,7 +671,7 @@ def ball_race_contacts(bearing: BallBearing, contact_angle: float | None = None)
     bearing : BallBearing
         Geometry and material (E' = ``bearing.material.effective_modulus``).
     contact_angle : float or None
-        α [rad]; default ``bearing.nominal_contact_angle``.
+        α [rad]; default ``bearing.unloaded_contact_angle``.
 
     Returns
     -------
@@ -679,7 +679,7 @@ def ball_race_contacts(bearing: BallBearing, contact_angle: float | None = None)
         Inner and outer :class:`PointContact` and the series stiffness K_n (seed 000 eq. 4,
         seed 001 eq. 15, seed 003 eq. 2.14).
     """
-    alpha = bearing.nominal_contact_angle if contact_angle is None else float(contact_angle)
+    alpha = bearing.unloaded_contact_angle if contact_angle is None else float(contact_angle)
     if not (math.isfinite(alpha) and 0.0 <= alpha < 0.5 * math.pi):
         raise GeometryError("contact_angle", f"must lie in [0, 90) deg, got {alpha!r} rad")
     ep = bearing.material.effective_modulus

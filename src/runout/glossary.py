@@ -102,8 +102,9 @@ TERMS: tuple[Term, ...] = (
         ("nominal_contact_angle", "free_contact_angle"),
         "α⁰",
         "rad",
-        "contact angle of the unloaded bearing, arccos(1 − P_d / 2A): the case key "
-        "`nominal_contact_angle` sets it, Python's `free_contact_angle` reports it",
+        "contact angle of the unloaded bearing, arccos(1 − P_d / 2A): the case key and "
+        "`BallBearing(nominal_contact_angle=)` set it (as the clearance); the bearing's "
+        "`nominal_contact_angle` and `free_contact_angle` report it",
     ),
     Term(
         ("contact_angle",),

@@ -191,7 +191,7 @@ def bearing_frequencies(
     Frequencies
         Magnitudes in Hz (cage as seen from the stationary frame).
     """
-    alpha = bearing.nominal_contact_angle if contact_angle is None else contact_angle
+    alpha = bearing.unloaded_contact_angle if contact_angle is None else contact_angle
     args = (
         operation.inner_speed,
         operation.outer_speed,

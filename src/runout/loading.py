@@ -297,7 +297,7 @@ def axial_loading_fixed_angle(
     axial_load : float
         F_a [N] (>= 0).
     contact_angle : float or None
-        α [rad] (> 0 when F_a > 0); default ``bearing.nominal_contact_angle``.
+        α [rad] (> 0 when F_a > 0); default ``bearing.unloaded_contact_angle``.
 
     Returns
     -------
@@ -305,7 +305,7 @@ def axial_loading_fixed_angle(
         ``free_contact_angle`` and ``contact_angle`` both hold the fixed α.
     """
     fa = _check_axial_load(axial_load)
-    alpha = bearing.nominal_contact_angle if contact_angle is None else float(contact_angle)
+    alpha = bearing.unloaded_contact_angle if contact_angle is None else float(contact_angle)
     contacts = ball_race_contacts(bearing, alpha)
     if fa == 0.0:
         return AxialLoading(0.0, alpha, alpha, 0.0, 0.0, 0.0, 0.0, 0.0, contacts)

@@ -47,7 +47,7 @@ def operating_contact_angle(
             return bearing.contact_angle, fixed
         loading = axial_loading(bearing, operation.axial_load)
         return loading.contact_angle, loading
-    return bearing.nominal_contact_angle, None
+    return bearing.unloaded_contact_angle, None
 
 
 @dataclass(frozen=True)

@@ -25,7 +25,7 @@ def test_harris_derived_geometry() -> None:
 
 def test_fixed_contact_angle_wins() -> None:
     b = BallBearing(7, 3.9688e-3, 15e-3, radial_clearance=10e-6, contact_angle=0.2)
-    assert b.nominal_contact_angle == 0.2
+    assert b.unloaded_contact_angle == 0.2
 
 
 def test_zero_clearance_gives_zero_free_contact_angle() -> None:
