@@ -30,7 +30,7 @@ import numbers
 import warnings
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Any, Literal, TypeVar
+from typing import TYPE_CHECKING, Any, Literal, TypeVar
 
 from runout.errors import GeometryError
 
@@ -257,6 +257,24 @@ class BallBearing:
     material: Material = field(default_factory=Material)
 
     kind = "ball"
+
+    if TYPE_CHECKING:  # the signature `_alternative_inputs` gives at run time, for type checkers
+
+        def __init__(
+            self,
+            elements: int,
+            element_diameter: float,
+            pitch_diameter: float,
+            inner_conformity: float = 0.52,
+            outer_conformity: float = 0.53,
+            radial_clearance: float = 0.0,
+            contact_angle: float | None = None,
+            material: Material = ...,
+            *,
+            inner_groove_radius: float = ...,
+            outer_groove_radius: float = ...,
+            nominal_contact_angle: float = ...,
+        ) -> None: ...
 
     def __post_init__(self) -> None:
         _check_elements(self)
