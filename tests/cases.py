@@ -1,10 +1,17 @@
-"""Shared test cases (importable from any test: pytest puts tests/ on the path)."""
+"""Shared test cases (importable from any test: pytest puts tests/ on the path).
+
+Physics inputs come from :mod:`runout.examples`; the case-file forms here (``KIM_TOML`` and
+the tables) are for the tests whose subject is the case file: the command line, the
+conventions and the studies.
+"""
 
 from __future__ import annotations
 
 from typing import Any
 
-from runout.case import Case, parse_case
+from runout import examples
+from runout.api import Imperfections
+from runout.case import Case
 
 #: Kim's spindle bearing (seed 001 Table 1) at 7200 rpm under its fitted 60.68 N, as TOML.
 KIM_TOML = """\
@@ -39,6 +46,31 @@ KIM_OPERATION: dict[str, Any] = {
 }
 
 
+def kim_case(
+    *,
+    study: dict[str, Any] | None = None,
+    diameter_errors: Any = None,
+    radial_load: float = 0.0,
+    revolutions: float = 4,
+    samples: int = 256,
+) -> Case:
+    """Kim's spindle bearing at its operating point, quasi_static_2d, short record.
+
+    ``diameter_errors`` [m] (Z = 10 values), default perfect balls; ``study`` a [study] table.
+    """
+    example = examples.kim(radial_load=radial_load, oversize=None)
+    imperfections = None
+    if diameter_errors is not None:
+        imperfections = Imperfections(elements=10).diameter_errors(diameter_errors)
+    return Case.from_inputs(
+        example.bearing,
+        example.operation,
+        imperfections,
+        analysis={"model": "quasi_static_2d", "revolutions": revolutions, "samples": samples},
+        study=study,
+    )
+
+
 #: Tada's standard HDD bearing (seed 000 Table 1) with 10 um clearance, as a [bearing] table.
 TADA_BEARING: dict[str, Any] = {
     "type": "ball",
@@ -65,30 +97,29 @@ def dynamic_case(
     samples: int = 1024,
     load_direction: float | None = None,
 ) -> Case:
-    """The seed 003 Table 2 rotor (SI inputs; ``load_direction`` [rad] from +x, default -y)."""
-    bearing: dict[str, Any] = {
-        "type": "ball",
-        "elements": elements,
-        "element_diameter": 7.96e-3,
-        "pitch_diameter": 54e-3,
-        "inner_groove_radius": 4.08e-3,
-        "outer_groove_radius": 4.61e-3,
-        "radial_clearance": clearance,
-    }
-    return parse_case(
-        {
-            "title": "test rotor",
-            "bearing": bearing,
-            "operation": {
-                "speed": speed,
-                "radial_load": radial,
-                "axial_load": axial,
-                **({} if load_direction is None else {"radial_load_direction": load_direction}),
-            },
-            "waviness": waviness or [],
-            "dynamics": {"mass": 0.6, "damping": 200.0, **(dynamics or {})},
-            "analysis": {"model": "dynamic", "revolutions": revolutions, "samples": samples},
-        }
+    """The seed 003 Table 2 rotor (SI inputs; ``load_direction`` [rad] from +x, default -y).
+
+    ``waviness`` entries are the keyword arguments of
+    :meth:`runout.api.Imperfections.waviness` (``part``, ``order``, ``amplitude``, ...).
+    """
+    rotor = examples.purohit(
+        elements=elements,
+        radial_clearance=clearance,
+        speed=speed,
+        radial_load=radial,
+        axial_load=axial,
+        radial_load_direction=load_direction,
+    )
+    waves = Imperfections(elements=elements)
+    for entry in waviness or []:
+        waves = waves.waviness(**entry)
+    return Case.from_inputs(
+        rotor.bearing,
+        rotor.operation,
+        waves,
+        title="test rotor",
+        analysis={"model": "dynamic", "revolutions": revolutions, "samples": samples},
+        dynamics={"mass": 0.6, "damping": 200.0, **(dynamics or {})},
     )
 
 

@@ -13,7 +13,7 @@ Python:
 * the layout of ``%g``: fixed notation when ``-4 <= exponent < 12``, else ``d.ddde±XX``;
   trailing zeros and a bare decimal point removed.
 
-:func:`runout.results.write_columns` uses it; the tests compare it with Python's formatting.
+:func:`runout.result_files.write_columns` uses it; the tests compare it with Python's formatting.
 """
 
 from __future__ import annotations

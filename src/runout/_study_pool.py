@@ -302,7 +302,7 @@ def _exit_now() -> None:  # pragma: no cover - runs in workers, at exit
 
 def warm_kernels() -> None:
     """Import the study code and load the batched kernels (from Numba's cache) on tiny inputs."""
-    import runout.study  # noqa: F401  (evaluate_chunk's module: unpickling it imports it)
+    import runout.study  # noqa: F401  (imports _study_chunks, which unpickling needs)
     from runout._study_kernels import project_rows, solve_batch
 
     theta = np.array([[0.0, 2.0, 4.0]])

@@ -267,8 +267,8 @@ def check(
     Example: runout check examples/seed001_kim_spindle.toml --json
     """
     from runout.errors import CaseError
-    from runout.summary import bearing_summary, model_use
     from runout.input_checks import validate
+    from runout.summary import bearing_summary, model_use
 
     case = _load(case_file, model, sets)
     summary = bearing_summary(case.bearing, case.operation)

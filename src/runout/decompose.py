@@ -567,7 +567,10 @@ def _synthesize(fit: Any, time: FloatArray, uniform: bool | None = None) -> Floa
     b = np.ascontiguousarray((-fit.amplitude * np.sin(phase))[None, :])
     const = np.ascontiguousarray(np.atleast_1d(fit.constant).astype(np.float64))
     dt = float(time[1] - time[0])
-    return np.asarray(_synthesize_uniform_kernel(const, a, b, dt, omega, time.size))[0]
+    out: NDArray[np.float64] = np.asarray(
+        _synthesize_uniform_kernel(const, a, b, dt, omega, time.size)
+    )[0]
+    return out
 
 
 def _directional(g: _Group, name: str) -> list[tuple[Source, complex | None]]:

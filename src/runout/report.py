@@ -39,6 +39,7 @@ from runout._report_inputs import inputs_section, speed_words, unused_keys
 from runout._report_study import study_first_screen, study_statistics
 from runout.display import resolution_note
 from runout.errors import RunoutError
+from runout.result_files import read_result_json
 
 __all__ = ["build_combined_report", "build_report"]
 
@@ -183,7 +184,9 @@ def _report_body(directory: Path) -> tuple[str, str]:
             f"{directory}: holds no result.json or study manifest "
             "(write one with `runout run CASE --out DIR` or `runout study CASE --out DIR`)"
         )
-    result = _read_json(result_path) if result_path.exists() else {}
+    # the run's JSON as the files layer reads it back (runout.result_files.read_result);
+    # the page reads it defensively, so a hand-edited or older result.json still reports
+    result = read_result_json(directory) if result_path.exists() else {}
     study = _read_json(summary_path) if is_study and summary_path.exists() else {}
     summary = _read_json(summary_path) if summary_path.exists() and not is_study else {}
     case_text = (

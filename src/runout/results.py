@@ -1,28 +1,31 @@
-"""What every model returns: one result object with analysis methods, JSON and files.
+"""What every model returns: one result object with its analysis and its JSON, read back too.
 
 A model fills a :class:`RunResult`: the time (or angle) history of the measured ring's centre,
-the labelled spectral lines (``components``), the runout figures and model-specific extras. The
-JSON it prints is the documented contract (README, docs/conventions.md, docs/decomposition.md);
-``write`` puts data and plots in a directory; ``to_dataframe`` and ``to_xarray`` give the lines
-and the history to pandas and xarray (the ``data`` extra, imported when called).
-Plotting is delegated to :mod:`runout.plotting` (the only module that imports matplotlib).
+the labelled spectral lines (``components``), the runout figures and the model's typed
+details (:mod:`runout.result_details`). The JSON it prints is the documented contract (README,
+docs/conventions.md, docs/decomposition.md) and :meth:`RunResult.from_json` reads it back;
+``to_dataframe`` and ``to_xarray`` give the lines and the history to pandas and xarray (the
+``data`` extra, imported when called). This module neither draws nor writes files: the readable
+tables come from :mod:`runout.summary`, the files from :mod:`runout.result_files` and the
+figures from :mod:`runout.plotting`; the methods ``summary_sections``, ``write`` and ``plot``
+delegate to them.
 """
 
 from __future__ import annotations
 
-import csv
-import json
 import math
-from collections.abc import Callable
-from concurrent.futures import ThreadPoolExecutor
 from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import NDArray
 
 from runout.kinematics import Frequencies
+from runout.result_details import Iso15242, Iso15242Band, ModelDetails, Verdict, details_from_json
+
+if TYPE_CHECKING:
+    from runout.case import Case
 
 __all__ = [
     "DISPLACEMENT_OF",
@@ -33,7 +36,6 @@ __all__ = [
     "Source",
     "apply_analysis",
     "frequencies_json",
-    "write_columns",
 ]
 
 #: Longest short label of a component [characters].
@@ -247,45 +249,6 @@ class Runout:
         }
 
 
-#: Rows formatted per call of :func:`write_columns` (bounds its temporary memory: a few MB).
-_CSV_CHUNK = 65536
-
-
-def write_columns(path: Path, header: list[str], columns: list[NDArray[np.float64]]) -> Path:
-    """Write equal-length float columns as CSV, the bytes :mod:`csv` would write, fast.
-
-    The same text as a ``csv.writer`` writing ``f"{v:.12g}"`` for every value (comma
-    separated, CRLF line ends, header first), formatted by compiled kernels
-    (:func:`runout._csvfmt.format_rows`, about ten times faster than Python's formatting,
-    which it falls back on for the rare values it cannot prove it rounds the same way).
-    Rows are formatted in chunks, so the text in memory stays small.
-
-    Parameters
-    ----------
-    path : Path
-        Output file.
-    header : list of str
-        Column names (plain names: no comma, quote or line break).
-    columns : list of ndarray, each shape (n,)
-        The columns [SI units].
-
-    Returns
-    -------
-    Path
-    """
-    from runout._csvfmt import format_rows
-
-    data = [np.asarray(c, dtype=np.float64).ravel() for c in columns]
-    n = data[0].size if data else 0
-    if any(c.size != n for c in data):
-        raise ValueError(f"columns differ in length: {[c.size for c in data]}")
-    with path.open("wb") as fh:
-        fh.write((",".join(header) + "\r\n").encode("ascii"))
-        for i0 in range(0, n, _CSV_CHUNK):
-            fh.write(format_rows(np.column_stack([c[i0 : i0 + _CSV_CHUNK] for c in data])))
-    return path
-
-
 @dataclass(frozen=True)
 class RunResult:
     """Result of one model run on one case.
@@ -313,16 +276,27 @@ class RunResult:
         Unit vector of the radial measuring direction (radial load direction, else x).
     anderon : dict or None
         Band values U, R, L, M, H, E, A [Anderon] where the model gives them.
-    extras : dict
-        Model-specific JSON entries (e.g. ``natural_frequencies_hz``).
+    details : ModelDetails or None
+        The model's own outputs (:mod:`runout.result_details`, e.g.
+        :class:`~runout.result_details.DynamicDetails` with ``natural_frequencies_hz``); their
+        JSON entries follow the common ones.
     notes : tuple of str
         Warnings a user should read (unloaded balls, assumptions).
-    writers : tuple of callables
-        Model-specific extra outputs: each ``writer(directory) -> list[Path]`` is called by
-        :meth:`write` after the standard files (e.g. contact tables, sweeps, extra plots).
     element : {"ball", "roller"}
         Rolling elements of the bearing (set by :func:`apply_analysis`): names the passage
         frequencies (``roller_pass_*`` aliases in the JSON of a roller bearing).
+    iso15242 : Iso15242 or None
+        ISO 15242-1 band values (``[analysis] bands = "iso15242"``, :func:`apply_analysis`).
+    verdict : Verdict or None
+        The result against ``[analysis] limit`` (:func:`apply_analysis`).
+    record_mean : tuple of float or None
+        Mean position of a result read back (:meth:`from_json`) as its JSON states it [m]:
+        what :meth:`mean_displacement` returns (the record read back from ``history.csv``
+        carries 12 digits, the JSON the full mean). None for a model's result.
+    stated_contact_angle_deg : float or None
+        Contact angle of a result read back, as its JSON states it [deg] (``to_json`` writes
+        it again: not every value in degrees is ``math.degrees`` of a float). None for a
+        model's result.
     """
 
     model: str
@@ -335,10 +309,13 @@ class RunResult:
     runout: Runout
     measuring_direction: NDArray[np.float64] = field(default_factory=lambda: np.array([1.0, 0.0]))
     anderon: dict[str, float] | None = None
-    extras: dict[str, Any] = field(default_factory=dict)
+    details: ModelDetails | None = None
     notes: tuple[str, ...] = ()
-    writers: tuple[Callable[[Path], list[Path]], ...] = field(default=(), repr=False, compare=False)
     element: str = "ball"
+    iso15242: Iso15242 | None = None
+    verdict: Verdict | None = None
+    record_mean: tuple[float, ...] | None = None
+    stated_contact_angle_deg: float | None = None
 
     # ---------------------------------------------------------------- analysis
     @property
@@ -370,6 +347,8 @@ class RunResult:
         """Mean position of the inner ring's centre relative to the outer ring's over the
         record: x, y, and z when the model moves the rings axially [m]
         (:data:`DISPLACEMENT_OF`)."""
+        if self.record_mean is not None:
+            return list(self.record_mean)
         mean = [float(np.mean(v)) for v in self.displacement]
         return mean if self.axial_motion else mean[:2]
 
@@ -517,124 +496,123 @@ class RunResult:
             "model": self.model,
             "title": self.title,
             "frequencies_hz": frequencies_json(self.frequencies.to_dict(), self.element),
-            "contact_angle_deg": math.degrees(self.contact_angle),
+            "contact_angle_deg": (
+                math.degrees(self.contact_angle)
+                if self.stated_contact_angle_deg is None
+                else self.stated_contact_angle_deg
+            ),
             "runout": self.runout.to_json(),
             "components": [c.to_json() for c in self.lines()],
             "displacement_of": DISPLACEMENT_OF,
-            "mean_displacement_m": self.mean_displacement() if self.time.size else None,
+            "mean_displacement_m": (
+                self.mean_displacement() if self.time.size or self.record_mean else None
+            ),
         }
         if self.anderon is not None:
             out["anderon"] = dict(self.anderon)
-        out.update(self.extras)
+        if self.details is not None:
+            out.update(self.details.to_json())
+        if self.iso15242 is not None:
+            out["iso15242"] = self.iso15242.to_json()
+        if self.verdict is not None:
+            out["verdict"] = self.verdict.to_json()
         if self.notes:
             out["notes"] = list(self.notes)
         return out
 
+    @classmethod
+    def from_json(
+        cls,
+        doc: dict[str, Any],
+        *,
+        time: NDArray[np.float64] | None = None,
+        displacement: NDArray[np.float64] | None = None,
+    ) -> RunResult:
+        """Read a result back from its JSON object (:meth:`to_json`, a ``result.json``).
+
+        ``from_json(doc).to_json()`` is ``doc`` again, key for key. The JSON holds no record:
+        give ``time`` and ``displacement`` (``history.csv``,
+        :func:`runout.result_files.read_result`) for the figures and the resolution; the mean
+        position is the JSON's either way (:attr:`record_mean`). A linear model's result
+        comes back as a :class:`~runout.models.linear.LinearResult` whose lines are rebuilt
+        from the components.
+
+        Parameters
+        ----------
+        doc : dict
+            The JSON object.
+        time : ndarray, shape (n,), optional
+            Instants [s].
+        displacement : ndarray, shape (3, n), optional
+            x, y, z [m] (:data:`DISPLACEMENT_OF`).
+
+        Returns
+        -------
+        RunResult
+
+        Raises
+        ------
+        ValueError
+            Only one of ``time`` and ``displacement``, or shapes that differ.
+        """
+        if (time is None) != (displacement is None):
+            raise ValueError("give both time and displacement, or neither")
+        if time is None or displacement is None:
+            t = np.zeros(0)
+            disp = np.zeros((3, 0))
+        else:
+            t = np.asarray(time, dtype=np.float64)
+            disp = np.asarray(displacement, dtype=np.float64)
+            if disp.shape != (3, t.size):
+                raise ValueError(f"displacement must have shape (3, {t.size}), got {disp.shape}")
+        mean = doc.get("mean_displacement_m")
+        record_mean = None if mean is None else tuple(float(v) for v in mean)
+        model = str(doc["model"])
+        freqs = {k: float(v) for k, v in doc["frequencies_hz"].items()}
+        element = "roller" if all(a in freqs for a in ROLLER_ALIASES.values()) else "ball"
+        for alias in ROLLER_ALIASES.values():
+            freqs.pop(alias, None)
+        iso = doc.get("iso15242")
+        verdict = doc.get("verdict")
+        anderon = doc.get("anderon")
+        result = cls(
+            model=model,
+            title=str(doc["title"]),
+            frequencies=Frequencies(**freqs),
+            contact_angle=_radians_exactly(float(doc["contact_angle_deg"])),
+            time=t,
+            displacement=disp,
+            components=tuple(_component_from_json(c) for c in doc["components"]),
+            runout=Runout(**{k: float(v) for k, v in doc["runout"].items()}),
+            measuring_direction=_measuring_direction_from(doc),
+            anderon=None if anderon is None else {k: float(v) for k, v in anderon.items()},
+            details=details_from_json(model, doc),
+            notes=tuple(str(n) for n in doc.get("notes", ())),
+            element=element,
+            iso15242=None if iso is None else Iso15242.from_json(iso),
+            verdict=None if verdict is None else Verdict.from_json(verdict),
+            record_mean=record_mean,
+            stated_contact_angle_deg=float(doc["contact_angle_deg"]),
+        )
+        if model == "linear" and cls is RunResult:
+            from runout.models.linear import linear_result
+
+            return linear_result(result)
+        return result
+
     def summary_sections(self) -> list[tuple[str, Rows]]:
         """Readable tables: runout figures, the largest lines, band values, verdict, notes.
 
-        Lengths are shown in one unit per table, chosen over the figures it shows
-        (:func:`runout.display.length_unit`); figures below :meth:`resolution_m` print as 0,
-        and a note states the resolution once. A section whose rows carry no value and no
-        unit (the notes, the verdict) is a list of sentences.
+        See :func:`runout.summary.result_sections`.
         """
-        from runout.display import length_unit
+        from runout.summary import result_sections
 
-        r = self.runout
-        resolution = self.resolution_m()
-        zeroed: list[float] = []  # figures shown as 0 for being below the resolution
-
-        def show(value: float, unit: tuple[str, float]) -> str:
-            if resolution is not None and 0.0 < abs(value) < resolution:
-                zeroed.append(value)
-            return _length_number(value, unit, resolution)
-
-        label = "radial p-p (measuring direction)"
-        iso492 = self.extras.get("iso492")  # the roller model: Kia or Kea
-        if isinstance(iso492, dict) and "quantity" in iso492:
-            label += f" = {iso492['quantity']} (ISO 492)"
-        figures: list[tuple[str, list[float]]] = [(label, [r.radial_pp_m])]
-        across = self.extras.get("horizontal_pp_m")  # models that move freely across the load
-        if across is not None:
-            figures.append(("radial p-p across the load", [float(across)]))
-        figures += [
-            ("axial p-p", [r.axial_pp_m]),
-            ("RRO p-p", [r.rro_pp_m]),
-            ("NRRO p-p", [r.nrro_pp_m]),
-        ]
-        # the p-p figures share one unit; the mean position (play, approaches: often far
-        # larger) has its own, so that a nm-size runout is not shown as 0.01 um
-        unit = length_unit(v for _, values in figures for v in values)
-        rows: Rows = [
-            (name, ", ".join(show(v, unit) for v in values), unit[0]) for name, values in figures
-        ]
-        if self.time.size:
-            mean = self.mean_displacement()
-            mean_unit = length_unit(mean)
-            rows.append(
-                (
-                    "mean shaft position rel. outer ring (" + ", ".join("xyz"[: len(mean)]) + ")",
-                    ", ".join(show(v, mean_unit) for v in mean),
-                    mean_unit[0],
-                )
-            )
-        sections: list[tuple[str, Rows]] = [
-            (
-                f"{self.title or self.model}: runout ({self.model} model, contact angle "
-                f"{math.degrees(self.contact_angle):.4g} deg)",
-                rows,
-            )
-        ]
-        top = self.lines(top=15)
-        line_unit = length_unit(c.pp_m for c in top)
-        line_rows: Rows = [
-            (
-                f"{c.direction}  {c.label}",
-                f"{show(c.pp_m, line_unit)} {line_unit[0]} at {c.frequency_hz:.5g} Hz",
-                f"order {c.order:.5g}",
-            )
-            for c in top
-        ]
-        if line_rows:
-            sections.append(("Largest lines (peak-to-peak)", line_rows))
-        iso = self.extras.get("iso15242")
-        if isinstance(iso, dict):
-            sections.append(
-                (
-                    "ISO 15242-1 velocity bands (rms along the measuring direction"
-                    + ("" if iso["direction"] == "measuring" else f" {iso['direction']}")
-                    + f", {_plain(iso['speed_rpm'], 6)} rpm)",
-                    [
-                        (
-                            f"{name}  {_plain(b['low_hz'], 4)}-{_plain(b['high_hz'], 4)} Hz",
-                            _plain(b["rms_um_per_s"], 4),
-                            iso["unit"],
-                        )
-                        for name, b in iso["bands"].items()
-                    ],
-                )
-            )
-        if self.anderon is not None:
-            sections.append(
-                (
-                    "Anderon band values",
-                    [(band, _plain(value, 4), "Anderon") for band, value in self.anderon.items()],
-                )
-            )
-        verdict = self.extras.get("verdict")
-        if isinstance(verdict, dict):
-            sections.append(("Spec limit", [(verdict_line(verdict), "", "")]))
-        notes = list(self.notes)
-        if zeroed and resolution is not None:
-            from runout.display import resolution_note
-
-            notes.insert(0, resolution_note(resolution, unit))
-        if notes:
-            sections.append(("Notes", [(note, "", "") for note in notes]))
-        return sections
+        return result_sections(self)
 
     def write(self, directory: Path, *, history_revolutions: float = 3.0) -> list[Path]:
-        """Write ``result.json``, ``history.csv``, ``lines.csv`` and plots into ``directory``.
+        """Write ``result.json``, ``history.csv``, ``lines.csv``, plots and the model's files.
+
+        See :func:`runout.result_files.write_result`.
 
         Parameters
         ----------
@@ -648,50 +626,46 @@ class RunResult:
         list of Path
             The files written.
         """
-        directory.mkdir(parents=True, exist_ok=True)
-        written: list[Path] = []
-        path = directory / "result.json"
-        path.write_text(json.dumps(self.to_json(), indent=2, allow_nan=False) + "\n")
-        written.append(path)
-        # the record's CSV is formatted by compiled code that releases the GIL: written on a
-        # second thread while the figures are drawn (a record of 2^20 instants: 0.3 s each)
-        history = directory / "history.csv"
-        pool = ThreadPoolExecutor(1, thread_name_prefix="runout-csv")
-        pending = pool.submit(
-            write_columns, history, ["time_s", "x_m", "y_m", "z_m"], [self.time, *self.displacement]
-        )
-        try:
-            written += self._write_rest(directory, history_revolutions)
-        finally:
-            pool.shutdown(wait=True)
-        pending.result()  # its error, if any (disk full), is this call's
-        return [written[0], history, *written[1:]]
+        from runout.result_files import write_result
 
-    def _write_rest(self, directory: Path, history_revolutions: float) -> list[Path]:
-        """``lines.csv``, the figures and the model's own files (:meth:`write`)."""
-        written: list[Path] = []
-        path = directory / "lines.csv"
-        with path.open("w", newline="") as fh:
-            w = csv.writer(fh)
-            w.writerow(["direction", "frequency_hz", "order", "pp_m", "phase_rad", "label"])
-            for c in self.lines():
-                w.writerow(
-                    [
-                        c.direction,
-                        f"{c.frequency_hz:.12g}",
-                        f"{c.order:.12g}",
-                        f"{c.pp_m:.6g}",
-                        f"{c.phase_rad:.6g}",
-                        c.label,
-                    ]
-                )
-        written.append(path)
-        from runout import plotting
+        return write_result(self, directory, history_revolutions=history_revolutions)
 
-        written += plotting.plot_result(self, directory, history_revolutions=history_revolutions)
-        for writer in self.writers:
-            written += writer(directory)
-        return written
+
+def _component_from_json(doc: dict[str, Any]) -> Component:
+    """A :class:`Component` from its JSON object."""
+    return Component(
+        direction=str(doc["direction"]),
+        frequency_hz=float(doc["frequency_hz"]),
+        order=float(doc["order"]),
+        pp_m=float(doc["pp_m"]),
+        label=str(doc["label"]),
+        phase_rad=float(doc["phase_rad"]),
+        repeatable=bool(doc["repeatable"]),
+        sources=tuple(Source(**src) for src in doc["sources"]),
+    )
+
+
+def _radians_exactly(degrees: float) -> float:
+    """An angle [rad] whose ``math.degrees`` is ``degrees`` where a float near
+    ``math.radians(degrees)`` has it (not every value has one: then ``math.radians``)."""
+    angle = math.radians(degrees)
+    for direction in (math.inf, -math.inf):
+        probe = angle
+        for _ in range(4):
+            if math.degrees(probe) == degrees:
+                return probe
+            probe = math.nextafter(probe, direction)
+    return angle
+
+
+def _measuring_direction_from(doc: dict[str, Any]) -> NDArray[np.float64]:
+    """The measuring direction of a result's JSON: the ISO 15242 object states it; otherwise
+    the mean of the x and y lines cannot, so it is +x unless the model's details say so."""
+    iso = doc.get("iso15242")
+    if iso is not None:
+        u = iso["measuring_direction"]
+        return np.array([float(u[0]), float(u[1])])
+    return np.array([1.0, 0.0])
 
 
 #: Columns of :meth:`RunResult.to_dataframe` and their units.
@@ -721,7 +695,7 @@ def _optional(module: str) -> Any:
 
 
 # -------------------------------------------------------------------------------------------
-# readable figures
+# resolution
 # -------------------------------------------------------------------------------------------
 #: Relative round-off floor of a model without an iterative solver (closed forms, exact
 #: constraints): about 450 ulp of float64, well above the round-off of a few operations.
@@ -736,40 +710,10 @@ def _relative_resolution(model: str) -> float:
         rtol = float(importlib.import_module(f"runout.models.{model}").RTOL)
         return max(rtol, ROUND_OFF)
     if model == "dynamic":
-        from runout.models.dynamic import NEWTON_RTOL
+        from runout.models._dynamic_kernels import NEWTON_RTOL
 
         return max(float(NEWTON_RTOL), ROUND_OFF)
     return ROUND_OFF
-
-
-def _length_number(value: float, unit: tuple[str, float], resolution: float | None) -> str:
-    """The number of :func:`runout.display.format_length`, without the unit."""
-    from runout.display import format_length
-
-    return format_length(value, unit, resolution_m=resolution).rsplit(" ", 1)[0]
-
-
-def _plain(value: float, digits: int) -> str:
-    from runout.display import format_number
-
-    return format_number(value, digits)
-
-
-def verdict_line(verdict: dict[str, Any]) -> str:
-    """The PASS/FAIL sentence of a ``verdict`` JSON object."""
-    from runout.display import format_length, length_unit
-
-    word = "PASS" if verdict["pass"] else "FAIL"
-    relation = "within" if verdict["pass"] else "exceeds"
-    quantity = verdict["quantity"]
-    if "limit_m" in verdict:
-        unit = length_unit([verdict["value_m"], verdict["limit_m"]])
-        value = format_length(verdict["value_m"], unit)
-        limit = format_length(verdict["limit_m"], unit)
-    else:
-        value = f"{_plain(verdict['value_um_per_s'], 4)} um/s"
-        limit = f"{_plain(verdict['limit_um_per_s'], 4)} um/s"
-    return f"{word}: {quantity} = {value} {relation} the limit {limit}"
 
 
 # -------------------------------------------------------------------------------------------
@@ -805,8 +749,8 @@ def _direction_name(u: NDArray[np.float64]) -> str:
     return "measuring"
 
 
-def iso15242_json(result: RunResult) -> dict[str, Any]:
-    """The ``iso15242`` JSON object: rms velocity per ISO 15242-1 band from the lines.
+def iso15242_of(result: RunResult) -> Iso15242:
+    """RMS velocity per ISO 15242-1 band from the lines (JSON ``iso15242``).
 
     Bands L, M, H with the edges of 1800 rpm scaled to the rotating ring's speed
     (:func:`runout.spectrum.iso15242_band_set`), from the radial lines along the measuring
@@ -819,16 +763,13 @@ def iso15242_json(result: RunResult) -> dict[str, Any]:
     freqs, amps = measured_lines(result)
     values = iso15242_bands_from_lines(freqs, amps, bands).as_dict()
     u = result.measuring_direction
-    return {
-        "unit": "um/s",
-        "speed_rpm": rotation * 60.0,
-        "direction": _direction_name(u),
-        "measuring_direction": [float(u[0]), float(u[1])],
-        "bands": {
-            b.name[0]: {"low_hz": b.low, "high_hz": b.high, "rms_um_per_s": values[b.name]}
-            for b in bands.bands
-        },
-    }
+    return Iso15242(
+        unit="um/s",
+        speed_rpm=rotation * 60.0,
+        direction=_direction_name(u),
+        measuring_direction=(float(u[0]), float(u[1])),
+        bands={b.name[0]: Iso15242Band(b.low, b.high, values[b.name]) for b in bands.bands},
+    )
 
 
 def anderon_json(result: RunResult) -> dict[str, float]:
@@ -840,8 +781,8 @@ def anderon_json(result: RunResult) -> dict[str, float]:
     return anderon_bands_from_lines(orders, amps).as_dict()
 
 
-def verdict_json(result: RunResult, limit: float, quantity: str) -> dict[str, Any]:
-    """The ``verdict`` JSON object: ``quantity`` of ``result`` against ``limit``.
+def verdict_of(result: RunResult, limit: float, quantity: str) -> Verdict:
+    """``quantity`` of ``result`` against ``limit`` (JSON ``verdict``).
 
     Parameters
     ----------
@@ -851,25 +792,16 @@ def verdict_json(result: RunResult, limit: float, quantity: str) -> dict[str, An
         ``radial_pp``, ``rro_pp``, ``nrro_pp``, ``axial_pp`` or ``iso15242.<band>``.
     """
     if quantity.startswith("iso15242."):
-        iso = result.extras["iso15242"]
-        value = float(iso["bands"][quantity.split(".", 1)[1]]["rms_um_per_s"])
+        if result.iso15242 is None:
+            raise ValueError(f"{quantity}: the result has no ISO 15242 band values")
+        value = float(result.iso15242.bands[quantity.split(".", 1)[1]].rms_um_per_s)
         limit_um = limit * 1e6
-        return {
-            "quantity": quantity,
-            "limit_um_per_s": limit_um,
-            "value_um_per_s": value,
-            "pass": bool(value <= limit_um),
-        }
+        return Verdict(quantity, limit_um, value, bool(value <= limit_um), "um/s")
     value_m = float(getattr(result.runout, f"{quantity}_m"))
-    return {
-        "quantity": quantity,
-        "limit_m": limit,
-        "value_m": value_m,
-        "pass": bool(value_m <= limit),
-    }
+    return Verdict(quantity, limit, value_m, bool(value_m <= limit), "m")
 
 
-def apply_analysis(result: RunResult, case: Any) -> RunResult:
+def apply_analysis(result: RunResult, case: Case) -> RunResult:
     """``result`` with what the case's ``[analysis]`` asks beyond the model: bands, verdict.
 
     ``bands = "iso15242"`` adds the ``iso15242`` JSON, ``bands = "anderon"`` the Anderon
@@ -891,7 +823,8 @@ def apply_analysis(result: RunResult, case: Any) -> RunResult:
     limit = getattr(analysis, "limit", None)
     limit_on = getattr(analysis, "limit_on", "radial_pp")
     element = "roller" if isinstance(case.bearing, RollerBearing) else "ball"
-    extras = dict(result.extras)
+    iso15242 = result.iso15242
+    verdict = result.verdict
     anderon = result.anderon
     if (bands is not None or limit is not None) and result.time.size < 2:
         key = "analysis.bands" if bands is not None else "analysis.limit"
@@ -901,16 +834,15 @@ def apply_analysis(result: RunResult, case: Any) -> RunResult:
     if bands is not None and not result.frequencies.rotation > 0.0:
         raise CaseError(case.path, "analysis.bands", "band edges need a rotating ring (speed > 0)")
     if bands == "iso15242":
-        extras["iso15242"] = iso15242_json(result)
+        iso15242 = iso15242_of(result)
     elif bands == "anderon" and result.model != "linear":
         anderon = anderon_json(result)
     if limit is not None:
-        probe = replace(result, extras=extras)
-        verdict = verdict_json(probe, float(limit), limit_on)
-        if verdict["pass"]:
+        probe = replace(result, iso15242=iso15242)
+        verdict = verdict_of(probe, float(limit), limit_on)
+        if verdict.passed:
             _refuse_unseen_pass(probe, case.path, limit_on)
-        extras["verdict"] = verdict
-    return replace(result, extras=extras, anderon=anderon, element=element)
+    return replace(result, iso15242=iso15242, verdict=verdict, anderon=anderon, element=element)
 
 
 def _refuse_unseen_pass(result: RunResult, path: str, quantity: str) -> None:
@@ -924,11 +856,11 @@ def _refuse_unseen_pass(result: RunResult, path: str, quantity: str) -> None:
     from runout.errors import CaseError
 
     unseen = [n for n in result.notes if NOT_FITTED in n]
-    if quantity.startswith("iso15242.") and result.time.size >= 2:
-        band = result.extras["iso15242"]["bands"][quantity.split(".", 1)[1]]
+    if quantity.startswith("iso15242.") and result.time.size >= 2 and result.iso15242 is not None:
+        band = result.iso15242.bands[quantity.split(".", 1)[1]]
         nyquist = 0.5 / float(result.time[1] - result.time[0])
-        if band["high_hz"] > nyquist:
-            unseen.append(f"the band reaches {band['high_hz']:.6g} Hz, the record {nyquist:.6g} Hz")
+        if band.high_hz > nyquist:
+            unseen.append(f"the band reaches {band.high_hz:.6g} Hz, the record {nyquist:.6g} Hz")
     if not unseen:
         return
     high = any(NOT_FITTED_NYQUIST in n or "the band reaches" in n for n in unseen)

@@ -1,7 +1,9 @@
-"""What `runout check` and `runout frequencies` report: derived geometry, contacts, frequencies.
+"""Readable summaries: what `runout check`, `runout frequencies` and `runout run` print.
 
-One function, :func:`bearing_summary`, gathers the derived quantities of a bearing at an
-operating point; its result renders as JSON (SI values, unit in the key) or as tables.
+:func:`bearing_summary` gathers the derived quantities of a bearing at an operating point; its
+result renders as JSON (SI values, unit in the key) or as tables. :func:`result_sections` gives
+the tables of a run result (:class:`runout.results.RunResult`, also one read back from its
+JSON).
 """
 
 from __future__ import annotations
@@ -14,9 +16,18 @@ from runout.bearing import BallBearing, Bearing, Operation, RollerBearing
 from runout.contact import BallContacts, RollerContacts, ball_race_contacts, roller_race_contacts
 from runout.kinematics import Frequencies, bearing_frequencies
 from runout.loading import AxialLoading, axial_loading, axial_loading_fixed_angle
-from runout.results import ROLLER_ALIASES, frequencies_json
+from runout.result_details import EquilibriumDetails, LinearDetails, RollerDetails, Verdict
+from runout.results import ROLLER_ALIASES, RunResult, frequencies_json
 
-__all__ = ["BearingSummary", "ModelUse", "bearing_summary", "model_use", "operating_contact_angle"]
+__all__ = [
+    "BearingSummary",
+    "ModelUse",
+    "bearing_summary",
+    "model_use",
+    "operating_contact_angle",
+    "result_sections",
+    "verdict_line",
+]
 
 Rows = list[tuple[str, str, str]]
 
@@ -378,3 +389,237 @@ def model_use(case: Any, model: str | None = None) -> ModelUse:
         notes=list(found.notes) if found else [],
         refusals=list(found.refusals) if found else [],
     )
+
+
+# --------------------------------------------------------------------------------------------
+# the readable tables of a run result (`runout run`)
+# --------------------------------------------------------------------------------------------
+def result_sections(result: RunResult) -> list[tuple[str, Rows]]:
+    """Readable tables of a run: runout figures, the largest lines, band values, verdict, notes.
+
+    Lengths are shown in one unit per table, chosen over the figures it shows
+    (:func:`runout.display.length_unit`); figures below
+    :meth:`~runout.results.RunResult.resolution_m` print as 0, and a note states the
+    resolution once. A section whose rows carry no value and no unit (the notes, the verdict)
+    is a list of sentences. The equilibrium model (one instant) shows its ring displacements,
+    stiffness and balls instead; the linear model adds its Anderon comparison and the
+    frequency attribution table.
+
+    Parameters
+    ----------
+    result : RunResult
+        A model's result, or one read back (:meth:`~runout.results.RunResult.from_json`).
+
+    Returns
+    -------
+    list of (title, rows)
+        Rows are (quantity, value, unit).
+    """
+    details = result.details
+    if isinstance(details, EquilibriumDetails):
+        return _equilibrium_sections(result, details)
+    sections = _run_sections(result)
+    if isinstance(details, LinearDetails):
+        sections += _linear_sections(result, details)
+    return sections
+
+
+def _run_sections(result: RunResult) -> list[tuple[str, Rows]]:
+    """The tables every model with a record shows (:func:`result_sections`)."""
+    from runout.display import length_unit
+
+    r = result.runout
+    resolution = result.resolution_m()
+    zeroed: list[float] = []  # figures shown as 0 for being below the resolution
+
+    def show(value: float, unit: tuple[str, float]) -> str:
+        if resolution is not None and 0.0 < abs(value) < resolution:
+            zeroed.append(value)
+        return _length_number(value, unit, resolution)
+
+    details = result.details
+    label = "radial p-p (measuring direction)"
+    if isinstance(details, RollerDetails):  # the rigid model: Kia or Kea
+        label += f" = {details.iso492.quantity} (ISO 492)"
+    figures: list[tuple[str, list[float]]] = [(label, [r.radial_pp_m])]
+    if isinstance(details, RollerDetails):  # it moves freely across the load
+        figures.append(("radial p-p across the load", [details.horizontal_pp_m]))
+    figures += [
+        ("axial p-p", [r.axial_pp_m]),
+        ("RRO p-p", [r.rro_pp_m]),
+        ("NRRO p-p", [r.nrro_pp_m]),
+    ]
+    # the p-p figures share one unit; the mean position (play, approaches: often far
+    # larger) has its own, so that a nm-size runout is not shown as 0.01 um
+    unit = length_unit(v for _, values in figures for v in values)
+    rows: Rows = [
+        (name, ", ".join(show(v, unit) for v in values), unit[0]) for name, values in figures
+    ]
+    if result.time.size or result.record_mean is not None:
+        mean = result.mean_displacement()
+        mean_unit = length_unit(mean)
+        rows.append(
+            (
+                "mean shaft position rel. outer ring (" + ", ".join("xyz"[: len(mean)]) + ")",
+                ", ".join(show(v, mean_unit) for v in mean),
+                mean_unit[0],
+            )
+        )
+    sections: list[tuple[str, Rows]] = [
+        (
+            f"{result.title or result.model}: runout ({result.model} model, contact angle "
+            f"{math.degrees(result.contact_angle):.4g} deg)",
+            rows,
+        )
+    ]
+    top = result.lines(top=15)
+    line_unit = length_unit(c.pp_m for c in top)
+    line_rows: Rows = [
+        (
+            f"{c.direction}  {c.label}",
+            f"{show(c.pp_m, line_unit)} {line_unit[0]} at {c.frequency_hz:.5g} Hz",
+            f"order {c.order:.5g}",
+        )
+        for c in top
+    ]
+    if line_rows:
+        sections.append(("Largest lines (peak-to-peak)", line_rows))
+    iso = result.iso15242
+    if iso is not None:
+        sections.append(
+            (
+                "ISO 15242-1 velocity bands (rms along the measuring direction"
+                + ("" if iso.direction == "measuring" else f" {iso.direction}")
+                + f", {_plain(iso.speed_rpm, 6)} rpm)",
+                [
+                    (
+                        f"{name}  {_plain(b.low_hz, 4)}-{_plain(b.high_hz, 4)} Hz",
+                        _plain(b.rms_um_per_s, 4),
+                        iso.unit,
+                    )
+                    for name, b in iso.bands.items()
+                ],
+            )
+        )
+    if result.anderon is not None:
+        sections.append(
+            (
+                "Anderon band values",
+                [(band, _plain(value, 4), "Anderon") for band, value in result.anderon.items()],
+            )
+        )
+    if result.verdict is not None:
+        sections.append(("Spec limit", [(verdict_line(result.verdict), "", "")]))
+    notes = list(result.notes)
+    if zeroed and resolution is not None:
+        from runout.display import resolution_note
+
+        notes.insert(0, resolution_note(resolution, unit))
+    if notes:
+        sections.append(("Notes", [(note, "", "") for note in notes]))
+    return sections
+
+
+def _linear_sections(result: RunResult, details: LinearDetails) -> list[tuple[str, Rows]]:
+    """The linear model's Anderon comparison (exact lines vs DFT) and attribution table."""
+    from runout.attribution import attribution_table_rows
+    from runout.models.linear import LinearResult
+
+    sections: list[tuple[str, Rows]] = []
+    lines = result.spectral_lines if isinstance(result, LinearResult) else None
+    if lines is not None and len(lines):
+        assert isinstance(result, LinearResult)
+        comp = result.anderon_comparison()
+        sections.append(
+            (
+                "Anderon: exact lines vs six-revolution DFT (as seed 002)",
+                [
+                    (
+                        band,
+                        f"{v['lines']:.4g} (lines) / {v['dft']:.4g} (DFT)",
+                        f"{100 * v['relative_difference']:+.1f} %",
+                    )
+                    for band, v in comp.items()
+                ],
+            )
+        )
+    if details.attribution:
+        sections.append(
+            ("Frequency attribution", attribution_table_rows(list(details.attribution)))
+        )
+    return sections
+
+
+def _equilibrium_sections(result: RunResult, details: EquilibriumDetails) -> list[tuple[str, Rows]]:
+    """Ring displacements, stiffness diagonal, per-ball angles and loads (one instant)."""
+    q = details.ring_displacement.as_tuple()
+    k = details.stiffness_matrix.matrix
+    sections: list[tuple[str, Rows]] = [
+        (
+            f"{result.title or result.model}: Jones-Harris equilibrium "
+            f"({details.race_control} race control)",
+            [
+                ("axial displacement δ_a", f"{q[0] * 1e6:.6g}", "µm"),
+                ("radial displacement δ_x", f"{q[1] * 1e6:.6g}", "µm"),
+                ("radial displacement δ_y", f"{q[2] * 1e6:.6g}", "µm"),
+                ("tilt θ_x", f"{q[3] * 1e3:.6g}", "mrad"),
+                ("tilt θ_y", f"{q[4] * 1e3:.6g}", "mrad"),
+                ("axial stiffness K_aa", f"{k[0][0] * 1e-6:.6g}", "N/µm"),
+                ("radial stiffness K_xx", f"{k[1][1] * 1e-6:.6g}", "N/µm"),
+                ("radial stiffness K_yy", f"{k[2][2] * 1e-6:.6g}", "N/µm"),
+                ("tilt stiffness K_θxθx", f"{k[3][3]:.6g}", "N m/rad"),
+                ("tilt stiffness K_θyθy", f"{k[4][4]:.6g}", "N m/rad"),
+            ],
+        )
+    ]
+    rows: Rows = []
+    for r in details.balls:
+        rows.append(
+            (
+                f"ball {r['ball']:d} at {r['azimuth_deg']:.4g} deg",
+                f"α_i {r['inner_contact_angle_deg']:.4f} / α_o "
+                f"{r['outer_contact_angle_deg']:.4f} deg",
+                f"Q_i {r['inner_load_n']:.5g} / Q_o {r['outer_load_n']:.5g} N; "
+                f"δ_i {r['inner_approach_m'] * 1e6:.5g} / δ_o "
+                f"{r['outer_approach_m'] * 1e6:.5g} µm",
+            )
+        )
+    sections.append(("Balls (contact angles, loads, approaches)", rows))
+    if result.notes:
+        sections.append(("Notes", [(n, "", "") for n in result.notes]))
+    return sections
+
+
+def _length_number(value: float, unit: tuple[str, float], resolution: float | None) -> str:
+    """The number of :func:`runout.display.format_length`, without the unit."""
+    from runout.display import format_length
+
+    return format_length(value, unit, resolution_m=resolution).rsplit(" ", 1)[0]
+
+
+def _plain(value: float, digits: int) -> str:
+    from runout.display import format_number
+
+    return format_number(value, digits)
+
+
+def verdict_line(verdict: Verdict) -> str:
+    """The PASS/FAIL sentence of a verdict (``PASS: radial_pp = 1.2 um within the limit 2 um``).
+
+    Parameters
+    ----------
+    verdict : Verdict
+        A verdict (:func:`runout.results.verdict_of`, or ``Verdict.from_json``).
+    """
+    from runout.display import format_length, length_unit
+
+    word = "PASS" if verdict.passed else "FAIL"
+    relation = "within" if verdict.passed else "exceeds"
+    if verdict.unit == "m":
+        unit = length_unit([verdict.value, verdict.limit])
+        value = format_length(verdict.value, unit)
+        limit = format_length(verdict.limit, unit)
+    else:
+        value = f"{_plain(verdict.value, 4)} um/s"
+        limit = f"{_plain(verdict.limit, 4)} um/s"
+    return f"{word}: {verdict.quantity} = {value} {relation} the limit {limit}"

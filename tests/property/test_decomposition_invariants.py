@@ -15,9 +15,11 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from cases import TADA_BEARING
-from runout.case import parse_case
+from runout.api import Imperfections
+from runout.bearing import Operation
+from runout.case import Case
 from runout.errors import RunoutError
+from runout.examples import tada_bearing
 from runout.models import run_model
 from runout.results import RunResult
 
@@ -37,24 +39,22 @@ waviness = st.fixed_dictionaries(
 def _case(
     model: str, ring: str, entries: list[dict[str, Any]], revolutions: int, rotating_wave: bool
 ) -> Any:
-    wav = []
+    waves = Imperfections(elements=8)
     for e in entries:
         e = dict(e)
         if e["part"] == "stationary":
             e["part"] = STATIONARY[ring]
             del e["element"]
-        wav.append(e)
+        waves = waves.waviness(**e)
     if rotating_wave:
-        wav.append({"part": ring, "order": 1, "amplitude": 5e-9, "phase": 0.4})
-    data: dict[str, Any] = {
-        "bearing": dict(TADA_BEARING),
-        "operation": {"rotating_ring": ring, "speed": 90.0, "axial_load": 20.0},
-        "waviness": wav,
-        "analysis": {"model": model, "revolutions": revolutions, "samples": 128 * revolutions},
-    }
-    if model == "dynamic":
-        data["dynamics"] = {"mass": 0.002, "damping": 5.0}
-    return parse_case(data, "random.toml")
+        waves = waves.waviness(ring, 1, amplitude=5e-9, phase=0.4)
+    return Case.from_inputs(
+        tada_bearing(radial_clearance=10e-6),
+        Operation(rotating_ring=ring, speed=90.0, axial_load=20.0),
+        waves,
+        analysis={"model": model, "revolutions": revolutions, "samples": 128 * revolutions},
+        dynamics={"mass": 0.002, "damping": 5.0} if model == "dynamic" else None,
+    )
 
 
 def _check(result: RunResult) -> None:

@@ -17,7 +17,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from runout.case import parse_case
+from runout.api import Imperfections
+from runout.bearing import BallBearing, Operation
+from runout.case import Case
 from runout.errors import (
     CaseError,
     ContactLossError,
@@ -33,6 +35,7 @@ pytestmark = pytest.mark.filterwarnings("ignore::runout.spectrum.LineResolutionW
 
 @st.composite
 def random_case(draw: st.DrawFn, model: str) -> dict[str, Any]:
+    """Keyword arguments of BallBearing, Operation and the imperfections, and [analysis]."""
     z = draw(st.integers(5, 13))
     d = draw(st.floats(0.5e-3, 4e-3))
     waviness = [
@@ -61,14 +64,23 @@ def random_case(draw: st.DrawFn, model: str) -> dict[str, Any]:
             "axial_load": 10.0 ** draw(st.floats(-0.5, 2.5)),
         },
         "waviness": waviness,
-        "elements": {"diameter_errors": errors},
+        "diameter_errors": errors,
         "analysis": {"model": model, "revolutions": draw(st.floats(1.0, 6.0)), "samples": 256},
     }
 
 
 def _check(data: dict[str, Any]) -> None:
     try:
-        case = parse_case(data)
+        bearing = BallBearing(**data["bearing"])
+        waves = Imperfections(elements=bearing.elements)
+        for entry in data["waviness"]:
+            waves = waves.waviness(**entry)
+        case = Case.from_inputs(
+            bearing,
+            Operation(**data["operation"]),
+            waves.diameter_errors(data["diameter_errors"]),
+            analysis=data["analysis"],
+        )
     except RunoutError:  # impossible geometry etc.: the case checks say so, not the model
         return
     try:

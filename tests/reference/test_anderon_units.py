@@ -6,9 +6,10 @@ as lines (amplitude times cos α) and eq. 42 its density dx/dθ. Fig. 12 prints 
 of the 608 example, whose R band (2/3-5/3 wave) holds essentially one line: the inner-ring
 eccentricity W_i1 = 2.5 µm at order 1 (eq. 43).
 
-The lines of the other parts are built here straight from the closed forms of seed 002
-(eq. 33/35 inner, eq. 37 outer, eq. 39 ball) so that the band machinery is checked against
-the published L/M/H values too; the line models themselves live in runout.imperfections.
+The lines of the other parts are built straight from the closed forms of seed 002 (eq. 33/35
+inner, eq. 37 outer, eq. 39 ball; runout.validation.seed002_anderon) so that the band
+machinery is checked against the published L/M/H values too; the line models themselves live
+in runout.imperfections.
 """
 
 from __future__ import annotations
@@ -26,68 +27,24 @@ from runout.spectrum import (
     anderon_bands_from_lines,
     anderon_bands_from_waveform,
 )
+from runout.validation.seed002_anderon import (
+    FIG12,
+    FIG13,
+    FIG15,
+    FIG17,
+    W_I1,
+    ball_lines,
+    inner_lines,
+    outer_lines,
+)
 
-# Seed 002 Tab. 1 (608 bearing) and the deviations of eq. 43-47.
-D_B = 3.9688e-3  # ball diameter [m]
-D_C = 15e-3  # ball orbital (pitch) diameter [m]
-Z = 7
+# Seed 002 Tab. 1 (608 bearing): the contact angle
 ALPHA = math.radians(10.0)
 COS_A = math.cos(ALPHA)
-W_I1 = 2.5e-6  # inner-ring eccentricity, eq. 43 [m]
-W_S = 0.05e-6  # inner-ring slant, eq. 44 [m]
-
-# Fig. 12 (total), Fig. 13 (inner only), Fig. 15 (outer only), Fig. 17 (ball only) [Anderon]
-FIG12 = {"U": 0.46, "R": 60.52, "L": 2.16, "M": 1.46, "H": 1.45, "E": 1.72, "A": 20.52}
-FIG13 = {"L": 1.87, "M": 0.75, "H": 0.78}
-FIG15 = {"L": 0.57, "M": 0.47, "H": 0.46}
-FIG17 = {"L": 1.04, "M": 1.17, "H": 1.13}
-
-
-def waviness(k: int) -> float:
-    """Eq. 45-47: 0.1 µm / k^1.5 [m]."""
-    return 0.1e-6 / k**1.5
-
-
-GAMMA = D_B * COS_A / D_C
-F_INNER = (1 + GAMMA) / 2  # ball-pass factor on the inner ring, eq. 33
-F_CAGE = (1 - GAMMA) / 2  # cage / outer-ring factor, eq. 37 and eq. 40
-F_SPIN = (D_C**2 - D_B**2 * COS_A**2) / (2 * D_B * D_C)  # ball spin, eq. 4
-
-
-def inner_lines() -> tuple[np.ndarray, np.ndarray]:
-    """Eq. 35: eccentricity (order 1), slant (order 2), waviness nZ±1 -> I_{nZ±1}; times cos α."""
-    orders, amps = [1.0, 2.0], [W_I1, W_S]
-    for n in range(1, 120):
-        for s in (-1, 1):
-            k = n * Z + s
-            if 2 <= k < 800:
-                orders.append(n * Z * F_INNER + s)
-                amps.append(waviness(k))
-    return np.array(orders), np.array(amps) * COS_A
-
-
-def outer_lines() -> tuple[np.ndarray, np.ndarray]:
-    """Eq. 37: waviness nZ-1 and nZ+1 both give order O_nZ; with random phases the expected
-    power of the line is the sum of their powers (used here). Times cos α."""
-    orders, amps = [], []
-    for n in range(1, 200):
-        power = sum(waviness(k) ** 2 for k in (n * Z - 1, n * Z + 1) if 2 <= k < 1360)
-        if power > 0:
-            orders.append(n * Z * F_CAGE)
-            amps.append(math.sqrt(power))
-    return np.array(orders), np.array(amps) * COS_A
-
-
-def ball_lines() -> tuple[np.ndarray, np.ndarray]:
-    """Eq. 39 with waviness on ball z = 0 only (our reading of W_b0k in eq. 47): its even
-    harmonic 2n gives lines B_An and B_Bn of amplitude (2/Z) W each. Times cos α."""
-    orders, amps = [], []
-    for n in range(1, 144):
-        if 2 <= 2 * n < 287:
-            w = 2.0 / Z * waviness(2 * n)
-            orders += [2 * n * F_SPIN + F_CAGE, 2 * n * F_SPIN - F_CAGE]
-            amps += [w, w]
-    return np.array(orders), np.array(amps) * COS_A
+# W_I1 (inner-ring eccentricity, eq. 43 [m]); Fig. 12 (total), Fig. 13 (inner only), Fig. 15
+# (outer only), Fig. 17 (ball only) [Anderon]; the lines of eq. 35 (inner), eq. 37 (outer,
+# the expected power of the two waviness orders behind each line), eq. 39 (waviness on ball
+# z = 0 only, our reading of W_b0k in eq. 47), all times cos α, from the validation module.
 
 
 def test_unit_is_microinch_per_radian_per_root_octave() -> None:

@@ -33,21 +33,30 @@ from runout.contact import (
     line_contact_load,
     stiffness_from_delta_star_table,
 )
+from runout.validation.contact import (
+    ANDERON_EQ11_BALL_LOAD,
+    ANDERON_FIG6_DISPLACEMENT_UM,
+    HARRIS_209_APPROACH_UM,
+    HARRIS_209_CURVATURE,
+    PALMGREN_LINE_CONSTANT,
+    PUROHIT_EQ2_13_CONSTANT,
+    harris_209_bearing,
+)
+from runout.validation.contact import HARRIS_STEEL as HARRIS_STEEL_E_NU
 
-HARRIS_STEEL = Material(207.5e9, 0.3)
+HARRIS_STEEL = Material(*HARRIS_STEEL_E_NU)
 MM = 1e-3
 
 
 def _harris_209() -> BallBearing:
-    return BallBearing(
-        9, 12.7 * MM, 65 * MM, 0.52, 0.52, radial_clearance=0.0, material=HARRIS_STEEL
-    )
+    # 9 balls, D = 12.7 mm, d_m = 65 mm, f = 0.52, α = 0, no clearance, Harris's steel
+    return harris_209_bearing()
 
 
 # --- Harris's 209 bearing (α = 0) -----------------------------------------------------------
 @pytest.mark.parametrize(
     ("race", "curvature_sum_per_mm", "curvature_difference"),
-    [("inner", 0.2018, 0.9400), ("outer", 0.1378, 0.9121)],
+    [(race, *HARRIS_209_CURVATURE[race]) for race in ("inner", "outer")],
 )
 def test_harris_209_curvature_sum_and_difference(race, curvature_sum_per_mm, curvature_difference):
     s, f = ball_race_curvature(12.7 * MM, 65 * MM, 0.52, 0.0, race)
@@ -55,7 +64,7 @@ def test_harris_209_curvature_sum_and_difference(race, curvature_sum_per_mm, cur
     assert float(f) == pytest.approx(curvature_difference, abs=0.5e-4)
 
 
-@pytest.mark.parametrize(("race", "approach_um"), [("inner", 9.86), ("outer", 9.50)])
+@pytest.mark.parametrize(("race", "approach_um"), list(HARRIS_209_APPROACH_UM.items()))
 def test_harris_209_approach_at_1000_newton(race: str, approach_um: float) -> None:
     contacts = ball_race_contacts(_harris_209())
     contact = contacts.inner if race == "inner" else contacts.outer
@@ -102,7 +111,7 @@ def test_purohit2006_eq2_10_reproduces_209_approach() -> None:
 
 def test_purohit2006_eq2_11_printed_constant_is_not_the_inverse() -> None:
     # eq. 2.11/2.12 print 3.587e7; the inverse of eq. 2.10 is (2.787e-8)^(-3/2)
-    assert 1.0 / HARRIS_STEEL_APPROACH_CONSTANT == pytest.approx(3.587e7, rel=1e-3)
+    assert 1.0 / HARRIS_STEEL_APPROACH_CONSTANT == pytest.approx(PUROHIT_EQ2_13_CONSTANT, rel=1e-3)
     assert HARRIS_STEEL_APPROACH_CONSTANT**-1.5 == pytest.approx(2.149e11, rel=1e-3)
     k = hertz_point_stiffness(1.0, 0.0, HARRIS_STEEL.effective_modulus)
     assert float(k) == pytest.approx(2.149e11, rel=1e-3)
@@ -134,7 +143,8 @@ def test_anderon_eq9_is_hertz_ball_on_flat_circle() -> None:
 
 
 def test_anderon_eq11_average_ball_load() -> None:
-    assert 20.0 / (7 * math.sin(math.radians(15.0))) == pytest.approx(11.039, abs=5e-4)
+    load = 20.0 / (7 * math.sin(math.radians(15.0)))
+    assert load == pytest.approx(ANDERON_EQ11_BALL_LOAD, abs=5e-4)
 
 
 def test_anderon_fig6_displacement_at_11n_is_not_19_micrometre() -> None:
@@ -148,7 +158,8 @@ def test_anderon_fig6_displacement_at_11n_is_not_19_micrometre() -> None:
     assert hertz * 1e6 == pytest.approx(1.738, abs=1e-3)
     assert hertz / cap == pytest.approx(2.0, rel=1e-3)
     soft = Material(youngs_modulus=2.0e9)
-    assert float(ball_flat_cap_displacement(11.039, rb, soft)) * 1e6 == pytest.approx(19, rel=0.05)
+    cap_soft = float(ball_flat_cap_displacement(ANDERON_EQ11_BALL_LOAD, rb, soft))
+    assert cap_soft * 1e6 == pytest.approx(ANDERON_FIG6_DISPLACEMENT_UM, rel=0.05)
 
 
 # --- Palmgren line contact -------------------------------------------------------------------
@@ -156,4 +167,5 @@ def test_harris_line_contact_stiffness_constant() -> None:
     # Harris: Q = 8.06e4 δ^(10/9) l^(8/9) per contact (N, mm), the inverse of Palmgren's law
     l_mm, d_mm = 15.0, 0.004
     q = float(line_contact_load(d_mm * MM, l_mm * MM))
-    assert q == pytest.approx(8.06e4 * d_mm ** (10 / 9) * l_mm ** (8 / 9), rel=2e-3)
+    published = PALMGREN_LINE_CONSTANT * d_mm ** (10 / 9) * l_mm ** (8 / 9)
+    assert q == pytest.approx(published, rel=2e-3)

@@ -10,67 +10,19 @@ must therefore equal the linear ones to the order of the linearisation error (~1
 
 from __future__ import annotations
 
-import tomllib
-
 import pytest
 
-from runout.case import parse_case
-from runout.models import linear, quasi_static_3d
+from runout.validation.cross_model import cross_lines
 
-CASE = """
-title = "cross-check"
-[bearing]
-type = "ball"
-elements = 8
-element_diameter = "1 mm"
-pitch_diameter = "7 mm"
-inner_conformity = 0.52
-outer_conformity = 0.53
-radial_clearance = "10 um"
-[operation]
-rotating_ring = "{ring}"
-speed = "5400 rpm"
-axial_load = "20 N"
-[[waviness]]
-part = "inner"
-order = 9
-amplitude = "1 nm"
-phase = "20 deg"
-[[waviness]]
-part = "outer"
-order = 7
-amplitude = "1 nm"
-phase = "50 deg"
-[[waviness]]
-part = "ball"
-order = 2
-amplitude = "1 nm"
-element = 3
-[analysis]
-model = "{model}"
-linear_variant = "force_balance"
-revolutions = 40
-samples = 8192
-"""
-
-
-def _lines(model, ring: str) -> dict[tuple[str, float], float]:  # type: ignore[no-untyped-def]
-    text = CASE.format(ring=ring, model=model.__name__.rsplit(".", 1)[1])
-    if model is quasi_static_3d:
-        text = text.replace('linear_variant = "force_balance"\n', "")
-    case = parse_case(tomllib.loads(text), "cross.toml")
-    result = model.run(case)
-    return {
-        (c.direction, round(c.frequency_hz, 3)): c.pp_m
-        for c in result.components
-        if c.direction in ("x", "y") and c.pp_m > 1e-11
-    }
+# Tada's standard bearing (examples/seed000_tada_table2.toml) with 1 nm of inner 9-lobe (20°),
+# outer 7-lobe (50°) and ball-3 2-lobe waviness, 40 revolutions × 8192 instants; the linear
+# model in its force_balance variant (runout.validation.cross_model.cross_case)
 
 
 @pytest.mark.parametrize("ring", ["inner", "outer"])
 def test_linear_force_balance_equals_quasi_static_3d_at_1nm(ring: str) -> None:
-    lin = _lines(linear, ring)
-    qs = _lines(quasi_static_3d, ring)
+    lin = cross_lines(ring, "linear")
+    qs = cross_lines(ring, "quasi_static_3d")
     # The three first-order radial lines (inner nZ+1, outer nZ-1, ball 2n ± f_c) of x and y.
     assert len(lin) >= 6
     for key, pp in lin.items():

@@ -14,39 +14,28 @@ import math
 
 import pytest
 
-from runout import BallBearing, Material
-from runout.loading import AxialLoading, axial_load_for_contact_angle, axial_loading
+from runout import BallBearing
+from runout.examples import kim_bearing
+from runout.loading import AxialLoading
+from runout.validation.seed001_kim import KIM_TABLE2, kim_axial_loading, kim_fitted_preload
 
 # Z: (alpha [deg], delta_i [um], delta_o [um])
-TABLE2 = {
-    7: (19.80, 2.116, 2.113),
-    8: (19.38, 1.977, 1.974),
-    9: (19.03, 1.863, 1.860),
-    10: (18.73, 1.766, 1.763),
-    11: (18.47, 1.683, 1.680),
-    12: (18.24, 1.610, 1.607),
-}
+TABLE2 = KIM_TABLE2
 FIT_Z = 10
 
 
 def _bearing(z: int) -> BallBearing:
-    return BallBearing(
-        elements=z,
-        element_diameter=1.5875e-3,
-        pitch_diameter=9.1e-3,
-        inner_conformity=0.529,
-        outer_conformity=0.535,
-        radial_clearance=5e-6,
-        material=Material(208e9, 0.3),
-    )
+    # the Table 1 bearing, steel E = 208 GPa, ν = 0.3
+    return kim_bearing(elements=z)
 
 
 def _fitted_axial_load() -> float:
-    return axial_load_for_contact_angle(_bearing(FIT_Z), math.radians(TABLE2[FIT_Z][0]))
+    # fitted on the Z = FIT_Z column: the load whose static solution gives TABLE2[FIT_Z][0]
+    return kim_fitted_preload()
 
 
 def _solve(z: int) -> AxialLoading:
-    return axial_loading(_bearing(z), _fitted_axial_load())
+    return kim_axial_loading(z)
 
 
 def test_kim2002_table2_fitted_axial_load_is_plausible() -> None:

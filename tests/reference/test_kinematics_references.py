@@ -12,14 +12,19 @@ import math
 import pytest
 
 from runout import BallBearing, Operation
+from runout.examples import bearing_608
 from runout.kinematics import bearing_frequencies
-
-INCH = 25.4e-3
+from runout.validation.kinematics import (
+    CWRU_6205,
+    KIM_FREQUENCIES_HZ,
+    SEED002_ORDERS,
+    cwru_orders,
+)
 
 
 def _cwru() -> dict[str, float]:
-    bearing = BallBearing(9, 0.3126 * INCH, 1.537 * INCH, contact_angle=0.0)
-    return bearing_frequencies(bearing, Operation("inner", speed=1.0)).orders()
+    # 9 balls, D = 0.3126 in, d_m = 1.537 in, α = 0; inner ring at 1 Hz
+    return cwru_orders()
 
 
 # Tolerance: half a unit of the last printed digit, except the FTF: the table's 0.39828 is
@@ -28,10 +33,10 @@ def _cwru() -> dict[str, float]:
 @pytest.mark.parametrize(
     ("key", "published", "tolerance"),
     [
-        ("ball_pass_inner", 5.4152, 5e-5),
-        ("ball_pass_outer", 3.5848, 5e-5),
-        ("cage", 0.39828, 0.39828e-4),
-        ("ball_spin", 2.357, 5e-4),
+        ("ball_pass_inner", CWRU_6205["ball_pass_inner"], 5e-5),
+        ("ball_pass_outer", CWRU_6205["ball_pass_outer"], 5e-5),
+        ("cage", CWRU_6205["cage"], CWRU_6205["cage"] * 1e-4),
+        ("ball_spin", CWRU_6205["ball_spin"], 5e-4),
     ],
 )
 def test_cwru_6205_drive_end_multiples_of_shaft_speed(key, published, tolerance) -> None:
@@ -39,39 +44,40 @@ def test_cwru_6205_drive_end_multiples_of_shaft_speed(key, published, tolerance)
 
 
 def _seed002_608() -> dict[str, float]:
-    bearing = BallBearing(7, 3.9688e-3, 15e-3, contact_angle=math.radians(10.0))
-    return bearing_frequencies(bearing, Operation("inner", speed=1.0)).orders()
+    # seed 002 Tab. 1: 7 balls, D = 3.9688 mm, d_c = 15 mm, α = 10°
+    return bearing_frequencies(bearing_608(), Operation("inner", speed=1.0)).orders()
 
 
 def test_seed002_eq48_inner_nz_minus_1_order() -> None:
     # I_{7-1} = Z (d_c + d_b cos α) / (2 d_c) - 1 = BPFI order - 1
-    assert _seed002_608()["ball_pass_inner"] - 1 == pytest.approx(3.41198, abs=1e-5)
+    assert _seed002_608()["ball_pass_inner"] - 1 == pytest.approx(SEED002_ORDERS["I_6"], abs=1e-5)
 
 
 def test_seed002_eq50_inner_flaw_pulse_rate() -> None:
-    assert _seed002_608()["ball_pass_inner"] == pytest.approx(4.41198, abs=1e-5)
+    published = SEED002_ORDERS["inner_flaw"]
+    assert _seed002_608()["ball_pass_inner"] == pytest.approx(published, abs=1e-5)
 
 
 def test_seed002_eq51_outer_o7() -> None:
-    assert _seed002_608()["ball_pass_outer"] == pytest.approx(2.58802, abs=1e-5)
+    assert _seed002_608()["ball_pass_outer"] == pytest.approx(SEED002_ORDERS["O_7"], abs=1e-5)
 
 
 def test_seed002_eq52_outer_o14() -> None:
-    assert 2 * _seed002_608()["ball_pass_outer"] == pytest.approx(5.17603, abs=1e-5)
+    assert 2 * _seed002_608()["ball_pass_outer"] == pytest.approx(SEED002_ORDERS["O_14"], abs=1e-5)
 
 
 def test_seed002_eq55_ball_ba0_is_cage_order() -> None:
-    assert _seed002_608()["cage"] == pytest.approx(0.369716, abs=1e-6)
+    assert _seed002_608()["cage"] == pytest.approx(SEED002_ORDERS["B_A0"], abs=1e-6)
 
 
 def test_seed002_eq56_57_ball_bb1_ba1() -> None:
     o = _seed002_608()
-    assert 2 * o["ball_spin"] - o["cage"] == pytest.approx(3.15316, abs=1e-5)
-    assert 2 * o["ball_spin"] + o["cage"] == pytest.approx(3.89259, abs=1e-5)
+    assert 2 * o["ball_spin"] - o["cage"] == pytest.approx(SEED002_ORDERS["B_B1"], abs=1e-5)
+    assert 2 * o["ball_spin"] + o["cage"] == pytest.approx(SEED002_ORDERS["B_A1"], abs=1e-5)
 
 
 def test_seed002_eq59_ball_flaw_pulse_rate() -> None:
-    assert 2 * _seed002_608()["ball_spin"] == pytest.approx(3.52287, abs=1e-5)
+    assert 2 * _seed002_608()["ball_spin"] == pytest.approx(SEED002_ORDERS["ball_flaw"], abs=1e-5)
 
 
 def test_seed001_section51_cage_and_ball_spin() -> None:
@@ -79,8 +85,8 @@ def test_seed001_section51_cage_and_ball_spin() -> None:
     bearing = BallBearing(10, 1.5875e-3, 9.1e-3, 0.529, 0.535, 5e-6)
     f = bearing_frequencies(bearing, Operation("inner", speed=120.0), math.radians(18.73))
     # The paper rounds to 50 Hz and 335 Hz.
-    assert f.cage == pytest.approx(50.0, abs=0.5)
-    assert f.ball_spin == pytest.approx(335.0, abs=0.5)
+    assert f.cage == pytest.approx(KIM_FREQUENCIES_HZ["cage"], abs=0.5)
+    assert f.ball_spin == pytest.approx(KIM_FREQUENCIES_HZ["ball_spin"], abs=0.5)
 
 
 def test_seed003_eq2_20_ball_passage_is_z_times_cage() -> None:

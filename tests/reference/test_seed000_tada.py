@@ -9,69 +9,26 @@ Inputs are peak-to-peak ("total amplitude") as in the paper.
 from __future__ import annotations
 
 import math
-from typing import Any
 
 import numpy as np
 import pytest
 
-from runout import reproduce
-from runout.case import Case, parse_case
-from runout.kinematics import ball_spin_frequency, cage_frequency
+from runout.case import Case
 from runout.models import quasi_static_3d as qs3
 from runout.spectrum import extract_lines
+from runout.validation.seed000_tada import (
+    TADA_CONCLUSION3_AMPLITUDES,
+    TADA_FIG6,
+    TADA_PP,
+    tada_case,
+    tada_frequencies,
+    tada_line_pp,
+    tada_second_order_lines,
+)
 
-SPEED_HZ = 90.0  # 5400 rpm
-REVS = 72  # 0.8 s, the record of Fig. 7
-SAMPLES = 4096
-
-
-def tada_case(
-    waviness: list[dict[str, Any]],
-    *,
-    z: int = 8,
-    axial: float = 20.0,
-    clearance: float = 10e-6,
-    samples: int = SAMPLES,
-    revolutions: float = REVS,
-    elements: dict[str, Any] | None = None,
-) -> Case:
-    data: dict[str, Any] = {
-        "title": "Tada standard model",
-        "bearing": {
-            "type": "ball",
-            "elements": z,
-            "element_diameter": 1e-3,
-            "pitch_diameter": 7e-3,
-            "inner_conformity": 0.52,
-            "outer_conformity": 0.53,
-            "radial_clearance": clearance,
-        },
-        "material": {"youngs_modulus": 208e9, "poisson_ratio": 0.3},
-        "operation": {"rotating_ring": "outer", "speed": SPEED_HZ, "axial_load": axial},
-        "waviness": waviness,
-        "analysis": {"model": "quasi_static_3d", "revolutions": revolutions, "samples": samples},
-    }
-    if elements is not None:
-        data["elements"] = elements
-    return parse_case(data)
-
-
-def tada_frequencies(case: Case) -> dict[str, float]:
-    """f_c, f_b, f_r and Tada's f_i = Z f_c, f_o = Z (f_r - f_c), outer ring rotating."""
-    alpha = qs3.setup(case).contact_angle
-    d, dm, z = 1e-3, 7e-3, case.bearing.elements
-    fc = float(cage_frequency(0.0, SPEED_HZ, d, dm, alpha))
-    fb = float(ball_spin_frequency(0.0, SPEED_HZ, d, dm, alpha))
-    return {"f_c": fc, "f_b": fb, "f_r": SPEED_HZ, "f_i": z * fc, "f_o": z * (SPEED_HZ - fc)}
-
-
-def line_pp(case: Case, disp: np.ndarray, freqs: list[float]) -> np.ndarray:
-    """p-p of each frequency in x, y, z, fitted jointly: shape (3, len(freqs))."""
-    t = qs3.time_grid_of(case)
-    return 2.0 * extract_lines(t, disp, np.asarray(freqs), axis=-1).amplitude
-
-
-PP = 20e-9
+# the example case of Table 2 (examples/seed000_tada_table2.toml: 72 revolutions, 0.8 s, the
+# record of Fig. 7, 4096 instants), its waviness and loads changed per test
+PP = TADA_PP
 
 
 def _run(case: Case) -> np.ndarray:
@@ -111,7 +68,7 @@ def test_tada_table2_raceway(
     f = tada_frequencies(case)
     freq = n * f[base] + shift * f["f_r"]
     disp = _run(case)
-    pp = line_pp(case, disp, [freq])[:, 0]
+    pp = tada_line_pp(case, [freq], disp)[:, 0]
     radial = float(np.hypot(pp[0], pp[1]) / math.sqrt(2.0))
     main = radial if direction == "xy" else pp[2]
     assert main > 0.1 * PP
@@ -133,7 +90,7 @@ def test_tada_table2_ball_2n(n: int) -> None:
     f_plus = lobes * f["f_b"] + f["f_c"]
     f_axial = lobes * f["f_b"]
     disp = _run(case)
-    pp = line_pp(case, disp, [f_minus, f_plus, f_axial])
+    pp = tada_line_pp(case, [f_minus, f_plus, f_axial], disp)
     axial_main = pp[2, 2]
     radial_main = max(pp[0, 0], pp[0, 1])
     assert axial_main > 0.05 * PP and radial_main > 0.05 * PP
@@ -165,7 +122,7 @@ def test_tada_conclusion1_first_order_equals_waviness(
     f_ring = kin.inner if part == "inner" else kin.outer
     m = -sign
     freq = abs((lobes + m) * kin.cage - lobes * f_ring)
-    pp = line_pp(case, _run(case), [freq])[:, 0]
+    pp = tada_line_pp(case, [freq], _run(case))[:, 0]
     assert pp[0] == pytest.approx(PP, rel=1e-6)
     assert pp[1] == pytest.approx(PP, rel=1e-6)
 
@@ -180,9 +137,9 @@ def test_tada_conclusion1_first_order_equals_waviness(
 )
 def test_tada_conclusion3_second_order_square_law(z: int, lobes: int, direction: str) -> None:
     # the example case of Table 2 (outer ring turning), Z changed; lines as in VALIDATION.md
-    multiple, lines = reproduce.tada_second_order_lines(z, lobes, direction)
+    multiple, lines = tada_second_order_lines(z, lobes, direction)
     assert multiple % z == 0
-    amps = reproduce.TADA_CONCLUSION3_AMPLITUDES
+    amps = TADA_CONCLUSION3_AMPLITUDES
     exponent = math.log(lines[1] / lines[0]) / math.log(amps[1] / amps[0])
     assert lines[0] > 1e-13  # present, though small
     assert exponent == pytest.approx(2.0, abs=0.01)
@@ -191,21 +148,7 @@ def test_tada_conclusion3_second_order_square_law(z: int, lobes: int, direction:
 # --------------------------------------------------------------------------------------------
 # §3.2 / Fig. 6: Z-1 and Z+1 lobes on the stationary inner ring give an ellipse
 # --------------------------------------------------------------------------------------------
-# (a7, ϑ7 [deg], a9, ϑ9 [deg], printed inclination φ [deg], Tada clockwise)
-FIG6 = [
-    (0.25, 0, 0.25, 0, 0),
-    (0.25, 0, 0.5, 30, 135),
-    (0.25, 0, 0.75, 60, 90),
-    (0.25, 0, 1.0, 90, 45),
-    (0.5, 30, 0.25, 0, 75),
-    (0.5, 30, 0.5, 30, 30),
-    (0.5, 30, 0.75, 60, 165),
-    (0.5, 30, 1.0, 90, 120),
-    (1.0, 90, 0.25, 0, 45),
-    (1.0, 90, 0.5, 30, 0),
-    (1.0, 90, 0.75, 60, 135),
-    (1.0, 90, 1.0, 90, 90),
-]
+# TADA_FIG6: (a7, ϑ7 [deg], a9, ϑ9 [deg], printed inclination φ [deg], Tada clockwise)
 
 
 def tada_eq8_inclination(theta7_deg: float, theta9_deg: float, z: int = 8) -> float:
@@ -220,12 +163,12 @@ def tada_eq8_inclination(theta7_deg: float, theta9_deg: float, z: int = 8) -> fl
 
 
 def test_tada_fig6_printed_inclinations_match_eq8_reconstruction() -> None:
-    for _, t7, _, t9, printed in FIG6:
+    for _, t7, _, t9, printed in TADA_FIG6:
         diff = (tada_eq8_inclination(t7, t9) - printed) % 180.0
         assert min(diff, 180.0 - diff) < 1e-9
 
 
-@pytest.mark.parametrize(("a7", "t7", "a9", "t9", "printed"), FIG6)
+@pytest.mark.parametrize(("a7", "t7", "a9", "t9", "printed"), TADA_FIG6)
 def test_tada_fig6_ellipse(a7: float, t7: float, a9: float, t9: float, printed: float) -> None:
     unit = 20e-9  # Fig. 6 amplitudes are relative; p-p in units of 20 nm
     # Tada's ϑ is an angular offset measured clockwise: r = a cos(k(θ_T − ϑ)) = a cos(kθ + kϑ)

@@ -28,21 +28,19 @@ import numpy as np
 import pytest
 
 from runout.bearing import BallBearing, Material, Operation
+from runout.examples import kim_bearing
 from runout.loading import axial_loading
 from runout.models.equilibrium import solve_equilibrium
+from runout.validation.seed001_kim import KIM_TABLE2
 
-TABLE2_ALPHA = {7: 19.80, 8: 19.38, 9: 19.03, 10: 18.73, 11: 18.47, 12: 18.24}
+TABLE2_ALPHA = {z: row[0] for z, row in KIM_TABLE2.items()}  # Z → α [deg]
 PRELOAD = 60.68
 SPEED = 120.0  # 7200 rpm
 
 
-def kim_bearing(z: int) -> BallBearing:
-    return BallBearing(z, 1.5875e-3, 9.1e-3, 0.529, 0.535, 5e-6)
-
-
 @pytest.mark.parametrize("z", sorted(TABLE2_ALPHA))
 def test_kim_table2_contact_angles_at_7200_rpm(z: int) -> None:
-    sol = solve_equilibrium(kim_bearing(z), Operation("inner", SPEED, axial_load=PRELOAD))
+    sol = solve_equilibrium(kim_bearing(elements=z), Operation("inner", SPEED, axial_load=PRELOAD))
     a_i = np.degrees(sol.inner_contact_angle)
     a_o = np.degrees(sol.outer_contact_angle)
     # every ball alike under a centred axial load
@@ -50,13 +48,13 @@ def test_kim_table2_contact_angles_at_7200_rpm(z: int) -> None:
     assert abs(a_i[0] - TABLE2_ALPHA[z]) < 0.05
     assert abs(a_o[0] - TABLE2_ALPHA[z]) < 0.05
     # the centrifugal force opens the inner angle and closes the outer one
-    static = math.degrees(axial_loading(kim_bearing(z), PRELOAD).contact_angle)
+    static = math.degrees(axial_loading(kim_bearing(elements=z), PRELOAD).contact_angle)
     assert a_i[0] > static > a_o[0]
 
 
 @pytest.mark.parametrize("z", [7, 10, 12])
 def test_kim_speed_effect_vanishes_at_low_speed(z: int) -> None:
-    b = kim_bearing(z)
+    b = kim_bearing(elements=z)
     ref = axial_loading(b, PRELOAD)
     for speed in (0.0, 1.0 / 60.0):
         sol = solve_equilibrium(b, Operation("inner", speed, axial_load=PRELOAD))
@@ -69,7 +67,7 @@ def test_kim_speed_effect_vanishes_at_low_speed(z: int) -> None:
 
 
 def test_kim_speed_effect_grows_with_speed_squared() -> None:
-    b = kim_bearing(10)
+    b = kim_bearing(elements=10)
     split = []
     for speed in (SPEED, 2 * SPEED):
         sol = solve_equilibrium(b, Operation("inner", speed, axial_load=PRELOAD))
@@ -80,7 +78,7 @@ def test_kim_speed_effect_grows_with_speed_squared() -> None:
 
 def test_kim_centrifugal_force_is_the_cage_orbit() -> None:
     # F_c = m d_m ω_m² / 2 with ω_m the cage speed (seed 001 eq. 7 gives f_c ≈ 50 Hz)
-    b = kim_bearing(10)
+    b = kim_bearing(elements=10)
     sol = solve_equilibrium(b, Operation("inner", SPEED, axial_load=PRELOAD))
     mass = 7850.0 * math.pi * b.element_diameter**3 / 6.0
     wm = sol.orbit_speed[0]

@@ -4,8 +4,8 @@ Bearing of Table 1 at 7200 rpm under the 60.68 N preload fitted to Table 2 (18.7
 Z = 10, tests/reference/test_kim_table2.py). Conventions that reproduce the paper (see
 VALIDATION.md): the 0.1 µm size error is on the *diameter*, the tabulated "NRRO component" is
 *peak-to-peak* (2 × the single amplitude), and it is what a Hann FFT of a finite record shows,
-which carries a constant ~1 nm line at f_c (`runout.reproduce.kim_fft_reading`). Our own output
-is the exact (leakage-free) line.
+which carries a constant ~1 nm line at f_c (`runout.validation.seed001_kim.kim_fft_reading`).
+Our own output is the exact (leakage-free) line.
 """
 
 from __future__ import annotations
@@ -13,29 +13,28 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from runout import reproduce
 from runout.case import Case, parse_case
 from runout.models import quasi_static_2d as qs2
 from runout.spectrum import amplitude_spectrum, extract_lines, peak_bin_gain
+from runout.validation.seed001_kim import (
+    KIM_FLOOR,
+    KIM_SYMMETRIC,
+    KIM_TABLE4,
+    KIM_TABLE4_FORM_Z10,
+    KIM_TABLES5_8,
+    kim_cage_hz,
+    kim_fft_reading,
+    kim_form_ratio,
+    kim_lines,
+    kim_read_nm,
+)
 
 SPEED = 120.0
 REVS, SAMPLES = 8, 1024
-TABLE4_FC = {7: 54.02, 8: 47.75, 9: 42.72, 10: 38.60, 11: 35.18, 12: 32.30}
-# Tables 5-8 (Z = 10): oversize balls -> f_c p-p [nm]
-TABLES5_8_FC = {
-    (1, 2): 74.38,
-    (1, 3): 63.34,
-    (1, 4): 46.12,
-    (1, 5): 24.41,
-    (1, 2, 3): 102.84,
-    (1, 3, 5): 63.87,
-    (1, 4, 7): 15.69,
-    (1, 2, 3, 4): 121.20,
-    (1, 3, 5, 7): 40.08,
-    (1, 2, 3, 4, 5): 127.72,
-    (1, 2, 4, 5, 8): 48.80,
-}
-SYMMETRIC = [(1, 6), (1, 4, 6, 9), (1, 2, 6, 7), (1, 3, 5, 7, 9)]  # printed 0.99 nm
+TABLE4_FC = KIM_TABLE4
+# Tables 5-8 (Z = 10): oversize balls -> f_c p-p [nm], the outlier (1, 5, 9) apart
+TABLES5_8_FC = {balls: row[1] for balls, row in KIM_TABLES5_8.items() if balls != (1, 5, 9)}
+SYMMETRIC = KIM_SYMMETRIC  # printed KIM_FLOOR = 0.99 nm
 
 
 def kim_case(z: int, oversize: tuple[int, ...]) -> Case:
@@ -81,30 +80,30 @@ def test_kim_table4_exact_line_is_the_ball_set_geometry(z: int) -> None:
 def test_kim_table4_fc_as_the_paper_read_it(z: int) -> None:
     # The printed column is a Hann-FFT reading with a 1 nm floor (VALIDATION.md): two
     # parameters identified from the 18 f_c values of Tables 4-8 reproduce every one of them.
-    read = reproduce.kim_read_nm("seed001_kim_table4.toml", z, (1,))
+    read = kim_read_nm("seed001_kim_table4.toml", z, (1,))
     assert read == pytest.approx(TABLE4_FC[z], rel=0.005)
 
 
 @pytest.mark.parametrize("balls", [*sorted(TABLES5_8_FC), (1, 5, 9)], ids=str)
 def test_kim_tables5_8_fc_as_the_paper_read_it(balls: tuple[int, ...]) -> None:
-    read = reproduce.kim_read_nm("seed001_kim_tables5_8.toml", 10, balls)
-    assert read == pytest.approx(reproduce.KIM_TABLES5_8[balls][1], rel=0.005)
+    read = kim_read_nm("seed001_kim_tables5_8.toml", 10, balls)
+    assert read == pytest.approx(KIM_TABLES5_8[balls][1], rel=0.005)
 
 
 def test_kim_reading_identification_is_tight() -> None:
-    r = reproduce.kim_fft_reading()
+    r = kim_fft_reading()
     assert r.rows == 18
     assert r.misfit < 0.005
     assert 0.25 < r.duration < 4.0
     # the floor's size is the printed 0.99 nm before the window's loss
-    gain = float(peak_bin_gain(reproduce.kim_cage_hz("seed001_kim_tables5_8.toml", 10), r.duration))
-    assert gain * abs(r.floor) == pytest.approx(0.99, rel=1e-9)
+    gain = float(peak_bin_gain(kim_cage_hz("seed001_kim_tables5_8.toml", 10), r.duration))
+    assert gain * abs(r.floor) == pytest.approx(KIM_FLOOR, rel=1e-9)
 
 
 def test_the_reading_model_is_a_literal_hann_fft_of_our_record() -> None:
     # Run the 2-D model over the identified record, add the floor line, take the Hann
     # amplitude spectrum and read the bin nearest f_c: the same as FftReading.read.
-    r = reproduce.kim_fft_reading()
+    r = kim_fft_reading()
     for z, balls in ((7, (1,)), (10, (1, 4, 7))):
         case = kim_case(z, balls)
         st = qs2.setup(case)
@@ -115,7 +114,7 @@ def test_the_reading_model_is_a_literal_hann_fft_of_our_record() -> None:
         floor = 0.5e-9 * abs(r.floor) * np.cos(2 * np.pi * fc * t + np.angle(r.floor))
         spec = amplitude_spectrum(disp[0] + floor, time=t, window="hann")
         read = 2e9 * spec.amplitude[round(fc * r.duration)]
-        line = reproduce.kim_lines(
+        line = kim_lines(
             "seed001_kim_tables5_8.toml" if z == 10 else "seed001_kim_table4.toml", z, balls
         )[0]
         assert read == pytest.approx(r.read(fc, line), rel=2e-3)
@@ -128,16 +127,16 @@ def test_kim_tables5_8_form_error_columns_follow_one_ball(
 ) -> None:
     # The 2 f_b -/+ f_c lines of identical balls (same order-2 waviness and spin phase) add
     # like the f_c lines. Two printed entries repeat a neighbouring number instead.
-    table = reproduce.KIM_TABLES5_8[balls]
-    printed = table[2 + column] / reproduce.KIM_TABLE4_FORM_Z10[column]
-    ours = reproduce.kim_form_ratio(balls, column)
+    table = KIM_TABLES5_8[balls]
+    printed = table[2 + column] / KIM_TABLE4_FORM_Z10[column]
+    ours = kim_form_ratio(balls, column)
     superposition = abs(sum(np.exp(2j * np.pi * (k - 1) / 10) for k in balls))
     assert ours == pytest.approx(superposition, rel=2e-3)
     if (balls, column) == ((1, 4, 7), 0):
         assert table[2] == table[3]  # 2.59 twice
         assert ours == pytest.approx(printed, rel=0.07)
     elif (balls, column) == ((1, 2, 3, 4, 5), 1):
-        assert table[3] == reproduce.KIM_TABLES5_8[(1, 2, 3, 4)][3]  # 20.85, Table 7's
+        assert table[3] == KIM_TABLES5_8[(1, 2, 3, 4)][3]  # 20.85, Table 7's
         assert ours == pytest.approx(printed, rel=0.06)
     else:
         assert ours == pytest.approx(printed, rel=0.01)
@@ -162,7 +161,7 @@ def test_kim_table6_balls_1_5_9_outlier() -> None:
     ours = fc_pp_nm(kim_case(10, (1, 5, 9)))
     one = fc_pp_nm(kim_case(10, (1,)))
     assert ours == pytest.approx(0.618 * one, rel=0.01)
-    assert ours == pytest.approx(23.50, rel=0.06)
+    assert ours == pytest.approx(KIM_TABLES5_8[(1, 5, 9)][1], rel=0.06)  # 23.50
 
 
 @pytest.mark.parametrize("balls", SYMMETRIC, ids=str)

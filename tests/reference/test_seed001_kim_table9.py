@@ -15,9 +15,10 @@ import pytest
 
 from runout.case import load_case, parse_case
 from runout.study import run_study
+from runout.validation.seed001_kim_table9 import KIM_TABLE9
 
 CASE = Path(__file__).resolve().parents[2] / "examples" / "seed001_kim_table9.toml"
-TABLE9 = {0.1e-6: (109.95, 57.94), 0.05e-6: (54.17, 29.55), 0.033e-6: (36.69, 19.18)}
+TABLE9 = KIM_TABLE9  # σ [m] → published (mean, σ) of the f_c p-p [nm]
 
 
 def study_case(sigma: float):  # type: ignore[no-untyped-def]

@@ -1,7 +1,8 @@
 """Seed 002 (Anderon vibration of a 608): Tab. 2, Fig. 12-17 band values, eq. 48-59 peaks.
 
 The paper read its band values from a DFT of six revolutions of the displacement density
-(rectangular window); we compare through the same route (``anderon_bands_from_waveform``),
+(rectangular window); we compare through the same route
+(``runout.validation.seed002_anderon.anderon_band_values``: 6 revolutions × 1024 samples),
 with the exact-line values alongside. Deviations: eq. 43-47 (eq. 47 on ball z = 0 only, as
 written, plus a size error W_b00 = 0.1 um of that ball, phase 0: our reading of the B_A0 peak
 of Fig. 17). The inner-only and ball-only columns do not depend on the random phases (every
@@ -20,7 +21,14 @@ from runout.attribution import attribution_rows
 from runout.bearing import BallBearing, Operation
 from runout.imperfections import Harmonics, Imperfections, Slant, single_harmonic, spectral_law
 from runout.models import linear as lin
-from runout.spectrum import ANDERON_BANDS, anderon_bands_from_lines, anderon_bands_from_waveform
+from runout.validation.kinematics import SEED002_ORDERS
+from runout.validation.seed002_anderon import (
+    FIG12,
+    FIG13,
+    FIG15,
+    FIG17,
+    anderon_band_values,
+)
 
 UM = 1e-6
 ALPHA = math.radians(10.0)
@@ -35,7 +43,6 @@ BEARING = BallBearing(
 )
 RATES = lin.rates(BEARING, Operation("inner", 30.0), ALPHA)
 BANDS = "URLMHEA"
-REVOLUTIONS, SAMPLES_PER_REV = 6, 1024  # highest line ≈ 505 waves < Nyquist 512
 
 
 def _imperfections(rng: np.random.Generator, parts: str = "iob") -> Imperfections:
@@ -52,12 +59,7 @@ def _imperfections(rng: np.random.Generator, parts: str = "iob") -> Imperfection
 
 def _bands(imp: Imperfections) -> tuple[dict[str, float], dict[str, float]]:
     """(exact-line values, six-revolution DFT values) of x."""
-    lines = lin.spectral_lines(lin.closed_form_terms(imp, RATES, ALPHA), 30.0, Z, True)
-    keep = lines.order > 0
-    exact = anderon_bands_from_lines(lines.order[keep], lines.x_amplitude[keep]).as_dict()
-    _, v, _ = lin.synthesize(lines.derivative(), REVOLUTIONS, REVOLUTIONS * SAMPLES_PER_REV)
-    dft = anderon_bands_from_waveform(v, SAMPLES_PER_REV, ANDERON_BANDS, density=True).as_dict()
-    return exact, dft
+    return anderon_band_values(BEARING, Operation("inner", 30.0), imp)
 
 
 def _spread(parts: str, draws: int = 200) -> np.ndarray:
@@ -76,8 +78,8 @@ def spreads() -> dict[str, np.ndarray]:
 @pytest.mark.parametrize(
     ("parts", "published"),
     [
-        ("i", {"L": 1.87, "M": 0.75, "H": 0.78}),  # Fig. 13 / Tab. 2 inner
-        ("b", {"L": 1.04, "M": 1.17, "H": 1.13}),  # Fig. 17 / Tab. 2 ball
+        ("i", FIG13),  # Fig. 13 / Tab. 2 inner
+        ("b", FIG17),  # Fig. 17 / Tab. 2 ball
     ],
     ids=["tab2_inner_fig13", "tab2_ball_fig17"],
 )
@@ -95,7 +97,7 @@ def test_seed002_tab2_phase_independent_columns(
         assert float(np.median(dft)) == pytest.approx(value, rel=0.03), band
 
 
-@pytest.mark.parametrize(("band", "published"), [("L", 0.57), ("M", 0.47), ("H", 0.46)])
+@pytest.mark.parametrize(("band", "published"), list(FIG15.items()))
 def test_seed002_fig15_outer_only_inside_phase_spread(
     spreads: dict[str, np.ndarray], band: str, published: float
 ) -> None:
@@ -104,9 +106,7 @@ def test_seed002_fig15_outer_only_inside_phase_spread(
     assert lo <= published <= hi, (band, lo, hi)
 
 
-@pytest.mark.parametrize(
-    ("band", "published"), [("L", 2.16), ("M", 1.46), ("H", 1.45), ("E", 1.72)]
-)
+@pytest.mark.parametrize(("band", "published"), [(b, FIG12[b]) for b in "LMHE"])
 def test_seed002_fig12_all_sources_inside_phase_spread(
     spreads: dict[str, np.ndarray], band: str, published: float
 ) -> None:
@@ -115,7 +115,7 @@ def test_seed002_fig12_all_sources_inside_phase_spread(
     assert lo <= published <= hi, (band, lo, hi)
 
 
-@pytest.mark.parametrize(("band", "published"), [("R", 60.52), ("A", 20.52)])
+@pytest.mark.parametrize(("band", "published"), [(b, FIG12[b]) for b in "RA"])
 def test_seed002_fig12_eccentricity_dominated_bands(
     spreads: dict[str, np.ndarray], band: str, published: float
 ) -> None:
@@ -135,14 +135,14 @@ def test_seed002_fig12_u_band_is_the_b_a0_line(spreads: dict[str, np.ndarray]) -
     expect = line / math.sqrt(2) / 25.4e-9 / math.sqrt(2.0)  # rms / sqrt(log2(4))
     assert exact["U"] == pytest.approx(expect, rel=1e-12)
     median = float(np.median(spread_all[:, 0]))
-    assert 0.8 * 0.46 < median < 0.46
+    assert 0.8 * FIG12["U"] < median < FIG12["U"]
 
 
 @pytest.mark.parametrize(
     ("factor", "lobes", "published"),
     [
-        ("waviness", "nZ-1 = 6 (n=1)", 3.41198),  # eq. 48
-        ("flaw", "-", 4.41198),  # eq. 49-50
+        ("waviness", "nZ-1 = 6 (n=1)", SEED002_ORDERS["I_6"]),  # eq. 48
+        ("flaw", "-", SEED002_ORDERS["inner_flaw"]),  # eq. 49-50
     ],
 )
 def test_seed002_inner_peaks(factor: str, lobes: str, published: float) -> None:
@@ -164,17 +164,19 @@ def test_seed002_outer_and_ball_peaks_eq51_to_59() -> None:
             if r["part"] == part and r["factor"] == factor and r["lobes"].startswith(lobes_start)
         ]
 
-    assert order("outer", "waviness", "nZ-1 = 6")[0] == pytest.approx(2.58802, abs=1e-5)
-    assert order("outer", "waviness", "nZ-1 = 13")[0] == pytest.approx(5.17603, abs=1e-5)
-    assert order("outer", "flaw")[0] == pytest.approx(2.58802, abs=1e-5)  # eq. 53-54
-    assert order("ball", "diameter error")[0] == pytest.approx(0.369716, abs=1e-6)  # eq. 55
+    o = SEED002_ORDERS
+    assert order("outer", "waviness", "nZ-1 = 6")[0] == pytest.approx(o["O_7"], abs=1e-5)
+    assert order("outer", "waviness", "nZ-1 = 13")[0] == pytest.approx(o["O_14"], abs=1e-5)
+    assert order("outer", "flaw")[0] == pytest.approx(o["O_7"], abs=1e-5)  # eq. 53-54
+    assert order("ball", "diameter error")[0] == pytest.approx(o["B_A0"], abs=1e-6)  # eq. 55
     b1 = order("ball", "waviness", "2n = 2")
-    assert sorted(b1) == pytest.approx([3.15316, 3.89259], abs=1e-5)  # eq. 56-57
-    assert order("ball", "flaw")[0] == pytest.approx(3.52287, abs=1e-5)  # eq. 58-59
+    assert sorted(b1) == pytest.approx([o["B_B1"], o["B_A1"]], abs=1e-5)  # eq. 56-57
+    assert order("ball", "flaw")[0] == pytest.approx(o["ball_flaw"], abs=1e-5)  # eq. 58-59
 
 
 def test_seed002_lines_sit_at_the_attributed_peaks() -> None:
     imp = _imperfections(np.random.default_rng(4))
     lines = lin.spectral_lines(lin.closed_form_terms(imp, RATES, ALPHA), 30.0, Z, True)
-    for published in (3.41198, 2.58802, 5.17603, 0.369716, 3.15316, 3.89259, 1.0, 2.0):
+    o = SEED002_ORDERS
+    for published in (o["I_6"], o["O_7"], o["O_14"], o["B_A0"], o["B_B1"], o["B_A1"], 1.0, 2.0):
         assert np.min(np.abs(lines.order - published)) < 1e-5, published

@@ -17,12 +17,25 @@ import numpy as np
 import pytest
 
 from runout import RollerBearing
+from runout.examples import nu209_bearing
 from runout.imperfections import Imperfections, single_harmonic
 from runout.models import roller_constraint as rc
+from runout.validation.seed004_yu import (
+    ELLIPSE_SEMI_MINORS,
+    EQ17_CLEARANCES,
+    FIGURE_RUNOUT_UM,
+    ellipse_gaps,
+    eq17_gap,
+)
 
 UM = 1e-6
-D_I, D_E, D_W, Z = 54.991e-3, 75.032e-3, 10e-3, 14
-NU209 = RollerBearing(Z, D_W, D_I, D_E)
+NU209 = nu209_bearing()  # Table 1
+D_I, D_E, D_W, Z = (
+    NU209.inner_raceway_diameter,
+    NU209.outer_raceway_diameter,
+    NU209.element_diameter,
+    NU209.elements,
+)
 ALPHA_540 = rc.rotation_angles(1.5, 2161)  # 540 deg at 0.25 deg steps
 
 
@@ -30,30 +43,18 @@ def _run(imp: Imperfections, bearing: RollerBearing = NU209) -> rc.Solution:
     return rc.solve(rc.geometry_from(bearing, imp), ALPHA_540)
 
 
-@pytest.mark.parametrize("clearance_mm", [0.031, 0.041, 0.050])
-def test_yu2017_eq17_circular_parts_three_clearances(clearance_mm: float) -> None:
-    d_i = D_E - 2 * D_W - clearance_mm * 1e-3
-    bearing = RollerBearing(Z, D_W, d_i, D_E)
-    alpha = rc.rotation_angles(1.0, 1441)
-    sol = rc.solve(rc.geometry_from(bearing, Imperfections.perfect(Z)), alpha)
-    ref = rc.analytic_circular(d_i, D_E, D_W, Z, alpha)
-    rel = np.max(np.abs(sol.centre[:, 1] - ref[:, 1]) / np.abs(ref[:, 1]))
+@pytest.mark.parametrize("clearance", EQ17_CLEARANCES, ids=lambda c: f"{c * 1e3:g}mm")
+def test_yu2017_eq17_circular_parts_three_clearances(clearance: float) -> None:
+    # our centre against eq. 17 (rc.analytic_circular), perfect parts, P_d changed
+    rel = eq17_gap(clearance)
     assert rel < 1e-10  # the paper: 0.097 %
 
 
-@pytest.mark.parametrize("semi_minor_mm", [27.4905, 27.492, 27.4935])
-def test_yu2017_eq18_21_elliptic_inner_raceway(semi_minor_mm: float) -> None:
-    a, b = 27.4955e-3, semi_minor_mm * 1e-3
-    mean, harm = rc.ellipse_harmonics(a, b)
-    bearing = RollerBearing(Z, D_W, 2 * a, D_E)  # cage ratio as eq. 3 with d_i = 2a
-    geo = rc.geometry_from(bearing, Imperfections.perfect(Z)).replace(inner_radius=mean, inner=harm)
-    alpha = rc.rotation_angles(1.0, 97)
-    ours = rc.solve(geo, alpha).centre
-    exact = np.array([rc.ellipse_position_exact(a, b, D_E, D_W, Z, x) for x in alpha])
-    paper = np.array([rc.ellipse_position_paper(a, b, D_E, D_W, Z, x) for x in alpha])
-    scale = np.abs(exact[:, 1])
-    ours_rel = np.max(np.linalg.norm(ours - exact, axis=1) / scale)
-    paper_rel = np.max(np.linalg.norm(paper - exact, axis=1) / scale)
+@pytest.mark.parametrize("semi_minor", ELLIPSE_SEMI_MINORS, ids=lambda b: f"{b * 1e3:g}mm")
+def test_yu2017_eq18_21_elliptic_inner_raceway(semi_minor: float) -> None:
+    # ours and eq. 18-21 against the exact closest distance (rc.ellipse_position_exact); the
+    # bearing's cage ratio as eq. 3 with d_i = 2a
+    ours_rel, paper_rel = ellipse_gaps(semi_minor)
     assert ours_rel < 1e-9  # the paper: 0.15 % against its own eq. 18-21
     # eq. 18-21 measure the ellipse along the line of centres: a second-order error
     assert 1e-9 < paper_rel < 1e-3
@@ -61,14 +62,14 @@ def test_yu2017_eq18_21_elliptic_inner_raceway(semi_minor_mm: float) -> None:
 
 def test_yu2017_fig9_inner_order10() -> None:
     sol = _run(Imperfections.perfect(Z).add("inner", single_harmonic(10, 1 * UM)))
-    assert sol.runout == pytest.approx(2.14 * UM, rel=0.03)
+    assert sol.runout == pytest.approx(FIGURE_RUNOUT_UM["Fig. 9"] * UM, rel=0.03)
     assert sol.radial.max() == pytest.approx(0.0217e-3, rel=0.03)
     assert sol.radial.min() == pytest.approx(0.01956e-3, rel=0.03)
 
 
 def test_yu2017_fig10_outer_order12() -> None:
     sol = _run(Imperfections.perfect(Z).add("outer", single_harmonic(12, 1 * UM)))
-    assert sol.runout == pytest.approx(1.44 * UM, rel=0.03)
+    assert sol.runout == pytest.approx(FIGURE_RUNOUT_UM["Fig. 10"] * UM, rel=0.03)
     # the text prints max and min the other way round: 0.02013 / 0.02157 mm
     assert sol.radial.max() == pytest.approx(0.02157e-3, rel=0.03)
     assert sol.radial.min() == pytest.approx(0.02013e-3, rel=0.03)
@@ -77,7 +78,7 @@ def test_yu2017_fig10_outer_order12() -> None:
 def test_yu2017_fig11_all_rollers_order8() -> None:
     imp = Imperfections.perfect(Z).add("roller", single_harmonic(8, 0.5 * UM))
     sol = _run(imp.element_phases_from_fixed_frame())  # eq. 7: alike in the fixed frame
-    assert sol.runout == pytest.approx(1.98 * UM, rel=0.03)
+    assert sol.runout == pytest.approx(FIGURE_RUNOUT_UM["Fig. 11"] * UM, rel=0.03)
     assert sol.radial.max() == pytest.approx(0.02153e-3, rel=0.03)
     assert sol.radial.min() == pytest.approx(0.01956e-3, rel=0.03)
     # alike in the cage frame instead (every roller shows the lobe's peak at its outer
@@ -98,7 +99,7 @@ def test_yu2017_fig12_combined_is_not_reachable_with_the_stated_amplitudes() -> 
         _run(Imperfections.perfect(Z).add(p, h).element_phases_from_fixed_frame()).runout
         for p, h in parts
     )
-    assert bound < 5.186 * UM
+    assert bound < FIGURE_RUNOUT_UM["Fig. 12"] * UM
     # and the size-error convention does not explain the gap (all four readings within 5 %)
     values = []
     for dd in (1 * UM, -1 * UM, 2 * UM, -2 * UM):  # diameter or radius error, either sign
@@ -108,4 +109,4 @@ def test_yu2017_fig12_combined_is_not_reachable_with_the_stated_amplitudes() -> 
         imp = imp.element_phases_from_fixed_frame()
         values.append(_run(imp, RollerBearing(Z, D_W, D_I + dd, D_E + dd)).runout)
     assert np.ptp(values) < 0.05 * np.mean(values)
-    assert max(values) < 0.7 * 5.186 * UM
+    assert max(values) < 0.7 * FIGURE_RUNOUT_UM["Fig. 12"] * UM

@@ -3,22 +3,19 @@
 from __future__ import annotations
 
 import itertools
-from pathlib import Path
 
 import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from runout import examples
 from runout.arrangement import line_amplitudes, optimise_arrangement, verify
-from runout.case import load_case
-
-KIM = Path(__file__).resolve().parents[2] / "examples" / "seed001_kim_spindle.toml"
 
 
 @pytest.mark.parametrize("balls", [(1, 2), (1, 4), (1, 2, 3), (1, 3, 5, 7), (1, 2, 4, 5, 8)])
 def test_linear_fc_law_matches_nonlinear_model_on_kim_tables(balls: tuple[int, ...]) -> None:
-    case = load_case(KIM)
+    case = examples.kim().case()
     d = np.zeros(10)
     d[[b - 1 for b in balls]] = 0.1e-6
     linear = line_amplitudes(d).fc
@@ -27,7 +24,7 @@ def test_linear_fc_law_matches_nonlinear_model_on_kim_tables(balls: tuple[int, .
 
 
 def test_form_lines_match_nonlinear_model() -> None:
-    case = load_case(KIM)
+    case = examples.kim().case()
     rng = np.random.default_rng(4)
     form = (10e-9 * rng.random((10, 1))) * np.exp(2j * np.pi * rng.random((10, 1)))
     d = rng.normal(0.0, 0.05e-6, 10)
@@ -77,7 +74,7 @@ def test_local_search_reaches_the_exact_optimum_on_small_lots() -> None:
 
 
 def test_large_lot_improvement_and_nonlinear_check() -> None:
-    case = load_case(KIM)
+    case = examples.kim().case()
     rng = np.random.default_rng(3)
     lot = rng.normal(0.0, 0.1e-6, 40)
     form = rng.normal(0, 20e-9, (40, 1)) * np.exp(2j * np.pi * rng.random((40, 1)))

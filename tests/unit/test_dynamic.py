@@ -315,10 +315,10 @@ def test_unbalance_phase_is_relative_to_the_reported_time_origin() -> None:
     case = make_case(axial=20.0, dynamics={"unbalance": 1e-7})
     s = dy.setup(case)
     result = dy.run(case)
-    transient = result.extras["transient_s"]
+    transient = result.details.transient_s
     assert transient > 0.0 and result.time[0] == 0.0
     om = s.unbalance_omega
-    q0 = np.array([*result.extras["static_displacement_m"], 0.0])
+    q0 = np.array([*result.details.static_displacement_m, 0.0])
     dyn_matrix = dy.contact_stiffness(s, 0.0, q0) + (
         -s.mass * om**2 + 1j * s.damping * om
     ) * np.eye(2)

@@ -12,8 +12,11 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from runout.case import Case, parse_case
+from runout.api import Imperfections as Builder
+from runout.bearing import Operation
+from runout.case import Case
 from runout.errors import CaseError
+from runout.examples import tada_bearing
 from runout.imperfections import Harmonics, Imperfections
 from runout.limits import BYTES_QUASI_STATIC, estimate_run
 from runout.models import quasi_static_2d as qs2
@@ -163,36 +166,18 @@ def test_recurrence_stays_within_round_off_of_direct_evaluation(
 # the fused solves against the kernels on precomputed arrays
 # --------------------------------------------------------------------------------------------
 def _tada(samples: int = 512, radial: float = 0.0, **analysis: Any) -> Case:
-    return parse_case(
-        {
-            "bearing": {
-                "type": "ball",
-                "elements": 8,
-                "element_diameter": 1e-3,
-                "pitch_diameter": 7e-3,
-                "inner_conformity": 0.52,
-                "outer_conformity": 0.53,
-                "radial_clearance": 10e-6,
-            },
-            "operation": {
-                "rotating_ring": "outer",
-                "speed": 90.0,
-                "axial_load": 20.0,
-                "radial_load": radial,
-            },
-            "waviness": [
-                {"part": "inner", "order": 7, "amplitude": 1e-8},
-                {"part": "outer", "order": 9, "amplitude": 1e-8, "phase": 1.0},
-                {"part": "ball", "element": 3, "order": 4, "amplitude": 5e-9},
-            ],
-            "elements": {"pitch_errors": [0, 1e-3, 0, 0, 0, 0, -2e-3, 0]},
-            "analysis": {
-                "model": "quasi_static_3d",
-                "revolutions": 10,
-                "samples": samples,
-                **analysis,
-            },
-        }
+    waves = (
+        Builder(elements=8)
+        .waviness("inner", 7, amplitude=1e-8)
+        .waviness("outer", 9, amplitude=1e-8, phase=1.0)
+        .waviness("ball", 4, amplitude=5e-9, element=3)
+        .pitch_errors([0, 1e-3, 0, 0, 0, 0, -2e-3, 0])
+    )
+    return Case.from_inputs(
+        tada_bearing(radial_clearance=10e-6),
+        Operation(rotating_ring="outer", speed=90.0, axial_load=20.0, radial_load=radial),
+        waves,
+        analysis={"model": "quasi_static_3d", "revolutions": 10, "samples": samples, **analysis},
     )
 
 

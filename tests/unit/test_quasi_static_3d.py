@@ -100,7 +100,7 @@ def test_kernel_matches_numpy_reference(
 def test_radial_load_unloads_balls_and_is_reported() -> None:
     case = _case([], axial=10.0, radial=12.0, samples=64)
     result = qs3.run(case)
-    assert result.extras["unloaded_balls_max"] > 0
+    assert result.details.unloaded_balls_max > 0
     assert "lost contact" in result.notes[0]
     disp = result.displacement - np.array(
         [[0.0], [0.0], [qs3.axial_position(case, qs3.setup(case))]]
@@ -135,7 +135,7 @@ def test_perfect_bearing_does_not_move() -> None:
     assert z0 == pytest.approx((0.05e-3 + st.preload) * math.sin(st.contact_angle), rel=1e-12)
     moved = result.displacement - np.array([[0.0], [0.0], [z0]])
     assert np.abs(moved).max() <= 1e-9 * st.preload
-    assert result.extras["unloaded_balls_max"] == 0
+    assert result.details.unloaded_balls_max == 0
 
 
 def test_ring_that_cannot_be_held_raises_with_instant() -> None:

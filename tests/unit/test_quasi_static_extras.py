@@ -167,7 +167,7 @@ def kim(
 
 def test_kim_case_has_no_rro_when_split_by_lines() -> None:
     result = qs2.run(kim())
-    assert result.extras["explained_fraction"] > 1 - 1e-9
+    assert result.details.explained_fraction > 1 - 1e-9
     assert result.runout.rro_pp_m < 1e-6 * result.runout.nrro_pp_m
     # the NRRO is the whole f_c circle
     assert result.runout.nrro_pp_m == pytest.approx(result.runout.radial_pp_m, rel=1e-6)
@@ -192,7 +192,7 @@ def test_eccentric_inner_ring_is_rro(model: str) -> None:
     else:
         case = tada(wav, rotating="inner", revs=8, samples=1024)
         result = qs3.run(case)
-    assert result.extras["explained_fraction"] > 1 - 1e-9
+    assert result.details.explained_fraction > 1 - 1e-9
     # a raceway eccentricity e moves the centre on a circle of radius e (cos α in 3-D eq. 2
     # and in the projection of x, y on the contact normal cancel)
     assert result.runout.rro_pp_m == pytest.approx(2 * e, rel=1e-3)

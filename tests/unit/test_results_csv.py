@@ -10,8 +10,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
 
-from runout import results
-from runout.results import write_columns
+from runout import result_files
+from runout.result_files import write_columns
 
 
 def _reference(path: Path, header: list[str], columns: list[np.ndarray]) -> None:
@@ -38,7 +38,7 @@ def test_same_bytes_as_csv_writer(tmp_path_factory, data: np.ndarray) -> None:
 
 
 def test_chunks_and_special_values(tmp_path: Path, monkeypatch) -> None:
-    monkeypatch.setattr(results, "_CSV_CHUNK", 7)  # several chunks, a partial last one
+    monkeypatch.setattr(result_files, "_CSV_CHUNK", 7)  # several chunks, a partial last one
     rng = np.random.default_rng(1)
     cols = [np.arange(50) * 1e-5, rng.normal(size=50) * 1e-8, np.zeros(50), -np.zeros(50)]
     cols[1][3] = np.inf

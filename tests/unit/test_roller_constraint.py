@@ -330,7 +330,7 @@ def test_run_case_gives_a_complete_result_and_files(tmp_path, ring: str) -> None
         assert any(c.repeatable and c.sources[0].term == "k f_i" for c in result.components)
     else:
         assert result.runout.rro_pp_m == 0.0
-    assert result.extras["horizontal_pp_m"] > 0
+    assert result.details.horizontal_pp_m > 0
     assert result.time[-1] == pytest.approx(2.0)  # 2 revolutions at 1 rev/s
     json.dumps(result.to_json(), allow_nan=False)
     written = {p.name for p in result.write(tmp_path / "out")}
@@ -348,7 +348,7 @@ def test_summary_shows_the_motion_across_the_load() -> None:
 
     result = run_model(load_case(Path(__file__).parents[2] / "examples" / "seed004_nu209.toml"))
     rows = {name: (value, unit) for name, value, unit in result.summary_sections()[0][1]}
-    across = result.extras["horizontal_pp_m"]
+    across = result.details.horizontal_pp_m
     value, unit = rows["radial p-p across the load"]  # shown at the table's scale (um here)
     assert float(value) == pytest.approx(across * dict(LENGTH_UNITS)[unit], rel=1e-3)
     assert across > result.runout.radial_pp_m

@@ -8,7 +8,7 @@ import warnings
 import numpy as np
 import pytest
 
-from runout import spectrum as sp
+from runout import _line_kernels as line_kernels
 from runout.spectrum import (
     ANDERON_BANDS,
     ISO15242_BANDS,
@@ -284,17 +284,19 @@ def test_uniform_and_general_paths_agree_and_kernels_match_numpy() -> None:
     tau = np.arange(n) * dt
     omega = TWO_PI * rng.uniform(1.0, 490.0, 37)
     x = rng.normal(size=(2, n))
-    c_k, s_k = sp._project_uniform_kernel(x, dt, omega)
-    c_n, s_n = sp._project_numpy(x, tau, omega)
+    c_k, s_k = line_kernels._project_uniform_kernel(x, dt, omega)
+    c_n, s_n = line_kernels._project_numpy(x, tau, omega)
     np.testing.assert_allclose(c_k, c_n, atol=1e-9)
     np.testing.assert_allclose(s_k, s_n, atol=1e-9)
     a, b, c0 = rng.normal(size=(2, 37)), rng.normal(size=(2, 37)), rng.normal(size=2)
-    y_k = sp._synthesize_uniform_kernel(c0, a, b, dt, omega, n)
-    np.testing.assert_allclose(y_k, sp._synthesize_numpy(c0, a, b, tau, omega), atol=1e-10)
+    y_k = line_kernels._synthesize_uniform_kernel(c0, a, b, dt, omega, n)
+    np.testing.assert_allclose(
+        y_k, line_kernels._synthesize_numpy(c0, a, b, tau, omega), atol=1e-10
+    )
     for constant in (True, False):
         np.testing.assert_allclose(
-            sp._gram_uniform(n, dt, omega, constant),
-            sp._gram_numpy(tau, omega, constant),
+            line_kernels._gram_uniform(n, dt, omega, constant),
+            line_kernels._gram_numpy(tau, omega, constant),
             atol=1e-8,
         )
 

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import copy
 import json
 import math
 import os
@@ -20,10 +19,12 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from cases import KIM_BEARING, KIM_OPERATION, KIM_TOML
+from cases import KIM_TOML, kim_case
+from runout import _study_chunks as chunks_mod
+from runout import _study_files as files_mod
 from runout import study as st_mod
 from runout._study_kernels import project_rows, solve_batch, solve_batch_reference
-from runout.case import Case, parse_case
+from runout.case import Case
 from runout.errors import CaseError
 from runout.models import quasi_static_2d as qs2
 from runout.models.dynamic import exact_number, point_name
@@ -43,18 +44,9 @@ from runout.study import (
     write_atomic,
 )
 
-KIM = {
-    "bearing": dict(KIM_BEARING),
-    "operation": dict(KIM_OPERATION),
-    "analysis": {"model": "quasi_static_2d", "revolutions": 4, "samples": 256},
-}
-
 
 def kim(study: dict[str, Any], **extra: Any) -> Case:
-    data = copy.deepcopy(KIM)
-    data.update(extra)
-    data["study"] = study
-    return parse_case(data, "kim.toml")
+    return kim_case(study=study, **extra)
 
 
 def mc(samples: int = 12, seed: int = 5, **vary: Any) -> Case:
@@ -91,7 +83,7 @@ def test_sample_rng_is_the_spawned_child() -> None:
 # ------------------------------------------------------------------ kernels
 def test_batched_kernel_matches_numpy_reference_and_model() -> None:
     case = mc()
-    base = parse_case({**KIM, "elements": {"diameter_errors": [0.0] * 10}}, "k.toml")
+    base = kim_case(diameter_errors=[0.0] * 10)
     st_ = qs2.setup(base)
     t = np.arange(64) * (4 / 120.0) / 64
     c, theta = qs2.approaches(base, st_, t)
@@ -102,9 +94,7 @@ def test_batched_kernel_matches_numpy_reference_and_model() -> None:
     np.testing.assert_allclose(q, ref, rtol=0, atol=1e-9 * st_.initial_approach)
     # and the per-bearing public solver of the model, bearing by bearing
     for m in range(3):
-        variant = parse_case(
-            {**KIM, "elements": {"diameter_errors": list(2.0 * offsets[m])}}, "k.toml"
-        )
+        variant = kim_case(diameter_errors=2.0 * offsets[m])
         disp, _ = qs2.solve(variant, t)
         np.testing.assert_allclose(q[m].T, disp[:2], rtol=0, atol=1e-9 * st_.initial_approach)
     serial = solve_batch(c, offsets, theta, st_.stiffness, st_.initial_approach, parallel=False)
@@ -117,18 +107,18 @@ def test_project_rows_is_the_least_squares_fit() -> None:
     t = np.arange(300) * 1e-3
     freqs = np.array([7.3, 41.0, 112.5])
     x = rng.normal(size=(5, 300))
-    coef = project_rows(x, st_mod._line_projector(t, freqs))
+    coef = project_rows(x, chunks_mod._line_projector(t, freqs))
     fit = extract_lines(t, x, freqs, axis=-1)
     np.testing.assert_allclose(np.hypot(coef[:, 1:4], coef[:, 4:]), fit.amplitude, rtol=1e-9)
     # fixed summation order: one row alone gives the same bits as inside a batch
-    alone = project_rows(x[2:3], st_mod._line_projector(t, freqs))
+    alone = project_rows(x[2:3], chunks_mod._line_projector(t, freqs))
     np.testing.assert_array_equal(alone[0], coef[2])
 
 
 def test_batched_path_equals_per_bearing_model_runs(monkeypatch: pytest.MonkeyPatch) -> None:
     case = mc(samples=4)
     fast = run_study(case)
-    monkeypatch.setattr(st_mod, "_batched", lambda task: False)
+    monkeypatch.setattr(chunks_mod, "_batched", lambda task: False)
     slow = run_study(case)
     for k in st_mod.RUNOUT_KEYS:
         np.testing.assert_allclose(fast.runout[k], slow.runout[k], rtol=1e-7, atol=1e-15)
@@ -139,15 +129,16 @@ def test_batched_path_equals_per_bearing_model_runs(monkeypatch: pytest.MonkeyPa
 
 def test_radial_load_is_not_dropped_by_the_batched_path() -> None:
     # The batched kernel has no external force; a loaded 2-D case must take the model's path.
-    loaded = copy.deepcopy(KIM)
-    loaded["operation"]["radial_load"] = "5 N"
-    loaded["study"] = {
-        "kind": "montecarlo",
-        "samples": 2,
-        "seed": 5,
-        "vary": {"element_diameter_sigma": "0.1 um"},
-    }
-    with_load = run_study(parse_case(loaded, "kim.toml"))
+    loaded = kim_case(
+        radial_load=5.0,
+        study={
+            "kind": "montecarlo",
+            "samples": 2,
+            "seed": 5,
+            "vary": {"element_diameter_sigma": "0.1 um"},
+        },
+    )
+    with_load = run_study(loaded)
     without = run_study(mc(samples=2))
     # Same ball sizes, but the load stiffens the loaded side: the runout changes (by ~4e-5
     # here), far beyond the solver's 1e-12 agreement between identical runs.
@@ -205,7 +196,7 @@ def test_sweep_grid_over_quantities_and_models() -> None:
             "models": ["quasi_static_2d", "quasi_static_3d"],
             "vary": {"operation.axial_load": {"start": "30 N", "stop": "90 N", "num": 3}},
         },
-        elements={"diameter_errors": ["0.1 um", 0, 0, 0, 0, 0, 0, 0, 0, 0]},
+        diameter_errors=["0.1 um", 0, 0, 0, 0, 0, 0, 0, 0, 0],
     )
     res = run_study(case)
     assert res.samples == 6 and not res.errors
@@ -319,15 +310,15 @@ def test_resume_refuses_a_different_study(tmp_path: Any) -> None:
 
 
 def chunked(samples: int = 4, seed: int = 5, chunk: int = 2) -> Case:
-    data = copy.deepcopy(KIM)
-    data["study"] = {
-        "kind": "montecarlo",
-        "samples": samples,
-        "seed": seed,
-        "chunk_size": chunk,
-        "vary": {"element_diameter_sigma": "0.1 um"},
-    }
-    return parse_case(data, "kim.toml")
+    return kim(
+        {
+            "kind": "montecarlo",
+            "samples": samples,
+            "seed": seed,
+            "chunk_size": chunk,
+            "vary": {"element_diameter_sigma": "0.1 um"},
+        }
+    )
 
 
 # ------------------------------------------------------------------ atomic files
@@ -363,7 +354,7 @@ def test_write_atomic_names_are_unique(tmp_path: Path, monkeypatch: pytest.Monke
     for _ in range(5):
         write_atomic(tmp_path / "m.json", lambda fh: fh.write("x"))
     assert len(set(seen)) == 5
-    assert all(st_mod._TEMP.match(name) and name.startswith(".m.json.") for name in seen)
+    assert all(files_mod._TEMP.match(name) and name.startswith(".m.json.") for name in seen)
 
 
 def test_write_atomic_failure_is_an_output_error_naming_the_file(tmp_path: Path) -> None:
@@ -437,7 +428,7 @@ def test_run_study_holds_the_lock_while_it_writes(tmp_path: Path) -> None:
 def test_manifest_checks(tmp_path: Path) -> None:
     run_study(chunked(), out=tmp_path, plots=False)
     good = json.loads((tmp_path / "manifest.json").read_text())
-    assert st_mod._manifest_problem(good) is None
+    assert files_mod._manifest_problem(good) is None
     bad = {
         "format": "other/1",
         "digest": 5,
@@ -449,10 +440,10 @@ def test_manifest_checks(tmp_path: Path) -> None:
         "complete": "yes",
     }
     for key, value in bad.items():
-        assert st_mod._manifest_problem({**good, key: value}) is not None, key
+        assert files_mod._manifest_problem({**good, key: value}) is not None, key
     (tmp_path / "manifest.json").write_bytes(b"\xff\xfe")
     with pytest.raises(StudyError, match=r"manifest\.json: corrupted study manifest"):
-        st_mod._read_manifest(tmp_path / "manifest.json")
+        files_mod._read_manifest(tmp_path / "manifest.json")
 
 
 def test_chunks_carry_the_digest_and_are_checked(tmp_path: Path) -> None:
@@ -462,11 +453,11 @@ def test_chunks_carry_the_digest_and_are_checked(tmp_path: Path) -> None:
     chunk = json.loads((tmp_path / "chunks" / "chunk_00001.json").read_text())
     assert chunk["digest"] == plan.digest
     task = plan.tasks[1]
-    assert st_mod._chunk_problem(chunk, task, plan.digest) is None
-    assert st_mod._chunk_problem(chunk, plan.tasks[0], plan.digest) == "chunk is 1, expected 0"
-    assert st_mod._chunk_problem(chunk, task, "0" * 64) == "written by another study"
+    assert files_mod._chunk_problem(chunk, task, plan.digest) is None
+    assert files_mod._chunk_problem(chunk, plan.tasks[0], plan.digest) == "chunk is 1, expected 0"
+    assert files_mod._chunk_problem(chunk, task, "0" * 64) == "written by another study"
     no_digest = {k: v for k, v in chunk.items() if k != "digest"}
-    assert st_mod._chunk_problem(no_digest, task, plan.digest) == "no study digest"
+    assert files_mod._chunk_problem(no_digest, task, plan.digest) == "no study digest"
     damaged = [
         ("model", ["quasi_static_2d"]),
         ("values", {}),
@@ -475,7 +466,7 @@ def test_chunks_carry_the_digest_and_are_checked(tmp_path: Path) -> None:
         ("errors", {"7": "outside the chunk"}),
     ]
     for key, value in damaged:
-        assert st_mod._chunk_problem({**chunk, key: value}, task, plan.digest), key
+        assert files_mod._chunk_problem({**chunk, key: value}, task, plan.digest), key
     # load_study reads the directory back, and says which file is not this study's
     assert load_study(tmp_path, case).samples == 4
     (tmp_path / "chunks" / "chunk_00001.json").write_text("[]")
@@ -518,7 +509,7 @@ def test_failed_samples_are_listed_bounded(monkeypatch: pytest.MonkeyPatch) -> N
         raise ZeroDivisionError("no")
 
     monkeypatch.setattr(runout.models, "run_model", fail)
-    monkeypatch.setattr(st_mod, "_batched", lambda task: False)
+    monkeypatch.setattr(chunks_mod, "_batched", lambda task: False)
     res = run_study(chunked(samples=25, chunk=10))
     assert len(res.errors) == 25
     listed = res.summary()["errors"]
@@ -533,7 +524,7 @@ def test_batched_failure_falls_back_to_per_bearing_records(
     def broken(*args: Any) -> None:
         raise MemoryError("batch too large")
 
-    monkeypatch.setattr(st_mod, "_evaluate_batched", broken)
+    monkeypatch.setattr(chunks_mod, "_evaluate_batched", broken)
     res = run_study(chunked(samples=3))
     assert not res.errors and all(math.isfinite(v) for v in res.runout["radial_pp_m"])
 

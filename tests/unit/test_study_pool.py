@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import copy
 import dataclasses
 import math
 from typing import Any
@@ -12,32 +11,28 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from cases import KIM_BEARING, KIM_OPERATION
+from cases import kim_case
+from runout import _study_chunks as chunks_mod
 from runout import _study_pool as pool_mod
+from runout import _study_result as result_mod
 from runout import study as st_mod
 from runout._study_kernels import _contacts, solve_batch, solve_batch_reference
-from runout.case import Case, parse_case
+from runout.case import Case
 from runout.decompose import RESIDUAL_REL
 from runout.models import quasi_static_2d as qs2
 from runout.study import run_study
 
-KIM: dict[str, Any] = {
-    "bearing": dict(KIM_BEARING),
-    "operation": dict(KIM_OPERATION),
-    "analysis": {"model": "quasi_static_2d", "revolutions": 4, "samples": 256},
-}
-
 
 def mc(samples: int, seed: int = 7, chunk: int = 250) -> Case:
-    data = copy.deepcopy(KIM)
-    data["study"] = {
-        "kind": "montecarlo",
-        "samples": samples,
-        "seed": seed,
-        "chunk_size": chunk,
-        "vary": {"element_diameter_sigma": "0.1 um"},
-    }
-    return parse_case(data, "kim.toml")
+    return kim_case(
+        study={
+            "kind": "montecarlo",
+            "samples": samples,
+            "seed": seed,
+            "chunk_size": chunk,
+            "vary": {"element_diameter_sigma": "0.1 um"},
+        }
+    )
 
 
 def chunks_equal(a: st_mod.StudyResult, b: st_mod.StudyResult) -> None:
@@ -53,7 +48,7 @@ def chunks_equal(a: st_mod.StudyResult, b: st_mod.StudyResult) -> None:
 
 # ------------------------------------------------------------------ fused kernel
 def _shared(case: Case) -> tuple[Any, np.ndarray, np.ndarray]:
-    base = parse_case({**KIM, "elements": {"diameter_errors": [0.0] * 10}}, "k.toml")
+    base = kim_case(diameter_errors=[0.0] * 10)
     setup = qs2.setup(base)
     t = np.arange(48) * (4 / 120.0) / 48
     c, theta = qs2.approaches(base, setup, t)
@@ -104,9 +99,9 @@ def test_fused_kernel_still_matches_the_reference_newton() -> None:
 # ------------------------------------------------------------------ arrays shipped to workers
 def test_chunks_with_shipped_arrays_equal_chunks_that_set_up_the_case() -> None:
     plan = st_mod._plan(mc(30, chunk=8), None)
-    shipped = st_mod._with_batch(plan.tasks)
+    shipped = chunks_mod._with_batch(plan.tasks)
     assert all(t.batch is not None for t in shipped)
-    st_mod._BASES.clear()  # the worker's own set-up, from the case document
+    chunks_mod._BASES.clear()  # the worker's own set-up, from the case document
     for bare, task in zip(plan.tasks, shipped, strict=True):
         assert bare.batch is None
         assert st_mod.evaluate_chunk(bare) == st_mod.evaluate_chunk(task)
@@ -129,16 +124,16 @@ def test_a_case_whose_set_up_fails_is_left_to_the_workers(
         raise MemoryError("no room")
 
     plan = st_mod._plan(mc(4, chunk=2), None)
-    monkeypatch.setattr(st_mod, "_batch_base", broken)
-    assert st_mod._with_batch(plan.tasks) == plan.tasks  # the per-bearing path records it
+    monkeypatch.setattr(chunks_mod, "_batch_base", broken)
+    assert chunks_mod._with_batch(plan.tasks) == plan.tasks  # the per-bearing path records it
 
 
 # ------------------------------------------------------------------ column-wise chunk fill
 def _per_row_reference(
     task: st_mod.ChunkTask, b: pool_mod.BatchArrays, rows: pool_mod.RowResults
 ) -> dict[str, Any]:
-    """The chunk as the former row-by-row loop built it (st_mod._add_lines per bearing)."""
-    chunk = st_mod._empty_chunk(task)
+    """The chunk as the former row-by-row loop built it (chunks_mod._add_lines per bearing)."""
+    chunk = chunks_mod._empty_chunk(task)
     for row in range(task.stop - task.start):
         if rows.status[row] != 0:
             chunk["errors"][str(task.start + row)] = "failed"
@@ -148,7 +143,7 @@ def _per_row_reference(
         figures = (rows.radial[row], 0.0, rows.rro[row], rows.nrro[row])
         for k, v in zip(st_mod.RUNOUT_KEYS, figures, strict=True):
             chunk["runout"][k].append(float(v))
-        st_mod._add_lines(
+        chunks_mod._add_lines(
             chunk,
             row,
             (
@@ -164,7 +159,7 @@ def _per_row_reference(
 def test_column_fill_equals_the_row_by_row_records(
     monkeypatch: pytest.MonkeyPatch, failed: tuple[int, ...]
 ) -> None:
-    task = st_mod._with_batch(st_mod._plan(mc(5, chunk=5), None).tasks)[0]
+    task = chunks_mod._with_batch(st_mod._plan(mc(5, chunk=5), None).tasks)[0]
     b = task.batch
     assert b is not None
     # two lines whose labels differ only by element numbers: one entry, the larger p-p
@@ -186,7 +181,7 @@ def test_column_fill_equals_the_row_by_row_records(
         seen.append(dataclasses.replace(rows, status=status, instant=instant))
         return seen[-1]
 
-    monkeypatch.setattr(st_mod, "evaluate_rows", failing)
+    monkeypatch.setattr(chunks_mod, "evaluate_rows", failing)
     chunk = st_mod.evaluate_chunk(task)
     ref = _per_row_reference(task, b, seen[0])
     assert chunk["runout"] == ref["runout"]
@@ -285,13 +280,13 @@ def test_csv_cells_column_by_column_are_the_cells(values: list[float]) -> None:
         np.array([*values, "inner", 3], dtype=object),
     ]
     for col in columns:
-        assert st_mod._cells(col) == [st_mod._cell(v) for v in col]
+        assert result_mod._cells(col) == [result_mod._cell(v) for v in col]
 
 
 def test_in_process_chunks_run_on_threads_only_when_batched_and_several() -> None:
     import numba
 
-    many = st_mod._with_batch(st_mod._plan(mc(30, chunk=8), None).tasks)
-    assert st_mod._threads(many) == min(4, numba.config.NUMBA_NUM_THREADS)
-    assert st_mod._threads(many[:1]) == 1  # one chunk: the kernel's own threads
-    assert st_mod._threads(st_mod._plan(mc(30, chunk=8), None).tasks) == 1  # no arrays
+    many = chunks_mod._with_batch(st_mod._plan(mc(30, chunk=8), None).tasks)
+    assert chunks_mod._threads(many) == min(4, numba.config.NUMBA_NUM_THREADS)
+    assert chunks_mod._threads(many[:1]) == 1  # one chunk: the kernel's own threads
+    assert chunks_mod._threads(st_mod._plan(mc(30, chunk=8), None).tasks) == 1  # no arrays

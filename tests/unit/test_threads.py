@@ -6,19 +6,16 @@ from __future__ import annotations
 
 import threading
 from concurrent.futures import ThreadPoolExecutor
-from pathlib import Path
 from typing import Any
 
 import numpy as np
 import pytest
 
-from runout import _threads, loading, spectrum
-from runout.case import load_case
+from runout import _line_kernels as line_kernels
+from runout import _threads, examples, loading
 from runout.models import _quasi_static as qsm
 from runout.models import quasi_static_2d as qs2
 from runout.models import quasi_static_3d as qs3
-
-EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
 def _in_worker(fn: Any) -> Any:
@@ -53,21 +50,21 @@ def test_spans_run_on_two_threads_only_from_the_main_thread() -> None:
 
 def test_projection_and_synthesis_halves_are_identical_to_the_bit() -> None:
     rng = np.random.default_rng(3)
-    n = spectrum._PARALLEL_MIN * 2 + 77  # two halves, the last block short
+    n = line_kernels._PARALLEL_MIN * 2 + 77  # two halves, the last block short
     x = np.ascontiguousarray(rng.normal(size=(2, n)))
     dt = 1e-4
     omega = 2 * np.pi * rng.uniform(1.0, 4000.0, 9)
-    c2, s2 = spectrum._project_uniform_kernel(x, dt, omega)
-    c1, s1 = _in_worker(lambda: spectrum._project_uniform_kernel(x, dt, omega))
+    c2, s2 = line_kernels._project_uniform_kernel(x, dt, omega)
+    c1, s1 = _in_worker(lambda: line_kernels._project_uniform_kernel(x, dt, omega))
     assert np.array_equal(c1, c2) and np.array_equal(s1, s2)
     a, b = rng.normal(size=(2, 9)), rng.normal(size=(2, 9))
     const = np.array([0.1, -0.2])
-    y2 = spectrum._synthesize_uniform_kernel(const, a, b, dt, omega, n)
-    y1 = _in_worker(lambda: spectrum._synthesize_uniform_kernel(const, a, b, dt, omega, n))
+    y2 = line_kernels._synthesize_uniform_kernel(const, a, b, dt, omega, n)
+    y1 = _in_worker(lambda: line_kernels._synthesize_uniform_kernel(const, a, b, dt, omega, n))
     assert np.array_equal(y1, y2)
     # and both still match the NumPy references
     tau = np.arange(n) * dt
-    c_ref, _ = spectrum._project_numpy(x, tau, omega)
+    c_ref, _ = line_kernels._project_numpy(x, tau, omega)
     np.testing.assert_allclose(c2, c_ref, rtol=1e-9, atol=1e-9 * np.abs(c_ref).max())
 
 
@@ -75,7 +72,7 @@ def test_projection_and_synthesis_halves_are_identical_to_the_bit() -> None:
 def test_a_long_solve_in_halves_agrees_with_one_pass(
     monkeypatch: pytest.MonkeyPatch, module: Any
 ) -> None:
-    case = load_case(EXAMPLES / "seed000_tada_fig7.toml")
+    case = examples.tada().case()
     st = module.setup(case)
     t = qsm.time_grid(case.operation.speed, 20.0, qsm.SPLIT_MIN + 1000)
     halves, _ = module.solve(case, t, st)
@@ -103,12 +100,12 @@ def test_a_failure_in_the_second_half_names_its_instant_in_the_record() -> None:
 
 
 def test_the_axial_load_solution_is_reused_and_errors_are_not_kept() -> None:
-    case = load_case(EXAMPLES / "seed000_tada_fig7.toml")
-    first = loading.axial_loading(case.bearing, 20.0)
-    assert loading.axial_loading(case.bearing, 20.0) is first
-    assert loading.axial_loading(case.bearing, 21.0).contact_angle > first.contact_angle
+    bearing = examples.tada_bearing()
+    first = loading.axial_loading(bearing, 20.0)
+    assert loading.axial_loading(bearing, 20.0) is first
+    assert loading.axial_loading(bearing, 21.0).contact_angle > first.contact_angle
     with pytest.raises(loading.GeometryError):
-        loading.axial_loading(case.bearing, -1.0)
+        loading.axial_loading(bearing, -1.0)
 
 
 def test_a_process_can_forbid_the_threads(monkeypatch: pytest.MonkeyPatch) -> None:

@@ -10,11 +10,15 @@ from __future__ import annotations
 import dataclasses
 import importlib
 import importlib.util
+import math
 from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
 
 from runout.errors import ModelNotAvailableError
 
-__all__ = ["MODEL_MODULES", "available_models", "run_model"]
+__all__ = ["MODEL_MODULES", "available_models", "measuring_direction", "run_model"]
 
 #: model id -> module that implements it (``run(case) -> RunResult``)
 MODEL_MODULES: dict[str, str] = {
@@ -34,6 +38,29 @@ def available_models() -> list[str]:
         for model, module in MODEL_MODULES.items()
         if importlib.util.find_spec(module) is not None
     )
+
+
+def measuring_direction(case: Any, model: str | None = None) -> NDArray[np.float64]:
+    """Unit vector (x, y) of the radial measuring direction ``model`` uses on ``case``.
+
+    The direction of the radial load on the shaft (``operation.radial_load_direction``) when
+    there is one, else +x; the rigid constraint model always measures along the load
+    direction (it assumes a light measuring load when none is given); the equilibrium model
+    (one instant) along +x.
+
+    Parameters
+    ----------
+    case : runout.case.Case
+        A validated case.
+    model : str, optional
+        Model id; default the case's ``[analysis] model``.
+    """
+    model = model or case.analysis.model
+    op = case.operation
+    if model == "roller_constraint" or (model != "equilibrium" and op.radial_load > 0.0):
+        angle = op.radial_load_direction
+        return np.array([math.cos(angle), math.sin(angle)])
+    return np.array([1.0, 0.0])
 
 
 def run_model(case: Any) -> Any:

@@ -24,8 +24,18 @@ import math
 
 import numba
 import numpy as np
+from numpy.typing import NDArray
 
 from runout._linalg import solve_spd3
+
+FloatArray = NDArray[np.float64]
+IntArray = NDArray[np.int64]
+#: Packed harmonics of the inner ring, outer ring and balls: orders, amplitudes [m], phases
+#: [rad] of each (:func:`runout.imperfections.pack_harmonics`) and the balls' offsets.
+Harmonics = tuple[
+    FloatArray, FloatArray, FloatArray, FloatArray, FloatArray, FloatArray,
+    FloatArray, FloatArray, FloatArray, IntArray,
+]  # fmt: skip
 
 #: Newton step tolerance relative to the reference approach.
 NEWTON_RTOL = 1e-12
@@ -47,7 +57,7 @@ N_PAR = 17
 
 
 @numba.njit(cache=True)
-def _hsum(k, a, p, lo, hi, angle):
+def _hsum(k: FloatArray, a: FloatArray, p: FloatArray, lo: int, hi: int, angle: float) -> float:
     s = 0.0
     for i in range(lo, hi):
         s += a[i] * math.cos(k[i] * angle + p[i])
@@ -55,7 +65,16 @@ def _hsum(k, a, p, lo, hi, angle):
 
 
 @numba.njit(cache=True)
-def _deviations(t, par, theta0, hk, cth, sth, gap, wb):
+def _deviations(
+    t: float,
+    par: FloatArray,
+    theta0: FloatArray,
+    hk: Harmonics,
+    cth: FloatArray,
+    sth: FloatArray,
+    gap: FloatArray,
+    wb: FloatArray,
+) -> None:
     """Ball angles (cos, sin), radial gap at q = 0 and ball deviation at time t."""
     z = theta0.size
     wc = par[P_WC]
@@ -77,7 +96,9 @@ def _deviations(t, par, theta0, hk, cth, sth, gap, wb):
 
 
 @numba.njit(cache=True)
-def _phasor_tables(par, theta0, hk):
+def _phasor_tables(
+    par: FloatArray, theta0: FloatArray, hk: Harmonics
+) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
     """Rates and coefficients of the rotating phasors of :func:`_phasor_deviations`.
 
     Phasor 0 is the cage :math:`e^{i\\omega_c t}`, 1 the unbalance :math:`e^{i\\Omega t}`,
@@ -129,7 +150,7 @@ def _phasor_tables(par, theta0, hk):
 
 
 @numba.njit(cache=True)
-def _phasor_anchor(t, rate, ph):
+def _phasor_anchor(t: float, rate: FloatArray, ph: FloatArray) -> None:
     """Set every phasor to its exact value :math:`e^{i r t}` at time t [s]."""
     for m in range(rate.size):
         ph[m, 0] = math.cos(rate[m] * t)
@@ -137,7 +158,7 @@ def _phasor_anchor(t, rate, ph):
 
 
 @numba.njit(cache=True)
-def _phasor_rotate(ph, rot):
+def _phasor_rotate(ph: FloatArray, rot: FloatArray) -> None:
     """Advance every phasor by one step: multiply by its :math:`e^{i r h}`."""
     for m in range(ph.shape[0]):
         pr = ph[m, 0]
@@ -147,7 +168,7 @@ def _phasor_rotate(ph, rot):
 
 
 @numba.njit(cache=True)
-def _phasor_balls(ph, ball, cth, sth):
+def _phasor_balls(ph: FloatArray, ball: FloatArray, cth: FloatArray, sth: FloatArray) -> None:
     """cos and sin of the ball angles θ_j from the cage phasor (perfect parts: nothing else)."""
     er = ph[0, 0]
     ei = ph[0, 1]
@@ -157,7 +178,18 @@ def _phasor_balls(ph, ball, cth, sth):
 
 
 @numba.njit(cache=True)
-def _phasor_deviations(ph, ball, ring, bcoef, boff, g0, cth, sth, gap, wb):
+def _phasor_deviations(
+    ph: FloatArray,
+    ball: FloatArray,
+    ring: FloatArray,
+    bcoef: FloatArray,
+    boff: IntArray,
+    g0: float,
+    cth: FloatArray,
+    sth: FloatArray,
+    gap: FloatArray,
+    wb: FloatArray,
+) -> None:
     """What :func:`_deviations` gives, from the phasors of :func:`_phasor_tables` (no trig)."""
     er = ph[0, 0]
     ei = ph[0, 1]
@@ -176,7 +208,19 @@ def _phasor_deviations(ph, ball, ring, bcoef, boff, g0, cth, sth, gap, wb):
 
 
 @numba.njit(cache=True)
-def _contact(q0, q1, q2, cth, sth, gap, wb, a, zp, k, ndof):
+def _contact(
+    q0: float,
+    q1: float,
+    q2: float,
+    cth: FloatArray,
+    sth: FloatArray,
+    gap: FloatArray,
+    wb: FloatArray,
+    a: float,
+    zp: float,
+    k: float,
+    ndof: int,
+) -> tuple[float, float, float, float, float, float, float, float, float, int]:
     """Sum of Q_j n_j (force of the contacts resisting q) and its Jacobian (symmetric)."""
     f0 = f1 = f2 = 0.0
     k00 = k01 = k02 = k11 = k12 = k22 = 0.0
@@ -211,7 +255,18 @@ def _contact(q0, q1, q2, cth, sth, gap, wb, a, zp, k, ndof):
 
 
 @numba.njit(cache=True)
-def _solve3(j00, j01, j02, j11, j12, j22, r0, r1, r2, ndof):
+def _solve3(
+    j00: float,
+    j01: float,
+    j02: float,
+    j11: float,
+    j12: float,
+    j22: float,
+    r0: float,
+    r1: float,
+    r2: float,
+    ndof: int,
+) -> tuple[float, float, float]:
     """Solve the symmetric 2x2 (ndof 2) or 3x3 system J s = r in closed form."""
     if ndof == 2:
         det = j00 * j11 - j01 * j01
@@ -221,7 +276,17 @@ def _solve3(j00, j01, j02, j11, j12, j22, r0, r1, r2, ndof):
 
 
 @numba.njit(cache=True)
-def _newmark_radial(n_steps, stride, t_start, state, par, theta0, hk, max_iter, out):
+def _newmark_radial(
+    n_steps: int,
+    stride: int,
+    t_start: float,
+    state: FloatArray,
+    par: FloatArray,
+    theta0: FloatArray,
+    hk: Harmonics,
+    max_iter: int,
+    out: FloatArray,
+) -> tuple[int, int, int, int]:
     """:func:`newmark_kernel` in the plane without axial offset (two degrees of freedom, z_p = 0).
 
     There the exact geometry of :func:`_contact` reduces to seed 003 eq. 2.3-2.5: s_j = A +
@@ -340,7 +405,18 @@ def _newmark_radial(n_steps, stride, t_start, state, par, theta0, hk, max_iter, 
     return OK, -1, iters, min_loaded
 
 
-def newmark_kernel(n_steps, stride, t_start, state, par, theta0, hk, ndof, max_iter, out):
+def newmark_kernel(
+    n_steps: int,
+    stride: int,
+    t_start: float,
+    state: FloatArray,
+    par: FloatArray,
+    theta0: FloatArray,
+    hk: Harmonics,
+    ndof: int,
+    max_iter: int,
+    out: FloatArray,
+) -> tuple[int, int, int, int]:
     """Integrate seed 003 eq. 2.16 (module form) over ``n_steps`` Newmark steps (compiled).
 
     Average-acceleration Newmark-β (β = 1/4, γ = 1/2): with step h,
@@ -398,7 +474,18 @@ def newmark_kernel(n_steps, stride, t_start, state, par, theta0, hk, ndof, max_i
 
 
 @numba.njit(cache=True)
-def _newmark_general(n_steps, stride, t_start, state, par, theta0, hk, ndof, max_iter, out):
+def _newmark_general(
+    n_steps: int,
+    stride: int,
+    t_start: float,
+    state: FloatArray,
+    par: FloatArray,
+    theta0: FloatArray,
+    hk: Harmonics,
+    ndof: int,
+    max_iter: int,
+    out: FloatArray,
+) -> tuple[int, int, int, int]:
     """:func:`newmark_kernel` with the exact contact geometry (:func:`_contact`), any z_p."""
     z = theta0.size
     h = par[P_H]
@@ -504,7 +591,22 @@ def _newmark_general(n_steps, stride, t_start, state, par, theta0, hk, ndof, max
 
 
 @numba.njit(cache=True)
-def _potential(q0, q1, q2, cth, sth, gap, wb, a, zp, k, ndof, e0, e1, e2):
+def _potential(
+    q0: float,
+    q1: float,
+    q2: float,
+    cth: FloatArray,
+    sth: FloatArray,
+    gap: FloatArray,
+    wb: FloatArray,
+    a: float,
+    zp: float,
+    k: float,
+    ndof: int,
+    e0: float,
+    e1: float,
+    e2: float,
+) -> float:
     sa = zp + (q2 if ndof == 3 else 0.0)
     en = -(e0 * q0 + e1 * q1 + (e2 * q2 if ndof == 3 else 0.0))
     for j in range(cth.size):
@@ -518,7 +620,19 @@ def _potential(q0, q1, q2, cth, sth, gap, wb, a, zp, k, ndof, e0, e1, e2):
 
 
 @numba.njit(cache=True)
-def _load_sum(q0, q1, q2, cth, sth, gap, wb, a, zp, k, ndof):
+def _load_sum(
+    q0: float,
+    q1: float,
+    q2: float,
+    cth: FloatArray,
+    sth: FloatArray,
+    gap: FloatArray,
+    wb: FloatArray,
+    a: float,
+    zp: float,
+    k: float,
+    ndof: int,
+) -> float:
     """Sum of the ball loads Σ_j Q_j [N] (scale of the round-off in the force balance)."""
     sa = zp + (q2 if ndof == 3 else 0.0)
     total = 0.0
@@ -533,7 +647,15 @@ def _load_sum(q0, q1, q2, cth, sth, gap, wb, a, zp, k, ndof):
 
 
 @numba.njit(cache=True)
-def static_kernel(times, q_start, par, theta0, hk, ndof, max_iter):
+def static_kernel(
+    times: FloatArray,
+    q_start: FloatArray,
+    par: FloatArray,
+    theta0: FloatArray,
+    hk: Harmonics,
+    ndof: int,
+    max_iter: int,
+) -> tuple[FloatArray, int, int]:
     """Quasi-static solution of the same contact model at each instant (compiled).
 
     Newton's method on the convex potential :math:`\\Pi(q) = \\sum_j \\tfrac{K_n}{2.5}

@@ -17,6 +17,7 @@ from numpy.typing import NDArray
 
 from runout.bearing import BallBearing
 from runout.contact import (
+    RaceName,
     ball_race_contacts,
     ball_race_curvature,
     combined_stiffness,
@@ -47,6 +48,7 @@ from runout.models._dynamic_kernels import (
     P_WO,
     P_WU,
     P_ZP,
+    Harmonics,
     _contact,  # noqa: F401
     _deviations,  # noqa: F401
     static_kernel,
@@ -71,13 +73,13 @@ def _law_stiffness(bearing: BallBearing, alpha: float, law: str) -> float:
     if law == "delta_star_table":
         ep = bearing.material.effective_modulus
         ks = []
-        for race, f in (("inner", bearing.inner_conformity), ("outer", bearing.outer_conformity)):
+        races: tuple[tuple[RaceName, float], ...] = (
+            ("inner", bearing.inner_conformity),
+            ("outer", bearing.outer_conformity),
+        )
+        for race, f in races:
             s, fr = ball_race_curvature(
-                bearing.element_diameter,
-                bearing.pitch_diameter,
-                f,
-                alpha,
-                race,  # type: ignore[arg-type]
+                bearing.element_diameter, bearing.pitch_diameter, f, alpha, race
             )
             ks.append(float(stiffness_from_delta_star_table(s, fr, ep)))
         return float(combined_stiffness(ks[0], ks[1]))
@@ -121,7 +123,8 @@ def _preloaded_contact_angle(
     def carried(alpha: float) -> float:
         stretch = max(math.cos(free_contact_angle) / math.cos(alpha) - 1.0, 0.0)
         k = _law_stiffness(bearing, alpha, law)
-        return z * k * (a * stretch) ** 1.5 * math.sin(alpha)
+        force: float = z * k * (a * stretch) ** 1.5 * math.sin(alpha)
+        return force
 
     def residual(alpha: float) -> float:
         return carried(alpha) / preload - 1.0
@@ -193,7 +196,7 @@ class DynamicSetup:
     unbalance_omega: float
     theta0: NDArray[np.float64]
     kinematics: Kinematics
-    harmonics: tuple[NDArray[Any], ...]
+    harmonics: Harmonics
     contact_law: str = "exact"
     reference_approach: float = 1e-6
     notes: tuple[str, ...] = ()
@@ -334,7 +337,7 @@ def setup(case: Any) -> DynamicSetup:
     imp = case.imperfections
     theta0 = TWO_PI * np.arange(z) / z + np.asarray(imp.pitch_errors, dtype=np.float64)
     kb, ab, pb, off = pack_harmonics(imp.element_diameter_deviations())
-    harmonics = (
+    harmonics: Harmonics = (
         imp.inner.orders.astype(np.float64),
         imp.inner.amplitudes.copy(),
         imp.inner.phases.copy(),
@@ -465,7 +468,10 @@ def energy(
     _, d = contact_forces(st, t, q)
     pot = (st.stiffness / 2.5 * np.clip(d, 0.0, None) ** 2.5).sum(axis=1)
     nd = st.ndof
-    return 0.5 * st.mass * (v[:, :nd] ** 2).sum(1) + pot - (q[:, :nd] * st.force[:nd]).sum(1)
+    energy: NDArray[np.float64] = (
+        0.5 * st.mass * (v[:, :nd] ** 2).sum(1) + pot - (q[:, :nd] * st.force[:nd]).sum(1)
+    )
+    return energy
 
 
 def rhs_first_order(st: DynamicSetup) -> Callable[[float, NDArray[np.float64]], Any]:
@@ -600,7 +606,8 @@ def static_equilibrium(
         raise ConvergenceError(
             "quasi-static Newton iteration did not converge", int(instant), float(times[instant])
         )
-    return q
+    positions: NDArray[np.float64] = q
+    return positions
 
 
 def linearised_natural_frequencies(
@@ -629,4 +636,5 @@ def linearised_natural_frequencies(
     k = contact_stiffness(st, t, q)
     lam = np.linalg.eigvalsh(0.5 * (k + k.T))
     lam[lam < 1e-9 * max(float(lam.max()), 0.0)] = 0.0
-    return np.sqrt(lam / st.mass) / TWO_PI
+    frequencies: NDArray[np.float64] = np.sqrt(lam / st.mass) / TWO_PI
+    return frequencies

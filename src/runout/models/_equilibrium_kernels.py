@@ -29,6 +29,11 @@ import numba
 import numpy as np
 from numpy.typing import NDArray
 
+FloatArray = NDArray[np.float64]
+IntArray = NDArray[np.int64]
+BoolArray = NDArray[np.bool_]
+
+
 __all__ = [
     "BALL_ITER",
     "N_CONST",
@@ -141,7 +146,14 @@ def constants(
 # scalar ball functions (real or complex arguments)
 # --------------------------------------------------------------------------------------------
 @numba.njit(cache=True)
-def _tan_beta(cos_i, sin_i, cos_o, sin_o, gamma, inner_control):
+def _tan_beta(
+    cos_i: complex,
+    sin_i: complex,
+    cos_o: complex,
+    sin_o: complex,
+    gamma: float,
+    inner_control: bool,
+) -> complex:
     """tan β of the spin axis: outer-raceway control, or inner (Harris)."""
     if inner_control:
         return sin_i / (cos_i - gamma)
@@ -149,7 +161,17 @@ def _tan_beta(cos_i, sin_i, cos_o, sin_o, gamma, inner_control):
 
 
 @numba.njit(cache=True)
-def _speeds_at(tb, cb, cos_i, sin_i, cos_o, sin_o, gamma, inner, outer):
+def _speeds_at(
+    tb: complex,
+    cb: complex,
+    cos_i: complex,
+    sin_i: complex,
+    cos_o: complex,
+    sin_o: complex,
+    gamma: float,
+    inner: float,
+    outer: float,
+) -> tuple[complex, complex, complex]:
     """Orbit and spin speed and sin β for the attitude (tan β, cos β), as ``ball_speeds``."""
     sb = tb * cb
     ci = cos_i + tb * sin_i
@@ -163,15 +185,35 @@ def _speeds_at(tb, cb, cos_i, sin_i, cos_o, sin_o, gamma, inner, outer):
 
 
 @numba.njit(cache=True)
-def _speeds(cos_i, sin_i, cos_o, sin_o, gamma, inner, outer, inner_control):
+def _speeds(
+    cos_i: float,
+    sin_i: float,
+    cos_o: float,
+    sin_o: float,
+    gamma: float,
+    inner: float,
+    outer: float,
+    inner_control: bool,
+) -> tuple[float, float, float]:
     """Orbit speed, spin speed and sin β (Harris), real arguments (``equilibrium.ball_speeds``)."""
-    tb = _tan_beta(cos_i, sin_i, cos_o, sin_o, gamma, inner_control)
+    # real in, real out: ``.real`` only names the type (the value is unchanged)
+    tb = _tan_beta(cos_i, sin_i, cos_o, sin_o, gamma, inner_control).real
     cb = 1.0 / math.sqrt(1.0 + tb * tb)
-    return _speeds_at(tb, cb, cos_i, sin_i, cos_o, sin_o, gamma, inner, outer)
+    omega_m, omega_r, sb = _speeds_at(tb, cb, cos_i, sin_i, cos_o, sin_o, gamma, inner, outer)
+    return omega_m.real, omega_r.real, sb.real
 
 
 @numba.njit(cache=True)
-def _speeds_cs(cos_i, sin_i, cos_o, sin_o, gamma, inner, outer, inner_control):
+def _speeds_cs(
+    cos_i: complex,
+    sin_i: complex,
+    cos_o: complex,
+    sin_o: complex,
+    gamma: float,
+    inner: float,
+    outer: float,
+    inner_control: bool,
+) -> tuple[complex, complex, complex]:
     """:func:`_speeds` for complex-step arguments."""
     tb = _tan_beta(cos_i, sin_i, cos_o, sin_o, gamma, inner_control)
     cb = 1.0 / _sqrt_cs(1.0 + tb * tb)
@@ -212,7 +254,37 @@ def _hertz(delta: complex, k: complex) -> complex:
 
 
 @numba.njit(cache=True)
-def _ball_state(x1, x2, a1, a2, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o, speed_on):
+def _ball_state(
+    x1: complex,
+    x2: complex,
+    a1: complex,
+    a2: complex,
+    ki0: float,
+    ki1: float,
+    ai_c: float,
+    ko0: float,
+    ko1: float,
+    ao_c: float,
+    cst: FloatArray,
+    lam_i: float,
+    lam_o: float,
+    speed_on: bool,
+) -> tuple[
+    complex,
+    complex,
+    complex,
+    complex,
+    complex,
+    complex,
+    complex,
+    complex,
+    complex,
+    complex,
+    complex,
+    complex,
+    complex,
+    complex,
+]:
     r"""Ball j at centre (x1, x2) and inner groove centre (a1, a2) [m], complex arguments.
 
     Seed 001 eq. 3-6 (module docstring of :mod:`runout.models.equilibrium`): the residuals
@@ -259,7 +331,22 @@ def _ball_state(x1, x2, a1, a2, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_
 
 
 @numba.njit(cache=True)
-def _residual_jacobian(x1, x2, a1, a2, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o, speed_on):
+def _residual_jacobian(
+    x1: float,
+    x2: float,
+    a1: float,
+    a2: float,
+    ki0: float,
+    ki1: float,
+    ai_c: float,
+    ko0: float,
+    ko1: float,
+    ao_c: float,
+    cst: FloatArray,
+    lam_i: float,
+    lam_o: float,
+    speed_on: bool,
+) -> tuple[float, float, float, float, float, float]:
     """g (2,) and ∂g/∂X (2×2) of one ball by complex step; (g1, g2, j00, j01, j10, j11)."""
     ca1 = complex(a1, 0.0)
     ca2 = complex(a2, 0.0)
@@ -317,8 +404,22 @@ def _approaches(
 # --------------------------------------------------------------------------------------------
 @numba.njit(cache=True)
 def _ball_newton(
-    xs, aa, idx, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o, speed_on, tol, done
-):
+    xs: FloatArray,
+    aa: FloatArray,
+    idx: IntArray,
+    ki0: FloatArray,
+    ki1: FloatArray,
+    ai_c: FloatArray,
+    ko0: FloatArray,
+    ko1: FloatArray,
+    ao_c: FloatArray,
+    cst: FloatArray,
+    lam_i: float,
+    lam_o: float,
+    speed_on: bool,
+    tol: float,
+    done: BoolArray,
+) -> None:
     """2×2 Newton on eq. 3-4 of the balls ``idx`` (rows of ``xs``, ``aa``), in place.
 
     Every ball takes its Newton step, shortened so that neither approach shrinks by more than
@@ -383,7 +484,17 @@ def _ball_newton(
 
 
 @numba.njit(cache=True)
-def _lifted_off(a, ko0, ko1, ao_c, cst, lam_i, lam_o, x_star, lifted):
+def _lifted_off(
+    a: FloatArray,
+    ko0: FloatArray,
+    ko1: FloatArray,
+    ao_c: FloatArray,
+    cst: FloatArray,
+    lam_i: float,
+    lam_o: float,
+    x_star: FloatArray,
+    lifted: BoolArray,
+) -> None:
     """Balls whose inner contact opens at speed, and their outer-contact-only centres X*.
 
     With Q_i = 0 the outer contact alone balances F_c and the gyroscopic friction; a short
@@ -457,7 +568,9 @@ def _start(
 
 
 @numba.njit(cache=True)
-def _closed_start(a1, a2, ko0, cst, side):
+def _closed_start(
+    a1: float, a2: float, ko0: float, cst: FloatArray, side: float
+) -> tuple[float, float]:
     """A ball centre with both contacts closed off the line of groove centres [m].
 
     For a ball with no rest overlap (|A| <= ℜ_i⁰ + ℜ_o⁰, the zero-speed start has an open
@@ -505,7 +618,7 @@ def _copy_rows(dst: NDArray[np.float64], src: NDArray[np.float64]) -> None:
 
 
 @numba.njit(cache=True)
-def _positions(flags, value):
+def _positions(flags: BoolArray, value: bool) -> IntArray:
     """Positions m with flags[m] == value, int64."""
     n = 0
     for m in range(flags.size):
@@ -522,8 +635,22 @@ def _positions(flags, value):
 
 @numba.njit(cache=True)
 def _friction_continuation(
-    xs, aa, idx, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o, speed_on, tol, done
-):
+    xs: FloatArray,
+    aa: FloatArray,
+    idx: IntArray,
+    ki0: FloatArray,
+    ki1: FloatArray,
+    ai_c: FloatArray,
+    ko0: FloatArray,
+    ko1: FloatArray,
+    ao_c: FloatArray,
+    cst: FloatArray,
+    lam_i: float,
+    lam_o: float,
+    speed_on: bool,
+    tol: float,
+    done: BoolArray,
+) -> None:
     """Ball Newton along the gyroscopic friction, λ → s·λ with s from 0 to 1, in place.
 
     The last resort of the ball solve (near lift-off under inner-race control): without
@@ -558,7 +685,21 @@ def _friction_continuation(
 
 
 @numba.njit(cache=True)
-def _solve_balls(a, x, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o, speed_on, loaded):
+def _solve_balls(
+    a: FloatArray,
+    x: FloatArray,
+    ki0: FloatArray,
+    ki1: FloatArray,
+    ai_c: FloatArray,
+    ko0: FloatArray,
+    ko1: FloatArray,
+    ao_c: FloatArray,
+    cst: FloatArray,
+    lam_i: float,
+    lam_o: float,
+    speed_on: bool,
+    loaded: BoolArray,
+) -> bool:
     """Eq. 3-4 for every loaded ball, in place in ``x`` (Z, 2) from its current value.
 
     Unloaded balls (a gap at rest, lifted off at speed) go to the outer groove bottom. A loaded
@@ -684,7 +825,7 @@ def _solve_balls(a, x, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o, speed_
 # ring force and stiffness
 # --------------------------------------------------------------------------------------------
 @numba.njit(cache=True)
-def _pairwise_sum(v):
+def _pairwise_sum(v: FloatArray) -> float:
     """Sum in NumPy's order for a contiguous float64 vector of up to 128 entries.
 
     ``numpy.sum`` adds fewer than 8 numbers in sequence and up to 128 in eight interleaved
@@ -711,35 +852,35 @@ def _pairwise_sum(v):
         r6 += v[i + 6]
         r7 += v[i + 7]
         i += 8
-    res = ((r0 + r1) + (r2 + r3)) + ((r4 + r5) + (r6 + r7))
+    acc: float = ((r0 + r1) + (r2 + r3)) + ((r4 + r5) + (r6 + r7))
     while i < n:
-        res += v[i]
+        acc += v[i]
         i += 1
-    return res
+    return acc
 
 
 @numba.njit(cache=True)
 def ring_forces(
-    q,
-    cos_psi,
-    sin_psi,
-    x,
-    have_x,
-    ki0,
-    ki1,
-    ai_c,
-    ko0,
-    ko1,
-    ao_c,
-    cst,
-    lam_i,
-    lam_o,
-    speed_on,
-    force,
-    jac,
-    state,
-    loaded,
-):
+    q: FloatArray,
+    cos_psi: FloatArray,
+    sin_psi: FloatArray,
+    x: FloatArray,
+    have_x: bool,
+    ki0: FloatArray,
+    ki1: FloatArray,
+    ai_c: FloatArray,
+    ko0: FloatArray,
+    ko1: FloatArray,
+    ao_c: FloatArray,
+    cst: FloatArray,
+    lam_i: float,
+    lam_o: float,
+    speed_on: bool,
+    force: FloatArray,
+    jac: FloatArray,
+    state: FloatArray,
+    loaded: BoolArray,
+) -> int:
     r"""Ring force, its Jacobian and every ball's state at ring displacement ``q``.
 
     Seed 001 eq. 1-6. The groove centres of ball j are

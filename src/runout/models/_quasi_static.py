@@ -20,8 +20,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass, replace
-from pathlib import Path
+from dataclasses import dataclass
 from typing import Any
 
 import numba
@@ -33,6 +32,7 @@ from runout.decompose import Candidate, Direction, Kinematic, Phasors, fit_lines
 from runout.errors import GeometryError
 from runout.imperfections import Harmonics, Imperfections
 from runout.kinematics import bearing_frequencies
+from runout.result_details import QuasiStaticDetails
 from runout.results import RunResult, Source
 
 __all__ = [
@@ -318,7 +318,9 @@ def contact_sources(
 
 
 @numba.njit(cache=True)
-def contact_state(z, ring, ball):
+def contact_state(
+    z: int, ring: NDArray[np.float64], ball: NDArray[np.float64]
+) -> tuple[NDArray[np.float64], ...]:
     """Work arrays of the phasor recurrences (:func:`contact_series`) (compiled).
 
     Returns
@@ -345,7 +347,14 @@ def contact_state(z, ring, ball):
 
 
 @numba.njit(cache=True)
-def contact_rotations(h, rates, ring, n_inner, ball, state):
+def contact_rotations(
+    h: float,
+    rates: NDArray[np.float64],
+    ring: NDArray[np.float64],
+    n_inner: int,
+    ball: NDArray[np.float64],
+    state: tuple[NDArray[np.float64], ...],
+) -> None:
     """Rotations of the phasors over one time step ``h`` [s] (compiled)."""
     cage_rot, ring_rot, ball_rot = state[5], state[6], state[7]
     wc = rates[0]
@@ -363,7 +372,16 @@ def contact_rotations(h, rates, ring, n_inner, ball, state):
 
 
 @numba.njit(cache=True)
-def contact_anchor(ti, rates, base, pitch, ring, n_inner, ball, state):
+def contact_anchor(
+    ti: float,
+    rates: NDArray[np.float64],
+    base: NDArray[np.float64],
+    pitch: NDArray[np.float64],
+    ring: NDArray[np.float64],
+    n_inner: int,
+    ball: NDArray[np.float64],
+    state: tuple[NDArray[np.float64], ...],
+) -> None:
     """Every phasor evaluated directly at instant ``ti`` [s], from the same rounded arguments
     as :func:`contact_deviations` (compiled)."""
     cage_q, ring_q, ball_ph, cage_p, ring_p = state[0], state[1], state[2], state[3], state[4]
@@ -392,7 +410,7 @@ def contact_anchor(ti, rates, base, pitch, ring, n_inner, ball, state):
 
 
 @numba.njit(cache=True, inline="always")
-def contact_advance(state):
+def contact_advance(state: tuple[NDArray[np.float64], ...]) -> None:
     """Advance the rotations since the anchor, and the element phasors, by one step (compiled)."""
     ball_ph, cage_p, ring_p, cage_rot, ring_rot, ball_rot = (
         state[2],
@@ -416,7 +434,16 @@ def contact_advance(state):
 
 
 @numba.njit(cache=True, inline="always")
-def contact_values(state, n_inner, ball_offsets, gains, planar, c, cth, sth):
+def contact_values(
+    state: tuple[NDArray[np.float64], ...],
+    n_inner: int,
+    ball_offsets: NDArray[np.int64],
+    gains: NDArray[np.float64],
+    planar: bool,
+    c: NDArray[np.float64],
+    cth: NDArray[np.float64],
+    sth: NDArray[np.float64],
+) -> None:
     """Approach of every ball at zero displacement, cos θ_j and sin θ_j (compiled).
 
     Each ring term is Re(anchored phasor × rotation since the anchor); sums run in the order
@@ -462,14 +489,14 @@ def contact_values(state, n_inner, ball_offsets, gains, planar, c, cth, sth):
 
 
 @numba.njit(cache=True)
-def time_step(t):
+def time_step(t: NDArray[np.float64]) -> float:
     """Step of a uniform grid, (t[-1] - t[0]) / (n - 1) [s] (0 for fewer than 2 instants)."""
     n = t.size
     return (t[n - 1] - t[0]) / (n - 1) if n > 1 else 0.0
 
 
 @numba.njit(cache=True)
-def on_grid(i, t, h, anchor):
+def on_grid(i: int, t: NDArray[np.float64], h: float, anchor: int) -> bool:
     """True when the phasors anchored at instant ``anchor`` may be advanced to instant i by
     one step of ``h`` [s]: i follows within :data:`ANCHOR` instants and ``t[i]`` is the
     anchor's time plus a whole number of steps to round-off (compiled).
@@ -481,11 +508,12 @@ def on_grid(i, t, h, anchor):
     r = i - anchor
     if anchor < 0 or not 0 < r < ANCHOR:
         return False
-    return abs(t[i] - (t[anchor] + r * h)) <= GRID_RTOL * (abs(t[i]) + r * abs(h))
+    close: bool = abs(t[i] - (t[anchor] + r * h)) <= GRID_RTOL * (abs(t[i]) + r * abs(h))
+    return close
 
 
 @numba.njit(cache=True)
-def predict(known, q, p, o):
+def predict(known: int, q: float, p: float, o: float) -> float:
     """Starting point of an instant from the solutions of the instants before it.
 
     ``known`` is how many of the last three solutions (q the last, then p, then o) lie on a
@@ -506,7 +534,18 @@ def predict(known, q, p, o):
 
 
 @numba.njit(cache=True)
-def contact_series(t, rates, base, pitch, ring, n_inner, ball, ball_offsets, gains, planar):
+def contact_series(
+    t: NDArray[np.float64],
+    rates: NDArray[np.float64],
+    base: NDArray[np.float64],
+    pitch: NDArray[np.float64],
+    ring: NDArray[np.float64],
+    n_inner: int,
+    ball: NDArray[np.float64],
+    ball_offsets: NDArray[np.int64],
+    gains: NDArray[np.float64],
+    planar: bool,
+) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
     """Approaches at zero displacement and cos θ_j, sin θ_j at every instant (compiled).
 
     The fused evaluation the quasi-static kernels run instant by instant, written out in full
@@ -913,17 +952,6 @@ def measuring_direction(operation: Any) -> NDArray[np.float64]:
     return np.array([1.0, 0.0])
 
 
-def animation_writer(result: RunResult) -> Callable[[Path], list[Path]]:
-    """Writer of ``bearing.gif`` (orbit and balls; :func:`runout.plotting.animate_bearing`)."""
-
-    def write(directory: Path) -> list[Path]:
-        from runout import plotting
-
-        return [plotting.animate_bearing(result, directory / "bearing.gif")]
-
-    return write
-
-
 def run_quasi_static(
     case: Any,
     setup: Any,
@@ -932,13 +960,14 @@ def run_quasi_static(
     model: str,
     planar: bool,
     description: str,
-    extras: dict[str, Any],
+    approach_m: float,
 ) -> RunResult:
     """The run flow shared by the quasi-static models (seeds 000 and 001).
 
     Solve on the analysis grid, decompose the record (:mod:`runout.decompose`: the predicted
     lines, the residual search, RRO/NRRO from the lines), and assemble the result with its
-    notes and the GIF writer.
+    notes and the model's details (:class:`~runout.result_details.QuasiStaticDetails`; the
+    files layer draws its ``bearing.gif``).
 
     Parameters
     ----------
@@ -954,8 +983,9 @@ def run_quasi_static(
         True for the 2-D model: no axial lines or direction.
     description : str
         What the displacement is, for the notes.
-    extras : dict
-        Model-specific JSON entries placed before the shared ones.
+    approach_m : float
+        Reference elastic approach [m]: the initial one under the radial load (2-D), the
+        one under the axial preload (3-D).
     """
     an, op = case.analysis, case.operation
     t = time_grid(op.speed, an.revolutions, an.samples)
@@ -1000,12 +1030,13 @@ def run_quasi_static(
         components=fit.components,
         runout=split.runout,
         measuring_direction=u,
-        extras={
-            **extras,
-            "unloaded_balls_max": unloaded_max,
-            "n_elements": kin.n_elements,
-            "explained_fraction": fit.explained_fraction,
-        },
+        details=QuasiStaticDetails(
+            planar=planar,
+            approach_m=approach_m,
+            unloaded_balls_max=unloaded_max,
+            n_elements=kin.n_elements,
+            explained_fraction=fit.explained_fraction,
+        ),
         notes=notes,
     )
-    return replace(result, writers=(animation_writer(result),))
+    return result

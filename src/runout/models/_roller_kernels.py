@@ -17,7 +17,7 @@ Work saved per rotation angle (results bit for bit those of the direct method)
   again (about a quarter of the gap solves per angle).
 * The candidate rollers are ordered by an insertion sort into a preallocated array.
 * :func:`_solve_all` releases the GIL, so independent solves (the order sweep of the
-  extras) run on parallel threads (``roller_constraint.solve_many``).
+  model files) run on parallel threads (``roller_constraint.solve_many``).
 
 Rotating phasors (the profile's harmonics and the Newton angles δ and ψ advanced by
 multiplication instead of sine and cosine) were tried: about 10 % faster here, but they move
@@ -219,7 +219,8 @@ def _far_bound(
     else:
         gap = r0[1] - r0[2 + j] - dist
         slack = dev[0] + dev[1] + 2.0 * dev[2 + j]
-    return gap - slack
+    signed: float = gap - slack
+    return signed
 
 
 @numba.njit(cache=True)

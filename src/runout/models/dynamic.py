@@ -107,7 +107,9 @@ from runout.models._dynamic_integration import (  # noqa: F401 - the model's nam
     _raise,
     choose_step,
     integrate,
-    plan_integration,
+)
+from runout.models._dynamic_integration import (
+    plan_integration as plan_integration,  # runout.input_checks plans with it
 )
 from runout.models._dynamic_kernels import (  # noqa: F401 - re-exported with the kernels
     FORCE_RTOL,
@@ -145,6 +147,7 @@ from runout.models._quasi_static import (
     decomposition_kinematic,
     predicted_lines,
 )
+from runout.result_details import DynamicDetails
 from runout.results import RunResult, Source
 from runout.spectrum import amplitude_spectrum, extract_lines
 
@@ -269,7 +272,8 @@ def run(case: Any, progress: Callable[[float], None] | None = None) -> RunResult
     -------
     RunResult
         Steady-state history of the rotor centre (inner ring relative to the outer ring),
-        labelled lines, runout figures; extras ``natural_frequencies_hz`` and the
+        labelled lines, runout figures; details
+        (:class:`~runout.result_details.DynamicDetails`) ``natural_frequencies_hz`` and the
         integration facts, among them ``transient_s``, the length of the transient [s].
         ``time`` starts at 0 at the first reported instant, where the ball angles and the
         unbalance phase are those of every model's t = 0 (the transient ran from
@@ -338,37 +342,28 @@ def run(case: Any, progress: Callable[[float], None] | None = None) -> RunResult
     bearing = case.bearing
     mean = disp.mean(axis=1)
     fbp = ball_passage_frequency(st)
-    extras: dict[str, Any] = {
-        "natural_frequencies_hz": [float(f) for f in sorted(fn)],
-        "ball_passage_hz": fbp,
-        "time_step_s": integ.time_step,
-        "transient_s": integ.transient,
-        "transient_end": integ.settled,
-        "static_displacement_m": [float(v) for v in integ.static_position[: st.ndof]],
-        "contact_law": st.contact_law,
-        "contact_stiffness_n_per_m1_5": st.stiffness,
-        "preload_contact_angle_deg": math.degrees(st.contact_angle),
-        "axial_dof": st.ndof == 3,
-        "min_loaded_balls": integ.min_loaded,
-        "solver_resolution_m": noise,
-        "explained_fraction": fit.explained_fraction,
-    }
-    if st.ndof == 3:
-        extras["mean_axial_displacement_m"] = float(mean[2])  # from the preloaded position
+    details = DynamicDetails(
+        natural_frequencies_hz=tuple(float(f) for f in sorted(fn)),
+        ball_passage_hz=fbp,
+        time_step_s=integ.time_step,
+        transient_s=integ.transient,
+        transient_end=integ.settled,
+        static_displacement_m=tuple(float(v) for v in integ.static_position[: st.ndof]),
+        contact_law=st.contact_law,
+        contact_stiffness_n_per_m1_5=st.stiffness,
+        preload_contact_angle_deg=math.degrees(st.contact_angle),
+        axial_dof=st.ndof == 3,
+        min_loaded_balls=integ.min_loaded,
+        solver_resolution_m=noise,
+        explained_fraction=fit.explained_fraction,
+        # from the preloaded position
+        mean_axial_displacement_m=float(mean[2]) if st.ndof == 3 else None,
+        sample_rate_hz=spr * op.speed,
+    )
     # The product's axial reference is the rings axially centred: the contacts see the
     # preloaded offset z_p plus the axial degree of freedom (held at 0 without it).
     disp = disp.copy()
     disp[2] += st.axial_offset
-
-    def write_extra(directory: Path) -> list[Path]:
-        from runout import plotting
-
-        spectrum_csv = directory / "spectrum.csv"
-        spec = amplitude_spectrum(disp, sample_rate=spr * op.speed)
-        rows = np.column_stack([spec.frequencies, 2.0 * spec.amplitude.T])
-        header = "frequency_hz,x_pp_m,y_pp_m,z_pp_m"
-        np.savetxt(spectrum_csv, rows, delimiter=",", header=header, comments="", fmt="%.10g")
-        return [spectrum_csv, *plotting.plot_dynamic_figures(result, directory)]
 
     result = RunResult(
         model=MODEL,
@@ -380,9 +375,8 @@ def run(case: Any, progress: Callable[[float], None] | None = None) -> RunResult
         components=comps,
         runout=split.runout,
         measuring_direction=u,
-        extras=extras,
+        details=details,
         notes=tuple(notes),
-        writers=(write_extra,),
     )
     return result
 
@@ -435,9 +429,12 @@ def _point(case: Any, result: RunResult) -> SweepPoint:
     radial = u[0] * result.displacement[0] + u[1] * result.displacement[1]
     fs = 1.0 / (result.time[1] - result.time[0])
     spec = amplitude_spectrum(radial, sample_rate=fs)
-    fbp = float(result.extras["ball_passage_hz"])
+    details = result.details
+    if not isinstance(details, DynamicDetails):
+        raise TypeError(f"a sweep point needs a dynamic result, got the {result.model} model's")
+    fbp = details.ball_passage_hz
     radial_bp = float(extract_lines(result.time, radial, [fbp]).amplitude[0]) * 2.0
-    if radial_bp <= float(result.extras["solver_resolution_m"]):
+    if radial_bp <= details.solver_resolution_m:
         radial_bp = 0.0
     keep = spec.frequencies <= 8.0 * fbp
     return SweepPoint(
@@ -445,7 +442,7 @@ def _point(case: Any, result: RunResult) -> SweepPoint:
         preload_n=case.operation.axial_load,
         contact_angle_deg=math.degrees(result.contact_angle),
         ball_passage_hz=fbp,
-        natural_frequencies_hz=list(result.extras["natural_frequencies_hz"]),
+        natural_frequencies_hz=list(details.natural_frequencies_hz),
         radial_pp_m=result.runout.radial_pp_m,
         ball_passage_pp_m=radial_bp,
         mean_displacement_m=result.mean_displacement()[:2],

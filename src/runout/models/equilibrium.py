@@ -112,12 +112,9 @@ bearings). ISO/TS 16281:2008, reference cases of an open implementation
 
 from __future__ import annotations
 
-import csv
 import math
-from collections.abc import Callable
 from dataclasses import dataclass, field
-from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -126,7 +123,16 @@ from runout.bearing import BallBearing, Operation
 from runout.contact import ball_race_curvature, combined_stiffness, hertz_point_stiffness
 from runout.errors import ConvergenceError, GeometryError, NumericalError
 from runout.kinematics import bearing_frequencies
+from runout.result_details import (
+    EquilibriumDetails,
+    RadialStiffness,
+    RingDisplacement,
+    StiffnessMatrix,
+)
 from runout.results import Runout, RunResult
+
+if TYPE_CHECKING:
+    from runout.case import Case
 
 __all__ = [
     "DOF_NAMES",
@@ -619,7 +625,8 @@ def _axial_start(bearing: BallBearing, axial_load: float, kn: float) -> tuple[fl
 
     def excess(alpha: float) -> float:
         stretch = max(c0 / math.cos(alpha) - 1.0, 0.0)
-        return z * kn * (a * stretch) ** 1.5 * math.sin(alpha) - axial_load
+        value: float = z * kn * (a * stretch) ** 1.5 * math.sin(alpha) - axial_load
+        return value
 
     lo, hi = alpha0, 0.5 * math.pi - 1e-6
     for _ in range(60):  # to below 1e-15 rad
@@ -720,7 +727,7 @@ def _moment_start(ring: _Ring, op: Operation) -> NDArray[np.float64]:
     return np.array([-offset, 0.0, 0.0, theta * c, theta * s])
 
 
-def setup(case: object) -> None:
+def setup(case: Case) -> None:
     """The input checks of :func:`solve_equilibrium` for a case, without solving anything.
 
     Raises
@@ -728,11 +735,11 @@ def setup(case: object) -> None:
     GeometryError
         Not a ball bearing, an unknown race control, or no load to hold the inner ring.
     """
-    bearing = case.bearing  # type: ignore[attr-defined]
-    op = case.operation  # type: ignore[attr-defined]
+    bearing = case.bearing
+    op = case.operation
     if not isinstance(bearing, BallBearing):
         raise GeometryError("bearing.type", "the equilibrium model needs a ball bearing")
-    control = case.analysis.race_control  # type: ignore[attr-defined]
+    control = case.analysis.race_control
     if control not in _LAMBDA:
         raise GeometryError(
             "analysis.race_control", f'must be "outer", "inner" or "none", got {control!r}'
@@ -836,54 +843,16 @@ def solve_equilibrium(
 # --------------------------------------------------------------------------------------------
 # model
 # --------------------------------------------------------------------------------------------
-Rows = list[tuple[str, str, str]]
-
-
 @dataclass(frozen=True)
 class EquilibriumResult(RunResult):
-    """A :class:`RunResult` with the per-ball table and the stiffness matrix in its output."""
+    """A :class:`RunResult` of the equilibrium model with its solver state.
+
+    Its tables and files come from :attr:`details`
+    (:class:`~runout.result_details.EquilibriumDetails`, also in the JSON); ``solution``
+    is the full solution (per-ball speeds, forces, the Newton record) for Python use.
+    """
 
     solution: EquilibriumSolution | None = None
-
-    def summary_sections(self) -> list[tuple[str, Rows]]:
-        """Ring displacements, stiffness diagonal, per-ball angles and loads."""
-        s = self.solution
-        assert s is not None
-        q = s.displacement
-        sections: list[tuple[str, Rows]] = [
-            (
-                f"{self.title or self.model}: Jones-Harris equilibrium "
-                f"({self.extras['race_control']} race control)",
-                [
-                    ("axial displacement δ_a", f"{q[0] * 1e6:.6g}", "µm"),
-                    ("radial displacement δ_x", f"{q[1] * 1e6:.6g}", "µm"),
-                    ("radial displacement δ_y", f"{q[2] * 1e6:.6g}", "µm"),
-                    ("tilt θ_x", f"{q[3] * 1e3:.6g}", "mrad"),
-                    ("tilt θ_y", f"{q[4] * 1e3:.6g}", "mrad"),
-                    ("axial stiffness K_aa", f"{s.stiffness[0, 0] * 1e-6:.6g}", "N/µm"),
-                    ("radial stiffness K_xx", f"{s.stiffness[1, 1] * 1e-6:.6g}", "N/µm"),
-                    ("radial stiffness K_yy", f"{s.stiffness[2, 2] * 1e-6:.6g}", "N/µm"),
-                    ("tilt stiffness K_θxθx", f"{s.stiffness[3, 3]:.6g}", "N m/rad"),
-                    ("tilt stiffness K_θyθy", f"{s.stiffness[4, 4]:.6g}", "N m/rad"),
-                ],
-            )
-        ]
-        rows: Rows = []
-        for r in s.ball_table():
-            rows.append(
-                (
-                    f"ball {r['ball']:d} at {r['azimuth_deg']:.4g} deg",
-                    f"α_i {r['inner_contact_angle_deg']:.4f} / α_o "
-                    f"{r['outer_contact_angle_deg']:.4f} deg",
-                    f"Q_i {r['inner_load_n']:.5g} / Q_o {r['outer_load_n']:.5g} N; "
-                    f"δ_i {r['inner_approach_m'] * 1e6:.5g} / δ_o "
-                    f"{r['outer_approach_m'] * 1e6:.5g} µm",
-                )
-            )
-        sections.append(("Balls (contact angles, loads, approaches)", rows))
-        if self.notes:
-            sections.append(("Notes", [(n, "", "") for n in self.notes]))
-        return sections
 
 
 #: Stiffness entries below this fraction of the radial block's largest are the derivative's
@@ -891,7 +860,7 @@ class EquilibriumResult(RunResult):
 STIFFNESS_ROUNDOFF = 1e-12
 
 
-def radial_stiffness(sol: EquilibriumSolution, speed_hz: float) -> dict[str, float]:
+def radial_stiffness(sol: EquilibriumSolution, speed_hz: float) -> RadialStiffness:
     r"""The radial 2×2 block of the bearing stiffness, as rotordynamics codes take it [N/m].
 
     :math:`k_{xx} = \partial F_x/\partial\delta_x`, :math:`k_{xy} = \partial F_x/\partial
@@ -912,58 +881,29 @@ def radial_stiffness(sol: EquilibriumSolution, speed_hz: float) -> dict[str, flo
 
     Returns
     -------
-    dict
+    RadialStiffness
         ``kxx_n_per_m``, ``kxy_n_per_m``, ``kyx_n_per_m``, ``kyy_n_per_m`` [N/m] and
         ``speed_rpm`` [rev/min].
     """
     block = np.array(sol.stiffness[1:3, 1:3], dtype=float)
     scale = float(np.abs(block).max(initial=0.0))
     block[np.abs(block) < STIFFNESS_ROUNDOFF * scale] = 0.0
-    return {
-        "kxx_n_per_m": float(block[0, 0]),
-        "kxy_n_per_m": float(block[0, 1]),
-        "kyx_n_per_m": float(block[1, 0]),
-        "kyy_n_per_m": float(block[1, 1]),
-        "speed_rpm": 60.0 * float(speed_hz),
-    }
+    return RadialStiffness(
+        kxx_n_per_m=float(block[0, 0]),
+        kxy_n_per_m=float(block[0, 1]),
+        kyx_n_per_m=float(block[1, 0]),
+        kyy_n_per_m=float(block[1, 1]),
+        speed_rpm=60.0 * float(speed_hz),
+    )
 
 
-def _writer(sol: EquilibriumSolution, title: str) -> Callable[[Path], list[Path]]:
-    def write(directory: Path) -> list[Path]:
-        from runout import plotting
-
-        ax = plotting.plot_ball_loads(
-            np.degrees(sol.azimuth),
-            sol.inner_load,
-            sol.outer_load,
-            np.degrees(sol.inner_contact_angle),
-            np.degrees(sol.outer_contact_angle),
-            title,
-        )
-        png = plotting.save_figure(ax, directory / "balls.png")
-        path = directory / "balls.csv"
-        table = sol.ball_table()
-        with path.open("w", newline="") as fh:
-            w = csv.DictWriter(fh, fieldnames=list(table[0]))
-            w.writeheader()
-            for row in table:
-                w.writerow({k: f"{v:.12g}" for k, v in row.items()})
-        kpath = directory / "stiffness.csv"
-        with kpath.open("w", newline="") as fh:
-            w2 = csv.writer(fh)
-            w2.writerow(["", *DOF_NAMES])
-            for name, row in zip(DOF_NAMES, sol.stiffness, strict=True):
-                w2.writerow([name, *(f"{v:.12g}" for v in row)])
-        return [path, kpath, png]
-
-    return write
-
-
-def run(case: object) -> RunResult:
+def run(case: Case) -> RunResult:
     """Run the Jones–Harris equilibrium model (seed 001 §2.1) on a case."""
-    bearing = case.bearing  # type: ignore[attr-defined]
-    op = case.operation  # type: ignore[attr-defined]
-    control = case.analysis.race_control  # type: ignore[attr-defined]
+    bearing = case.bearing
+    op = case.operation
+    if not isinstance(bearing, BallBearing):
+        raise GeometryError("bearing.type", "the equilibrium model needs a ball bearing")
+    control = case.analysis.race_control
     sol = solve_equilibrium(bearing, op, race_control=control)
     loaded = sol.loaded
     # |α|: under a moment some balls press on the other flank (negative angles)
@@ -992,29 +932,29 @@ def run(case: object) -> RunResult:
             f"{int((~loaded).sum())} of {loaded.size} balls carry no inner-race load "
             "(pressed onto the outer groove by their centrifugal force only)"
         )
-    extras: dict[str, Any] = {
-        "race_control": control,
-        "ring_displacement": {
-            "axial_m": float(q[0]),
-            "x_m": float(q[1]),
-            "y_m": float(q[2]),
-            "tilt_x_rad": float(q[3]),
-            "tilt_y_rad": float(q[4]),
-        },
-        "stiffness_matrix": {
-            "dofs": list(DOF_NAMES),
-            "units": "rows F_a, F_x, F_y [N], M_x, M_y [N m]; columns per m or per rad",
-            "matrix": [[float(v) for v in row] for row in sol.stiffness],
-        },
-        "radial_stiffness": radial_stiffness(sol, op.speed),
-        "inner_contact_angle_deg": [math.degrees(v) for v in sol.inner_contact_angle],
-        "outer_contact_angle_deg": [math.degrees(v) for v in sol.outer_contact_angle],
-        "balls": sol.ball_table(),
-        "newton_iterations": sol.iterations,
-    }
+    details = EquilibriumDetails(
+        race_control=control,
+        ring_displacement=RingDisplacement(
+            axial_m=float(q[0]),
+            x_m=float(q[1]),
+            y_m=float(q[2]),
+            tilt_x_rad=float(q[3]),
+            tilt_y_rad=float(q[4]),
+        ),
+        stiffness_matrix=StiffnessMatrix(
+            dofs=DOF_NAMES,
+            units="rows F_a, F_x, F_y [N], M_x, M_y [N m]; columns per m or per rad",
+            matrix=tuple(tuple(float(v) for v in row) for row in sol.stiffness),
+        ),
+        radial_stiffness=radial_stiffness(sol, op.speed),
+        inner_contact_angle_deg=tuple(math.degrees(v) for v in sol.inner_contact_angle),
+        outer_contact_angle_deg=tuple(math.degrees(v) for v in sol.outer_contact_angle),
+        balls=tuple(sol.ball_table()),
+        newton_iterations=sol.iterations,
+    )
     return EquilibriumResult(
         model=MODEL,
-        title=case.title,  # type: ignore[attr-defined]
+        title=case.title,
         frequencies=bearing_frequencies(bearing, op, mean_alpha),
         contact_angle=mean_alpha,
         time=np.zeros(1),
@@ -1029,8 +969,7 @@ def run(case: object) -> RunResult:
         ),
         components=(),
         runout=Runout(0.0, 0.0, 0.0, 0.0),
-        extras=extras,
+        details=details,
         notes=tuple(notes),
-        writers=(_writer(sol, case.title),),  # type: ignore[attr-defined]
         solution=sol,
     )

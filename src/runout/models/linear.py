@@ -55,21 +55,22 @@ derives them):
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass, field, replace
-from pathlib import Path
 from typing import Any, Literal
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from runout.attribution import attribution_rows, attribution_table_rows
+from runout.attribution import attribution_rows
 from runout.bearing import Bearing, Operation
 from runout.decompose import exact_shares, split_runout
 from runout.errors import GeometryError
 from runout.imperfections import Harmonics, Imperfections
 from runout.kinematics import Frequencies, bearing_frequencies, pitch_ratio
-from runout.results import Component, Rows, RunResult, Source
+from runout.result_details import LinearDetails
+from runout.results import Component, RunResult, Source
 from runout.spectrum import (
     ANDERON_BANDS,
     MICROINCH,
@@ -88,6 +89,7 @@ __all__ = [
     "Terms",
     "closed_form_terms",
     "direct_sum",
+    "linear_result",
     "rates",
     "run",
     "solve",
@@ -247,7 +249,10 @@ def _element_sums(
     z = beta.size
     if equal:
         return np.where(multipliers % z == 0, float(z), 0.0).astype(np.complex128)
-    return np.exp(1j * np.multiply.outer(multipliers.astype(np.float64), beta)).sum(axis=1)
+    sums: NDArray[np.complex128] = np.exp(
+        1j * np.multiply.outer(multipliers.astype(np.float64), beta)
+    ).sum(axis=1)
+    return sums
 
 
 def _ring_terms(
@@ -540,7 +545,8 @@ class SpectralLines:
     def along(self, direction: ArrayLike) -> NDArray[np.complex128]:
         """Complex amplitude of the displacement along unit vector ``(cos a, sin a)`` [m]."""
         d = np.asarray(direction, dtype=np.float64)
-        return d[0] * self.x_complex + d[1] * self.y_complex
+        along: NDArray[np.complex128] = d[0] * self.x_complex + d[1] * self.y_complex
+        return along
 
     def select(self, mask: ArrayLike) -> SpectralLines:
         """The lines where ``mask`` is true."""
@@ -798,19 +804,28 @@ class LinearResult(RunResult):
         The closed-form lines (DC offset included at order 0).
     rates : Rates or None
         Angular rates used.
-    variant : str
-        ``"radial_spring"`` or ``"force_balance"``.
-    attribution : list of dict
-        Frequency attribution table of the bearing (:mod:`runout.attribution`).
     theta : ndarray
         Angle of the rotating ring at each instant [rad].
+
+    The variant and the attribution table are in :attr:`details`
+    (:class:`~runout.result_details.LinearDetails`).
     """
 
     spectral_lines: SpectralLines | None = None
     rates: Rates | None = None
-    variant: str = "radial_spring"
-    attribution: list[dict[str, Any]] = field(default_factory=list)
     theta: NDArray[np.float64] = field(default_factory=lambda: np.zeros(0))
+
+    @property
+    def variant(self) -> str:
+        """``"radial_spring"`` or ``"force_balance"``."""
+        d = self.details
+        return d.linear_variant if isinstance(d, LinearDetails) else "radial_spring"
+
+    @property
+    def attribution(self) -> list[dict[str, Any]]:
+        """Frequency attribution table of the bearing (:mod:`runout.attribution`)."""
+        d = self.details
+        return [dict(row) for row in d.attribution] if isinstance(d, LinearDetails) else []
 
     def _lines(self) -> SpectralLines:
         if self.spectral_lines is None:
@@ -907,51 +922,38 @@ class LinearResult(RunResult):
         rms = lines.order[keep] * lines.x_amplitude[keep] / math.sqrt(2.0) / MICROINCH
         return lines.order[keep], rms
 
-    def summary_sections(self) -> list[tuple[str, Rows]]:
-        """The common tables, the Anderon comparison and the attribution table."""
-        sections = super().summary_sections()
-        if self.spectral_lines is not None and len(self.spectral_lines):
-            comp = self.anderon_comparison()
-            sections.append(
-                (
-                    "Anderon: exact lines vs six-revolution DFT (as seed 002)",
-                    [
-                        (
-                            band,
-                            f"{v['lines']:.4g} (lines) / {v['dft']:.4g} (DFT)",
-                            f"{100 * v['relative_difference']:+.1f} %",
-                        )
-                        for band, v in comp.items()
-                    ],
-                )
-            )
-        if self.attribution:
-            sections.append(("Frequency attribution", attribution_table_rows(self.attribution)))
-        return sections
 
-    def write(self, directory: Path, *, history_revolutions: float = 3.0) -> list[Path]:
-        """The common files plus the linear model's waveform, spectrum and band plots."""
-        written = super().write(directory, history_revolutions=history_revolutions)
-        if self.spectral_lines is None or not len(self.spectral_lines):
-            return written
-        from runout import plotting
+def linear_result(result: RunResult) -> LinearResult:
+    r"""A :class:`LinearResult` of a linear run read back from its JSON
+    (:meth:`runout.results.RunResult.from_json`): its lines rebuilt from the components.
 
-        theta, v = self.density_waveform()
-        orders, rms = self.line_anderon_spectrum()
-        written += plotting.plot_linear_figures(
-            directory,
-            title=self.title or self.model,
-            revolutions=theta / TWO_PI,
-            density_um_per_rad=v * 1e6,
-            orders=orders,
-            line_rms_uin_per_rad=rms,
-            bands={b.name: (b.low, b.high) for b in ANDERON_BANDS.bands},
-            band_values={
-                "exact lines": self.anderon_lines().as_dict(),
-                "6-rev DFT": self.anderon_dft().as_dict(),
-            },
-        )
-        return written
+    Each order's x and y phasors X, Y give :math:`C_+ = (X + iY)/2` and
+    :math:`\bar C_- = (X - iY)/2` (:class:`SpectralLines`); the DC line (order 0) and the
+    lines the output leaves out as cancelled (below 1e-12 of the largest) are not in the
+    JSON, and neither enters the Anderon values (a density has no DC).
+    """
+    by_order: dict[float, list[complex]] = {}
+    for c in result.components:
+        if c.direction not in ("x", "y"):
+            continue
+        phasor = 0.5 * c.pp_m * complex(math.cos(c.phase_rad), math.sin(c.phase_rad))
+        pair = by_order.setdefault(c.order, [0j, 0j])
+        pair[0 if c.direction == "x" else 1] += phasor
+    orders = sorted(by_order)
+    x = np.array([by_order[o][0] for o in orders], dtype=np.complex128)
+    y = np.array([by_order[o][1] for o in orders], dtype=np.complex128)
+    labels = tuple(next((c.label for c in result.components if c.order == o), "") for o in orders)
+    lines = SpectralLines(
+        np.array(orders, dtype=np.float64),
+        0.5 * (x + 1j * y),
+        np.conj(0.5 * (x - 1j * y)),
+        labels,
+        float(result.frequencies.rotation),
+    )
+    rotation = float(result.frequencies.rotation)
+    theta = TWO_PI * rotation * result.time if rotation > 0 else np.zeros_like(result.time)
+    fields = {f.name: getattr(result, f.name) for f in dataclasses.fields(RunResult)}
+    return LinearResult(**fields, spectral_lines=lines, theta=theta)
 
 
 def _components(lines: SpectralLines) -> tuple[Component, ...]:
@@ -1083,15 +1085,13 @@ def run(case: Any) -> LinearResult:
         runout=split.runout,
         measuring_direction=direction,
         anderon=anderon,
-        extras={
-            "attribution": attribution,
-            "linear_variant": variant,
-            "explained_fraction": explained,
-        },
+        details=LinearDetails(
+            attribution=tuple(attribution),
+            linear_variant=variant,
+            explained_fraction=explained,
+        ),
         notes=tuple(notes),
         spectral_lines=lines,
         rates=rt,
-        variant=variant,
-        attribution=attribution,
         theta=theta,
     )

@@ -49,7 +49,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any, Literal
+from typing import TYPE_CHECKING, Any, Literal
 
 import numba
 import numpy as np
@@ -77,6 +77,9 @@ from runout.models._quasi_static import (
 )
 from runout.results import RunResult
 from runout.summary import operating_contact_angle
+
+if TYPE_CHECKING:
+    from runout.case import Case
 
 __all__ = [
     "Setup",
@@ -109,10 +112,18 @@ ElementProjection = Literal["none", "radial"]
 
 
 @numba.njit(cache=True)
-def hertz_potential(c, cth, sth, k, q0, q1, force):
+def hertz_potential(
+    c: NDArray[np.float64],
+    cth: NDArray[np.float64],
+    sth: NDArray[np.float64],
+    k: float,
+    q0: float,
+    q1: float,
+    force: NDArray[np.float64],
+) -> float:
     """Energy of the Hertz contacts minus the work of ``force`` at shaft centre q (compiled);
     the Newton line search of eq. 16-17 descends it (also used by the Monte Carlo kernel)."""
-    e = -(force[0] * q0 + force[1] * q1)
+    e: float = -(force[0] * q0 + force[1] * q1)
     for j in range(c.size):
         d = 2.0 * c[j] + q0 * cth[j] + q1 * sth[j]
         if d > 0.0:
@@ -121,7 +132,9 @@ def hertz_potential(c, cth, sth, k, q0, q1, force):
 
 
 @numba.njit(cache=True)
-def loaded_balls_collinear(c, cth, sth, q0, q1):
+def loaded_balls_collinear(
+    c: NDArray[np.float64], cth: NDArray[np.float64], sth: NDArray[np.float64], q0: float, q1: float
+) -> bool:
     """True when the loaded balls' directions span one line only (compiled).
 
     The stiffness of the loaded balls, Σ √d_k n_k n_kᵀ (without regularisation), is
@@ -142,7 +155,9 @@ def loaded_balls_collinear(c, cth, sth, q0, q1):
 
 
 @numba.njit(cache=True)
-def solve_kernel(c, theta, k, d_ref, max_iter):
+def solve_kernel(
+    c: NDArray[np.float64], theta: NDArray[np.float64], k: float, d_ref: float, max_iter: int
+) -> tuple[NDArray[np.float64], NDArray[np.int64], int, int]:
     """Newton solve of seed 001 eq. 16-17 at every instant, no external load (compiled).
 
     :func:`solve_kernel_loaded` with a zero force; same parameters and returns.
@@ -151,7 +166,17 @@ def solve_kernel(c, theta, k, d_ref, max_iter):
 
 
 @numba.njit(cache=True)
-def _newton(ci, cth, sth, k, d_ref, max_iter, force, q0, q1):
+def _newton(
+    ci: NDArray[np.float64],
+    cth: NDArray[np.float64],
+    sth: NDArray[np.float64],
+    k: float,
+    d_ref: float,
+    max_iter: int,
+    force: NDArray[np.float64],
+    q0: float,
+    q1: float,
+) -> tuple[float, float, int, int]:
     """Newton solve of seed 001 eq. 16-17 at one instant from (q0, q1) (compiled).
 
     Returns
@@ -224,7 +249,14 @@ def _newton(ci, cth, sth, k, d_ref, max_iter, force, q0, q1):
 
 
 @numba.njit(cache=True)
-def solve_kernel_loaded(c, theta, k, d_ref, max_iter, force):
+def solve_kernel_loaded(
+    c: NDArray[np.float64],
+    theta: NDArray[np.float64],
+    k: float,
+    d_ref: float,
+    max_iter: int,
+    force: NDArray[np.float64],
+) -> tuple[NDArray[np.float64], NDArray[np.int64], int, int]:
     r"""Newton solve of seed 001 eq. 16-17 with a radial load at every instant (compiled).
 
     Solves :math:`\sum_k P_k(\cos\theta_k, \sin\theta_k) = F` (eq. 16-17 with the radial
@@ -298,9 +330,25 @@ def solve_kernel_loaded(c, theta, k, d_ref, max_iter, force):
 
 @numba.njit(cache=True, nogil=True)
 def solve_fused(
-    t, rates, base, pitch, ring, n_inner, ball, ball_offsets, gains, planar,
-    k, d_ref, max_iter, force, disp, unloaded, first, last,
-):  # fmt: skip
+    t: NDArray[np.float64],
+    rates: NDArray[np.float64],
+    base: NDArray[np.float64],
+    pitch: NDArray[np.float64],
+    ring: NDArray[np.float64],
+    n_inner: int,
+    ball: NDArray[np.float64],
+    ball_offsets: NDArray[np.int64],
+    gains: NDArray[np.float64],
+    planar: bool,
+    k: float,
+    d_ref: float,
+    max_iter: int,
+    force: NDArray[np.float64],
+    disp: NDArray[np.float64],
+    unloaded: NDArray[np.signedinteger[Any]],
+    first: int,
+    last: int,
+) -> tuple[int, int]:
     """Seed 001 eq. 16-17 at every instant, the deviations evaluated on the fly (compiled).
 
     :func:`solve_kernel_loaded` fused with
@@ -431,10 +479,10 @@ class Setup:
     force: NDArray[np.float64] = field(default_factory=lambda: np.zeros(2))
 
 
-def setup(case: object) -> Setup:
+def setup(case: Case) -> Setup:
     """Derive α, K_n, δ_0 = (δ_i + δ_o)/2 and the kinematics (see module docstring)."""
-    bearing = case.bearing  # type: ignore[attr-defined]
-    op = case.operation  # type: ignore[attr-defined]
+    bearing = case.bearing
+    op = case.operation
     if not isinstance(bearing, BallBearing):
         raise GeometryError("bearing.type", "the quasi_static_2d model needs a ball bearing")
     if op.axial_load <= 0.0:
@@ -465,20 +513,20 @@ def setup(case: object) -> Setup:
 
 
 def approaches(
-    case: object,
+    case: Case,
     st: Setup,
     time: NDArray[np.float64],
     element_projection: ElementProjection = "none",
 ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """δ_k at x = y = 0 (eq. 10) and ball angles, shape (n, Z) each."""
-    dev = contact_deviations(case.imperfections, st.kinematics, time)  # type: ignore[attr-defined]
+    dev = contact_deviations(case.imperfections, st.kinematics, time)
     ball = dev.ball * (math.cos(st.contact_angle) if element_projection == "radial" else 1.0)
     c = st.initial_approach + 0.5 * (dev.inner + ball - dev.outer)
     return np.ascontiguousarray(c), np.ascontiguousarray(dev.theta)
 
 
 def solve(
-    case: object,
+    case: Case,
     time: NDArray[np.float64],
     st: Setup | None = None,
     *,
@@ -494,7 +542,7 @@ def solve(
     st = setup(case) if st is None else st
     t = np.ascontiguousarray(time, dtype=np.float64)
     src = contact_sources(
-        case.imperfections,  # type: ignore[attr-defined]
+        case.imperfections,
         st.kinematics,
         ring_gain=1.0,
         element_gain=math.cos(st.contact_angle) if element_projection == "radial" else 1.0,
@@ -538,7 +586,7 @@ def planar_note(contact_angle: float) -> str:
     )
 
 
-def run(case: object) -> RunResult:
+def run(case: Case) -> RunResult:
     """Run the quasi-static 2-D model (seed 001) on a case."""
     st = setup(case)
     return run_quasi_static(
@@ -548,5 +596,5 @@ def run(case: object) -> RunResult:
         model=MODEL,
         planar=True,
         description=planar_note(st.contact_angle),
-        extras={"initial_approach_m": st.initial_approach},
+        approach_m=st.initial_approach,
     )

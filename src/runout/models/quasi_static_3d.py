@@ -65,7 +65,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numba
 import numpy as np
@@ -94,6 +94,9 @@ from runout.models._quasi_static import (
 )
 from runout.results import RunResult
 from runout.summary import operating_contact_angle
+
+if TYPE_CHECKING:
+    from runout.case import Case
 
 __all__ = [
     "Setup",
@@ -147,8 +150,19 @@ def preload_approach(
 # kernel
 # --------------------------------------------------------------------------------------------
 @numba.njit(cache=True)
-def _potential(c, cth, sth, ca, sa, k, f, q0, q1, q2):
-    e = f[0] * q0 + f[1] * q1 + f[2] * q2
+def _potential(
+    c: NDArray[np.float64],
+    cth: NDArray[np.float64],
+    sth: NDArray[np.float64],
+    ca: float,
+    sa: float,
+    k: float,
+    f: NDArray[np.float64],
+    q0: float,
+    q1: float,
+    q2: float,
+) -> float:
+    e: float = f[0] * q0 + f[1] * q1 + f[2] * q2
     for j in range(c.size):
         d = c[j] - (q0 * cth[j] + q1 * sth[j]) * ca - q2 * sa
         if d > 0.0:
@@ -157,7 +171,20 @@ def _potential(c, cth, sth, ca, sa, k, f, q0, q1, q2):
 
 
 @numba.njit(cache=True)
-def _newton(ci, cth, sth, cos_a, sin_a, k, force, q0, q1, q2, d_ref, max_iter):
+def _newton(
+    ci: NDArray[np.float64],
+    cth: NDArray[np.float64],
+    sth: NDArray[np.float64],
+    cos_a: float,
+    sin_a: float,
+    k: float,
+    force: NDArray[np.float64],
+    q0: float,
+    q1: float,
+    q2: float,
+    d_ref: float,
+    max_iter: int,
+) -> tuple[float, float, float, int, int]:
     """Newton solve of seed 000 eq. 5 at one instant from (q0, q1, q2) (compiled).
 
     Returns
@@ -251,7 +278,17 @@ def _newton(ci, cth, sth, cos_a, sin_a, k, force, q0, q1, q2, d_ref, max_iter):
 
 
 @numba.njit(cache=True)
-def solve_kernel(c, theta, cos_a, sin_a, k, force, q_start, d_ref, max_iter):
+def solve_kernel(
+    c: NDArray[np.float64],
+    theta: NDArray[np.float64],
+    cos_a: float,
+    sin_a: float,
+    k: float,
+    force: NDArray[np.float64],
+    q_start: NDArray[np.float64],
+    d_ref: float,
+    max_iter: int,
+) -> tuple[NDArray[np.float64], NDArray[np.int64], int, int]:
     """Newton solve of seed 000 eq. 5 at every instant (compiled).
 
     Parameters
@@ -331,9 +368,27 @@ def solve_kernel(c, theta, cos_a, sin_a, k, force, q_start, d_ref, max_iter):
 
 @numba.njit(cache=True, nogil=True)
 def solve_fused(
-    t, rates, base, pitch, ring, n_inner, ball, ball_offsets, gains, planar,
-    cos_a, sin_a, k, force, d_ref, max_iter, disp, unloaded, first, last,
-):  # fmt: skip
+    t: NDArray[np.float64],
+    rates: NDArray[np.float64],
+    base: NDArray[np.float64],
+    pitch: NDArray[np.float64],
+    ring: NDArray[np.float64],
+    n_inner: int,
+    ball: NDArray[np.float64],
+    ball_offsets: NDArray[np.int64],
+    gains: NDArray[np.float64],
+    planar: bool,
+    cos_a: float,
+    sin_a: float,
+    k: float,
+    force: NDArray[np.float64],
+    d_ref: float,
+    max_iter: int,
+    disp: NDArray[np.float64],
+    unloaded: NDArray[np.signedinteger[Any]],
+    first: int,
+    last: int,
+) -> tuple[int, int]:
     """Seed 000 eq. 5 at every instant, the deviations evaluated on the fly (compiled).
 
     :func:`solve_kernel` fused with :func:`runout.models._quasi_static.contact_series`: at
@@ -584,10 +639,10 @@ def check_axial_room(
     )
 
 
-def setup(case: object) -> Setup:
+def setup(case: Case) -> Setup:
     """Contact angle, K_n, δ_pl, loads and frequencies of a case (see module docstring)."""
-    bearing = case.bearing  # type: ignore[attr-defined]
-    op = case.operation  # type: ignore[attr-defined]
+    bearing = case.bearing
+    op = case.operation
     if not isinstance(bearing, BallBearing):
         raise GeometryError("bearing.type", "the quasi_static_3d model needs a ball bearing")
     if op.axial_load <= 0.0:
@@ -603,7 +658,7 @@ def setup(case: object) -> Setup:
     kn = ball_race_contacts(bearing, alpha).combined_stiffness
     z = bearing.elements
     dpl = preload_approach(kn, z, alpha, op.axial_load)
-    check_axial_room(case.imperfections, bearing, alpha, dpl)  # type: ignore[attr-defined]
+    check_axial_room(case.imperfections, bearing, alpha, dpl)
     # The radial load acts on the shaft along β; in the paper's frame (outer ring moving
     # relative to the inner ring) that is the outer ring pushed along -β.
     beta = op.radial_load_direction
@@ -623,16 +678,16 @@ def setup(case: object) -> Setup:
 
 
 def approaches(
-    case: object, st: Setup, time: NDArray[np.float64]
+    case: Case, st: Setup, time: NDArray[np.float64]
 ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """Approach at q = 0 (eq. 2) and ball angles, shape (n, Z) each."""
-    dev = contact_deviations(case.imperfections, st.kinematics, time)  # type: ignore[attr-defined]
+    dev = contact_deviations(case.imperfections, st.kinematics, time)
     c = (dev.inner - dev.outer) * math.cos(st.contact_angle) + dev.ball + st.preload
     return np.ascontiguousarray(c), np.ascontiguousarray(dev.theta)
 
 
 def solve(
-    case: object, time: NDArray[np.float64], st: Setup | None = None
+    case: Case, time: NDArray[np.float64], st: Setup | None = None
 ) -> tuple[NDArray[np.float64], NDArray[np.integer[Any]]]:
     """Shaft (inner-ring) centre relative to the outer ring (3, n) [m] and unloaded-ball counts
     (n,) at ``time``: the kernel's outer-ring position (seed 000's frame) with its sign turned.
@@ -645,7 +700,7 @@ def solve(
     st = setup(case) if st is None else st
     t = np.ascontiguousarray(time, dtype=np.float64)
     src = contact_sources(
-        case.imperfections,  # type: ignore[attr-defined]
+        case.imperfections,
         st.kinematics,
         ring_gain=math.cos(st.contact_angle),
         element_gain=1.0,
@@ -675,13 +730,13 @@ def solve(
     return disp, unloaded
 
 
-def time_grid_of(case: object) -> NDArray[np.float64]:
+def time_grid_of(case: Case) -> NDArray[np.float64]:
     """The instants [s] of a case's analysis (``revolutions`` turns, ``samples`` instants)."""
-    an = case.analysis  # type: ignore[attr-defined]
-    return time_grid(case.operation.speed, an.revolutions, an.samples)  # type: ignore[attr-defined]
+    an = case.analysis
+    return time_grid(case.operation.speed, an.revolutions, an.samples)
 
 
-def axial_position(case: object, st: Setup) -> float:
+def axial_position(case: Case, st: Setup) -> float:
     r"""Axial position of the shaft at the preload, from the rings axially centred [m].
 
     The groove curvature centres are :math:`A + \delta_{pl}` apart along the contact line at
@@ -689,11 +744,14 @@ def axial_position(case: object, st: Setup) -> float:
     the loaded contact angle of Harris's relation this is the equilibrium model's static
     position; with a fixed angle it is the position that angle implies).
     """
-    a = case.bearing.curvature_distance  # type: ignore[attr-defined]
+    bearing = case.bearing
+    if not isinstance(bearing, BallBearing):
+        raise GeometryError("bearing.type", "the quasi_static_3d model needs a ball bearing")
+    a = bearing.curvature_distance
     return float((a + st.preload) * math.sin(st.contact_angle))
 
 
-def run(case: object) -> RunResult:
+def run(case: Case) -> RunResult:
     """Run the quasi-static 3-D model (seed 000) on a case.
 
     The reported z is measured from the rings axially centred (:func:`axial_position` plus
@@ -703,7 +761,7 @@ def run(case: object) -> RunResult:
     offset = axial_position(case, st)
 
     def solve_reported(
-        case: object, time: NDArray[np.float64], st: Setup | None = None
+        case: Case, time: NDArray[np.float64], st: Setup | None = None
     ) -> tuple[NDArray[np.float64], NDArray[np.integer[Any]]]:
         disp, unloaded = solve(case, time, st)
         disp[2] += offset
@@ -716,5 +774,5 @@ def run(case: object) -> RunResult:
         model=MODEL,
         planar=False,
         description="contact angle fixed at its preloaded value (seed 000)",
-        extras={"preload_approach_m": st.preload},
+        approach_m=st.preload,
     )
