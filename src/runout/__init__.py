@@ -23,6 +23,7 @@ from runout.errors import CaseError, GeometryError, NumericalError, RunoutError 
 if TYPE_CHECKING:
     from runout.api import Imperfections, run
     from runout.case import Case, load_case
+    from runout.diagnose import diagnose
 
 __version__ = "0.1.0"
 
@@ -30,6 +31,7 @@ __version__ = "0.1.0"
 _LAZY = {
     "Case": "runout.case",
     "Imperfections": "runout.api",
+    "diagnose": "runout.diagnose",
     "load_case": "runout.case",
     "run": "runout.api",
 }
@@ -61,6 +63,7 @@ __all__ = [
     "RollerBearing",
     "RunoutError",
     "__version__",
+    "diagnose",
     "load_case",
     "run",
 ]

@@ -811,6 +811,12 @@ def reproduce_command(
     _out.print(f"wrote {escape(str(out))}")
 
 
+# `runout diagnose` lives in its own module (the inverse of the linear model)
+from runout._cli_diagnose import register as _register_diagnose  # noqa: E402
+
+_register_diagnose(app)
+
+
 def main() -> None:
     """Console-script entry point.
 

@@ -19,6 +19,7 @@ from collections.abc import Callable, Iterable
 from runout.validation import (
     contact,
     cross_model,
+    diagnosis,
     kinematics,
     seed000_tada,
     seed001_kim,
@@ -152,6 +153,12 @@ SECTIONS: list[Section] = [
                 seed001_kim.equilibrium_checks,
             ),
         ],
+    ),
+    Section(
+        "diagnosis",
+        "Diagnosis from a measured record (`runout.diagnose`)",
+        diagnosis.INTRO,
+        [Group("", "", diagnosis.checks)],
     ),
     Section(
         "studies",

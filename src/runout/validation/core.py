@@ -64,13 +64,18 @@ class Check:
         ``max``/``min``: ours ≤ ``tol`` or ours ≥ ``tol`` (``published`` may be None).
     tol : float
         The tolerance the source supports (the one of the reference test).
-    spread : callable, optional
-        (low, high) of the documented spread: outside ``tol`` but inside it is "within the
-        documented spread". With ``ours`` returning (value, low, high) the spread is that one.
+    expected : str
+        What a check against theory expects (shown in the "Published" column when
+        ``published`` is None).
     reason : str
         Why a gap exists (our words); "—" when there is none.
     case : str, optional
         The example file the value is computed from.
+    spread_from_ours : bool
+        ``ours`` returns (value, low, high), the documented spread of ours: a published value
+        outside ``tol`` but inside (low, high) is "within the documented spread".
+    digits : int
+        Significant digits shown.
     """
 
     source: str

@@ -33,6 +33,7 @@ __all__ = [
     "FIG13",
     "FIG15",
     "FIG17",
+    "FIG20",
     "LINEAR_DRAWS",
     "LINEAR_INTRO",
     "LINEAR_OUTRO",
@@ -60,6 +61,10 @@ FIG12 = {"U": 0.46, "R": 60.52, "L": 2.16, "M": 1.46, "H": 1.45, "E": 1.72, "A":
 FIG13 = {"L": 1.87, "M": 0.75, "H": 0.78}
 FIG15 = {"L": 0.57, "M": 0.47, "H": 0.46}
 FIG17 = {"L": 1.04, "M": 1.17, "H": 1.13}
+#: Fig. 20: band values [Anderon] measured on a 608 by the ANDERON METER ADA-100; the paper
+#: reads them as "near" Fig. 12's, so the bearing's deviations as "near" eq. 43–47 (the record
+#: itself is not published). Read back by :mod:`runout.validation.diagnosis`.
+FIG20 = {"L": 1.14, "M": 1.02, "H": 1.40}
 
 
 @dataclass(frozen=True)
@@ -84,7 +89,8 @@ def waviness(k: int) -> float:
 
 
 def inner_lines() -> tuple[np.ndarray, np.ndarray]:
-    """Eq. 35: eccentricity (order 1), slant (2), waviness nZ±1 at I_{nZ±1}; times cos α."""
+    """Eq. 35: eccentricity (order 1), slant (2), waviness of nZ ± 1 lobes at the orders
+    nZ(1 + γ)/2 ± 1; times cos α."""
     g = _g608()
     f_inner = (1 + g.d_b * g.cos_a / g.d_c) / 2
     orders, amps = [1.0, 2.0], [W_I1, W_S]
