@@ -128,3 +128,20 @@ WAVY = [
     {"part": "outer", "order": 9, "amplitude": 15e-9},
     {"part": "ball", "order": 2, "amplitude": 10e-9, "element": 2},
 ]
+
+
+def typed_case(
+    bearing: Any,
+    operation: Any,
+    waviness: list[dict[str, Any]] | None = None,
+    **analysis: Any,
+) -> Case:
+    """A case from typed inputs: ``waviness`` entries are the keyword arguments of
+    :meth:`runout.api.Imperfections.waviness` (``part``, ``order``, ``amplitude`` or
+    ``peak_to_peak``, ``phase``, ``element``), ``analysis`` the ``[analysis]`` keys."""
+    imperfections = None
+    if waviness:
+        imperfections = Imperfections(elements=bearing.elements)
+        for entry in waviness:
+            imperfections = imperfections.waviness(**entry)
+    return Case.from_inputs(bearing, operation, imperfections, analysis=analysis)

@@ -10,7 +10,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from runout.case import Case, parse_case
+from cases import typed_case
+from runout import Operation, examples
+from runout.case import Case
 from runout.errors import ContactLossError, GeometryError, NumericalError
 from runout.models import quasi_static_3d as qs3
 
@@ -23,26 +25,13 @@ def _case(
     rotating: str = "inner",
     samples: int = 256,
 ) -> Case:
-    return parse_case(
-        {
-            "bearing": {
-                "type": "ball",
-                "elements": 8,
-                "element_diameter": 1e-3,
-                "pitch_diameter": 7e-3,
-                "inner_conformity": 0.52,
-                "outer_conformity": 0.53,
-                "radial_clearance": 10e-6,
-            },
-            "operation": {
-                "rotating_ring": rotating,
-                "speed": 90.0,
-                "axial_load": axial,
-                "radial_load": radial,
-            },
-            "waviness": waviness,
-            "analysis": {"model": "quasi_static_3d", "revolutions": 4, "samples": samples},
-        }
+    return typed_case(
+        examples.tada_bearing(radial_clearance=10e-6),
+        Operation(rotating_ring=rotating, speed=90.0, axial_load=axial, radial_load=radial),
+        waviness,
+        model="quasi_static_3d",
+        revolutions=4,
+        samples=samples,
     )
 
 

@@ -11,6 +11,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from cases import typed_case
+from runout import BallBearing, Operation
 from runout._linalg import solve_spd3
 from runout._study_kernels import solve_batch
 from runout.case import Case, parse_case
@@ -29,18 +31,16 @@ def tada(
     samples: int = 4096,
     rotating: str = "outer",
 ) -> Case:
-    return parse_case(
-        {
-            "bearing": {
-                "elements": z,
-                "element_diameter": 1e-3,
-                "pitch_diameter": 7e-3,
-                "radial_clearance": 10e-6,
-            },
-            "operation": {"rotating_ring": rotating, "speed": 90.0, "axial_load": 20.0},
-            "waviness": waviness,
-            "analysis": {"model": "quasi_static_3d", "revolutions": revs, "samples": samples},
-        }
+    bearing = BallBearing(
+        elements=z, element_diameter=1e-3, pitch_diameter=7e-3, radial_clearance=10e-6
+    )
+    return typed_case(
+        bearing,
+        Operation(rotating_ring=rotating, speed=90.0, axial_load=20.0),
+        waviness,
+        model="quasi_static_3d",
+        revolutions=revs,
+        samples=samples,
     )
 
 

@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 
 from cases import KIM_TOML
+from runout import examples
 from runout.case import load_case, parse_case
 from runout.models import run_model
 from runout.results import RunResult
@@ -36,7 +37,7 @@ def tada() -> RunResult:
 @pytest.fixture(scope="module")
 def linear() -> RunResult:
     """Many lines in x and y, repeatable and not."""
-    return run_model(load_case(EXAMPLES / "seed002_608.toml"))
+    return run_model(examples.anderon_608().case())
 
 
 def test_dataframe_has_one_row_per_line_largest_first(linear: RunResult) -> None:

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -342,11 +341,11 @@ def test_run_case_gives_a_complete_result_and_files(tmp_path, ring: str) -> None
 def test_summary_shows_the_motion_across_the_load() -> None:
     # the inner ring of a roller bearing moves far more across the load than along it: the
     # readable table says so, next to the measuring-direction figure
-    from runout.case import load_case
+    from runout import examples
     from runout.display import LENGTH_UNITS
     from runout.models import run_model
 
-    result = run_model(load_case(Path(__file__).parents[2] / "examples" / "seed004_nu209.toml"))
+    result = run_model(examples.nu209().case())
     rows = {name: (value, unit) for name, value, unit in result.summary_sections()[0][1]}
     across = result.details.horizontal_pp_m
     value, unit = rows["radial p-p across the load"]  # shown at the table's scale (um here)
