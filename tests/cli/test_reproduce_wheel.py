@@ -2,11 +2,13 @@
 
 The example case files the validation computes from ship inside the package
 (``runout/_examples_data``, copies of ``examples/*.toml``). The wheel is built from a copy of
-the source tree (offline: ``pip wheel --no-build-isolation --no-index``), installed with
-``pip install --target`` into a directory of its own, and ``runout reproduce --check`` runs
-there, from another working directory, against the repository's VALIDATION.md. The installed
-package comes first on the path (PYTHONPATH before the editable install of the checkout), and
-the test asserts that it, and its example files, are the ones imported.
+the source tree (offline: ``pip wheel --no-build-isolation --no-index``) and installed into a
+fresh virtual environment (``python -m venv``; offline, its dependencies -- numpy, scipy,
+numba, ... -- are borrowed from the project's environment through a ``.pth`` line, which does
+not carry the checkout's editable install); ``runout reproduce --check`` runs with the fresh
+environment's interpreter, from another working directory, against the repository's
+VALIDATION.md. The test asserts that the installed package, and its example files, are the
+ones imported.
 """
 
 from __future__ import annotations
@@ -45,7 +47,7 @@ def test_shipped_case_files_equal_the_examples_directory() -> None:
 
 @pytest.fixture(scope="module")
 def installed(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    """The wheel built from a copy of the tree, installed into a directory of its own."""
+    """The wheel built from a copy of the tree, installed into a fresh venv: its interpreter."""
     source = tmp_path_factory.mktemp("source")
     # a copy: the build writes build/ and *.egg-info next to the sources
     ignore = shutil.ignore_patterns("__pycache__", "*.egg-info", "*.pyc")
@@ -72,19 +74,27 @@ def installed(tmp_path_factory: pytest.TempPathFactory) -> Path:
     names = zipfile.ZipFile(wheel).namelist()
     shipped = {Path(n).name for n in names if n.startswith("runout/_examples_data/")}
     assert {p.name for p in EXAMPLES.glob("*.toml")} <= shipped, "the wheel lacks case files"
-    target = tmp_path_factory.mktemp("site")
+    venv = tmp_path_factory.mktemp("venv")
+    _run([sys.executable, "-m", "venv", "--without-pip", str(venv)], dist)
+    python = venv / ("Scripts/python.exe" if os.name == "nt" else "bin/python")
+    purelib = "import sysconfig; print(sysconfig.get_paths()['purelib'])"
+    target = Path(_run([str(python), "-c", purelib], dist).strip())
+    ours = Path(_run([sys.executable, "-c", purelib], dist).strip())
+    # the dependencies only: a path added by a .pth line does not process that directory's
+    # own .pth files, so the checkout's editable install of runout stays out
+    (target / "_dependencies.pth").write_text(f"{ours}\n", encoding="utf-8")
     _run(
         [*pip, "install", "--no-deps", "--no-index", "-q", "--target", str(target), str(wheel)],
         dist,
     )
-    return target
+    return python
 
 
 def test_installed_wheel_reproduces_validation_md(installed: Path, tmp_path: Path) -> None:
-    env = {**os.environ, "PYTHONPATH": str(installed)}
+    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "PYTHONHOME")}
     where = _run(
         [
-            sys.executable,
+            str(installed),
             "-c",
             "import runout; from runout.validation.cases import examples_dir; "
             "print(runout.__file__); print(examples_dir())",
@@ -93,11 +103,12 @@ def test_installed_wheel_reproduces_validation_md(installed: Path, tmp_path: Pat
         env,
     ).splitlines()
     # the installed package and its own example files, not the checkout's src/ or examples/
-    assert Path(where[0]).is_relative_to(installed), where
-    assert Path(where[1]).is_relative_to(installed), where
+    venv = installed.parents[1]
+    assert Path(where[0]).is_relative_to(venv), where
+    assert Path(where[1]).is_relative_to(venv), where
     out = _run(
         [
-            sys.executable,
+            str(installed),
             "-m",
             "runout.cli",
             "reproduce",
