@@ -18,6 +18,7 @@ import functools
 import json
 import math
 import os
+import shutil
 import sys
 import warnings
 from collections.abc import Callable
@@ -444,6 +445,7 @@ def run(
             )
             (directory / "case.toml").write_text(case_text, encoding="utf-8")
             written += [directory / "summary.json", directory / "case.toml"]
+            written += _copy_profiles(case_file, case, directory)
             if report:
                 from runout.report import build_report
 
@@ -453,6 +455,28 @@ def run(
         if not as_json:
             for path in written:
                 _out.print(f"wrote {escape(str(path))}")
+
+
+def _copy_profiles(case_file: Path, case: Any, directory: Path) -> list[Path]:
+    """Copy the profile CSVs the case names by a relative path into ``--out``.
+
+    DIR/case.toml names them relative to itself, as the case file did: without the copies
+    ``runout run DIR/case.toml`` and ``runout report DIR`` could not read the case. A profile
+    must lie inside the case file's directory (or a ``RUNOUT_PROFILE_DIRS`` directory, named
+    by an absolute path, which the copy of the case reaches as it is).
+    """
+    copied: list[Path] = []
+    for entry in case.spec.profile:
+        name = Path(entry.file)
+        if name.is_absolute() or ".." in name.parts:
+            continue  # read from where it is, by the same absolute name
+        source, target = case_file.parent / name, directory / name
+        if target.exists() and target.samefile(source):
+            continue
+        target.parent.mkdir(parents=True, exist_ok=True)
+        shutil.copyfile(source, target)
+        copied.append(target)
+    return copied
 
 
 def _case_text(case_file: Path, case: Any, model: str | None, sets: list[str] | None) -> str:
