@@ -43,7 +43,8 @@ def _table(diagnosis: Any) -> list[Any]:
             escape(" | ".join(str(k) for k in e.lobes)),
             escape(format_length(e.amplitude_m)),
             escape(format_length(e.uncertainty_m)),
-            f"{e.phase_rad * 57.29577951308232:.1f}",
+            # a phase a hair below 2 pi is 0: print 0.0, not 360.0
+            f"{round(e.phase_rad * 57.29577951308232, 1) % 360.0:.1f}",
             f"{e.frequency_hz:.6g}",
             e.whirl,
             f"{e.share:.3f}",

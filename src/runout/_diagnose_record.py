@@ -3,7 +3,7 @@
 A record is a CSV file with a header row: a time column (``time_s``, or ``t [ms]``), one or both
 of ``x_m`` and ``y_m`` (radial displacement of the measured ring along x and y, see the
 conventions page; ``x [um]`` gives the unit in brackets) and optionally a tachometer column
-``rev`` (a revolution count, or one pulse per revolution). Every failure is a
+``rev`` (a revolution count, or one pulse per revolution at two levels). Every failure is a
 :class:`RecordError` naming the file and the row (the file's line number, the header being
 line 1) or the column.
 """
@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Literal
 
@@ -23,10 +23,12 @@ from runout.errors import RunoutError
 from runout.limits import RECORD_BYTES_PER_FILE_BYTE, Budget, format_bytes, max_record_bytes
 
 __all__ = [
+    "ARRAYS",
     "MIN_SAMPLES",
     "RECORD_BYTES_PER_FILE_BYTE",
     "Record",
     "RecordError",
+    "file_line",
     "read_record",
     "record_from_arrays",
 ]
@@ -41,6 +43,9 @@ STEP_RTOL = 1e-3
 #: Largest relative variation of the speed a tachometer may show over the record: the fit
 #: assumes a constant speed (lines smear by the variation times their order).
 TACHO_SPEED_RTOL = 0.01
+#: Largest radial displacement [m] and velocity [m/s] a record may hold: anything larger is
+#: a column in the wrong unit (micrometres in an ``x_m`` column), not a bearing's runout.
+MAX_VALUE = {"displacement": 1.0, "velocity": 1.0e3}
 
 _HEADER = re.compile(r"^\s*([A-Za-z][A-Za-z0-9_]*?)\s*(?:\[\s*([^\]]*?)\s*\])?\s*$")
 _DISPLACEMENT_SUFFIX = {"_m": "m"}
@@ -82,8 +87,11 @@ class Record:
         ``"x"`` and/or ``"y"``: displacement [m] or velocity [m/s] (see ``quantity``).
     quantity : {"displacement", "velocity"}
     tachometer_hz : float or None
-        Speed of the rotating ring from the tachometer column [Hz], if any: whole revolutions
-        over the time they took (first instant of each new count or pulse).
+        Speed of the rotating ring from the tachometer column [Hz], if any: the least-squares
+        rate of the instants each revolution starts.
+    columns : dict of str to str
+        The header's name of the time column and of each channel (``"x"`` -> ``"x [um]"``),
+        for messages.
     """
 
     file: str
@@ -91,6 +99,11 @@ class Record:
     channels: dict[str, FloatArray]
     quantity: Quantity
     tachometer_hz: float | None = None
+    columns: dict[str, str] = field(default_factory=dict)
+
+    def column(self, channel: str) -> str:
+        """The header's name of ``channel`` (``"time"``, ``"x"`` or ``"y"``)."""
+        return self.columns.get(channel, channel)
 
     @property
     def samples(self) -> int:
@@ -180,6 +193,15 @@ def _columns(
             raise RecordError(file, f"column {name!r}", f"a second {role} column")
         roles[role] = (i, scale)
     if "time" not in roles:
+        only = header[0] if len(header) == 1 else ""
+        for sep, word in ((";", "semicolons"), ("\t", "tabs")):
+            if sep in only:
+                raise RecordError(
+                    file,
+                    "header",
+                    f"the fields are separated by {word}: a record is comma-separated (save "
+                    "it as CSV with commas, and decimal points)",
+                )
         raise RecordError(
             file,
             "header",
@@ -197,6 +219,33 @@ def _columns(
     return roles, ignored
 
 
+#: The file name of a record built from arrays (:func:`record_from_arrays`).
+ARRAYS = "<arrays>"
+
+
+def file_line(file: str, index: int) -> int:
+    """The line number in ``file`` (the header is line 1) of data row ``index`` (0-based).
+
+    The reader skips blank lines, so a blank line inside the data moves every later row; the
+    file is read again to count them (only to name the row of an error). A record built from
+    arrays counts its rows from 2, as a file without blank lines would.
+    """
+    if file == ARRAYS:
+        return index + 2
+    try:
+        with open(file, encoding="utf-8-sig", newline="") as fh:
+            fh.readline()
+            seen = -1
+            for number, line in enumerate(fh, start=2):
+                if line.strip():
+                    seen += 1
+                    if seen == index:
+                        return number
+    except (OSError, UnicodeDecodeError):
+        pass
+    return index + 2
+
+
 def _parse_error(file: str, exc: ValueError, header: list[str]) -> RecordError:
     """numpy's loadtxt message turned into the file's line and the column's name."""
     text = str(exc)
@@ -204,12 +253,14 @@ def _parse_error(file: str, exc: ValueError, header: list[str]) -> RecordError:
     if m:
         value, row, col = m.group(1), int(m.group(2)), int(m.group(3))
         name = header[col - 1].strip() if 0 < col <= len(header) else str(col)
-        return RecordError(file, f"row {row + 2}, column {name!r}", f"{value!r} is not a number")
+        return RecordError(
+            file, f"row {file_line(file, row)}, column {name!r}", f"{value!r} is not a number"
+        )
     m = re.search(r"number of columns changed from (\d+) to (\d+) at row (\d+)", text)
     if m:
         return RecordError(
             file,
-            f"row {int(m.group(3)) + 1}",  # loadtxt counts these rows from 1
+            f"row {file_line(file, int(m.group(3)) - 1)}",  # loadtxt counts these from 1
             f"has {m.group(2)} fields where the header has {m.group(1)}",
         )
     return RecordError(file, "", f"cannot be read as CSV ({text})")
@@ -266,7 +317,8 @@ def read_record(
     import warnings
 
     try:
-        with p.open("r", encoding="utf-8", newline="") as fh:
+        # utf-8-sig: a spreadsheet's "CSV UTF-8" starts with a byte-order mark
+        with p.open("r", encoding="utf-8-sig", newline="") as fh:
             first = fh.readline()
             if not first.strip():
                 raise RecordError(file, "row 1", "no header row (expected e.g. time_s,x_m,y_m)")
@@ -275,7 +327,10 @@ def read_record(
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")  # an empty body: our own error below
                 # the open file is parsed from its second line, without a copy of the text
-                data = np.loadtxt(fh, delimiter=",", dtype=np.float64, ndmin=2, comments=None)
+                # quotechar: exports that quote every field ("0.5") are read as numbers
+                data = np.loadtxt(
+                    fh, delimiter=",", dtype=np.float64, ndmin=2, comments=None, quotechar='"'
+                )
     except RecordError:
         raise
     except UnicodeDecodeError as exc:
@@ -288,7 +343,9 @@ def read_record(
         raise RecordError(file, "", "has a header but no data rows")
     if data.shape[1] != len(header):
         raise RecordError(
-            file, "row 2", f"has {data.shape[1]} fields where the header has {len(header)}"
+            file,
+            f"row {file_line(file, 0)}",
+            f"has {data.shape[1]} fields where the header has {len(header)}",
         )
     cols = {role: np.ascontiguousarray(data[:, i]) * scale for role, (i, scale) in roles.items()}
     del data
@@ -313,11 +370,11 @@ def record_from_arrays(
             names.append(role + suffix if role != "rev" else "rev")
     roles = {role: (i, 1.0) for i, role in enumerate(cols)}
     if "x" not in cols and "y" not in cols:
-        raise RecordError("<arrays>", "", "give x or y (or both)")
+        raise RecordError(ARRAYS, "", "give x or y (or both)")
     sizes = {a.size for a in cols.values()}
     if len(sizes) != 1:
-        raise RecordError("<arrays>", "", "time, x, y and rev must have the same length")
-    return _checked("<arrays>", cols, names, roles, quantity)
+        raise RecordError(ARRAYS, "", "time, x, y and rev must have the same length")
+    return _checked(ARRAYS, cols, names, roles, quantity)
 
 
 def _checked(
@@ -335,9 +392,24 @@ def _checked(
         if bad.size:
             raise RecordError(
                 file,
-                f"row {int(bad[0]) + 2}, column {name(role)!r}",
+                f"row {file_line(file, int(bad[0]))}, column {name(role)!r}",
                 f"{float(values[bad[0]])!r} is not a finite number ({bad.size} such value(s); fill "
                 "or cut the gaps, the fit needs every instant)",
+            )
+    limit = MAX_VALUE[quantity]
+    unit = "m" if quantity == "displacement" else "m/s"
+    for role in ("x", "y"):
+        column = cols.get(role)
+        if column is None or column.size == 0:
+            continue
+        worst = int(np.argmax(np.abs(column)))
+        if abs(column[worst]) > limit:
+            raise RecordError(
+                file,
+                f"row {file_line(file, worst)}, column {name(role)!r}",
+                f"{float(column[worst]):.6g} {unit} is no bearing's radial motion: check the "
+                f"column's unit (a bare {role}_{'m' if unit == 'm' else 'm_per_s'} is in {unit}; "
+                f"give it in brackets, e.g. '{role} [um]')",
             )
     t = cols["time"]
     n = t.size
@@ -349,7 +421,7 @@ def _checked(
         i = int(back[0])
         raise RecordError(
             file,
-            f"row {i + 3}, column {name('time')!r}",
+            f"row {file_line(file, i + 1)}, column {name('time')!r}",
             f"time does not increase ({float(t[i])!r} then {float(t[i + 1])!r} s)",
         )
     step = float(np.median(dt))  # a gap must not move the reference step
@@ -362,58 +434,89 @@ def _checked(
             if ratio > 1.5
             else f"a step of {dt[worst]:.6g} s where the mean step is {step:.6g} s"
         )
+        last = float(np.max(np.abs(t)))
+        if float(np.spacing(last)) > 0.25 * STEP_RTOL * step:
+            # a double holds 16 digits: time stamps from an epoch lose the step's precision
+            fix = (
+                f"time stamps near {last:.4g} s are stored to {float(np.spacing(last)):.2g} s "
+                "only: give the time from the start of the record"
+            )
+        else:
+            fix = "resample the record on a uniform grid"
         raise RecordError(
             file,
-            f"row {worst + 3}, column {name('time')!r}",
-            f"time is not uniformly sampled: {what}; resample the record on a uniform grid",
+            f"row {file_line(file, worst + 1)}, column {name('time')!r}",
+            f"time is not uniformly sampled: {what}; {fix}",
         )
     rev = cols.get("rev")
     tacho = None if rev is None else _tachometer(file, name("rev"), t, rev)
     channels: dict[str, FloatArray] = {role: cols[role] for role in ("x", "y") if role in cols}
-    return Record(file, t, channels, quantity, tacho)
+    for role, values in channels.items():
+        if float(np.ptp(values)) == 0.0:
+            raise RecordError(
+                file,
+                f"column {name(role)!r}",
+                f"is constant ({float(values[0])!r} {unit} throughout): a dead channel would be "
+                "read as a motion of zero; drop the column to diagnose the other alone",
+            )
+    names = {role: name(role) for role in ("time", *channels)}
+    return Record(file, t, channels, quantity, tacho, names)
 
 
 def _tachometer(file: str, column: str, t: FloatArray, rev: FloatArray) -> float:
-    """Speed [Hz] from a revolution count or a once-per-revolution pulse train."""
+    """Speed [Hz] from a revolution count or a once-per-revolution pulse train.
+
+    A column of two levels (0/1, or a TTL 0/5 V) is a pulse train: a revolution starts at each
+    rising edge. Otherwise it is a cumulative count (with or without its fraction, as an
+    encoder gives it): revolution L starts where the count reaches L, interpolated between
+    the samples. The speed is the least-squares slope of those instants over every revolution,
+    not the first and last alone (each instant is only known to a time step).
+    """
     values = np.unique(rev)
-    if values.size <= 2 and np.all(np.isin(values, (0.0, 1.0))):
-        rising = np.flatnonzero((rev[1:] > 0.5) & (rev[:-1] <= 0.5)) + 1
+    if values.size == 2 or (values.size == 1 and values[0] in (0.0, 1.0)):
+        high = rev > 0.5 * (values[0] + values[-1])
+        rising = np.flatnonzero(high[1:] & ~high[:-1]) + 1
         if rising.size < 3:
             raise RecordError(
                 file,
                 f"column {column!r}",
                 f"a pulse tachometer needs at least 3 pulses (2 revolutions), found {rising.size}",
             )
-        periods = np.diff(t[rising])
-        _steady(file, column, periods, "pulse periods")
-        return float((rising.size - 1) / (t[rising[-1]] - t[rising[0]]))
+        starts = t[rising]
+        _steady(file, column, np.diff(starts), "pulse periods")
+        return _rate(starts)
     drop = np.flatnonzero(np.diff(rev) < 0.0)
     if drop.size:
         i = int(drop[0])
         raise RecordError(
             file,
-            f"row {i + 3}, column {column!r}",
+            f"row {file_line(file, i + 1)}, column {column!r}",
             f"the revolution count decreases ({float(rev[i])!r} then {float(rev[i + 1])!r}); "
-            "give a cumulative count or a 0/1 pulse per revolution",
+            "give a cumulative count or a pulse per revolution",
         )
-    turns = float(rev[-1] - rev[0])
-    if turns < 1.0:
+    # the instants the count reaches each whole revolution after its first value
+    levels = math.floor(rev[0]) + 1.0 + np.arange(max(0, math.floor(rev[-1]) - math.floor(rev[0])))
+    if levels.size < 3:
         raise RecordError(
             file,
             f"column {column!r}",
-            f"the revolution count covers {turns:.3g} revolutions; at least 1 is needed",
+            f"the revolution count completes {max(levels.size - 1, 0)} revolution(s); at least "
+            "2 are needed",
         )
-    # speed over each whole revolution: the count's own steps give the variation
-    first = math.floor(rev[0]) + 1.0
-    marks = np.searchsorted(rev, first + np.arange(math.floor(rev[-1] - first) + 1))
-    marks = marks[marks < t.size]
-    if marks.size < 2:
-        raise RecordError(
-            file, f"column {column!r}", "the revolution count completes fewer than 2 revolutions"
-        )
-    if marks.size >= 3:
-        _steady(file, column, np.diff(t[marks]), "revolution times")
-    return float((marks.size - 1) / (t[marks[-1]] - t[marks[0]]))
+    after = np.searchsorted(rev, levels)  # first sample at or past the level (never 0)
+    before = after - 1
+    frac = (levels - rev[before]) / (rev[after] - rev[before])
+    starts = t[before] + frac * (t[after] - t[before])
+    _steady(file, column, np.diff(starts), "revolution times")
+    return _rate(starts)
+
+
+def _rate(starts: FloatArray) -> float:
+    """Revolutions per second from the instants successive revolutions start [Hz]."""
+    k = np.arange(starts.size, dtype=np.float64)
+    k -= k.mean()
+    period = float(np.dot(k, starts - starts.mean()) / np.dot(k, k))
+    return 1.0 / period
 
 
 def _steady(file: str, column: str, periods: FloatArray, what: str) -> None:

@@ -104,7 +104,8 @@ def _page(diagnosis: Any, figures: list[Path], directory: Path) -> str:
             esc(" | ".join(map(str, e.lobes))),
             esc(length(e.amplitude_m, unit)),
             esc(length(e.uncertainty_m, unit)),
-            esc(fmt_number(math.degrees(e.phase_rad), 4)),
+            # a phase a hair below 2 pi is 0, not 360
+            esc(fmt_number(round(math.degrees(e.phase_rad), 1) % 360.0, 4)),
             esc(fmt_number(e.frequency_hz)),
             esc(e.whirl),
             esc(fmt_number(e.share, 3)),

@@ -17,7 +17,8 @@ force-balance variant) around:
 3. **Inverse.** The model is linear in the complex deviation coefficients; the gains are read
    from the forward model itself. With x and y, the forward and backward whirl of each line are
    two observations; with one channel, one. A line is *detected* when it stands
-   :data:`DETECTION` standard deviations above the residual noise; the deviations are the
+   :data:`DETECTION` standard deviations above the residual noise (and above the record's
+   numerical resolution, :data:`RESOLUTION`); the deviations are the
    weighted minimum-norm least-squares solution over the detected lines (the smallest
    deviations that give them: the limit of a Tikhonov-regularised fit).
 4. **Observability.** What a line cannot tell apart is reported as a group, never split by a
@@ -38,6 +39,7 @@ from __future__ import annotations
 import dataclasses
 import math
 import sys
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -54,7 +56,7 @@ from runout._diagnose_model import (
     static_unknowns,
     unknown_gains,
 )
-from runout._diagnose_record import Quantity, Record, RecordError, read_record
+from runout._diagnose_record import Quantity, Record, RecordError, file_line, read_record
 from runout.decompose import JOINT_FIT
 
 __all__ = [
@@ -85,6 +87,11 @@ MAX_LINES = 240
 MAX_LOBES = 2000
 #: The record must hold this many samples per fitted line.
 SAMPLES_PER_LINE = 8
+#: Numerical resolution of a record relative to its largest value [-]: a model's record
+#: (``runout run``'s history.csv, 12 significant digits) rounds there, and its rounding errors
+#: are periodic, so they land on kinematic lines that the residual's rms alone would call
+#: detected. No line smaller than this (times :data:`DETECTION`) is taken for a deviation.
+RESOLUTION = 1e-12
 
 
 @dataclass(frozen=True)
@@ -153,11 +160,14 @@ class Unattributed:
     pp : float
         Peak-to-peak [m], or [m/s] for a velocity record.
     channel : str
-        ``"x"`` or ``"y"``.
+        ``"x"`` or ``"y"``; ``"xy"`` for the whirl of a fitted line that the model does not
+        give there (``pp`` is then the diameter of its circle).
     order : float
         Frequency in orders of the rotating ring [-].
     kinematic_match : str or None
-        The simplest kinematic combination at that frequency (a higher-order effect), if any.
+        First-order deviations outside the fit that give a line there (lobes above the bound
+        searched, or an alias of a line above the Nyquist frequency), then the simplest
+        kinematic combination at that frequency (a higher-order effect), if any.
     """
 
     frequency_hz: float
@@ -347,6 +357,17 @@ def diagnose(
     from runout.summary import operating_contact_angle
 
     c = _load(case)
+    if getattr(c, "spindle", None) is not None:
+        from runout.errors import CaseError
+
+        # the record of a spindle mixes its bearings' lines through the shaft: one bearing's
+        # linear model is not its inverse
+        raise CaseError(
+            str(c.path),
+            "bearings",
+            "the diagnosis inverts one bearing's linear model: give a case with one [bearing] "
+            "(the bearing the record was measured on), not a spindle",
+        )
     if not isinstance(record, Record):
         record = read_record(record, quantity, limits=case_budget(c))
     notes: list[str] = []
@@ -361,19 +382,30 @@ def diagnose(
     tacho = record.tachometer_speed()
     if tacho is not None:
         nominal = abs(operation.speed)
-        scale = tacho / nominal if nominal > 0 else 0.0
-        if scale <= 0.0:
-            raise RecordError(record.file, "column 'rev'", "the tachometer shows no rotation")
-        operation = dataclasses.replace(
-            operation,
-            speed=operation.speed * scale,
-            other_ring_speed=operation.other_ring_speed * scale,
-        )
+        if nominal > 0.0:
+            scale = tacho / nominal
+            operation = dataclasses.replace(
+                operation,
+                speed=operation.speed * scale,
+                other_ring_speed=operation.other_ring_speed * scale,
+            )
+            given = f"the case gives {nominal * 60:.6g} rpm"
+        else:  # the case leaves the speed to the record
+            operation = dataclasses.replace(operation, speed=tacho)
+            given = "the case gives none"
         speed_source = "tachometer"
-        notes.append(
-            f"speed from the tachometer: {tacho:.6g} Hz ({tacho * 60:.6g} rpm; the case gives "
-            f"{nominal * 60:.6g} rpm)"
+        notes.append(f"speed from the tachometer: {tacho:.6g} Hz ({tacho * 60:.6g} rpm; {given})")
+    elif operation.speed == 0.0:
+        from runout.errors import CaseError
+
+        raise CaseError(
+            str(c.path),
+            "operation.speed",
+            "the diagnosis needs the speed of the rotating ring: give [operation] speed, or a "
+            "tachometer column rev in the record",
         )
+    if record.quantity == "displacement":
+        _plausible(record, float(bearing.element_diameter))
     alpha, _ = operating_contact_angle(bearing, operation)
     variant_gains(alpha, var)  # refuses an unknown variant with the case key
     r = rates(bearing, operation, alpha)
@@ -409,7 +441,17 @@ def diagnose(
             break
         k_ring = max(z + 1, int(k_ring * 0.8))
         m_ball = max(2, int(m_ball * 0.8) // 2 * 2)
-    if max_lobes is None and n_lines > 0:
+    if n_lines == 0:
+        # not even the rotating ring's eccentricity (f_r) is in the band: nothing to fit
+        raise RecordError(
+            record.file,
+            f"column {record.column('time')!r}",
+            f"no line of the bearing lies in the record's band ({f_lo:.4g} to "
+            f"{f_hi / 0.999:.4g} Hz, the Nyquist frequency; the rotating ring turns at "
+            f"{f_r:.6g} Hz): sample faster, or check the time column's unit (a bare time_s is "
+            "in seconds; 't [ms]' gives milliseconds)",
+        )
+    if max_lobes is None:
         notes.append(
             f"lobes searched: rings up to {k_ring}, {_element_name(c)}s up to {m_ball} "
             f"({n_lines} candidate lines below the Nyquist frequency {f_hi / 0.999:.6g} Hz)"
@@ -466,9 +508,19 @@ def diagnose(
     phasor: dict[str, dict[int, complex]] = {ch: {} for ch in channels}
     merged: dict[int, int] = {}
     spread: dict[int, float] = {}
+    fitted_hz: dict[int, float] = {}
     unattributed: list[Unattributed] = []
     tol = 1.0 / duration
     quad = {ch: noise[ch] * math.sqrt(2.0 / n) for ch in channels}
+    floor = RESOLUTION * max(float(np.max(np.abs(v))) for v in record.channels.values())
+    if any(q < floor for q in quad.values()):
+        unit = "m" if record.quantity == "displacement" else "m/s"
+        notes.append(
+            f"the residual ({', '.join(f'{noise[ch]:.3g}' for ch in channels)} {unit} rms) is "
+            f"below the record's numerical resolution ({RESOLUTION:g} of its largest value, "
+            f"{floor:.3g} {unit}): lines are detected above that resolution, not the residual"
+        )
+        quad = {ch: max(q, floor) for ch, q in quad.items()}
     # a line found anywhere in the residual's spectrum must beat the largest of its n/2 noise
     # bins, not one: the level pure noise exceeds somewhere with probability FALSE_ALARM
     search_level = max(DETECTION, math.sqrt(2.0 * math.log(0.5 * n / FALSE_ALARM)))
@@ -478,13 +530,19 @@ def diagnose(
         if not idx:
             if amp > search_level * quad[comp.direction]:
                 match = attribute_frequency(comp.frequency_hz, kin, tol)
+                formula = None if match is None else match[1].formula
+                hint = _first_order_hint(
+                    comp.frequency_hz, tol, z, r, f_r, (k_ring, m_ball), 1.0 / record.step, ename
+                )
+                if hint is not None:
+                    formula = hint if formula is None else f"{hint}; {formula}"
                 unattributed.append(
                     Unattributed(
                         comp.frequency_hz,
                         comp.pp_m,
                         comp.direction,
                         comp.frequency_hz / f_r,
-                        None if match is None else match[1].formula,
+                        formula,
                     )
                 )
             continue
@@ -492,32 +550,39 @@ def diagnose(
         for i in idx:
             merged[i] = head
         spread[head] = max(abs(freqs[i] - freqs[head]) for i in idx)
+        fitted_hz[head] = comp.frequency_hz
         phasor[comp.direction][head] = amp * complex(
             math.cos(comp.phase_rad), math.sin(comp.phase_rad)
         )
-    # observations per equation
-    values: list[complex] = []
-    sigmas: list[float] = []
-    kept: list[Equation] = []
-    by_head: dict[tuple[int, int], Equation] = {}
+    # observations per equation: the equations of lines fitted as one are summed
+    groups: dict[tuple[int, int], list[Equation]] = {}
     for e in eqs:
-        f = abs(e.omega) * f_r
-        i = fidx[f]
+        i = fidx[abs(e.omega) * f_r]
         if i not in merged:
             continue  # outside the record's band, or below the fit's floor: zero
         head = merged[i]
         sign = 1 if e.omega >= 0 else -1
-        key = (head, sign if len(channels) == 2 else 1)
-        if key in by_head:
-            by_head[key].contributions.extend(e.contributions)
-            continue
-        eq = Equation(e.omega, list(e.contributions), spread.get(head, 0.0))
-        by_head[key] = eq
+        groups.setdefault((head, sign if len(channels) == 2 else 1), []).append(e)
+    values: list[complex] = []
+    sigmas: list[float] = []
+    kept: list[Equation] = []
+    ends = float(record.time[0] + record.time[-1])
+    for (head, _), group in groups.items():
+        e = group[0]
+        eq = Equation(e.omega, [c for m in group for c in m.contributions], spread.get(head, 0.0))
         kept.append(eq)
         scale = 1.0
         if record.quantity == "velocity":
             scale = 1.0 / (TWO_PI * freqs[head])  # displacement = velocity / (i ω)
-        rot = -1j if record.quantity == "velocity" else 1.0
+        rot: complex = -1j if record.quantity == "velocity" else 1.0
+        own = abs(e.omega) * f_r
+        if all(abs(abs(m.omega) * f_r - own) <= 1e-9 * own for m in group):
+            # a line fitted at another's frequency (closer than the record resolves) comes out
+            # with the phase it has mid-record, pi df (t0 + t1) off its phase at t = 0
+            rot *= complex(
+                math.cos(math.pi * (own - fitted_hz[head]) * ends),
+                -math.sin(math.pi * (own - fitted_hz[head]) * ends),
+            )
         if len(channels) == 2:
             xv = phasor["x"].get(head, 0j) * scale * rot
             yv = phasor["y"].get(head, 0j) * scale * rot
@@ -532,12 +597,27 @@ def diagnose(
     detected = [
         (e, v, s) for e, v, s in zip(kept, values, sigmas, strict=True) if abs(v) > DETECTION * s
     ]
+    if len(channels) == 2:
+        unattributed += _other_whirls(
+            groups,
+            phasor,
+            quad,
+            freqs,
+            members,
+            f_r,
+            detected,
+            notes,
+            lambda f: _first_order_hint(
+                f, tol, z, r, f_r, (k_ring, m_ball), 1.0 / record.step, ename
+            ),
+        )
     solution = solve_min_norm(
         [d[0] for d in detected],
         np.array([d[1] for d in detected], dtype=np.complex128),
         np.array([d[2] for d in detected]),
     )
     estimates, alone = _single_ball(_estimates(detected, f_r, record, ename, z), r, f_r, z, ename)
+    estimates = _load_zone(c, estimates, notes, ename)
     for u in list(solution):
         if u.part == 2 and u.lobes in alone:
             # both lines of this order agree with one element: the case file puts it there
@@ -570,6 +650,170 @@ def diagnose(
         record=record,
         lobe_bounds={"inner": k_ring, "outer": k_ring, ename: m_ball},
         spectrum=spectrum,
+    )
+
+
+def _other_whirls(
+    groups: dict[tuple[int, int], list[Equation]],
+    phasor: dict[str, dict[int, complex]],
+    quad: dict[str, float],
+    freqs: list[float],
+    members: dict[int, list[str]],
+    f_r: float,
+    detected: list[tuple[Equation, complex, float]],
+    notes: list[str],
+    hint: Callable[[float], str | None],
+) -> list[Unattributed]:
+    """The whirl of a fitted line that no deviation gives, when it stands above the noise.
+
+    With x and y each line has a forward and a backward whirl; the model gives most lines one
+    of them. The other is no observation of any deviation, but it is in the record: it is
+    reported (channel ``"xy"``), not dropped. When it carries more than the modelled whirls,
+    the likeliest cause is a mirrored axis (or the other ring turning), which reverses every
+    whirl: a note says so. ``hint(frequency)`` names first-order deviations outside the fit
+    that give a line there (lobes above the bound, aliases), or None.
+    """
+    out: list[Unattributed] = []
+    sigma = 0.5 * math.hypot(quad["x"], quad["y"])
+    wrong = 0.0
+    for head in sorted({h for h, _ in groups}):
+        xv, yv = phasor["x"].get(head, 0j), phasor["y"].get(head, 0j)
+        for sign, word, other in ((1, "forward", "backward"), (-1, "backward", "forward")):
+            if (head, sign) in groups:
+                continue
+            w = 0.5 * abs(xv + 1j * yv) if sign > 0 else 0.5 * abs(xv - 1j * yv)
+            if w <= DETECTION * sigma:
+                continue
+            wrong += (w / sigma) ** 2
+            who = ", ".join(members.get(head, [])[:3])
+            text = f"{word} whirl at the line of {who}, which the model gives {other} only"
+            more = hint(freqs[head])
+            out.append(
+                Unattributed(
+                    freqs[head],
+                    2.0 * w,
+                    "xy",
+                    freqs[head] / f_r,
+                    text if more is None else f"{text}; may be {more}",
+                )
+            )
+    modelled = sum((abs(v) / s) ** 2 for _, v, s in detected)
+    if out and wrong > modelled:
+        notes.append(
+            "most of the lines' power whirls against the model: check the sense of the y axis "
+            "(the conventions page; a mirrored y reverses every whirl, and the lobes then read "
+            "nZ -/+ 1 for nZ +/- 1) and which ring turns"
+        )
+    return out
+
+
+def _first_order_hint(
+    frequency: float,
+    tol: float,
+    z: int,
+    r: Any,
+    f_r: float,
+    bounds: tuple[int, int],
+    sample_rate: float,
+    ename: str,
+) -> str | None:
+    """The first-order deviations an unattributed line may be, though no candidate is there.
+
+    Two ways a deviation of the model gives a line the fit did not look for: its lobes are
+    above the bound searched, or its line is above the Nyquist frequency and folds into the
+    record's band (a record sampled without a low-pass filter). ``tol`` [Hz] is the match.
+    """
+    k_ring, m_ball = bounds
+    nyquist = 0.5 * sample_rate
+    found: list[tuple[int, bool, str, float]] = []  # lobes, above the bound, label, line [Hz]
+    n = 1
+    while n * z - 1 <= MAX_LOBES:
+        for name, nu in (("inner", r.inner), ("outer", r.outer)):
+            # k = nZ - 1 gives the first term of the closed form, k = nZ + 1 the second
+            for k, f in (
+                (n * z - 1, abs(n * z * r.cage - (n * z - 1) * nu) * f_r),
+                (n * z + 1, abs((n * z + 1) * nu - n * z * r.cage) * f_r),
+            ):
+                found.append((k, k > k_ring, f"{name} {k} lobes", f))
+        n += 1
+    for m in range(2, MAX_LOBES + 1, 2):
+        for f in (abs(r.cage + m * r.spin) * f_r, abs(r.cage - m * r.spin) * f_r):
+            found.append((m, m > m_ball, f"{ename} {m} lobes", f))
+    found.sort(key=lambda item: item[0])  # the simplest first
+    beyond = [
+        label for _, above, label, f in found if above and f < nyquist and abs(f - frequency) <= tol
+    ]
+    if beyond:
+        return (
+            " or ".join(beyond[:3]) + f" (above the lobes searched: {k_ring} on the rings, "
+            f"{m_ball} on the {ename}s)"
+        )
+    # one fold only (lines between the Nyquist and the sampling frequency): folded from
+    # higher up, the lines of hundreds of lobes cover the band and any frequency would match
+    aliases = [
+        (label, f)
+        for _, _, label, f in found
+        if nyquist < f < sample_rate and abs(sample_rate - f - frequency) <= tol
+    ]
+    if aliases:
+        return (
+            "alias of "
+            + " or ".join(f"{label} ({f:.6g} Hz)" for label, f in aliases[:3])
+            + f", above the Nyquist frequency {nyquist:.6g} Hz (no low-pass filter before "
+            "sampling?)"
+        )
+    return None
+
+
+def _plausible(record: Record, diameter: float) -> None:
+    """Refuse a displacement record whose motion exceeds the rolling element's diameter [m]:
+    no bearing moves that much and holds together; the column is in the wrong unit."""
+    for ch, values in record.channels.items():
+        dev = np.abs(values - values.mean())
+        worst = int(np.argmax(dev))
+        if float(np.ptp(values)) > diameter:
+            raise RecordError(
+                record.file,
+                f"row {file_line(record.file, worst)}, column {record.column(ch)!r}",
+                f"the motion spans {float(np.ptp(values)):.4g} m, more than the "
+                f"{diameter:.4g} m element diameter: check the column's unit (a bare {ch}_m "
+                f"is in metres; give it in brackets, e.g. '{ch} [um]')",
+            )
+
+
+def _load_zone(
+    case: Any, estimates: tuple[Estimate, ...], notes: list[str], ename: str
+) -> tuple[Estimate, ...]:
+    """Flag the stationary ring's estimates when a radial load leaves a load zone.
+
+    The linear model has every element in contact at one mean load (seed 002 eq. 12-20).
+    Under a radial load without an axial preload (always for a cylindrical roller bearing)
+    only the elements in the load zone carry it, and their passage through it moves the
+    ring at multiples of Z f_c relative to the stationary ring: the frequencies of that ring's
+    nZ +/- 1 lobes, which the inversion reads as waviness.
+    """
+    from runout.bearing import RollerBearing
+
+    op = case.operation
+    roller = isinstance(case.bearing, RollerBearing)
+    if not (op.radial_load > 0.0 and (roller or op.axial_load <= 0.0)):
+        return estimates
+    still = "outer" if op.rotating_ring == "inner" else "inner"
+    notes.append(
+        f"the case has a radial load{'' if roller else ' without an axial preload'}: the "
+        f"{ename}s outside the load zone carry no load, which the linear model does not know "
+        f"(it has every {ename} in contact); their passage through the load zone gives lines "
+        f"at multiples of Z f_c relative to the {still} ring, read here as {still}-ring "
+        "waviness of nZ +/- 1 lobes. Compare with `runout run` of the case's own model"
+    )
+    text = (
+        f"may be the {ename}s' passage through the load zone (n Z f_c), not {still}-ring waviness"
+    )
+    return tuple(
+        dataclasses.replace(e, note=f"{e.note}; {text}" if e.note else text)
+        if still in e.part.split("+")
+        else e
+        for e in estimates
     )
 
 
@@ -857,7 +1101,8 @@ def _explained(
         res = values - recon[ch]
         num += float(np.var(res))
         den += float(np.var(values))
-    explained = 1.0 - num / den if den > 0.0 else 1.0
+    # a record with no variance (rounded to zero) has nothing explained, not everything
+    explained = 1.0 - num / den if den > 0.0 else 0.0
     first = sorted(record.channels)[0]
     fs = 1.0 / record.step
     meas = amplitude_spectrum(
@@ -929,7 +1174,8 @@ def estimated_case_text(case: Any, imperfections: Any, variant: str, rotation_hz
     document["analysis"] = analysis
     operation = dict(document.get("operation", {}))
     speed = case.operation.speed
-    if speed and abs(abs(speed) - rotation_hz) > 1e-9 * rotation_hz:
+    # the tachometer's speed (also where the case gave none): the record's lines come back
+    if abs(abs(speed) - rotation_hz) > 1e-9 * rotation_hz:
         operation["speed"] = f"{math.copysign(rotation_hz, speed) * 60.0!r} rpm"
         document["operation"] = operation
     waviness: list[dict[str, Any]] = []
