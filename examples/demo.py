@@ -2,8 +2,9 @@
 
 Validates the case file of every seed bearing, prints its derived geometry, Hertz contact
 constants and characteristic frequencies through the real command line, one comparison table,
-then runs three models: Tada's HDD bearing with the Fig. 7 wavinesses (3-D quasi-static NRRO),
-the Anderon 608 (linear model, band values) and the NU209 roller bearing (radial runout), and a
+then runs four models: Tada's HDD bearing with the Fig. 7 wavinesses (3-D quasi-static NRRO),
+the Anderon 608 (linear model, band values), the NU209 roller bearing (radial runout) and an HDD
+spindle on two of Tada's bearings (runout at the hub, tilt), and a
 Monte Carlo over 1000 of Kim's spindle bearings with random ball sizes. Plots, data and one
 self-contained HTML report (out/demo/report.html) are written to out/demo/.
 """
@@ -70,6 +71,7 @@ def main() -> None:
         "tada_fig7": "seed000_tada_fig7.toml",
         "anderon_608": "seed002_608.toml",
         "nu209": "seed004_nu209.toml",
+        "spindle_hdd": "spindle_hdd.toml",
     }
     for name, case_file in runs.items():
         _runout("run", str(HERE / case_file), "--out", str(out / name), "--report")
@@ -78,7 +80,8 @@ def main() -> None:
     report = build_combined_report(
         [out / name for name in (*runs, "montecarlo")],
         out / "report.html",
-        title="runout demo: Tada's HDD bearing, the Anderon 608, the NU209, a Monte Carlo lot",
+        title="runout demo: Tada's HDD bearing, the Anderon 608, the NU209, an HDD spindle, "
+        "a Monte Carlo lot",
     )
     console.rule("done")
     console.print(

@@ -13,7 +13,14 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from runout._case_schema import MAX_CONFORMITY, TWO_PI, BearingSpec, CaseSpec, ProfileSpec
+from runout._case_schema import (
+    MAX_CONFORMITY,
+    TWO_PI,
+    BearingSpec,
+    CaseSpec,
+    ElementsSpec,
+    ProfileSpec,
+)
 from runout.bearing import BallBearing, Bearing, Material, RollerBearing
 from runout.errors import GeometryError
 from runout.imperfections import (
@@ -66,7 +73,7 @@ _GEOMETRY_KEYS = {
 
 
 def _build_bearing(spec: CaseSpec) -> Bearing:
-    b = spec.bearing
+    b = spec.lead_bearing
     material = Material(
         youngs_modulus=spec.material.youngs_modulus,
         poisson_ratio=spec.material.poisson_ratio,
@@ -357,7 +364,7 @@ def _build_imperfections(
     def check(key: str, part: str, element: int | None) -> None:
         if not _element_part_ok(bearing, part):
             raise _CaseKeyError(
-                f"{key}.part", f'"{part}" does not match bearing.type = "{spec.bearing.type}"'
+                f"{key}.part", f'"{part}" does not match bearing.type = "{spec.lead_bearing.type}"'
             )
         if element is not None and element > z:
             raise _CaseKeyError(f"{key}.element", f"must be <= {z} (the number of elements)")
@@ -431,7 +438,7 @@ def _build_imperfections(
                 f"radius {0.5e3 * bearing.inner_raceway_diameter:.6g} mm",
             )
         imp = imp.with_slant(slant)
-    if spec.elements is not None:
+    if isinstance(spec.elements, ElementsSpec):
         for name in ("diameter_errors", "pitch_errors"):
             values = getattr(spec.elements, name)
             if values is None:

@@ -36,7 +36,10 @@ MODEL_IDS = (
     "equilibrium",
     "dynamic",
     "roller_constraint",
+    "spindle",
 )
+#: Most bearings on one spindle shaft (``[[bearings]]``): bounded before anything is built.
+MAX_BEARINGS = 8
 
 
 def _quantity(kind: str) -> BeforeValidator:
@@ -183,6 +186,70 @@ class BearingSpec(_Table):
         return self
 
 
+class SpindleBearingSpec(BearingSpec):
+    """``[[bearings]]``: one bearing of a spindle, every ``[bearing]`` key plus its name and
+    axial position."""
+
+    name: str = Field(
+        description="Name the imperfection tables use (bearing = ...) and the outputs show."
+    )
+    position: Length = Field(
+        description="Axial coordinate of the bearing's ball-set plane along the shaft [m]."
+    )
+
+    @field_validator("name")
+    @classmethod
+    def _name(cls, value: str) -> str:
+        if not re.fullmatch(r"[A-Za-z0-9_-]{1,32}", value):
+            raise ValueError(f"must be 1 to 32 letters, digits, '_' or '-', got {_Short(value)!r}")
+        return value
+
+
+class SpindleSpec(_Table):
+    """``[spindle]``: a rigid shaft on the ``[[bearings]]`` (model = "spindle")."""
+
+    arrangement: Literal["DB", "DF", "DT"] = Field(
+        "DB",
+        description=(
+            'Directions of the contact angles: "DB" back-to-back (pressure centres outside the '
+            'bearings), "DF" face-to-face (inside), "DT" tandem (all take thrust along +z).'
+        ),
+    )
+    preload: Force | None = Field(
+        None,
+        description=(
+            "Constant-pressure (spring) preload [N]: the rear group's outer rings slide "
+            "axially on a spring of this force (DT: an axial force on the shaft)."
+        ),
+    )
+    preload_displacement: Length | None = Field(
+        None,
+        description=(
+            "Position (rigid) preload [m]: the axial overlap of the two groups' bearings, "
+            "shared half and half at the reference position (DB and DF only)."
+        ),
+    )
+    nose_position: Length = Field(
+        0.0, description="Axial coordinate where the runout is reported (disk hub, tool) [m]."
+    )
+
+    @model_validator(mode="after")
+    def _one_preload(self) -> SpindleSpec:
+        if (self.preload is None) == (self.preload_displacement is None):
+            raise _KeyedError("preload", "give exactly one of preload or preload_displacement")
+        value = self.preload if self.preload is not None else self.preload_displacement
+        key = "preload" if self.preload is not None else "preload_displacement"
+        if value is not None and not value > 0.0:
+            raise _KeyedError(key, f"must be > 0, got {value!r}")
+        if self.preload_displacement is not None and self.arrangement == "DT":
+            raise _KeyedError(
+                "preload_displacement",
+                'a tandem (DT) set has no opposed bearing to press against: give preload = "... '
+                'N" (an axial force on the shaft), or arrangement = "DB" or "DF"',
+            )
+        return self
+
+
 class MaterialSpec(_Table):
     """``[material]``: elastic and inertial properties (default: bearing steel)."""
 
@@ -256,6 +323,9 @@ class WavinessSpec(_Table):
     element: int | None = Field(
         None, ge=1, description="Ball/roller number (1-based); omitted: every element."
     )
+    bearing: str | None = Field(
+        None, description="Name of the [[bearings]] entry (spindle cases only; required there)."
+    )
 
     @field_validator("order")
     @classmethod
@@ -287,6 +357,9 @@ class WavinessSpectrumSpec(_Table):
         description='Seed of the random phases (phase = "random" only; default 0, reproducible).',
     )
     element: int | None = Field(None, ge=1, description="Ball/roller number (1-based).")
+    bearing: str | None = Field(
+        None, description="Name of the [[bearings]] entry (spindle cases only; required there)."
+    )
 
     @field_validator("phase", mode="before")
     @classmethod
@@ -334,6 +407,9 @@ class ProfileSpec(_Table):
     deviation_unit: str = Field("um", description="Unit of the deviation column (e.g. 'um').")
     orders: tuple[int, int] = Field(description="Orders kept [first, last].", strict=False)
     element: int | None = Field(None, ge=1, description="Ball/roller number (1-based).")
+    bearing: str | None = Field(
+        None, description="Name of the [[bearings]] entry (spindle cases only; required there)."
+    )
 
     @model_validator(mode="after")
     def _check(self) -> ProfileSpec:
@@ -449,6 +525,7 @@ class AnalysisSpec(_Table):
         "equilibrium",
         "dynamic",
         "roller_constraint",
+        "spindle",
     ] = Field(
         "quasi_static_3d", description="Model id (docs/conventions.md: which keys each honours)."
     )
@@ -796,17 +873,90 @@ class CaseSpec(_Table):
     """The whole case file."""
 
     title: str = Field("", description="Free text shown in outputs.")
-    bearing: BearingSpec
+    bearing: BearingSpec | None = Field(
+        None, description="The bearing (required, except in a spindle case: [[bearings]])."
+    )
+    spindle: SpindleSpec | None = None
+    bearings: list[SpindleBearingSpec] = Field(default_factory=list)
     material: MaterialSpec = Field(default_factory=MaterialSpec)
     operation: OperationSpec = Field(default_factory=OperationSpec)
     waviness: list[WavinessSpec] = Field(default_factory=list)
     waviness_spectrum: list[WavinessSpectrumSpec] = Field(default_factory=list)
     profile: list[ProfileSpec] = Field(default_factory=list)
     slant: SlantSpec | None = None
-    elements: ElementsSpec | None = None
+    elements: ElementsSpec | dict[str, ElementsSpec] | None = None
     analysis: AnalysisSpec = Field(default_factory=AnalysisSpec)
     dynamics: DynamicsSpec | None = None
     study: StudySpec | None = None
+
+    @property
+    def lead_bearing(self) -> BearingSpec:
+        """``[bearing]``, or the first ``[[bearings]]`` entry of a spindle case."""
+        if self.bearing is not None:
+            return self.bearing
+        return self.bearings[0]
+
+    @property
+    def element_tables(self) -> list[tuple[str, ElementsSpec]]:
+        """(key, table) of ``[elements]``, or of each ``[elements.<name>]`` of a spindle."""
+        if self.elements is None:
+            return []
+        if isinstance(self.elements, ElementsSpec):
+            return [("elements", self.elements)]
+        return [(f"elements.{name}", table) for name, table in self.elements.items()]
+
+    @field_validator("bearings", mode="before")
+    @classmethod
+    def _few_bearings(cls, value: object) -> object:
+        # empty: a single-bearing case (a document dumped with its defaults has bearings = [])
+        if isinstance(value, list) and value and not 2 <= len(value) <= MAX_BEARINGS:
+            raise ValueError(
+                f"has {len(value)} entries: a spindle has 2 to {MAX_BEARINGS} bearings "
+                "(one bearing: give [bearing] instead)"
+            )
+        return value
+
+    @field_validator("elements", mode="before")
+    @classmethod
+    def _elements_table(cls, value: object) -> object:
+        # [elements] (one bearing) or [elements.<name>] per spindle bearing: the second form
+        # is told apart by its sub-tables, so each form reports its own errors
+        if isinstance(value, dict) and value and all(isinstance(v, dict) for v in value.values()):
+            return {k: ElementsSpec.model_validate(v) for k, v in value.items()}
+        if isinstance(value, dict):
+            return ElementsSpec.model_validate(value)
+        return value
+
+    @model_validator(mode="after")
+    def _one_bearing_table(self) -> CaseSpec:
+        if self.bearings:
+            _check_spindle_tables(self)
+            return self
+        if self.bearing is None:
+            raise _KeyedError("bearing", "required key is missing")
+        if self.spindle is not None:
+            raise _KeyedError(
+                "spindle", "needs the spindle's bearings as [[bearings]] tables (two or more)"
+            )
+        if isinstance(self.elements, dict):
+            raise _KeyedError(
+                "elements", "[elements.<name>] tables name [[bearings]] entries: give [elements]"
+            )
+        for table in ("waviness", "waviness_spectrum", "profile"):
+            for i, entry in enumerate(getattr(self, table), start=1):
+                if entry.bearing is not None:
+                    raise _KeyedError(
+                        (table, i - 1, "bearing"),
+                        "names a [[bearings]] entry of a spindle case; this case has one "
+                        "[bearing]: remove the key",
+                    )
+        if self.analysis.model == "spindle":
+            raise _KeyedError(
+                "analysis.model",
+                'model = "spindle" needs a [spindle] table and two or more [[bearings]] '
+                "(each a [bearing] with name and position)",
+            )
+        return self
 
     @field_validator("waviness", "waviness_spectrum", "profile", mode="before")
     @classmethod
@@ -821,12 +971,63 @@ class CaseSpec(_Table):
         return value
 
 
+def _check_spindle_tables(spec: CaseSpec) -> None:
+    """The tables of a spindle case agree: one bearing table kind, names, model."""
+    if spec.bearing is not None:
+        raise _KeyedError(
+            "bearing",
+            "a case has either one [bearing] or a spindle's [[bearings]], not both: move this "
+            "bearing into a [[bearings]] entry (with name and position)",
+        )
+    if spec.spindle is None:
+        raise _KeyedError(
+            "spindle",
+            "required with [[bearings]]: arrangement, preload (or preload_displacement) and "
+            "nose_position",
+        )
+    names = [b.name for b in spec.bearings]
+    for i, name in enumerate(names, start=1):
+        if name in names[: i - 1]:
+            raise _KeyedError(("bearings", i - 1, "name"), f'"{name}" is used twice')
+    if spec.analysis.model != "spindle":
+        raise _KeyedError(
+            "analysis.model",
+            f'"{spec.analysis.model}" runs one bearing; a case with [[bearings]] runs in '
+            'model = "spindle" (or give one [bearing] for the other models)',
+        )
+    for table in ("waviness", "waviness_spectrum", "profile"):
+        for i, entry in enumerate(getattr(spec, table), start=1):
+            if entry.bearing is None:
+                raise _KeyedError(
+                    (table, i - 1, "bearing"),
+                    f'required with [[bearings]]: write bearing = "<name>" (one of '
+                    f"{', '.join(names)})",
+                )
+            if entry.bearing not in names:
+                raise _KeyedError(
+                    (table, i - 1, "bearing"),
+                    f'"{entry.bearing}" is not a [[bearings]] name ({", ".join(names)})',
+                )
+    if isinstance(spec.elements, ElementsSpec):
+        raise _KeyedError(
+            "elements",
+            "with [[bearings]], per-bearing tables: write [elements.<name>] (one of "
+            f"{', '.join(names)})",
+        )
+    for name in spec.elements or {}:
+        if name not in names:
+            raise _KeyedError(
+                f"elements.{name}", f'"{name}" is not a [[bearings]] name ({", ".join(names)})'
+            )
+
+
 class _KeyedError(ValueError):
     """A model-validator error that belongs to one key of the table."""
 
-    def __init__(self, key: str, message: str) -> None:
+    def __init__(self, key: str | tuple[str | int, ...], message: str) -> None:
+        # a key inside an array of tables is given as its path: ("waviness", 2, "bearing")
         self.key = key
-        super().__init__(f"{key}: {message}")
+        super().__init__(f"{_format_loc(key) if isinstance(key, tuple) else key}: {message}")
 
 
 def _check_amplitude(amplitude: float | None, peak_to_peak: float | None) -> None:
@@ -915,7 +1116,8 @@ def _describe(error: Any) -> tuple[str, str]:
     if kind == "value_error":
         exc = ctx.get("error")
         if isinstance(exc, _KeyedError):
-            return _format_loc((*loc, exc.key)), str(exc).split(": ", 1)[1]
+            path = exc.key if isinstance(exc.key, tuple) else (exc.key,)
+            return _format_loc((*loc, *path)), str(exc).split(": ", 1)[1]
         return _format_loc(loc), str(exc) if exc is not None else error["msg"]
     if kind == "literal_error":
         return _format_loc(loc), f"must be one of {ctx.get('expected')}, got {given!r}"

@@ -143,6 +143,16 @@ def plan_quantities(case: Case, data: dict[str, Any] | None = None) -> list[Quan
     for key in sorted(study.vary):
         entry = study.vary[key]
         where = f"study.vary.{key}"
+        if case.spindle is not None and (key in STUDY_SHORTHANDS or key.startswith("elements.")):
+            # a spindle's element errors are per bearing ([elements.<name>]): no draw here
+            # would say which bearing's balls it stands for
+            raise CaseError(
+                case.path,
+                where,
+                "a spindle's element errors are per bearing ([elements.<name>]), which a study "
+                "does not vary yet; vary [[bearings]] keys (bearings[i].position, ...), "
+                "spindle.preload or spindle.nose_position",
+            )
         if key in STUDY_SHORTHANDS:
             assert not isinstance(entry, VarySpec)
             sigma = to_si(entry, "length")

@@ -46,7 +46,11 @@ def statistics(values: ArrayLikeF, bins: int = 20) -> dict[str, Any]:
         }
     std = float(np.std(v, ddof=1)) if v.size > 1 else 0.0
     p5, p50, p95 = (float(x) for x in np.percentile(v, [5.0, 50.0, 95.0]))
-    counts, edges = np.histogram(v, bins=bins)
+    # values equal to round-off (a line no swept quantity changes, e.g. a spindle's in-phase
+    # translation) cannot be cut into finite-size bins: one bin holds them
+    spread = float(v.max() - v.min())
+    equal = 0.0 < spread <= 1e-10 * float(np.abs(v).max())  # (all equal: numpy widens)
+    counts, edges = np.histogram(v, bins=1 if equal else bins)
     return {
         "mean": float(np.mean(v)),
         "std": std,

@@ -23,6 +23,7 @@ WARM_CASES: tuple[tuple[str, str], ...] = (
     ("run", "seed002_608.toml"),  # linear
     ("run", "seed003_purohit.toml"),  # dynamic
     ("run", "seed004_nu209.toml"),  # roller_constraint
+    ("run", "spindle_hdd.toml"),  # spindle
     ("study", "seed001_kim_table9.toml"),  # Monte Carlo (batched kernels)
 )
 

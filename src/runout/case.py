@@ -43,6 +43,8 @@ from runout._case_schema import (
     OperationSpec,
     ProfileSpec,
     SlantSpec,
+    SpindleBearingSpec,
+    SpindleSpec,
     StudySpec,
     VarySpec,
     WavinessSpec,
@@ -59,6 +61,7 @@ from runout.bearing import Bearing, Operation
 from runout.errors import CaseError, GeometryError
 from runout.imperfections import Imperfections
 from runout.limits import MAX_CASE_FILE_BYTES, MAX_TOML_DEPTH, case_budget, format_bytes
+from runout.models._spindle_inputs import SpindleLayout
 
 __all__ = [
     "MAX_CONFORMITY",
@@ -75,6 +78,8 @@ __all__ = [
     "OperationSpec",
     "ProfileSpec",
     "SlantSpec",
+    "SpindleBearingSpec",
+    "SpindleSpec",
     "StudySpec",
     "VarySpec",
     "WavinessSpec",
@@ -140,6 +145,9 @@ class Case:
     profile_data : mapping
         Measured profiles given as arrays: ``[[profile]] file`` name -> (angles [rad],
         deviations [m]); empty for a case read from a file.
+    spindle : SpindleLayout or None
+        A spindle case's bearings, positions and preload (``[spindle]``, ``[[bearings]]``);
+        ``bearing`` and ``imperfections`` are then its first bearing's. None otherwise.
     """
 
     path: str
@@ -150,6 +158,7 @@ class Case:
     analysis: Analysis
     spec: CaseSpec = field(repr=False)
     profile_data: ProfileData = field(default_factory=dict, repr=False, compare=False)
+    spindle: SpindleLayout | None = field(default=None, repr=False)
 
     @property
     def dynamics(self) -> DynamicsSpec | None:
@@ -343,10 +352,19 @@ def parse_case(
         limits = case_budget(spec)
     except GeometryError as exc:
         raise CaseError(path, exc.key, exc.message) from None
-    try:
-        bearing = _build_bearing(spec)
-    except GeometryError as exc:
-        raise CaseError(path, _GEOMETRY_KEYS.get(exc.key, exc.key), exc.message) from None
+    spindle = None
+    if spec.bearings:
+        # a spindle: each bearing read as its own single-bearing case (the lead one stands
+        # for the case's bearing in summaries; the model reads case.spindle)
+        from runout.models._spindle_inputs import build_layout
+
+        spindle, own_cases = build_layout(spec, path, base_dir, profile_data)
+        bearing = own_cases[0].bearing
+    else:
+        try:
+            bearing = _build_bearing(spec)
+        except GeometryError as exc:
+            raise CaseError(path, _GEOMETRY_KEYS.get(exc.key, exc.key), exc.message) from None
     try:
         operation = Operation(
             rotating_ring=spec.operation.rotating_ring,
@@ -361,8 +379,10 @@ def parse_case(
     except GeometryError as exc:
         raise CaseError(path, exc.key, exc.message) from None
     try:
-        imperfections = _build_imperfections(
-            spec, bearing, base_dir or Path.cwd(), limits, profile_data
+        imperfections = (
+            own_cases[0].imperfections
+            if spindle is not None
+            else _build_imperfections(spec, bearing, base_dir or Path.cwd(), limits, profile_data)
         )
     except _CaseKeyError as exc:
         raise CaseError(path, exc.key, exc.message) from None
@@ -393,6 +413,7 @@ def parse_case(
         analysis=analysis,
         spec=spec,
         profile_data=dict(profile_data or {}),
+        spindle=spindle,
     )
     try:
         _check_limits(case)

@@ -296,15 +296,19 @@ def check(
     for title, rows in summary.sections():
         _out.print(_rows_table(title, rows))
     _out.print(_rows_table(f"As the {use.model} model uses it", use.rows()))
-    if not case.imperfections.is_perfect:
-        _out.print(_imperfection_table(case))
+    if case.spindle is not None:  # one table per bearing: each has its own parts
+        for b in case.spindle.bearings:
+            if not b.imperfections.is_perfect:
+                _out.print(_imperfection_table(b.imperfections, f"Imperfections: {b.name} bearing"))
+    elif not case.imperfections.is_perfect:
+        _out.print(_imperfection_table(case.imperfections))
 
 
-def _imperfection_table(case: Any) -> Table:
-    table = Table(title="Imperfections", title_justify="left", header_style="bold")
+def _imperfection_table(imperfections: Any, title: str = "Imperfections") -> Table:
+    table = Table(title=escape(title), title_justify="left", header_style="bold")
     for col in ("part", "element", "order", "amplitude 0-p [nm]", "phase [deg]"):
         table.add_column(escape(col), justify="right" if col != "part" else "left")
-    rows = case.imperfections.summary()
+    rows = imperfections.summary()
     for row in rows[:40]:
         element = row.get("element")
         table.add_row(

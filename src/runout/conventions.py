@@ -57,6 +57,7 @@ _SHORT = {
     "equilibrium": "equil.",
     "dynamic": "dynamic",
     "roller_constraint": "roller",
+    "spindle": "spindle",
 }
 H: Status = "honoured"
 R: Status = "refused"
@@ -110,14 +111,23 @@ def _table_key(table: str, name: str) -> Any:
     """``present`` for ``[table] name``: set explicitly and different from the default."""
 
     def present(spec: CaseSpec) -> list[str]:
-        section = getattr(spec, table, None)
-        if section is None or name not in section.model_fields_set:
-            return []
-        value = getattr(section, name)
-        default = type(section).model_fields[name].default
-        if value is None or value == default:
-            return []
-        return [f"{table}.{name}"]
+        sections: list[tuple[str, Any]]
+        if table == "bearing" and spec.bearings:  # a spindle: every [[bearings]] entry
+            sections = [(f"bearings[{i}]", b) for i, b in enumerate(spec.bearings, start=1)]
+        elif table == "elements":  # [elements], or a spindle's [elements.<name>]
+            sections = list(spec.element_tables)
+        else:
+            sections = [(table, getattr(spec, table, None))]
+        found = []
+        for prefix, section in sections:
+            if section is None or name not in section.model_fields_set:
+                continue
+            value = getattr(section, name)
+            default = type(section).model_fields[name].default
+            if value is None or value == default:
+                continue
+            found.append(f"{prefix}.{name}")
+        return found
 
     return present
 
@@ -160,14 +170,27 @@ def _zero_amplitude(entry: Any) -> bool:
 
 def _element_list(name: str) -> Any:
     def present(spec: CaseSpec) -> list[str]:
-        values = getattr(spec.elements, name) if spec.elements is not None else None
-        return [f"elements.{name}"] if values and any(v != 0.0 for v in values) else []
+        return [
+            f"{key}.{name}"
+            for key, table in spec.element_tables
+            if (values := getattr(table, name)) and any(v != 0.0 for v in values)
+        ]
 
     return present
 
 
+def _spindle_tables(spec: CaseSpec) -> list[str]:
+    return ["spindle", "bearings"] if spec.bearings else []
+
+
 def _bearing_type_roller(spec: CaseSpec) -> list[str]:
-    return ["bearing.type"] if spec.bearing.type == "cylindrical_roller" else []
+    if spec.bearings:  # a spindle: every bearing
+        return [
+            f"bearings[{i}].type"
+            for i, b in enumerate(spec.bearings, start=1)
+            if b.type == "cylindrical_roller"
+        ]
+    return ["bearing.type"] if spec.lead_bearing.type == "cylindrical_roller" else []
 
 
 def _analysis_range(spec: CaseSpec) -> list[str]:
@@ -217,12 +240,13 @@ KEYS: tuple[KeyConvention, ...] = (
         "Cylindrical roller bearing: line contacts, contact angle 0, clearance from the "
         "raceway diameters.",
         "-",
-        (H, R, R, R, R, H),
+        (H, R, R, R, R, H, R),
         {
             "quasi_static_2d": "it is a ball-bearing model (seed 001)",
             "quasi_static_3d": "it is a ball-bearing model (seed 000)",
             "equilibrium": "it is a ball-bearing model (Jones-Harris)",
             "dynamic": "it is a ball-bearing model (seed 003)",
+            "spindle": "it is a ball-bearing model (seed 000 for each bearing)",
         },
         _bearing_type_roller,
     ),
@@ -232,7 +256,7 @@ KEYS: tuple[KeyConvention, ...] = (
         "radial play of one ball is P_d / 2. Sets the free contact angle "
         "α⁰ = arccos(1 - P_d / 2A).",
         "m",
-        (H, H, H, H, H, H),
+        (H, H, H, H, H, H, H),
         {},
         _table_key("bearing", "radial_clearance"),
     ),
@@ -241,7 +265,7 @@ KEYS: tuple[KeyConvention, ...] = (
         "Nominal (free, catalogue) contact angle α⁰ of an unloaded bearing pushed axially; "
         "fixes the clearance P_d = 2A(1 - cos α⁰). With radial_clearance both must agree.",
         "rad",
-        (H, H, H, H, H, H),
+        (H, H, H, H, H, H, H),
         {},
         _table_key("bearing", "nominal_contact_angle"),
     ),
@@ -250,7 +274,7 @@ KEYS: tuple[KeyConvention, ...] = (
         "Operating contact angle held fixed whatever the load (seed 000); omitted, the models "
         "derive it from the clearance and the axial load.",
         "rad",
-        (H, H, H, R, R, N),
+        (H, H, H, R, R, N, H),
         {
             "equilibrium": _ANGLE_FROM_CLEARANCE,
             "dynamic": _ANGLE_FROM_CLEARANCE,
@@ -263,28 +287,28 @@ KEYS: tuple[KeyConvention, ...] = (
         "Groove radius over ball diameter f = r / D (> 0.5); with the clearance they set the "
         "free contact angle, and the Hertz contact.",
         "-",
-        (H, H, H, H, H, N),
+        (H, H, H, H, H, N, H),
         {
             "roller_constraint": "it takes the balls as circles on the groove-bottom diameters; "
             "they count only through the clearance of a bearing.nominal_contact_angle"
         },
         lambda spec: [
-            f"bearing.{name}"
+            path
             for name in (
                 "inner_conformity",
                 "outer_conformity",
                 "inner_groove_radius",
                 "outer_groove_radius",
             )
-            if name in spec.bearing.model_fields_set and getattr(spec.bearing, name) is not None
+            for path in _table_key("bearing", name)(spec)
         ],
-        {"roller_constraint": lambda spec: spec.bearing.nominal_contact_angle is not None},
+        {"roller_constraint": lambda spec: spec.lead_bearing.nominal_contact_angle is not None},
     ),
     KeyConvention(
         "material.youngs_modulus, poisson_ratio",
         "Elastic constants of rings and elements (Hertz contact stiffness).",
         "Pa, -",
-        (N, H, H, H, H, N),
+        (N, H, H, H, H, N, H),
         {
             "linear": "its gains do not depend on the contact stiffness (seed 002 eq. 13); the "
             "material enters only the loaded contact angle",
@@ -299,7 +323,7 @@ KEYS: tuple[KeyConvention, ...] = (
         "material.density",
         "Density of the rolling elements (centrifugal force, gyroscopic moment).",
         "kg/m^3",
-        (N, N, N, H, N, N),
+        (N, N, N, H, N, N, N),
         {
             "linear": "it has no inertia",
             "quasi_static_2d": "it is quasi-static without ball inertia",
@@ -313,7 +337,7 @@ KEYS: tuple[KeyConvention, ...] = (
         "operation.rotating_ring",
         "Ring whose revolutions define orders (waves per revolution) and RRO.",
         "-",
-        (H, H, H, H, H, H),
+        (H, H, H, H, H, H, H),
         {},
         _table_key("operation", "rotating_ring"),
     ),
@@ -321,7 +345,7 @@ KEYS: tuple[KeyConvention, ...] = (
         "operation.other_ring_speed",
         "Speed of the other ring, signed relative to speed (both rings turning).",
         "Hz",
-        (H, H, H, H, H, R),
+        (H, H, H, H, H, R, H),
         {"roller_constraint": _RING_KINEMATICS},
         _table_key("operation", "other_ring_speed"),
     ),
@@ -329,7 +353,7 @@ KEYS: tuple[KeyConvention, ...] = (
         "operation.axial_load",
         "Axial load on the shaft along +z, or constant-pressure (spring) preload.",
         "N",
-        (H, H, H, H, H, N),
+        (H, H, H, H, H, N, H),
         {"roller_constraint": "a cylindrical roller bearing carries no axial load"},
         _table_key("operation", "axial_load"),
     ),
@@ -337,7 +361,7 @@ KEYS: tuple[KeyConvention, ...] = (
         "operation.radial_load",
         "Radial load on the shaft along radial_load_direction; the radial measuring direction.",
         "N",
-        (N, H, H, H, H, N),
+        (N, H, H, H, H, N, H),
         {
             "linear": "its gains do not depend on the load; the load only sets the measuring "
             "direction",
@@ -350,7 +374,7 @@ KEYS: tuple[KeyConvention, ...] = (
         "operation.radial_load_direction",
         "Direction of the radial load on the shaft, counter-clockwise from +x; default -y.",
         "rad",
-        (H, H, H, H, H, H),
+        (H, H, H, H, H, H, H),
         {},
         _table_key("operation", "radial_load_direction"),
     ),
@@ -358,16 +382,16 @@ KEYS: tuple[KeyConvention, ...] = (
         "operation.moment_load",
         "Tilting moment on the shaft (inner ring).",
         "N m",
-        (R, R, R, H, R, R),
-        {m: _NO_TILT for m in MODELS if m != "equilibrium"},
+        (R, R, R, H, R, R, H),
+        {m: _NO_TILT for m in MODELS if m not in ("equilibrium", "spindle")},
         _table_key("operation", "moment_load"),
     ),
     KeyConvention(
         "operation.moment_load_direction",
         "Direction of the moment vector, counter-clockwise from +x.",
         "rad",
-        (N, N, N, H, N, N),
-        {m: _NO_TILT for m in MODELS if m != "equilibrium"},
+        (N, N, N, H, N, N, H),
+        {m: _NO_TILT for m in MODELS if m not in ("equilibrium", "spindle")},
         _table_key("operation", "moment_load_direction"),
     ),
     KeyConvention(
@@ -375,7 +399,7 @@ KEYS: tuple[KeyConvention, ...] = (
         "Radius deviation of a raceway, zero-to-peak, a cos(kθ + φ) in the ring's own frame; "
         "inner: material added positive; outer: radius larger positive.",
         "m, rad",
-        (H, H, H, N, H, H),
+        (H, H, H, N, H, H, H),
         {"equilibrium": _NOT_SOLVED},
         _entries(("inner", "outer")),
     ),
@@ -384,7 +408,7 @@ KEYS: tuple[KeyConvention, ...] = (
         "Radius deviation of an element in its own frame (phase_frame); enters as the "
         "diameter deviation along the contact line (seed 002 eq. 26).",
         "m, rad",
-        (H, H, H, N, H, H),
+        (H, H, H, N, H, H, H),
         {"equilibrium": _NOT_SOLVED},
         _entries(("ball", "roller")),
     ),
@@ -392,13 +416,14 @@ KEYS: tuple[KeyConvention, ...] = (
         "slant",
         "Inner-raceway slant (seed 002 eq. 34): a two-per-revolution axial tilt of the groove.",
         "m or rad",
-        (H, R, R, N, R, R),
+        (H, R, R, N, R, R, R),
         {
             "quasi_static_2d": _SLANT,
             "quasi_static_3d": _SLANT,
             "dynamic": _SLANT,
             "roller_constraint": _SLANT,
             "equilibrium": _NOT_SOLVED,
+            "spindle": "a slant is not given per bearing ([slant] has no bearing = key)",
         },
         _table("slant"),
     ),
@@ -406,7 +431,7 @@ KEYS: tuple[KeyConvention, ...] = (
         "elements.diameter_errors",
         "Size error of each element's diameter (order 0 of its deviation).",
         "m",
-        (H, H, H, N, H, H),
+        (H, H, H, N, H, H, H),
         {"equilibrium": _NOT_SOLVED},
         _element_list("diameter_errors"),
     ),
@@ -414,7 +439,7 @@ KEYS: tuple[KeyConvention, ...] = (
         "elements.pitch_errors",
         "Angular position error of each element in the cage, counter-clockwise.",
         "rad",
-        (H, H, H, N, H, H),
+        (H, H, H, N, H, H, H),
         {"equilibrium": _NOT_SOLVED},
         _element_list("pitch_errors"),
     ),
@@ -423,7 +448,7 @@ KEYS: tuple[KeyConvention, ...] = (
         "Frame of element waviness phases: cage (0 along the outward radius at t = 0) or fixed "
         "(0 along +x for every element, seed 004 eq. 7).",
         "-",
-        (H, H, H, N, H, H),
+        (H, H, H, N, H, H, H),
         {"equilibrium": _NOT_SOLVED},
         _table_key("elements", "phase_frame"),
     ),
@@ -431,7 +456,7 @@ KEYS: tuple[KeyConvention, ...] = (
         "analysis.revolutions, samples",
         "Length of the record in revolutions of the rotating ring, and its number of instants.",
         "-",
-        (H, H, H, N, H, H),
+        (H, H, H, N, H, H, H),
         {"equilibrium": "it solves one static instant"},
         _analysis_range,
     ),
@@ -457,7 +482,7 @@ KEYS: tuple[KeyConvention, ...] = (
         "in the ISO 15242-1 bands, edges scaled from 1800 rpm to the speed; JSON iso15242) or "
         '"anderon" (Anderon bands in orders; the linear model always gives them, from x).',
         "-",
-        (H, H, H, R, H, H),
+        (H, H, H, R, H, H, H),
         {"equilibrium": _NO_LINES},
         _table_key("analysis", "bands"),
     ),
@@ -465,7 +490,7 @@ KEYS: tuple[KeyConvention, ...] = (
         'analysis.limit_on = "axial_pp"',
         "A spec limit on the axial runout p-p.",
         "-",
-        (R, R, H, R, R, R),
+        (R, R, H, R, R, R, H),
         {
             "linear": "it gives the radial displacement only",
             "quasi_static_2d": _TWO_D,
@@ -482,9 +507,24 @@ KEYS: tuple[KeyConvention, ...] = (
         "[m/s] for an ISO 15242 band; run: JSON verdict (pass: value <= limit), study: JSON "
         "yield with a Clopper-Pearson 95 % interval.",
         "m or m/s",
-        (H, H, H, R, H, H),
+        (H, H, H, R, H, H, H),
         {"equilibrium": _NOT_SOLVED + ": it gives no runout to compare"},
         _table_key("analysis", "limit"),
+    ),
+    KeyConvention(
+        "spindle, bearings",
+        "A rigid shaft on two or more [[bearings]] (each a [bearing] with name and axial "
+        "position): arrangement (DB, DF, DT), spring or position preload, and the nose position "
+        "where the runout is reported; imperfection tables name their bearing.",
+        "m, N",
+        (R, R, R, R, R, R, H),
+        {
+            m: "it runs one bearing: a case with [[bearings]] is refused when it is read "
+            '(analysis.model), and runs in model = "spindle"'
+            for m in MODELS
+            if m != "spindle"
+        },
+        _spindle_tables,
     ),
     _option_of(
         "dynamic",
@@ -564,7 +604,7 @@ def applicability(spec: CaseSpec, model: str) -> Applicability:
 def _combination_notes(spec: CaseSpec, model: str) -> list[str]:
     """Readings of key combinations a user should be told about."""
     out: list[str] = []
-    b = spec.bearing
+    b = spec.lead_bearing
     if (
         model in ("linear", "quasi_static_3d")  # 2-D: the clearance also sets δ_0
         and b.contact_angle is not None
@@ -590,7 +630,7 @@ def _combination_notes(spec: CaseSpec, model: str) -> list[str]:
             "operation.radial_load_direction: not applied by the "
             f"{model} model without a radial load (the measuring direction is then x)"
         )
-    fixed_frame = spec.elements is not None and spec.elements.phase_frame == "fixed"
+    fixed_frame = any(t.phase_frame == "fixed" for _, t in spec.element_tables)
     if model != "equilibrium" and not fixed_frame:
         for path in _entries(("ball", "roller"), coherent_only=True)(spec):
             out.append(

@@ -147,6 +147,8 @@ def hertz_findings(case: Any, model: str) -> list[Any]:
 
     bearing = case.bearing
     found: list[Any] = []
+    if model == "spindle" and getattr(case, "spindle", None) is not None:
+        return _spindle_findings(case)
     if isinstance(bearing, BallBearing):
         try:
             alpha, _ = operating_contact_angle(bearing, case.operation)
@@ -159,6 +161,39 @@ def hertz_findings(case: Any, model: str) -> list[Any]:
     elif isinstance(bearing, RollerBearing):
         for key, load, what in _element_loads(case, model):
             found += roller_load_validity(bearing, load, key, what)
+    return found
+
+
+def _spindle_findings(case: Any) -> list[Any]:
+    """Hertz validity of each spindle bearing's most loaded ball at the shaft's static position
+    under the preload and the loads (no imperfections)."""
+    from runout.contact import ball_load_validity
+    from runout.models import spindle
+
+    try:
+        st = spindle.setup(case.spindle, case.operation)
+        q, _ = spindle.static_stiffness(st)
+    except (GeometryError, NumericalError):
+        return []  # the model's set-up names the key
+    loads = spindle.ball_loads(st, q)
+    found: list[Any] = []
+    start = 0
+    op = case.operation
+    for index, (b, sb) in enumerate(zip(case.spindle.bearings, st.bearings, strict=True), 1):
+        z = sb.kinematics.n_elements
+        worst = float(loads[start : start + z].max())
+        start += z
+        if not isinstance(b.bearing, BallBearing):
+            continue
+        key = (
+            "spindle.preload"
+            if case.spindle.preload is not None
+            else ("spindle.preload_displacement")
+        )
+        if op.radial_load > 0.0 or op.moment_load > 0.0 or op.axial_load > 0.0:
+            key = f"bearings[{index}]"
+        what = f"the most loaded ball of bearing {b.name} carries {worst:.4g} N"
+        found += ball_load_validity(b.bearing, worst, sb.contact_angle, key, what)
     return found
 
 
@@ -179,6 +214,12 @@ def _model_setup(case: Any, model: str) -> None:
 
         module = importlib.import_module(f"runout.models.{model}")
         module.setup(case)
+        time_grid(op.speed, an.revolutions, an.samples)
+    elif model == "spindle" and getattr(case, "spindle", None) is not None:
+        from runout.models import spindle
+        from runout.models._quasi_static import time_grid
+
+        spindle.setup(case.spindle, op)
         time_grid(op.speed, an.revolutions, an.samples)
     elif model == "roller_constraint":
         from runout.models import roller_constraint

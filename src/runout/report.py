@@ -506,6 +506,8 @@ def _other_results(result: dict[str, Any], summary: dict[str, Any]) -> list[str]
     if isinstance(natural, list) and natural:
         shown = ", ".join(fmt_number(num(v), 5) for v in natural)
         parts.append(f"<p><b>natural frequencies</b>: {esc(shown)} Hz</p>")
+    if result.get("model") == "spindle" and isinstance(result.get("bearings"), list):
+        parts += _spindle_section(result)
     if isinstance(result.get("balls"), list) and result["balls"]:
         balls = result["balls"]
         keys = [k for k in balls[0] if k != "ball"]
@@ -526,6 +528,55 @@ def _other_results(result: dict[str, Any], summary: dict[str, Any]) -> list[str]
             details(
                 "Per-ball equilibrium",
                 table(["ball", *(k.replace("_", " ") for k in keys)], rows),
+            )
+        )
+    return parts
+
+
+def _spindle_section(result: dict[str, Any]) -> list[str]:
+    """The spindle's bearings (runout at each one's plane), tilt and nose stiffness."""
+    rows = []
+    for b in result["bearings"]:
+        r = b.get("runout") or {}
+        rows.append(
+            [
+                esc(b.get("name", "")),
+                esc(length(num(b.get("position_m")))),
+                esc(b.get("thrust", "")),
+                esc(fmt_number(num(b.get("contact_angle_deg")), 4)),
+                esc(fmt_number(num(b.get("preload_n")), 4)),
+                esc(length(num(b.get("pressure_centre_m")))),
+                esc(length(num(r.get("radial_pp_m")))),
+                esc(length(num(r.get("axial_pp_m")))),
+            ]
+        )
+    head = [
+        "bearing",
+        "position",
+        "thrust",
+        "contact angle [deg]",
+        "preload [N]",
+        "pressure centre",
+        "radial p-p at its plane",
+        "axial p-p",
+    ]
+    parts = ["<h2>Spindle: the shaft on its bearings</h2>", table(head, rows, (1, 3, 4, 5, 6, 7))]
+    tilt = result.get("tilt_pp_rad") or {}
+    parts.append(
+        f"<p><b>tilt p-p</b>: θx {esc(fmt_number(num(tilt.get('x')), 4))} rad, "
+        f"θy {esc(fmt_number(num(tilt.get('y')), 4))} rad; runout reported at the nose, "
+        f"z = {esc(length(num(result.get('nose_position_m'))))}</p>"
+    )
+    matrix = (result.get("stiffness_matrix") or {}).get("matrix")
+    if isinstance(matrix, list) and matrix:
+        dofs = ["x", "y", "z", "θx", "θy"]
+        rows = [
+            [dofs[i], *(esc(fmt_number(num(v), 4)) for v in row)] for i, row in enumerate(matrix)
+        ]
+        parts.append(
+            details(
+                "Stiffness of the shaft at the nose (N/m, N/rad, N m/m, N m/rad)",
+                table(["", *dofs], rows, (1, 2, 3, 4, 5)),
             )
         )
     return parts

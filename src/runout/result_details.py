@@ -19,6 +19,7 @@ from typing import TYPE_CHECKING, Any, Literal, TypeAlias
 
 if TYPE_CHECKING:
     from runout.models.roller_constraint import Solution
+    from runout.results import Runout
 
 __all__ = [
     "DETAILS_BY_MODEL",
@@ -34,6 +35,8 @@ __all__ = [
     "RingDisplacement",
     "RollerContacts",
     "RollerDetails",
+    "SpindleBearingResult",
+    "SpindleDetails",
     "StiffnessMatrix",
     "Verdict",
     "details_from_json",
@@ -527,8 +530,150 @@ class RollerDetails:
 
 
 #: The details of any model.
+# --------------------------------------------------------------------------------------------
+# spindle (a rigid shaft on several bearings)
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class SpindleBearingResult:
+    """One bearing of a spindle run (a row of the JSON ``bearings``).
+
+    Attributes
+    ----------
+    name : str
+    position_m : float
+        Axial coordinate of its ball-set plane [m].
+    contact_angle_deg : float
+        Its contact angle [deg].
+    thrust : {"+z", "-z"}
+        Direction of the axial load on the shaft it carries (the arrangement).
+    preload_n : float
+        Preload it carries [N].
+    preload_approach_m : float
+        Elastic approach along the contact line under that preload [m].
+    pressure_centre_m : float
+        Axial coordinate where its contact lines cross the axis [m].
+    runout : Runout
+        The shaft's runout at its plane (relative to the housing) [m].
+    mean_displacement_m : tuple of float
+        Mean (x, y, z) of the shaft at its plane [m].
+    """
+
+    name: str
+    position_m: float
+    contact_angle_deg: float
+    thrust: str
+    preload_n: float
+    preload_approach_m: float
+    pressure_centre_m: float
+    runout: Runout
+    mean_displacement_m: tuple[float, float, float]
+
+    def to_json(self) -> dict[str, Any]:
+        """JSON row of ``bearings``."""
+        return {
+            "name": self.name,
+            "position_m": self.position_m,
+            "contact_angle_deg": self.contact_angle_deg,
+            "thrust": self.thrust,
+            "preload_n": self.preload_n,
+            "preload_approach_m": self.preload_approach_m,
+            "pressure_centre_m": self.pressure_centre_m,
+            "runout": self.runout.to_json(),
+            "mean_displacement_m": list(self.mean_displacement_m),
+        }
+
+    @classmethod
+    def from_json(cls, doc: dict[str, Any]) -> SpindleBearingResult:
+        """Read :meth:`to_json` back."""
+        from runout.results import Runout
+
+        x, y, z = (float(v) for v in doc["mean_displacement_m"])
+        return cls(
+            name=str(doc["name"]),
+            position_m=float(doc["position_m"]),
+            contact_angle_deg=float(doc["contact_angle_deg"]),
+            thrust=str(doc["thrust"]),
+            preload_n=float(doc["preload_n"]),
+            preload_approach_m=float(doc["preload_approach_m"]),
+            pressure_centre_m=float(doc["pressure_centre_m"]),
+            runout=Runout(**{k: float(v) for k, v in doc["runout"].items()}),
+            mean_displacement_m=(x, y, z),
+        )
+
+
+@dataclass(frozen=True)
+class SpindleDetails:
+    """What the spindle model adds to its result (the nose's record is the result's own).
+
+    Attributes
+    ----------
+    arrangement : {"DB", "DF", "DT"}
+    nose_position_m : float
+        Axial coordinate of the reported runout [m].
+    tilt_pp_rad : tuple of float
+        Peak-to-peak of the shaft's tilts θx, θy [rad].
+    static_position : tuple of float
+        The shaft's position without imperfections (x, y, z [m], θx, θy [rad]) at the axial
+        origin, from its preload reference.
+    bearings : tuple of SpindleBearingResult
+    stiffness_matrix : StiffnessMatrix
+        5×5 stiffness of the shaft at the nose (x, y, z, tilt_x, tilt_y).
+    unloaded_balls_max : int
+        Largest number of balls (all bearings) out of contact at one instant.
+    n_elements : int
+        Balls of all bearings.
+    explained_fraction : float
+        Share of the nose record's variance the fitted lines explain [-].
+    """
+
+    arrangement: str
+    nose_position_m: float
+    tilt_pp_rad: tuple[float, float]
+    static_position: tuple[float, ...]
+    bearings: tuple[SpindleBearingResult, ...]
+    stiffness_matrix: StiffnessMatrix
+    unloaded_balls_max: int
+    n_elements: int
+    explained_fraction: float
+
+    def to_json(self) -> dict[str, Any]:
+        """The spindle model's JSON entries."""
+        return {
+            "arrangement": self.arrangement,
+            "nose_position_m": self.nose_position_m,
+            "tilt_pp_rad": {"x": self.tilt_pp_rad[0], "y": self.tilt_pp_rad[1]},
+            "static_position": list(self.static_position),
+            "bearings": [b.to_json() for b in self.bearings],
+            "stiffness_matrix": self.stiffness_matrix.to_json(),
+            "unloaded_balls_max": self.unloaded_balls_max,
+            "n_elements": self.n_elements,
+            "explained_fraction": self.explained_fraction,
+        }
+
+    @classmethod
+    def from_json(cls, doc: dict[str, Any]) -> SpindleDetails:
+        """Read :meth:`to_json` back."""
+        tilt = doc["tilt_pp_rad"]
+        return cls(
+            arrangement=str(doc["arrangement"]),
+            nose_position_m=float(doc["nose_position_m"]),
+            tilt_pp_rad=(float(tilt["x"]), float(tilt["y"])),
+            static_position=tuple(float(v) for v in doc["static_position"]),
+            bearings=tuple(SpindleBearingResult.from_json(b) for b in doc["bearings"]),
+            stiffness_matrix=StiffnessMatrix.from_json(doc["stiffness_matrix"]),
+            unloaded_balls_max=int(doc["unloaded_balls_max"]),
+            n_elements=int(doc["n_elements"]),
+            explained_fraction=float(doc["explained_fraction"]),
+        )
+
+
 ModelDetails: TypeAlias = (
-    LinearDetails | QuasiStaticDetails | EquilibriumDetails | DynamicDetails | RollerDetails
+    LinearDetails
+    | QuasiStaticDetails
+    | EquilibriumDetails
+    | DynamicDetails
+    | RollerDetails
+    | SpindleDetails
 )
 
 
@@ -552,6 +697,8 @@ def details_from_json(model: str, doc: dict[str, Any]) -> ModelDetails | None:
         return DynamicDetails.from_json(doc)
     if model == "roller_constraint":
         return RollerDetails.from_json(doc)
+    if model == "spindle":
+        return SpindleDetails.from_json(doc)
     return None
 
 
@@ -563,6 +710,7 @@ DETAILS_BY_MODEL: dict[str, type[ModelDetails]] = {
     "equilibrium": EquilibriumDetails,
     "dynamic": DynamicDetails,
     "roller_constraint": RollerDetails,
+    "spindle": SpindleDetails,
 }
 
 

@@ -21,6 +21,8 @@ from runout.case import (
     OperationSpec,
     ProfileSpec,
     SlantSpec,
+    SpindleBearingSpec,
+    SpindleSpec,
     StudySpec,
     WavinessSpec,
     WavinessSpectrumSpec,
@@ -30,6 +32,8 @@ __all__ = ["case_file_reference"]
 
 TABLES: list[tuple[str, type[BaseModel]]] = [
     ("[bearing]", BearingSpec),
+    ("[spindle]", SpindleSpec),
+    ("[[bearings]]", SpindleBearingSpec),
     ("[material]", MaterialSpec),
     ("[operation]", OperationSpec),
     ("[[waviness]]", WavinessSpec),

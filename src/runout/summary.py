@@ -16,7 +16,13 @@ from runout.bearing import BallBearing, Bearing, Operation, RollerBearing
 from runout.contact import BallContacts, RollerContacts, ball_race_contacts, roller_race_contacts
 from runout.kinematics import Frequencies, bearing_frequencies
 from runout.loading import AxialLoading, axial_loading, axial_loading_fixed_angle
-from runout.result_details import EquilibriumDetails, LinearDetails, RollerDetails, Verdict
+from runout.result_details import (
+    EquilibriumDetails,
+    LinearDetails,
+    RollerDetails,
+    SpindleDetails,
+    Verdict,
+)
 from runout.results import ROLLER_ALIASES, RunResult, frequencies_json
 
 __all__ = [
@@ -296,6 +302,8 @@ _ANGLE_SOURCE = {
     "equilibrium": "solved per ball at speed (static axial-load angle shown)",
     "dynamic": "from the clearance and the axial preload (static axial-load angle shown)",
     "roller_constraint": "0 (rigid model in the radial plane)",
+    "spindle": "per bearing: held at its contact_angle, else its loaded angle at the preload "
+    "it carries (the first bearing's shown)",
 }
 
 
@@ -379,6 +387,15 @@ def model_use(case: Any, model: str | None = None) -> ModelUse:
     approach = None
     if loading is not None and model not in ("roller_constraint", "linear"):
         approach = loading.total_approach
+    if model == "spindle" and getattr(case, "spindle", None) is not None:
+        from runout.errors import GeometryError
+        from runout.models import spindle
+
+        try:  # the first bearing at the preload it carries (the spindle's own set-up)
+            lead = spindle.setup(case.spindle, op).bearings[0]
+            alpha, approach = lead.contact_angle, lead.approach
+        except GeometryError:
+            pass  # the run names the key; the check shows the case as read
     found = applicability(case.spec, model) if getattr(case, "spec", None) is not None else None
     return ModelUse(
         model=model,
@@ -421,7 +438,47 @@ def result_sections(result: RunResult) -> list[tuple[str, Rows]]:
     sections = _run_sections(result)
     if isinstance(details, LinearDetails):
         sections += _linear_sections(result, details)
+    if isinstance(details, SpindleDetails):
+        sections.insert(1, ("Spindle: the shaft and its bearings", _spindle_rows(details)))
     return sections
+
+
+def _spindle_rows(details: SpindleDetails) -> Rows:
+    """Tilt, each bearing's runout at its plane and the nose stiffness of a spindle run."""
+    from runout.display import length_unit
+
+    unit = length_unit(b.runout.radial_pp_m for b in details.bearings)
+    tilt = details.tilt_pp_rad
+    rows: Rows = [
+        (
+            "arrangement, nose position",
+            f"{details.arrangement}, {details.nose_position_m * 1e3:.6g}",
+            "mm",
+        ),
+        ("tilt p-p (θx, θy)", f"{tilt[0]:.4g}, {tilt[1]:.4g}", "rad"),
+    ]
+    for b in details.bearings:
+        rows.append(
+            (
+                f"{b.name} at {b.position_m * 1e3:.6g} mm: radial / axial p-p",
+                f"{_length_number(b.runout.radial_pp_m, unit, None)} / "
+                f"{_length_number(b.runout.axial_pp_m, unit, None)}",
+                unit[0],
+            )
+        )
+        rows.append(
+            (
+                f"{b.name}: contact angle, preload, pressure centre",
+                f"{b.contact_angle_deg:.4g} deg, {b.preload_n:.4g} N, "
+                f"{b.pressure_centre_m * 1e3:.4g} mm",
+                "",
+            )
+        )
+    k = details.stiffness_matrix.matrix
+    stiff = f"{k[0][0]:.4g}, {k[1][1]:.4g}, {k[2][2]:.4g}"
+    rows.append(("nose stiffness k_x, k_y, k_z", stiff, "N/m"))
+    rows.append(("nose tilt stiffness k_θx, k_θy", f"{k[3][3]:.4g}, {k[4][4]:.4g}", "N m/rad"))
+    return rows
 
 
 def _run_sections(result: RunResult) -> list[tuple[str, Rows]]:

@@ -28,6 +28,7 @@ MODEL_MODULES: dict[str, str] = {
     "equilibrium": "runout.models.equilibrium",
     "dynamic": "runout.models.dynamic",
     "roller_constraint": "runout.models.roller_constraint",
+    "spindle": "runout.models.spindle",
 }
 
 
