@@ -30,11 +30,13 @@ if TYPE_CHECKING:
 __all__ = [
     "DISPLACEMENT_OF",
     "LABEL_MAX",
+    "SPINDLE_DISPLACEMENT_OF",
     "Component",
     "RunResult",
     "Runout",
     "Source",
     "apply_analysis",
+    "displacement_of",
     "frequencies_json",
 ]
 
@@ -47,6 +49,18 @@ DISPLACEMENT_OF = (
     "whichever ring turns; x, y radial, z axial along the axial load on the shaft, from the "
     "rings axially centred; t = 0 at the start of the reported record"
 )
+#: The same for the ``spindle`` model: the shaft at the nose (``spindle.nose_position``).
+SPINDLE_DISPLACEMENT_OF = (
+    "the shaft (inner rings) at the nose position relative to the housing (outer rings), "
+    "whichever turns; x, y radial, z axial along the shaft, from the shaft's preload "
+    "reference position; t = 0 at the start of the reported record"
+)
+
+
+def displacement_of(model: str) -> str:
+    """What a model's displacements are (JSON ``displacement_of``)."""
+    return SPINDLE_DISPLACEMENT_OF if model == "spindle" else DISPLACEMENT_OF
+
 
 Rows = list[tuple[str, str, str]]
 
@@ -423,7 +437,7 @@ class RunResult:
                 "units": dict(LINE_COLUMNS),
                 "model": self.model,
                 "title": self.title,
-                "displacement_of": DISPLACEMENT_OF,
+                "displacement_of": displacement_of(self.model),
             }
         )
         return df
@@ -461,7 +475,7 @@ class RunResult:
                 "long_name": "displacement of the inner ring's centre",
                 "model": self.model,
                 "title": self.title,
-                "displacement_of": DISPLACEMENT_OF,
+                "displacement_of": displacement_of(self.model),
                 "measuring_direction": [float(v) for v in self.measuring_direction],
             },
         )
@@ -503,7 +517,7 @@ class RunResult:
             ),
             "runout": self.runout.to_json(),
             "components": [c.to_json() for c in self.lines()],
-            "displacement_of": DISPLACEMENT_OF,
+            "displacement_of": displacement_of(self.model),
             "mean_displacement_m": (
                 self.mean_displacement() if self.time.size or self.record_mean else None
             ),

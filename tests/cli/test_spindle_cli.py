@@ -281,3 +281,13 @@ def test_check_shows_each_bearings_imperfections() -> None:
     assert front < rear
     assert re.search(r"inner\W+all\W+7\W", done.stdout[rear:])  # the rear's 7-lobe row
     assert not re.search(r"inner\W+all\W+7\W", done.stdout[front:rear])
+
+
+def test_the_json_says_what_the_spindle_displacement_is() -> None:
+    # displacement_of said "from the rings axially centred", which is one bearing's
+    # convention; the spindle reports the shaft at the nose from its preload position
+    done = CliRunner().invoke(app, ["run", str(ROOT / "examples" / "spindle_hdd.toml"), "--json"])
+    assert done.exit_code == 0, done.output
+    meaning = json.loads(done.stdout)["displacement_of"]
+    assert "nose" in meaning and "preload" in meaning
+    assert "rings axially centred" not in meaning
