@@ -335,27 +335,55 @@ def frequencies(case_file: CaseArg, as_json: JsonOpt = False) -> None:
     """
     from runout.bearing import RollerBearing
     from runout.case import load_case
+    from runout.kinematics import bearing_frequencies
     from runout.results import frequencies_json
     from runout.summary import bearing_summary
 
     case = load_case(case_file)
-    summary = bearing_summary(case.bearing, case.operation)
-    freqs = summary.frequencies
-    element = "roller" if isinstance(case.bearing, RollerBearing) else "ball"
+    # (name, bearing, contact angle): a spindle's bearings each at the angle its model uses
+    sets: list[tuple[str | None, Any, float]]
+    if case.spindle is not None:
+        from runout.models import spindle
+
+        setups = spindle.setup(case.spindle, case.operation).bearings
+        sets = [
+            (b.name, b.bearing, s.contact_angle)
+            for b, s in zip(case.spindle.bearings, setups, strict=True)
+        ]
+    else:
+        sets = [(None, case.bearing, bearing_summary(case.bearing, case.operation).contact_angle)]
+
+    def entry(bearing: Any, angle: float) -> dict[str, Any]:
+        freqs = bearing_frequencies(bearing, case.operation, angle)
+        element = "roller" if isinstance(bearing, RollerBearing) else "ball"
+        return {
+            "contact_angle_deg": math.degrees(angle),
+            "frequencies_hz": frequencies_json(freqs.to_dict(), element),
+            "orders": frequencies_json(freqs.orders(), element) if freqs.rotation > 0 else None,
+        }
+
     if as_json:
-        _print_json(
-            {
-                "title": case.title,
-                "case": str(case_file),
-                "contact_angle_deg": math.degrees(summary.contact_angle),
-                "frequencies_hz": frequencies_json(freqs.to_dict(), element),
-                "orders": frequencies_json(freqs.orders(), element) if freqs.rotation > 0 else None,
-            }
-        )
+        payload = {"title": case.title, "case": str(case_file), **entry(*sets[0][1:])}
+        if case.spindle is not None:  # the first bearing above, as in runout run's output
+            payload["bearings"] = [{"name": n, **entry(b, a)} for n, b, a in sets]
+        _print_json(payload)
         return
+    for name, bearing, angle in sets:
+        _out.print(_frequency_table(case, case_file, name, bearing, angle))
+
+
+def _frequency_table(
+    case: Any, case_file: Path, name: str | None, bearing: Any, angle: float
+) -> Table:
+    from runout.bearing import RollerBearing
+    from runout.kinematics import bearing_frequencies
+
+    freqs = bearing_frequencies(bearing, case.operation, angle)
+    element = "roller" if isinstance(bearing, RollerBearing) else "ball"
+    which = "" if name is None else f", {name} bearing"
     table = Table(
-        title=f"{case.title or case_file}: characteristic frequencies "
-        f"(contact angle {math.degrees(summary.contact_angle):.4g} deg, "
+        title=f"{case.title or case_file}: characteristic frequencies{which} "
+        f"(contact angle {math.degrees(angle):.4g} deg, "
         f"{case.operation.rotating_ring} ring rotating)",
         title_justify="left",
         header_style="bold",
@@ -374,7 +402,7 @@ def frequencies(case_file: CaseArg, as_json: JsonOpt = False) -> None:
     for key, value in freqs.to_dict().items():
         order = "-" if orders is None else f"{orders[key]:.6g}"
         table.add_row(labels[key], f"{value:.6g}", order)
-    _out.print(table)
+    return table
 
 
 @app.command()

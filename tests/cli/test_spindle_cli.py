@@ -291,3 +291,21 @@ def test_the_json_says_what_the_spindle_displacement_is() -> None:
     meaning = json.loads(done.stdout)["displacement_of"]
     assert "nose" in meaning and "preload" in meaning
     assert "rings axially centred" not in meaning
+
+
+def test_frequencies_are_those_the_spindle_model_uses_per_bearing() -> None:
+    # `runout frequencies` showed the first bearing at its free contact angle (25 deg on the
+    # machine-tool spindle) while the model runs it at its preloaded angle (25.28 deg)
+    case = str(ROOT / "examples" / "spindle_machine_tool.toml")
+    freqs = CliRunner().invoke(app, ["frequencies", case, "--json"])
+    run = CliRunner().invoke(app, ["run", case, "--json"])
+    assert freqs.exit_code == 0 and run.exit_code == 0, freqs.output + run.output
+    shown, ran = json.loads(freqs.stdout), json.loads(run.stdout)
+    assert shown["contact_angle_deg"] == ran["contact_angle_deg"]
+    assert shown["frequencies_hz"] == ran["frequencies_hz"]
+    names = [b["name"] for b in shown["bearings"]]
+    assert names == [b["name"] for b in ran["bearings"]]
+    for mine, theirs in zip(shown["bearings"], ran["bearings"], strict=True):
+        assert mine["contact_angle_deg"] == pytest.approx(theirs["contact_angle_deg"], rel=1e-12)
+    text = CliRunner().invoke(app, ["frequencies", case])
+    assert all(f"{name} bearing" in text.stdout for name in names)
