@@ -150,21 +150,26 @@ def _read_json(path: Path) -> dict[str, Any]:
     return loaded
 
 
-def _load_case(directory: Path) -> Any:
-    """The validated case of the directory's ``case.toml``, or None when it cannot be loaded.
+def _load_case(directory: Path) -> tuple[Any, str | None]:
+    """The validated case of the directory's ``case.toml`` (None when it cannot be loaded)
+    and, when it cannot, why.
 
-    The copy may miss files the original referred to (a profile), so a case that does not load
-    again only costs the report its operating inputs, which then come from the JSON alone.
+    The copy may miss files the original referred to (a profile named by an absolute path
+    that is gone, a directory edited by hand), so a case that does not load again only costs
+    the report its operating inputs, which then come from the JSON alone; the page says so.
     """
     path = directory / "case.toml"
     if not path.exists():
-        return None
+        return None, None
     from runout.case import load_case
 
     try:
-        return load_case(path)
-    except (RunoutError, OSError, ValueError):
-        return None
+        return load_case(path), None
+    except (RunoutError, OSError, ValueError) as exc:
+        return (
+            None,
+            f"{path.name} does not load here ({exc}); the inputs shown come from the results alone",
+        )
 
 
 # --------------------------------------------------------------------------------------------
@@ -194,7 +199,7 @@ def _report_body(directory: Path) -> tuple[str, str]:
         if (directory / "case.toml").exists()
         else ""
     )
-    case = _load_case(directory)
+    case, unloaded = _load_case(directory)
     title = result.get("title") or study.get("title") or summary.get("title") or directory.name
     parts: list[str] = [f"<h1>{esc(title)}</h1>"]
     if study:
@@ -206,7 +211,7 @@ def _report_body(directory: Path) -> tuple[str, str]:
         parts += _lines_section(result)
         parts += _other_results(result, summary)
     parts += _figures(directory)
-    notes = result.get("notes") or study.get("notes")
+    notes = [*(result.get("notes") or study.get("notes") or []), *([unloaded] if unloaded else [])]
     if notes:
         parts.append("<h2>Notes</h2>")
         parts += [f"<p class='note'>{esc(n)}</p>" for n in notes]

@@ -60,3 +60,16 @@ def test_the_out_directory_holds_the_profiles_its_case_names(tmp_path: Path) -> 
     assert json.loads(again.stdout)["runout"] == first["runout"]
     # and the report shows the profile among the inputs
     assert "inner.csv" in (out / "report.html").read_text(encoding="utf-8")
+
+
+def test_a_report_whose_case_does_not_load_says_so(tmp_path: Path) -> None:
+    # the report dropped the inputs without a word when DIR/case.toml no longer loaded
+    case = _case(tmp_path / "in")
+    out = tmp_path / "results"
+    assert CliRunner().invoke(app, ["run", str(case), "--out", str(out)]).exit_code == 0
+    (out / "data" / "inner.csv").unlink()  # the directory edited by hand
+    done = CliRunner().invoke(app, ["report", str(out)])
+    assert done.exit_code == 0, done.output
+    page = (out / "report.html").read_text(encoding="utf-8")
+    assert "case.toml does not load here" in page
+    assert "inputs shown come from the results alone" in page
