@@ -678,12 +678,34 @@ class VarySpec(_Table):
     step: RawQuantity | None = Field(None, description="Sweep: step of a range (or num).")
 
 
-#: ``[study.vary]`` shorthands (Monte Carlo): key -> what it draws.
+#: ``[study.vary]`` shorthands (Monte Carlo): key -> what it draws. A spindle names the
+#: bearing after a dot, as its ``[elements.<name>]`` tables do: ``element_diameter_sigma.front``.
 STUDY_SHORTHANDS = {
     "element_diameter_sigma": (
         "standard deviation [m] of a normal error added to every element's diameter error"
     ),
 }
+#: A spindle bearing's per-element key: ``elements.<name>.diameter_errors`` (or pitch_errors).
+_BEARING_ELEMENTS_KEY = re.compile(
+    r"elements\.([A-Za-z0-9_-]{1,32})\.(diameter_errors|pitch_errors)"
+)
+
+
+def split_shorthand(key: str) -> tuple[str, str | None] | None:
+    """``(shorthand, bearing name or None)`` of a ``[study.vary]`` shorthand key, else None.
+
+    ``"element_diameter_sigma"`` gives ``("element_diameter_sigma", None)``;
+    ``"element_diameter_sigma.front"`` (a spindle's bearing ``front``) gives
+    ``("element_diameter_sigma", "front")``.
+    """
+    base, dot, name = key.partition(".")
+    if base not in STUDY_SHORTHANDS:
+        return None
+    if not dot:
+        return base, None
+    return (base, name) if re.fullmatch(r"[A-Za-z0-9_-]{1,32}", name) else None
+
+
 _MC_KEYS = {
     "normal": ("mean", "std"),
     "uniform": ("low", "high"),
@@ -715,12 +737,19 @@ def _array_tables() -> set[str]:
 def parse_vary_key(key: str) -> tuple[str, int | None, str]:
     """Split a ``[study.vary]`` key into (table, 1-based index or None, field); check names.
 
+    A spindle bearing's element key ``elements.<name>.diameter_errors`` gives the table
+    ``"elements.<name>"`` (the bearing's name is checked against the case by the study plan).
+
     Raises
     ------
     ValueError
         With a did-you-mean hint when the table or the key does not exist.
     """
 
+    bearing = _BEARING_ELEMENTS_KEY.fullmatch(key)
+    if bearing is not None:
+        # a spindle bearing's [elements.<name>] key: the table carries the bearing's name
+        return f"elements.{bearing.group(1)}", None, bearing.group(2)
     match = re.fullmatch(r"([a-z_]+)(?:\[(\d+)\])?\.([a-z_]+)", key)
     tables = study_paths()
     if match is None:
@@ -788,9 +817,36 @@ class StudySpec(_Table):
         description=(
             'Quantities to vary: "table.key" = {distribution = ...} (Monte Carlo) or '
             "{values = [...]} or {start, stop, num or step} (sweep); shorthand "
-            'element_diameter_sigma = "0.1 um". Keys of each entry: docs/studies.md.'
+            'element_diameter_sigma = "0.1 um" (a spindle: "element_diameter_sigma.<bearing>"). '
+            "Keys of each entry: docs/studies.md."
         ),
     )
+
+    @field_validator("vary", mode="before")
+    @classmethod
+    def _bearing_shorthands(cls, value: object) -> object:
+        # element_diameter_sigma = { front = "0.1 um" } (or the unquoted dotted key
+        # element_diameter_sigma.front = ..., which TOML reads as that table): one
+        # "element_diameter_sigma.<bearing>" entry per bearing
+        if not isinstance(value, dict):
+            return value
+        out: dict[object, object] = {}
+        for key, entry in value.items():
+            if (
+                key in STUDY_SHORTHANDS
+                and isinstance(entry, dict)
+                and entry
+                and not set(entry) & set(_VARY_KEYS)
+            ):
+                for name, sub in entry.items():
+                    if f"{key}.{name}" in value:
+                        raise _KeyedError(
+                            f"{key}.{name}", "given twice (as a key and in the table); keep one"
+                        )
+                    out[f"{key}.{name}"] = sub
+            else:
+                out[key] = entry
+        return out
 
     @model_validator(mode="after")
     def _check_vary(self) -> StudySpec:
@@ -804,7 +860,7 @@ class StudySpec(_Table):
             raise _KeyedError("models", "name at least one model")
         for key, entry in self.vary.items():
             where = f"vary.{key}"
-            if key in STUDY_SHORTHANDS:
+            if split_shorthand(key) is not None:
                 if self.kind != "montecarlo":
                     raise _KeyedError(where, 'shorthands apply to kind = "montecarlo" only')
                 if isinstance(entry, VarySpec):
@@ -922,7 +978,13 @@ class CaseSpec(_Table):
         # [elements] (one bearing) or [elements.<name>] per spindle bearing: the second form
         # is told apart by its sub-tables, so each form reports its own errors
         if isinstance(value, dict) and value and all(isinstance(v, dict) for v in value.values()):
-            return {k: ElementsSpec.model_validate(v) for k, v in value.items()}
+            tables = {}
+            for name, table in value.items():
+                try:
+                    tables[name] = ElementsSpec.model_validate(table)
+                except ValidationError as exc:  # named by its bearing: elements.<name>.key
+                    raise _KeyedError(*_error_path(exc, str(name))) from None
+            return tables
         if isinstance(value, dict):
             return ElementsSpec.model_validate(value)
         return value
@@ -1144,6 +1206,18 @@ def _describe(error: Any) -> tuple[str, str]:
     if kind in ("recursion_loop",):
         return _format_loc(loc), "is nested too deeply"
     return _format_loc(loc), error["msg"]
+
+
+def _error_path(exc: ValidationError, prefix: str) -> tuple[tuple[str | int, ...], str]:
+    """(key path under ``prefix``, message) of the first error of a nested table's validation."""
+    errors = sorted(exc.errors(), key=lambda e: 0 if e["type"] == "extra_forbidden" else 1)
+    first = errors[0]
+    _, message = _describe(first)
+    path: tuple[str | int, ...] = (prefix, *first["loc"])
+    inner = (first.get("ctx") or {}).get("error")
+    if first["type"] == "value_error" and isinstance(inner, _KeyedError):
+        path += inner.key if isinstance(inner.key, tuple) else (inner.key,)
+    return path, message
 
 
 def first_validation_error(exc: ValidationError) -> tuple[str, str]:

@@ -14,7 +14,8 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from runout.case import STUDY_SHORTHANDS, Case, CaseSpec, StudySpec, VarySpec, parse_vary_key
+from runout._case_schema import split_shorthand
+from runout.case import Case, CaseSpec, StudySpec, VarySpec, parse_vary_key
 from runout.errors import CaseError, RunoutError
 from runout.units import to_si
 
@@ -84,7 +85,10 @@ class Quantity:
 
 def _set_at(data: dict[str, Any], path: tuple[str, int | None, str], value: Any) -> None:
     table, index, name = path
-    if index is None:
+    table, _, bearing = table.partition(".")
+    if bearing:  # a spindle bearing's [elements.<name>]
+        data.setdefault(table, {}).setdefault(bearing, {})[name] = value
+    elif index is None:
         data.setdefault(table, {})[name] = value
     else:
         data[table][index - 1][name] = value
@@ -92,10 +96,28 @@ def _set_at(data: dict[str, Any], path: tuple[str, int | None, str], value: Any)
 
 def _get_at(spec: CaseSpec, path: tuple[str, int | None, str]) -> Any:
     table, index, name = path
+    table, _, bearing = table.partition(".")
     node = getattr(spec, table)
+    if bearing:
+        node = node.get(bearing) if isinstance(node, dict) else None
     if index is not None:
         node = node[index - 1]
     return None if node is None else getattr(node, name)
+
+
+def _element_count(case: Case, path: tuple[str, int | None, str]) -> int:
+    """Z of the bearing whose per-element key ``path`` is (``[elements]`` or
+    ``[elements.<name>]``), 0 for any other key."""
+    table, _, name = path
+    if name not in ("diameter_errors", "pitch_errors"):
+        return 0
+    if table == "elements":
+        return case.bearing.elements
+    if table.startswith("elements.") and case.spindle is not None:
+        for b in case.spindle.bearings:
+            if f"elements.{b.name}" == table:
+                return b.bearing.elements
+    return 0
 
 
 def _convert(
@@ -103,8 +125,7 @@ def _convert(
 ) -> Any:
     """SI value of ``raw`` placed at ``path``: validated as the case key itself would be."""
     trial = copy.deepcopy(data)
-    size = case.bearing.elements if path == ("elements", None, "diameter_errors") else 0
-    size = case.bearing.elements if path == ("elements", None, "pitch_errors") else size
+    size = _element_count(case, path)
     _set_at(trial, path, [raw] * size if size else raw)
     try:
         spec = CaseSpec.model_validate(trial)
@@ -138,41 +159,29 @@ def plan_quantities(case: Case, data: dict[str, Any] | None = None) -> list[Quan
     """
     study = _study_of(case)
     data = _case_data(case) if data is None else data
-    z = case.bearing.elements
     out: list[Quantity] = []
     for key in sorted(study.vary):
         entry = study.vary[key]
         where = f"study.vary.{key}"
-        if case.spindle is not None and (key in STUDY_SHORTHANDS or key.startswith("elements.")):
-            # a spindle's element errors are per bearing ([elements.<name>]): no draw here
-            # would say which bearing's balls it stands for
-            raise CaseError(
-                case.path,
-                where,
-                "a spindle's element errors are per bearing ([elements.<name>]), which a study "
-                "does not vary yet; vary [[bearings]] keys (bearings[i].position, ...), "
-                "spindle.preload or spindle.nose_position",
-            )
-        if key in STUDY_SHORTHANDS:
+        shorthand = split_shorthand(key)
+        if shorthand is not None:
             assert not isinstance(entry, VarySpec)
+            imperfections, z = _bearing_of(case, key, where, shorthand[1])
             sigma = to_si(entry, "length")
-            base = np.asarray(case.imperfections.diameter_errors, dtype=np.float64)
-            out.append(
-                Quantity(key, ("elements", None, "diameter_errors"), z, "normal", base, (sigma,))
-            )
+            base = np.asarray(imperfections.diameter_errors, dtype=np.float64)
+            table = "elements" if shorthand[1] is None else f"elements.{shorthand[1]}"
+            out.append(Quantity(key, (table, None, "diameter_errors"), z, "normal", base, (sigma,)))
             continue
         assert isinstance(entry, VarySpec)
         path = parse_vary_key(key)
-        table, index, name = path
+        if path[0] == "elements" or path[0].startswith("elements."):
+            _bearing_of(case, key, where, path[0].partition(".")[2] or None)
+        table, index, _name = path
         if index is not None and index > len(data.get(table, [])):
             raise CaseError(
                 case.path, where, f"the case has {len(data.get(table, []))} [[{table}]] entries"
             )
-        size = (
-            z
-            if (table, name) in (("elements", "diameter_errors"), ("elements", "pitch_errors"))
-            else 1
-        )
+        size = _element_count(case, path) or 1
 
         def conv(
             raw: Any, what: str, path: tuple[str, int | None, str] = path, where: str = where
@@ -211,7 +220,56 @@ def plan_quantities(case: Case, data: dict[str, Any] | None = None) -> list[Quan
                 for i, v in enumerate(entry.values)
             ]
             out.append(Quantity(key, path, size, "sample", values=tuple(values)))
+    # two keys on one case quantity (element_diameter_sigma and elements.diameter_errors):
+    # the later draw would silently replace the other's
+    drawn_by: dict[tuple[str, int | None, str], str] = {}
+    for q in out:
+        if q.path in drawn_by:
+            raise CaseError(
+                case.path,
+                f"study.vary.{q.key}",
+                f"varies the same quantity as study.vary.{drawn_by[q.path]}; keep one",
+            )
+        drawn_by[q.path] = q.key
     return out
+
+
+def _bearing_of(case: Case, key: str, where: str, name: str | None) -> tuple[Any, int]:
+    """Imperfections and Z of the bearing a per-element key draws for: the case's bearing
+    (``name`` None) or the spindle's bearing ``name``.
+
+    Raises
+    ------
+    CaseError
+        A spindle key without a bearing (which bearing's balls would it be?), a bearing name
+        on a single-bearing case, or a name that is not one of the case's ``[[bearings]]``.
+    """
+    if case.spindle is None:
+        if name is not None:
+            plain = key.replace(f".{name}", "", 1)
+            raise CaseError(
+                case.path,
+                where,
+                f"names a spindle bearing ('{name}') but the case has one bearing ([bearing]); "
+                f"write '{plain}'",
+            )
+        return case.imperfections, case.bearing.elements
+    names = [b.name for b in case.spindle.bearings]
+    if name is None:
+        # a spindle's element errors are per bearing ([elements.<name>]): a draw without a
+        # name would not say which bearing's balls it stands for
+        base, _, rest = key.partition(".")
+        example = f"{base}.{names[0]}" + (f".{rest}" if rest else "")
+        raise CaseError(
+            case.path,
+            where,
+            "a spindle's element errors are per bearing ([elements.<name>]): name the bearing, "
+            f"e.g. '{example}' (bearings: {', '.join(names)})",
+        )
+    for b in case.spindle.bearings:
+        if b.name == name:
+            return b.imperfections, b.bearing.elements
+    raise CaseError(case.path, where, f"'{name}' is not a [[bearings]] name ({', '.join(names)})")
 
 
 def _numeric(value: Any, file: str, where: str) -> float:

@@ -450,7 +450,9 @@ def _si_unit(q: Quantity) -> str:
     from runout.plotting import _key_unit_kind  # the case schema's kind of the key
     from runout.units import KINDS
 
-    kind = _key_unit_kind(q.path)
+    table, index, name = q.path
+    # a spindle bearing's [elements.<name>] has the [elements] table's keys
+    kind = _key_unit_kind((table.partition(".")[0], index, name))
     return (KINDS[kind][1] if kind is not None else "") or "-"
 
 

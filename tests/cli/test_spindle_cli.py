@@ -309,3 +309,14 @@ def test_frequencies_are_those_the_spindle_model_uses_per_bearing() -> None:
         assert mine["contact_angle_deg"] == pytest.approx(theirs["contact_angle_deg"], rel=1e-12)
     text = CliRunner().invoke(app, ["frequencies", case])
     assert all(f"{name} bearing" in text.stdout for name in names)
+
+
+def test_a_bad_value_in_a_bearings_elements_table_names_that_bearing(tmp_path: Path) -> None:
+    # the error said elements.diameter_errors[1], losing the bearing's name
+    text = (ROOT / "examples" / "spindle_hdd.toml").read_text(encoding="utf-8")
+    text += '\n[elements.rear]\npitch_errors = ["x m", 0, 0, 0, 0, 0, 0, 0]\n'
+    case = tmp_path / "bad_elements.toml"
+    case.write_text(text, encoding="utf-8")
+    done = CliRunner().invoke(app, ["check", str(case)])
+    assert done.exit_code == 2
+    assert "elements.rear.pitch_errors[1]" in done.stderr
