@@ -5,13 +5,14 @@ BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 export MPLBACKEND ?= Agg
 
-.PHONY: install demo test lint typecheck pytest bench docs clean
+.PHONY: install demo test lint typecheck pytest bench docs clean latest
 
-$(STAMP): pyproject.toml
+$(STAMP): pyproject.toml constraints.txt
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install --quiet -e '.[dev,dask,docs,data]'
+	# the tested versions of every dependency (constraints.txt), so results do not move with a release
+	$(BIN)/python -m pip install --quiet -c constraints.txt -e '.[dev,dask,docs,data]'
 	# compile every model's kernels into numba's cache now, so that no first command waits
-	$(BIN)/python -m runout._warm examples || echo "warning: warming the kernel cache failed"
+	$(BIN)/runout warm || echo "warning: warming the kernel cache failed"
 	touch $(STAMP)
 
 install: $(STAMP)
@@ -42,5 +43,13 @@ docs: install
 	$(BIN)/python -m runout.glossary > docs/glossary.md
 	$(BIN)/python docs_hooks/build.py out/site
 
+# The suite against the newest releases pyproject.toml allows (not the pinned constraints.txt),
+# in its own environment and kernel cache.
+latest:
+	test -x .venv-latest/bin/python || $(PYTHON) -m venv .venv-latest
+	.venv-latest/bin/python -m pip install --quiet --upgrade -e '.[dev,dask,docs,data]'
+	NUMBA_CACHE_DIR=$(CURDIR)/.venv-latest/numba-cache .venv-latest/bin/runout warm
+	NUMBA_CACHE_DIR=$(CURDIR)/.venv-latest/numba-cache .venv-latest/bin/pytest
+
 clean:
-	rm -rf $(VENV) out .pytest_cache .mypy_cache .ruff_cache
+	rm -rf $(VENV) .venv-latest out .pytest_cache .mypy_cache .ruff_cache

@@ -25,13 +25,12 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Annotated, Any, NoReturn, TypeVar
 
-import click
 import typer
 from rich.console import Console
 from rich.markup import escape
 from rich.table import Table
 
-from runout import __version__
+from runout import __version__, _compile_notice
 from runout.errors import GeometryError, NumericalError, RunoutError
 
 app = typer.Typer(
@@ -81,15 +80,10 @@ PIPE_WIDTH = 200
 EXIT_INTERNAL = 70
 
 
-#: The command-line framework's own exits and usage errors (typer vendors click: both kinds).
-_CLI_EXITS = (
-    typer.Exit,
-    typer.Abort,
-    typer.exceptions.TyperException,
-    click.exceptions.Exit,
-    click.ClickException,
-    click.Abort,
-)
+#: The command-line framework's own exits and usage errors. Typer (0.26 on) carries its own
+#: copy of click, whose usage errors derive from ``TyperException``; click itself is not a
+#: dependency and must not be imported.
+_CLI_EXITS = (typer.Exit, typer.Abort, typer.exceptions.TyperException)
 
 
 #: Warning categories that are about the case and reach the user as one ``warning:`` line.
@@ -145,6 +139,8 @@ def _guard(fn: F) -> F:
     @functools.wraps(fn)
     def wrapper(*args: Any, **kwargs: Any) -> Any:
         file = kwargs.get("case_file")
+        # a first run after installation compiles kernels for a few seconds: say so
+        _compile_notice.watch(sys.stderr)
         with warnings.catch_warnings(record=True) as caught:
             try:
                 result = fn(*args, **kwargs)
@@ -183,6 +179,9 @@ def _guard(fn: F) -> F:
         # what concerns the case (a profile, a line too close to another, an overflow), not
         # the deprecations and compiler notes of the libraries underneath
         _warn(file, [str(w.message) for w in caught if issubclass(w.category, _CASE_WARNINGS)])
+        compiled = _compile_notice.finish()
+        if compiled is not None:
+            print(compiled, file=sys.stderr, flush=True)
         return result
 
     return wrapper  # type: ignore[return-value]
@@ -865,6 +864,41 @@ def reproduce_command(
     out.write_text(doc.text, encoding="utf-8")
     _out.print(doc.summary())
     _out.print(f"wrote {escape(str(out))}")
+
+
+@app.command("warm")
+@_guard
+def warm_command() -> None:
+    """Compile every model's kernels for this machine now, so that no later command waits.
+
+    Each model's first command after an installation compiles its kernels (a few seconds,
+    said on stderr); this runs one example of every model, and a study, to do it ahead.
+    `make install` runs it. Example: runout warm
+    """
+    from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
+
+    from runout._warm import WARM_CASES, WarmError, warm
+
+    with Progress(
+        TextColumn("{task.description}"), BarColumn(), TimeElapsedColumn(), console=_err
+    ) as bar:
+        task = bar.add_task("compiling", total=len(WARM_CASES))
+
+        def on_case(model: str, name: str, seconds: float | None) -> None:
+            if seconds is None:
+                bar.update(task, description=f"compiling the {model} kernels ({name})")
+            else:
+                bar.advance(task)
+
+        try:
+            times = warm(on_case=on_case)
+        except WarmError as exc:
+            bar.stop()
+            _fail(str(exc), 1)
+            return
+        bar.update(task, description="compiled")
+    for model, seconds in times:
+        _out.print(f"compiled the {escape(model)} kernels ({seconds:.1f} s)", highlight=False)
 
 
 # `runout diagnose` lives in its own module (the inverse of the linear model)

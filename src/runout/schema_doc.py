@@ -10,7 +10,7 @@ import sys
 from typing import Any
 
 from pydantic import BaseModel
-from pydantic_core import PydanticUndefined
+from pydantic.fields import PydanticUndefined
 
 from runout.case import (
     AnalysisSpec,

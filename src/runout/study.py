@@ -169,13 +169,12 @@ def dask_executor(address: str | None = None, **cluster: Any) -> Executor:
         answer.
     """
     try:
+        import dask
         from distributed import Client, LocalCluster
     except ImportError:  # pragma: no cover - depends on the installation
         raise StudyError("--scheduler needs Dask distributed: pip install 'runout[dask]'") from None
     try:
         if address is None:
-            import dask
-
             cluster.setdefault("dashboard_address", None)
             # Dask's nannies trim malloc at 64 KiB by default (MALLOC_TRIM_THRESHOLD_), which
             # returns every NumPy temporary of a chunk to the system and costs the workers

@@ -1,26 +1,34 @@
-"""`runout reproduce` works from an installed wheel, not only from a source checkout.
+"""The built wheel works installed on its own: a plain install, every command, no extras.
 
-The example case files the validation computes from ship inside the package
-(``runout/_examples_data``, copies of ``examples/*.toml``). The wheel is built from a copy of
-the source tree (offline: ``pip wheel --no-build-isolation --no-index``) and installed into a
-fresh virtual environment (``python -m venv``; offline, its dependencies -- numpy, scipy,
-numba, ... -- are borrowed from the project's environment through a ``.pth`` line, which does
-not carry the checkout's editable install); ``runout reproduce --check`` runs with the fresh
-environment's interpreter, from another working directory, against the repository's
-VALIDATION.md. The test asserts that the installed package, and its example files, are the
-ones imported.
+The wheel is built from a copy of the source tree (offline: ``pip wheel --no-build-isolation
+--no-index``) and installed with pip into a fresh virtual environment (``python -m venv``) as a
+user's ``pip install runout`` would, console script included. Offline, its dependencies cannot
+be downloaded: they are borrowed from the project's environment, but only those the wheel
+declares (``Requires-Dist`` without an extra, and theirs, markers evaluated), each installed
+distribution's own files linked into one directory that a ``.pth`` line puts on the path. So a
+module the package imports without declaring it (click, once: typer stopped depending on it)
+is missing there as it would be on a user's machine. ``pip check`` then checks the
+environment, and ``runout --version``, ``check``, ``frequencies``, ``run`` and a small
+``study`` of the examples run with the fresh environment's script, from another working
+directory; ``runout reproduce --check`` compares VALIDATION.md. The tests assert that the
+installed package, and its example files, are the ones imported.
 """
 
 from __future__ import annotations
 
+import json
 import os
 import shutil
 import subprocess
 import sys
 import zipfile
+from email.parser import Parser
+from importlib import metadata
 from pathlib import Path
 
 import pytest
+from packaging.requirements import Requirement
+from packaging.utils import canonicalize_name
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = ROOT / "examples"
@@ -79,19 +87,102 @@ def installed(tmp_path_factory: pytest.TempPathFactory) -> Path:
     python = venv / ("Scripts/python.exe" if os.name == "nt" else "bin/python")
     purelib = "import sysconfig; print(sysconfig.get_paths()['purelib'])"
     target = Path(_run([str(python), "-c", purelib], dist).strip())
-    ours = Path(_run([sys.executable, "-c", purelib], dist).strip())
-    # the dependencies only: a path added by a .pth line does not process that directory's
-    # own .pth files, so the checkout's editable install of runout stays out
-    (target / "_dependencies.pth").write_text(f"{ours}\n", encoding="utf-8")
+    borrowed = tmp_path_factory.mktemp("declared")
+    for entry in _declared_closure(wheel):
+        (borrowed / entry.name).symlink_to(entry, target_is_directory=entry.is_dir())
+    (target / "_declared_dependencies.pth").write_text(f"{borrowed}\n", encoding="utf-8")
     _run(
-        [*pip, "install", "--no-deps", "--no-index", "-q", "--target", str(target), str(wheel)],
+        [*pip, "--python", str(python), "install", "--no-deps", "--no-index", "-q", str(wheel)],
         dist,
     )
     return python
 
 
+def _requirements(text: str) -> list[Requirement]:
+    """The requirements of a METADATA text that a plain install (no extra) brings."""
+    found = []
+    for line in Parser().parsestr(text).get_all("Requires-Dist") or []:
+        req = Requirement(line)
+        if req.marker is None or req.marker.evaluate({"extra": ""}):
+            found.append(req)
+    return found
+
+
+def _declared_closure(wheel: Path) -> list[Path]:
+    """The top-level entries in site-packages of every distribution a plain install brings.
+
+    From the wheel's own METADATA, transitively through the installed distributions' metadata
+    (a requirement's extras are followed: ``dask[distributed]`` brings distributed's).
+    """
+    with zipfile.ZipFile(wheel) as zf:
+        (meta,) = [n for n in zf.namelist() if n.endswith(".dist-info/METADATA")]
+        todo = _requirements(zf.read(meta).decode())
+    seen: set[str] = set()
+    entries: set[Path] = set()
+    while todo:
+        req = todo.pop()
+        name = canonicalize_name(req.name)
+        if name in seen:
+            continue
+        seen.add(name)
+        dist = metadata.distribution(req.name)
+        assert req.specifier.contains(dist.version, prereleases=True), (req, dist.version)
+        base = Path(str(dist.locate_file("")))
+        for file in dist.files or []:
+            top = file.parts[0]
+            if top != ".." and not top.endswith(".pth") and top != "__pycache__":
+                entries.add(base / top)
+        for line in dist.requires or []:
+            dep = Requirement(line)
+            extras = [{"extra": e} for e in req.extras] or [{"extra": ""}]
+            if dep.marker is None or any(dep.marker.evaluate(e) for e in extras):
+                todo.append(dep)
+    return sorted(e for e in entries if e.exists())
+
+
+def _env() -> dict[str, str]:
+    """The environment for the installed script: no PYTHONPATH into the checkout."""
+    return {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "PYTHONHOME")}
+
+
+def test_plain_install_has_no_undeclared_dependency(installed: Path, tmp_path: Path) -> None:
+    pip = [sys.executable, "-m", "pip", "--disable-pip-version-check", "--python", str(installed)]
+    assert "No broken requirements" in _run([*pip, "check"], tmp_path, _env())
+    visible = _run([*pip, "list", "--format=freeze"], tmp_path, _env())
+    names = {canonicalize_name(line.split("==")[0]) for line in visible.split()}
+    # what only the extras bring is not there (click came with them and hid a crash)
+    assert "runout" in names and "numba" in names
+    assert not names & {"click", "dask", "pandas", "pytest", "mkdocs", "xarray"}, names
+
+
+def test_every_command_runs_from_a_plain_install(installed: Path, tmp_path: Path) -> None:
+    runout = installed.with_name("runout.exe" if os.name == "nt" else "runout")
+    version = _run([str(runout), "--version"], tmp_path, _env())
+    assert version.split() == ["runout", metadata.version("runout")]
+    case = EXAMPLES / "seed002_608.toml"
+    assert "is valid" in _run([str(runout), "check", str(case)], tmp_path, _env())
+    assert "cage" in _run([str(runout), "frequencies", str(case)], tmp_path, _env())
+    first = subprocess.run(
+        [str(runout), "run", str(case), "--json"],
+        cwd=tmp_path,
+        env=_env(),
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+    assert first.returncode == 0, first.stderr
+    assert json.loads(first.stdout)["model"] == "linear"
+    # a fresh installation compiles its kernels once, and says so on stderr
+    assert "compiling" in first.stderr, first.stderr
+    study = EXAMPLES / "seed001_kim_table9.toml"
+    small = ["--set", "study.samples=8"]
+    doc = json.loads(_run([str(runout), "study", str(study), *small, "--json"], tmp_path, _env()))
+    assert doc["samples"] == 8
+    assert "runout" in _run([str(runout), "--help"], tmp_path, _env())
+
+
 def test_installed_wheel_reproduces_validation_md(installed: Path, tmp_path: Path) -> None:
-    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "PYTHONHOME")}
+    env = _env()
     where = _run(
         [
             str(installed),
