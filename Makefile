@@ -38,9 +38,9 @@ bench: install
 # The documentation site (out/site): getting started, concepts, case-file reference (generated
 # from the schema), one theory page per model, validation, benchmarks, API reference.
 docs: install
-	$(BIN)/python -m runout.schema_doc > docs/case-file.md
-	$(BIN)/python -m runout.conventions > docs/conventions.md
-	$(BIN)/python -m runout.glossary > docs/glossary.md
+	$(BIN)/python -m runout.case.schema_doc > docs/case-file.md
+	$(BIN)/python -m runout.case.conventions > docs/conventions.md
+	$(BIN)/python -m runout.base.glossary > docs/glossary.md
 	$(BIN)/python docs_hooks/build.py out/site
 
 # The suite against the newest releases pyproject.toml allows (not the pinned constraints.txt),

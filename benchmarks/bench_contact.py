@@ -1,4 +1,4 @@
-"""Benchmarks of the Hertz point-contact solver (runout.contact).
+"""Benchmarks of the Hertz point-contact solver (runout.geometry.contact).
 
 Reference: what an expert writes with SciPy for the same equation, vectorised: Hertz's
 ellipticity equation in κ (Harris, *Rolling Bearing Analysis*, ch. 6) solved for all contacts at
@@ -16,7 +16,7 @@ from scipy.optimize import newton
 from scipy.special import ellipe, ellipk
 
 from _harness import BenchResult, best_time
-from runout.contact import hertz_point_stiffness
+from runout.geometry.contact import hertz_point_stiffness
 
 N_CONTACTS = 100_000
 

@@ -1,6 +1,6 @@
 """Benchmark of the diagnosis (issue 19): a 10^6-sample x/y record of the 608 diagnosed.
 
-Ours: :func:`runout.diagnose` on a record (20 kHz, 50 s, 1500 revolutions) of inner, outer and
+Ours: :func:`runout.diagnose.fit` on a record (20 kHz, 50 s, 1500 revolutions) of inner, outer and
 ball waviness with 2 % noise and a mains line: 240 candidate lines fitted jointly in x and y,
 the residual searched, the linear model inverted, the estimates run forward again. Reference:
 one NumPy FFT of both channels, the least any spectral reading of the record costs. Second
@@ -15,10 +15,10 @@ from pathlib import Path
 import numpy as np
 
 from _harness import BenchResult, best_time
-from runout._diagnose_record import read_record
-from runout._diagnose_validation import done_when_truth, recovery_errors, synthetic_record
-from runout.case import load_case
-from runout.diagnose import diagnose
+from runout.case.model import load_case
+from runout.diagnose.fit import diagnose
+from runout.diagnose.record import read_record
+from runout.validation.diagnosis_checks import done_when_truth, recovery_errors, synthetic_record
 
 ROOT = Path(__file__).resolve().parents[1]
 SAMPLES = 1_000_000

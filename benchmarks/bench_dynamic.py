@@ -32,7 +32,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from _harness import BenchResult, best_time
-from runout.case import load_case
+from runout.case.model import load_case
 from runout.models import dynamic as dy
 
 CASE = Path(__file__).resolve().parents[1] / "examples" / "seed003_purohit_clearance.toml"

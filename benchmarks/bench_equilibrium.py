@@ -25,8 +25,8 @@ import numpy as np
 from scipy.optimize import root
 
 from _harness import BenchResult, best_time
-from runout.bearing import BallBearing, Operation
-from runout.contact import ball_race_contacts
+from runout.geometry.bearing import BallBearing, Operation
+from runout.geometry.contact import ball_race_contacts
 from runout.models.equilibrium import solve_equilibrium
 
 #: Kim spindle bearing (seed 001 Table 1) and its fitted axial preload (VALIDATION.md).

@@ -1,4 +1,4 @@
-"""Harmonic-sum kernel (runout._kernels.harmonic_sum) against straightforward NumPy.
+"""Harmonic-sum kernel (runout.geometry.kernels.harmonic_sum) against straightforward NumPy.
 
 Workload: 2,400 harmonics (a 0.1 µm / k^1.5 spectrum, random phases) at 65,536 angles
 spanning 1,600 turns (k θ up to ~2.4e7 rad), i.e. 157 million cosine terms. That is the size of
@@ -28,7 +28,7 @@ from pathlib import Path
 import numpy as np
 
 from _harness import BenchResult, best_time
-from runout._kernels import harmonic_sum, harmonic_sum_reference
+from runout.geometry.kernels import harmonic_sum, harmonic_sum_reference
 
 N_HARMONICS = 2_400
 N_ANGLES = 65_536
@@ -105,7 +105,7 @@ def _numpy_contacts(imp, kin, t, gain):  # type: ignore[no-untyped-def]
 
 def bench_fused_contacts_vs_numpy() -> BenchResult:
     """Seed 002's 608 (2,157 ring and 144 ball harmonics, 7 balls), 8,192 instants."""
-    from runout.case import load_case
+    from runout.case.model import load_case
     from runout.models import quasi_static_3d as qs3
     from runout.models._quasi_static import contact_series, contact_sources, time_grid
 

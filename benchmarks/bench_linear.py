@@ -13,8 +13,14 @@ import math
 import numpy as np
 
 from _harness import BenchResult, best_time
-from runout.bearing import BallBearing, Operation
-from runout.imperfections import Harmonics, Imperfections, Slant, single_harmonic, spectral_law
+from runout.geometry.bearing import BallBearing, Operation
+from runout.geometry.imperfections import (
+    Harmonics,
+    Imperfections,
+    Slant,
+    single_harmonic,
+    spectral_law,
+)
 from runout.models import linear as lin
 
 N_SAMPLES = 2**16

@@ -32,7 +32,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from _harness import BenchResult, best_time
-from runout.case import load_case
+from runout.case.model import load_case
 from runout.models import quasi_static_3d as qs3
 
 CASE = Path(__file__).resolve().parents[1] / "examples" / "seed000_tada_fig7.toml"

@@ -19,7 +19,7 @@ import numpy as np
 
 from _harness import BenchResult, best_time
 from runout import RollerBearing
-from runout.imperfections import Harmonics, Imperfections, single_harmonic
+from runout.geometry.imperfections import Harmonics, Imperfections, single_harmonic
 from runout.models import roller_constraint as rc
 
 Z = 14

@@ -1,6 +1,6 @@
-"""Benchmark of runout.spectrum: least-squares extraction of many known lines.
+"""Benchmark of runout.analysis.spectrum: least-squares extraction of many known lines.
 
-Ours: :func:`runout.spectrum.extract_lines` (closed-form Gram matrix, compiled rotating-phasor
+Ours: :func:`runout.analysis.spectrum.extract_lines` (closed-form Gram matrix, compiled rotating-phasor
 projections, Cholesky with one refinement step, BLAS on one thread). Reference: the
 straightforward approach, building the dense 65,536 x 401 design matrix and calling
 :func:`numpy.linalg.lstsq`, also with its BLAS on one thread: on a shared 2-core machine a
@@ -14,7 +14,7 @@ import numpy as np
 from threadpoolctl import threadpool_limits
 
 from _harness import BenchResult, best_time
-from runout.spectrum import extract_lines
+from runout.analysis.spectrum import extract_lines
 
 N_SAMPLES = 65_536
 N_LINES = 200

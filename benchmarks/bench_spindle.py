@@ -22,7 +22,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from _harness import BenchResult, best_time
-from runout.case import load_case
+from runout.case.model import load_case
 from runout.models import spindle as sp
 
 CASE = Path(__file__).resolve().parents[1] / "examples" / "spindle_hdd.toml"

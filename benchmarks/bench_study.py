@@ -1,4 +1,4 @@
-"""Benchmarks of studies (runout.study): Monte Carlo of seed 001 Table 9 with the 2-D model.
+"""Benchmarks of studies (runout.study.run): Monte Carlo of seed 001 Table 9 with the 2-D model.
 
 Every study runs examples/seed001_kim_table9.toml (1,024 instants per bearing, ball diameters
 normal with σ = 0.1 µm) with more samples where said, chunks of 250 bearings (the default).
@@ -28,10 +28,10 @@ from typing import Any
 import numpy as np
 
 from _harness import BenchResult, best_time
-from runout._study_pool import init_worker, spawn_context
-from runout.case import Case, load_case, parse_case
+from runout.case.model import Case, load_case, parse_case
 from runout.models import quasi_static_2d as qs2
-from runout.study import dask_executor, run_study, sample_rng
+from runout.study.pool import init_worker, spawn_context
+from runout.study.run import dask_executor, run_study, sample_rng
 
 CASE = Path(__file__).resolve().parents[1] / "examples" / "seed001_kim_table9.toml"
 N_REF = 20

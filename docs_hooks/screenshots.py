@@ -151,7 +151,7 @@ def _small_lot(work: Path) -> Path:
 
 def build_reports(work: Path) -> dict[str, Path]:
     """Run the four cases into ``work`` and return the report page of each (by name)."""
-    from runout.report import build_combined_report
+    from runout.report.page import build_combined_report
 
     work.mkdir(parents=True, exist_ok=True)
     lot = _small_lot(work)

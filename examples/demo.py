@@ -21,9 +21,9 @@ from rich.console import Console
 from rich.markup import escape
 from rich.table import Table
 
-from runout.case import load_case
-from runout.report import build_combined_report
-from runout.summary import bearing_summary
+from runout.case.model import load_case
+from runout.report.page import build_combined_report
+from runout.report.summary import bearing_summary
 
 HERE = Path(__file__).resolve().parent
 console = Console(width=max(110, Console().width))

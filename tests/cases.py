@@ -11,7 +11,7 @@ from typing import Any
 
 from runout import examples
 from runout.api import Imperfections
-from runout.case import Case
+from runout.case.model import Case
 
 #: Kim's spindle bearing (seed 001 Table 1) at 7200 rpm under its fitted 60.68 N, as TOML.
 KIM_TOML = """\

@@ -1,4 +1,4 @@
-"""One cell of the key × model matrix (runout.conventions) checked against what the model does.
+"""One cell of the key × model matrix (runout.case.conventions) checked against what the model does.
 
 Shared by tests/unit/test_conventions_matrix.py (single-bearing models) and
 tests/unit/test_spindle_conventions.py (the spindle column, on a spindle case).
@@ -13,9 +13,9 @@ from typing import Any
 
 import pytest
 
-from runout.case import parse_case
-from runout.conventions import KeyConvention, honouring_models
-from runout.errors import CaseError
+from runout.base.errors import CaseError
+from runout.case.conventions import KeyConvention, honouring_models
+from runout.case.model import parse_case
 from runout.models import run_model
 
 Data = dict[str, Any]

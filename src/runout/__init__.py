@@ -13,26 +13,26 @@ stays light.
 
 from typing import TYPE_CHECKING, Any
 
-from runout._cache import ensure_numba_cache
+from runout.base.numba_cache import ensure_numba_cache
 
 ensure_numba_cache()  # before any kernel is compiled: a read-only install must still run
 
-from runout.bearing import BallBearing, Material, Operation, RollerBearing  # noqa: E402
-from runout.errors import CaseError, GeometryError, NumericalError, RunoutError  # noqa: E402
+from runout.base.errors import CaseError, GeometryError, NumericalError, RunoutError  # noqa: E402
+from runout.geometry.bearing import BallBearing, Material, Operation, RollerBearing  # noqa: E402
 
 if TYPE_CHECKING:
     from runout.api import Imperfections, run
-    from runout.case import Case, load_case
-    from runout.diagnose import diagnose
+    from runout.case.model import Case, load_case
+    from runout.diagnose.fit import diagnose
 
 __version__ = "0.1.0"
 
 #: Names imported on first use: name -> module.
 _LAZY = {
-    "Case": "runout.case",
+    "Case": "runout.case.model",
     "Imperfections": "runout.api",
-    "diagnose": "runout.diagnose",
-    "load_case": "runout.case",
+    "diagnose": "runout.diagnose.fit",
+    "load_case": "runout.case.model",
     "run": "runout.api",
 }
 

@@ -1,17 +1,17 @@
 """Running runout from Python: the same cases, checks and models as the case file.
 
 :func:`run` is the one entry point from code. It builds the document a case file with the
-same tables would hold, validates it exactly as :func:`runout.case.load_case` validates a file
+same tables would hold, validates it exactly as :func:`runout.case.model.load_case` validates a file
 (the same keys, units, messages and budget checks) and runs it with
 :func:`runout.models.run_model`, which is what ``runout run`` does with a file. A case built
-in code is a :class:`runout.case.Case` like any other: :meth:`~runout.case.Case.to_toml`
+in code is a :class:`runout.case.model.Case` like any other: :meth:`~runout.case.model.Case.to_toml`
 writes it as a case file that ``runout run`` gives the same results for.
 
 :class:`Imperfections` here is a *builder* that reads like the case file's imperfection tables
 (``[[waviness]]``, ``[[waviness_spectrum]]``, ``[[profile]]``, ``[slant]``, ``[elements]``):
 the same keys, units and meanings. It records the tables; the bearing turns them into
 harmonics when the case is built. The resolved harmonics the models use are
-:class:`runout.imperfections.Imperfections` (``case.imperfections``), the physics class: build
+:class:`runout.geometry.imperfections.Imperfections` (``case.imperfections``), the physics class: build
 one directly only to work with the harmonics themselves.
 
 Examples
@@ -36,14 +36,14 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from runout.bearing import BallBearing, Material, Operation, RollerBearing
-from runout.errors import CaseError
+from runout.base.errors import CaseError
+from runout.geometry.bearing import BallBearing, Material, Operation, RollerBearing
 
 if TYPE_CHECKING:
     from numpy.typing import ArrayLike
 
-    from runout.case import Case
-    from runout.results import RunResult
+    from runout.analysis.results import RunResult
+    from runout.case.model import Case
 
 __all__ = ["PYTHON_PATH", "Imperfections", "build_case", "run"]
 
@@ -70,7 +70,7 @@ def _check_entry(table: str, index: int, entry: dict[str, Any]) -> None:
     """Validate one imperfection entry as the case file would, naming ``table[index]``."""
     from pydantic import ValidationError
 
-    from runout.case import CaseSpec, _table_type, first_validation_error
+    from runout.case.model import CaseSpec, _table_type, first_validation_error
 
     spec_type = _table_type(CaseSpec.model_fields[table].annotation)
     try:
@@ -102,8 +102,8 @@ class Imperfections:
     Notes
     -----
     Rolling elements are numbered 1..Z, as in the case file. The builder does not compute
-    harmonics; :meth:`runout.case.Case.from_inputs` (and :func:`run`) resolve it against the
-    bearing into :class:`runout.imperfections.Imperfections`, exactly as a case file's tables
+    harmonics; :meth:`runout.case.model.Case.from_inputs` (and :func:`run`) resolve it against the
+    bearing into :class:`runout.geometry.imperfections.Imperfections`, exactly as a case file's tables
     are resolved.
     """
 
@@ -118,7 +118,7 @@ class Imperfections:
                 f"Imperfections() takes only elements=Z, not {name}=; add imperfections with "
                 ".waviness(part, order=..., amplitude=...), .spectrum(...), .profile(...), "
                 ".slant(...), .diameter_errors([...]) and .pitch_errors([...]) (the harmonics "
-                "themselves: runout.imperfections.Imperfections)"
+                "themselves: runout.geometry.imperfections.Imperfections)"
             )
         if elements is not None and (
             isinstance(elements, bool) or not isinstance(elements, numbers.Integral) or elements < 3
@@ -267,7 +267,7 @@ class Imperfections:
             Orders kept, first and last inclusive.
         file : str or Path, optional
             CSV of angle and deviation (docs/case-file.md), relative to the working directory
-            (or ``base_dir`` of :meth:`runout.case.Case.from_inputs`).
+            (or ``base_dir`` of :meth:`runout.case.model.Case.from_inputs`).
         angles, deviations : array_like, optional
             The profile itself, instead of a file: angles [rad] and radius deviations [m]
             (or in ``angle_unit`` and ``deviation_unit``).
@@ -480,8 +480,8 @@ def build_case(
     study: Mapping[str, Any] | None = None,
     base_dir: str | Path | None = None,
 ) -> Case:
-    """The case a case file with these tables gives (:meth:`runout.case.Case.from_inputs`)."""
-    from runout.case import parse_case
+    """The case a case file with these tables gives (:meth:`runout.case.model.Case.from_inputs`)."""
+    from runout.case.model import parse_case
 
     if operation is not None and not isinstance(operation, Operation):
         raise TypeError(f"operation must be a runout.Operation, got {type(operation).__name__}")
@@ -528,7 +528,7 @@ def build_case(
 
 def _split_options(options: Mapping[str, Any]) -> tuple[dict[str, Any], dict[str, Any]]:
     """``run``'s options as its [analysis] and [dynamics] keys; an unknown one is an error."""
-    from runout.case import AnalysisSpec, DynamicsSpec
+    from runout.case.model import AnalysisSpec, DynamicsSpec
 
     analysis_keys = [k for k in AnalysisSpec.model_fields if k != "model"]
     dynamics_keys = list(DynamicsSpec.model_fields)
@@ -563,7 +563,7 @@ def run(
     """Run one model on a bearing: the Python form of ``runout run CASE``.
 
     Builds the case a case file with these tables would give
-    (:meth:`runout.case.Case.from_inputs`, with every check of a case file and of the memory
+    (:meth:`runout.case.model.Case.from_inputs`, with every check of a case file and of the memory
     and time budget) and runs it with :func:`runout.models.run_model`, as the command line does.
 
     Parameters

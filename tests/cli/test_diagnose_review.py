@@ -11,9 +11,9 @@ import numpy as np
 import pytest
 from typer.testing import CliRunner
 
-from runout._diagnose_validation import Truth, done_when_truth, synthetic_record
-from runout.case import load_case
-from runout.cli import app
+from runout.case.model import load_case
+from runout.cli.app import app
+from runout.validation.diagnosis_checks import Truth, done_when_truth, synthetic_record
 
 ROOT = Path(__file__).resolve().parents[2]
 CASE = ROOT / "examples" / "seed002_608.toml"

@@ -14,7 +14,7 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
-from runout.cli import app
+from runout.cli.app import app
 
 CASE = """
 [bearing]

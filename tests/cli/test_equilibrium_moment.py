@@ -16,7 +16,7 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
-from runout.cli import app
+from runout.cli.app import app
 
 runner = CliRunner()
 

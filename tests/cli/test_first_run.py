@@ -13,7 +13,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-from runout._warm import WARM_CASES
+from runout.cli.warm import WARM_CASES
 
 ROOT = Path(__file__).resolve().parents[2]
 RUNOUT = [sys.executable, "-m", "runout.cli"]

@@ -9,8 +9,8 @@ from typing import Any
 import pytest
 from typer.testing import CliRunner
 
-from runout import plotting
-from runout.cli import app
+from runout.cli.app import app
+from runout.report import plotting
 
 runner = CliRunner()
 CASE = Path(__file__).resolve().parents[2] / "examples" / "seed000_tada_fig7.toml"

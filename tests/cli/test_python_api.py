@@ -17,8 +17,8 @@ import pytest
 from typer.testing import CliRunner
 
 import runout
-from runout.cli import app
-from runout.errors import CaseError
+from runout.base.errors import CaseError
+from runout.cli.app import app
 from runout.models import run_model
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
@@ -220,7 +220,7 @@ def test_importing_runout_does_not_import_the_models_or_pandas() -> None:
 
     code = (
         "import sys, runout; "
-        "print(any(m in sys.modules for m in ('pandas', 'runout.models', 'runout.case', "
+        "print(any(m in sys.modules for m in ('pandas', 'runout.models', 'runout.case.model', "
         "'runout.api')))"
     )
     env = {**os.environ, "PYTHONWARNINGS": "ignore"}

@@ -32,8 +32,8 @@ from packaging.utils import canonicalize_name
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = ROOT / "examples"
-SHIPPED = ROOT / "src" / "runout" / "_examples_data"
-SYNC = "cp examples/*.toml src/runout/_examples_data/"
+SHIPPED = ROOT / "src" / "runout" / "examples" / "data"
+SYNC = "cp examples/*.toml src/runout/examples/data/"
 
 
 def _run(args: list[str], cwd: Path, env: dict[str, str] | None = None) -> str:
@@ -50,7 +50,7 @@ def test_shipped_case_files_equal_the_examples_directory() -> None:
     assert shipped == ours, f"the shipped case files differ from examples/: {SYNC}"
     for name in ours:
         same = (SHIPPED / name).read_bytes() == (EXAMPLES / name).read_bytes()
-        assert same, f"src/runout/_examples_data/{name} is stale: {SYNC}"
+        assert same, f"src/runout/examples/data/{name} is stale: {SYNC}"
 
 
 @pytest.fixture(scope="module")
@@ -80,7 +80,7 @@ def installed(tmp_path_factory: pytest.TempPathFactory) -> Path:
     )
     (wheel,) = dist.glob("runout-*.whl")
     names = zipfile.ZipFile(wheel).namelist()
-    shipped = {Path(n).name for n in names if n.startswith("runout/_examples_data/")}
+    shipped = {Path(n).name for n in names if n.startswith("runout/examples/data/")}
     assert {p.name for p in EXAMPLES.glob("*.toml")} <= shipped, "the wheel lacks case files"
     venv = tmp_path_factory.mktemp("venv")
     _run([sys.executable, "-m", "venv", "--without-pip", str(venv)], dist)
@@ -201,7 +201,7 @@ def test_installed_wheel_reproduces_validation_md(installed: Path, tmp_path: Pat
         [
             str(installed),
             "-m",
-            "runout.cli",
+            "runout.cli.app",
             "reproduce",
             "--check",
             "--out",

@@ -10,12 +10,12 @@ import numpy as np
 import pytest
 from typer.testing import CliRunner
 
-from runout import plotting
-from runout.case import load_case
-from runout.cli import app
-from runout.errors import RunoutError
+from runout.base.errors import RunoutError
+from runout.case.model import load_case
+from runout.cli.app import app
+from runout.io.result_files import read_result
 from runout.models import run_model
-from runout.result_files import read_result
+from runout.report import plotting
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = ROOT / "examples"

@@ -10,7 +10,7 @@ from pathlib import Path
 
 from typer.testing import CliRunner
 
-from runout.cli import app
+from runout.cli.app import app
 
 runner = CliRunner()
 ROOT = Path(__file__).resolve().parents[2]
@@ -77,7 +77,7 @@ def test_numpy_integers_are_integers_and_degrees_are_not_radians() -> None:
     import pytest
 
     import runout
-    from runout.errors import CaseError
+    from runout.base.errors import CaseError
 
     bearing = runout.BallBearing(elements=np.int64(8), element_diameter=1e-3, pitch_diameter=7e-3)
     assert type(bearing.elements) is int and bearing.elements == 8

@@ -8,8 +8,8 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
-from runout.case import load_case
-from runout.cli import app
+from runout.case.model import load_case
+from runout.cli.app import app
 from runout.models import linear as lin
 
 CASE = Path(__file__).resolve().parents[2] / "examples" / "seed002_608.toml"

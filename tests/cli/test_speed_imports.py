@@ -20,7 +20,7 @@ EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 _PROBE = """
 import json, sys
 sys.argv = ["runout", *json.loads(sys.argv[1])]
-from runout.cli import app  # main() would end the process before the probe prints
+from runout.cli.app import app  # main() would end the process before the probe prints
 try:
     app()
 except SystemExit as exc:
@@ -79,4 +79,4 @@ def test_frequencies_compile_nothing(case: str) -> None:
     """``frequencies`` solves the loaded contact angle (Hertz, elliptic integrals) in NumPy:
     numba (~0.2 s to import, and it pulls scipy.linalg) is for the models."""
     loaded = _modules("frequencies", str(EXAMPLES / case))
-    assert "numba" not in loaded and "runout._elliptic_kernel" not in loaded
+    assert "numba" not in loaded and "runout.geometry.elliptic_kernel" not in loaded

@@ -11,8 +11,8 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
-from runout.cli import app
-from runout.results import RunResult
+from runout.analysis.results import RunResult
+from runout.cli.app import app
 
 ROOT = Path(__file__).resolve().parents[2]
 HDD = (ROOT / "examples" / "spindle_hdd.toml").read_text(encoding="utf-8")

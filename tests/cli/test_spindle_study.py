@@ -16,8 +16,8 @@ import numpy as np
 import pytest
 from typer.testing import CliRunner
 
-from runout.cli import app
-from runout.study import sample_rng
+from runout.cli.app import app
+from runout.study.run import sample_rng
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLE = (ROOT / "examples" / "spindle_hdd_ball_grade.toml").read_text(encoding="utf-8")

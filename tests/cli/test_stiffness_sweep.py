@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 from typer.testing import CliRunner
 
-from runout.cli import app
+from runout.cli.app import app
 
 runner = CliRunner()
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
@@ -184,8 +184,8 @@ def test_the_interchange_page_shows_what_runout_writes(tmp_path: Path) -> None:
 def test_study_dataframe_carries_the_stiffness(tmp_path: Path) -> None:
     import tomllib
 
-    from runout.case import parse_case
-    from runout.study import run_study
+    from runout.case.model import parse_case
+    from runout.study.run import run_study
 
     data = tomllib.loads(
         BASE

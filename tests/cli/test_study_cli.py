@@ -14,8 +14,8 @@ import numpy as np
 import pytest
 
 from cases import KIM_TOML
-from runout.case import load_case
-from runout.study import run_study
+from runout.case.model import load_case
+from runout.study.run import run_study
 
 ROOT = Path(__file__).resolve().parents[2]
 CASE = (

@@ -5,7 +5,7 @@ study digest checked on resume, corrupted manifests and chunks, what ``--out`` m
 ``run --out`` and an existing ``case.toml``, failed samples, workers outliving a killed parent
 and sweep-dynamic point names. Concurrency and SIGKILL go through subprocesses (each bounded by
 a timeout, every process started here is reaped or killed by its id); the rest goes through
-typer's CliRunner on ``runout.cli:app``.
+typer's CliRunner on ``runout.cli.app:app``.
 """
 
 from __future__ import annotations
@@ -25,7 +25,7 @@ import pytest
 from typer.testing import CliRunner
 
 from cases import KIM_TOML
-from runout.cli import app
+from runout.cli.app import app
 
 ROOT = Path(__file__).resolve().parents[2]
 CASE = (
@@ -177,7 +177,7 @@ def test_three_writers_at_once_never_crash_or_mix(
 
 
 def test_sweep_dynamic_refuses_a_locked_directory(tmp_path: Path) -> None:
-    from runout.study import output_lock
+    from runout.study.run import output_lock
 
     out = tmp_path / "sweep"
     out.mkdir()

@@ -1,6 +1,6 @@
 """Results a user can trust (issue 14): each finding through the real command line.
 
-Every test here failed before the shared decomposition (runout.decompose): a roller bearing's
+Every test here failed before the shared decomposition (runout.analysis.decompose): a roller bearing's
 rotating-ring runout read as zero, RRO that moved five-fold with the record length, missing
 second-order and load-zone lines, short dynamic records that merged lines without a word, and
 labels of thousands of characters.
@@ -16,7 +16,7 @@ from typing import Any
 import pytest
 from typer.testing import CliRunner
 
-from runout.cli import app
+from runout.cli.app import app
 
 runner = CliRunner()
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"

@@ -21,7 +21,7 @@ import pytest
 from typer.testing import CliRunner
 
 import runout
-from runout.cli import app
+from runout.cli.app import app
 
 ROOT = Path(__file__).resolve().parents[2]
 GUIDE = ROOT / "docs" / "python.md"
@@ -85,7 +85,7 @@ def test_every_public_name_the_guide_uses_is_in_the_api_reference() -> None:
     for name in sorted(names):
         obj = getattr(runout, name, None)
         if obj is None or isinstance(obj, ModuleType):
-            module = f"runout.{name}"  # a module: runout.models, runout.plotting
+            module = f"runout.{name}"  # a module: runout.models, runout.report.plotting
         else:
             module = obj.__module__
         page = ROOT / "docs" / "api" / f"{module}.md"
@@ -97,7 +97,7 @@ def test_every_public_name_the_guide_uses_is_in_the_api_reference() -> None:
             assert getattr(home, name) is obj
             assert name in getattr(home, "__all__", [name]), f"{name} not in {module}.__all__"
     # the methods the guide calls are documented on their classes
-    from runout.results import RunResult
+    from runout.analysis.results import RunResult
 
     for method in ("to_dataframe", "plot", "to_json"):
         assert getattr(RunResult, method).__doc__

@@ -25,7 +25,7 @@ from griffe_rst import rst_to_markdown  # noqa: E402
 from site_check import check_page  # noqa: E402
 
 #: Modules that are tools of the project, not API (the CLI, the generators of docs pages).
-NOT_API = {"runout.cli", "runout.reproduce", "runout.schema_doc"}
+NOT_API = {"runout.cli.app", "runout.validation.reproduce", "runout.case.schema_doc"}
 
 
 @pytest.fixture(scope="module")
@@ -45,7 +45,9 @@ def test_mathematics_is_marked_for_katex(site: tuple[Path, list[str]]) -> None:
     page = (site_dir / "models" / "linear" / "index.html").read_text(encoding="utf-8")
     assert page.count('class="arithmatex"') >= 5
     assert "assets/katex/katex.min.js" in page
-    api = (site_dir / "api" / "runout.imperfections" / "index.html").read_text(encoding="utf-8")
+    api = (site_dir / "api" / "runout.geometry.imperfections" / "index.html").read_text(
+        encoding="utf-8"
+    )
     assert 'class="arithmatex"' in api  # a ``.. math::`` docstring block, converted
 
 
@@ -75,7 +77,7 @@ def test_every_public_module_has_an_api_page_in_the_nav() -> None:
 
 def test_converter_turns_roles_math_and_tables_into_markdown() -> None:
     text = rst_to_markdown(
-        "See :func:`~runout.models.run_model` and :class:`runout.results.RunResult`,\n"
+        "See :func:`~runout.models.run_model` and :class:`runout.analysis.results.RunResult`,\n"
         "with :math:`\\alpha` here.\n"
         "\n"
         ".. math:: x = y^{2}\n"
@@ -88,7 +90,7 @@ def test_converter_turns_roles_math_and_tables_into_markdown() -> None:
         "3     four\n"
         "====  =====\n"
     )
-    assert "`run_model()`" in text and "`runout.results.RunResult`" in text
+    assert "`run_model()`" in text and "`runout.analysis.results.RunResult`" in text
     assert "\\(\\alpha\\)" in text
     assert "$$\nx = y^{2}\n$$" in text
     assert "| a | b |" in text and "| 1 | two more |" in text and "| 3 | four |" in text

@@ -1,6 +1,6 @@
 """Hypothesis: corrupt and hostile case files are refused with one line naming the file.
 
-The first tests corrupt one key of a valid case and call :func:`runout.case.parse_case`; the
+The first tests corrupt one key of a valid case and call :func:`runout.case.model.parse_case`; the
 last one fuzzes whole case files through the real command line (``check`` and ``run``).
 """
 
@@ -18,9 +18,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from typer.testing import CliRunner
 
-from runout.case import CaseSpec, parse_case
-from runout.cli import app
-from runout.errors import CaseError
+from runout.base.errors import CaseError
+from runout.case.model import CaseSpec, parse_case
+from runout.cli.app import app
 
 BASE = tomllib.loads(
     """

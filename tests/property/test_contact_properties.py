@@ -1,4 +1,4 @@
-"""Property-based tests of Hertz contact (runout.contact) and axial loading (runout.loading)."""
+"""Property-based tests of Hertz contact (runout.geometry.contact) and axial loading (runout.geometry.loading)."""
 
 from __future__ import annotations
 
@@ -8,14 +8,14 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from runout import BallBearing, Material
-from runout.contact import (
+from runout.geometry.contact import (
     ball_race_contacts,
     ball_race_curvature,
     combined_stiffness,
     ellipticity,
     point_contact,
 )
-from runout.loading import axial_loading
+from runout.geometry.loading import axial_loading
 
 FAST = settings(max_examples=60, deadline=None)
 SLOW = settings(max_examples=25, deadline=None)

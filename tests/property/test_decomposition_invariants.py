@@ -1,4 +1,4 @@
-"""Invariants of the shared decomposition (runout.decompose) on random cases, every model.
+"""Invariants of the shared decomposition (runout.analysis.decompose) on random cases, every model.
 
 * NRRO <= total + RRO and RRO <= total + NRRO (p-p of a difference);
 * RRO = 0 where nothing is synchronous with the rotating ring (no raceway deviation on it);
@@ -15,13 +15,13 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from runout.analysis.results import RunResult
 from runout.api import Imperfections
-from runout.bearing import Operation
-from runout.case import Case
-from runout.errors import RunoutError
+from runout.base.errors import RunoutError
+from runout.case.model import Case
 from runout.examples import tada_bearing
+from runout.geometry.bearing import Operation
 from runout.models import run_model
-from runout.results import RunResult
 
 STATIONARY = {"inner": "outer", "outer": "inner"}
 

@@ -1,4 +1,4 @@
-"""Round trip of runout.diagnose on random bearings and deviations (hypothesis).
+"""Round trip of runout.diagnose.fit on random bearings and deviations (hypothesis).
 
 forward (linear model) -> record with noise -> diagnose -> forward again: the estimated
 deviations give back the record's waveform (what a record can see), whatever deviations went
@@ -13,11 +13,11 @@ import numpy as np
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
-from runout._diagnose_record import record_from_arrays
-from runout.bearing import BallBearing, Operation
-from runout.case import Case
-from runout.diagnose import diagnose
-from runout.imperfections import Harmonics, Imperfections
+from runout.case.model import Case
+from runout.diagnose.fit import diagnose
+from runout.diagnose.record import record_from_arrays
+from runout.geometry.bearing import BallBearing, Operation
+from runout.geometry.imperfections import Harmonics, Imperfections
 from runout.models.linear import closed_form_terms, rates, spectral_lines
 
 UM = 1e-6

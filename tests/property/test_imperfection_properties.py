@@ -1,4 +1,4 @@
-"""Hypothesis properties of runout.imperfections and the harmonic-sum kernel."""
+"""Hypothesis properties of runout.geometry.imperfections and the harmonic-sum kernel."""
 
 from __future__ import annotations
 
@@ -10,13 +10,13 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from hypothesis.extra import numpy as hnp
 
-from runout._kernels import harmonic_sum, harmonic_sum_reference
-from runout.imperfections import (
+from runout.geometry.imperfections import (
     Harmonics,
     ProfileWarning,
     from_profile,
     single_harmonic,
 )
+from runout.geometry.kernels import harmonic_sum, harmonic_sum_reference
 
 TWO_PI = 2.0 * math.pi
 SETTINGS = settings(max_examples=60, deadline=None)

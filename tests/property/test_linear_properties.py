@@ -8,8 +8,8 @@ import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from runout.bearing import BallBearing, Operation
-from runout.imperfections import Harmonics, Imperfections, Slant
+from runout.geometry.bearing import BallBearing, Operation
+from runout.geometry.imperfections import Harmonics, Imperfections, Slant
 from runout.models import linear as lin
 
 UM = 1e-6

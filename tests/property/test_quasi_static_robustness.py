@@ -18,19 +18,19 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from runout.api import Imperfections
-from runout.bearing import BallBearing, Operation
-from runout.case import Case
-from runout.errors import (
+from runout.base.errors import (
     CaseError,
     ContactLossError,
     ConvergenceError,
     NumericalError,
     RunoutError,
 )
+from runout.case.model import Case
+from runout.geometry.bearing import BallBearing, Operation
 from runout.models import run_model
 
 # Random short records put lines closer than 1/record length: the warning is right, and expected.
-pytestmark = pytest.mark.filterwarnings("ignore::runout.spectrum.LineResolutionWarning")
+pytestmark = pytest.mark.filterwarnings("ignore::runout.analysis.spectrum.LineResolutionWarning")
 
 
 @st.composite
@@ -85,7 +85,7 @@ def _check(data: dict[str, Any]) -> None:
         return
     try:
         result = run_model(case)
-    except CaseError:  # the model-level input checks (runout.input_checks) name the key
+    except CaseError:  # the model-level input checks (runout.runner.checks) name the key
         return
     except (ContactLossError, NumericalError) as exc:
         assert not isinstance(exc, ConvergenceError), f"{exc}\n{json.dumps(data)}"

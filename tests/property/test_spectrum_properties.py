@@ -1,4 +1,4 @@
-"""Property tests of runout.spectrum (hypothesis)."""
+"""Property tests of runout.analysis.spectrum (hypothesis)."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from runout.spectrum import (
+from runout.analysis.spectrum import (
     amplitude_spectrum,
     anderon_bands_from_lines,
     anderon_bands_from_waveform,

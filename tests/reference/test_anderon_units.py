@@ -9,7 +9,7 @@ eccentricity W_i1 = 2.5 µm at order 1 (eq. 43).
 The lines of the other parts are built straight from the closed forms of seed 002 (eq. 33/35
 inner, eq. 37 outer, eq. 39 ball; runout.validation.seed002_anderon) so that the band
 machinery is checked against the published L/M/H values too; the line models themselves live
-in runout.imperfections.
+in runout.geometry.imperfections.
 """
 
 from __future__ import annotations
@@ -19,7 +19,7 @@ import math
 import numpy as np
 import pytest
 
-from runout.spectrum import (
+from runout.analysis.spectrum import (
     ANDERON_BANDS,
     ANDERON_BANDS_PRINTED,
     MICROINCH,

@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 from runout import BallBearing, Material
-from runout.contact import (
+from runout.geometry.contact import (
     HARRIS_DELTA_STAR_TABLE,
     HARRIS_STEEL_APPROACH_CONSTANT,
     PointContact,

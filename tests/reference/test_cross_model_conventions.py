@@ -29,9 +29,9 @@ import numpy as np
 import pytest
 
 from cases import TADA_BEARING
-from runout.case import parse_case
+from runout.analysis.results import RunResult
+from runout.case.model import parse_case
 from runout.models import run_model
-from runout.results import RunResult
 
 WAVINESS = [
     {"part": "inner", "order": 9, "amplitude": 1e-9, "phase": 0.3},

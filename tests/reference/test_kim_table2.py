@@ -3,7 +3,7 @@
 The spindle bearing of Table 1 (D = 1.5875 mm, d_m = 9.1 mm, f_i = 0.529, f_o = 0.535,
 P_d = 5 um, steel) runs at 7200 rpm under an axial preload the paper does not print. We fit
 that load once, on the Z = 10 column (18.73 deg), and *predict* the other five angles with the
-static pure-axial model of runout.loading. The deflections are compared too; they are
+static pure-axial model of runout.geometry.loading. The deflections are compared too; they are
 systematically 12-15 % below the table for a reason that cannot be speed effects (see the
 last tests and VALIDATION.md).
 """
@@ -16,7 +16,7 @@ import pytest
 
 from runout import BallBearing
 from runout.examples import kim_bearing
-from runout.loading import AxialLoading
+from runout.geometry.loading import AxialLoading
 from runout.validation.seed001_kim import KIM_TABLE2, kim_axial_loading, kim_fitted_preload
 
 # Z: (alpha [deg], delta_i [um], delta_o [um])

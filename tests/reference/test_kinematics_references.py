@@ -13,7 +13,7 @@ import pytest
 
 from runout import BallBearing, Operation
 from runout.examples import bearing_608
-from runout.kinematics import bearing_frequencies
+from runout.geometry.kinematics import bearing_frequencies
 from runout.validation.kinematics import (
     CWRU_6205,
     KIM_FREQUENCIES_HZ,

@@ -13,9 +13,9 @@ import math
 import numpy as np
 import pytest
 
-from runout.case import Case
+from runout.analysis.spectrum import extract_lines
+from runout.case.model import Case
 from runout.models import quasi_static_3d as qs3
-from runout.spectrum import extract_lines
 from runout.validation.seed000_tada import (
     TADA_CONCLUSION3_AMPLITUDES,
     TADA_FIG6,

@@ -4,7 +4,7 @@ Bearing of Table 1 under the 60.68 N axial preload fitted to Table 2 at Z = 10 b
 solution (VALIDATION.md). The Jones-Harris solution adds the
 centrifugal force and the gyroscopic moment; at 7200 rpm they move the angles by a few
 thousandths of a degree, so Table 2 stays matched, and at low speed the solution must reduce
-to the static one (runout.loading.axial_loading).
+to the static one (runout.geometry.loading.axial_loading).
 
 The second half compares the static solution with the reference cases of an open ISO/TS 16281
 implementation's test suite (github.com/minzhun/ISO16281, ``Test_BallBearing.py``, examples
@@ -27,9 +27,9 @@ import math
 import numpy as np
 import pytest
 
-from runout.bearing import BallBearing, Material, Operation
 from runout.examples import kim_bearing
-from runout.loading import axial_loading
+from runout.geometry.bearing import BallBearing, Material, Operation
+from runout.geometry.loading import axial_loading
 from runout.models.equilibrium import solve_equilibrium
 from runout.validation.seed001_kim import KIM_TABLE2
 

@@ -13,9 +13,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from runout.case import Case, parse_case
+from runout.analysis.spectrum import amplitude_spectrum, extract_lines, peak_bin_gain
+from runout.case.model import Case, parse_case
 from runout.models import quasi_static_2d as qs2
-from runout.spectrum import amplitude_spectrum, extract_lines, peak_bin_gain
 from runout.validation.seed001_kim import (
     KIM_FLOOR,
     KIM_SYMMETRIC,

@@ -13,8 +13,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from runout.case import load_case, parse_case
-from runout.study import run_study
+from runout.case.model import load_case, parse_case
+from runout.study.run import run_study
 from runout.validation.seed001_kim_table9 import KIM_TABLE9
 
 CASE = Path(__file__).resolve().parents[2] / "examples" / "seed001_kim_table9.toml"

@@ -17,9 +17,15 @@ import math
 import numpy as np
 import pytest
 
-from runout.attribution import attribution_rows
-from runout.bearing import BallBearing, Operation
-from runout.imperfections import Harmonics, Imperfections, Slant, single_harmonic, spectral_law
+from runout.geometry.attribution import attribution_rows
+from runout.geometry.bearing import BallBearing, Operation
+from runout.geometry.imperfections import (
+    Harmonics,
+    Imperfections,
+    Slant,
+    single_harmonic,
+    spectral_law,
+)
 from runout.models import linear as lin
 from runout.validation.kinematics import SEED002_ORDERS
 from runout.validation.seed002_anderon import (

@@ -18,7 +18,7 @@ import pytest
 
 from runout import RollerBearing
 from runout.examples import nu209_bearing
-from runout.imperfections import Imperfections, single_harmonic
+from runout.geometry.imperfections import Imperfections, single_harmonic
 from runout.models import roller_constraint as rc
 from runout.validation.seed004_yu import (
     ELLIPSE_SEMI_MINORS,

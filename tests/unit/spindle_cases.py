@@ -5,7 +5,7 @@ from __future__ import annotations
 import copy
 from typing import Any
 
-from runout.case import Case, parse_case
+from runout.case.model import Case, parse_case
 
 TADA = {
     "elements": 8,

@@ -1,4 +1,4 @@
-"""Ball arrangement (runout.arrangement): linear law vs the nonlinear model, optimiser."""
+"""Ball arrangement (runout.study.arrangement): linear law vs the nonlinear model, optimiser."""
 
 from __future__ import annotations
 
@@ -10,7 +10,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from runout import examples
-from runout.arrangement import line_amplitudes, optimise_arrangement, verify
+from runout.study.arrangement import line_amplitudes, optimise_arrangement, verify
 
 
 @pytest.mark.parametrize("balls", [(1, 2), (1, 4), (1, 2, 3), (1, 3, 5, 7), (1, 2, 4, 5, 8)])

@@ -7,10 +7,10 @@ import math
 import numpy as np
 import pytest
 
-from runout.attribution import attribution_rows, attribution_table_rows
-from runout.bearing import BallBearing, Operation
-from runout.imperfections import Harmonics, Imperfections
-from runout.kinematics import bearing_frequencies
+from runout.geometry.attribution import attribution_rows, attribution_table_rows
+from runout.geometry.bearing import BallBearing, Operation
+from runout.geometry.imperfections import Harmonics, Imperfections
+from runout.geometry.kinematics import bearing_frequencies
 from runout.models import linear as lin
 
 D, DM, ALPHA, Z = 3.9688e-3, 15e-3, math.radians(10.0), 7

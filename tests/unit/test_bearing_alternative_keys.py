@@ -14,8 +14,8 @@ import tomllib
 import pytest
 
 from runout import BallBearing
-from runout.case import parse_case
-from runout.errors import GeometryError
+from runout.base.errors import GeometryError
+from runout.case.model import parse_case
 
 D = 1.5875e-3
 BASE = {"elements": 10, "element_diameter": D, "pitch_diameter": 9.1e-3}

@@ -8,8 +8,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from runout.case import load_case, parse_case
-from runout.errors import CaseError
+from runout.base.errors import CaseError
+from runout.case.model import load_case, parse_case
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 

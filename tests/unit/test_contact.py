@@ -1,4 +1,4 @@
-"""Unit tests of runout.contact (Hertz point and line contact) and runout.loading."""
+"""Unit tests of runout.geometry.contact (Hertz point and line contact) and runout.geometry.loading."""
 
 from __future__ import annotations
 
@@ -11,7 +11,7 @@ from scipy.optimize import brentq
 from scipy.special import ellipe, ellipk
 
 from runout import BallBearing, GeometryError, Material, RollerBearing
-from runout.contact import (
+from runout.geometry.contact import (
     PALMGREN_LINE_CONSTANT,
     BallContacts,
     PointContact,
@@ -33,7 +33,7 @@ from runout.contact import (
     radius_ratio,
     roller_race_contacts,
 )
-from runout.loading import (
+from runout.geometry.loading import (
     axial_load_for_contact_angle,
     axial_loading,
     axial_loading_fixed_angle,

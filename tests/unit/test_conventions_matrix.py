@@ -1,4 +1,4 @@
-"""Every cell of the key × model matrix (runout.conventions) is what the code does.
+"""Every cell of the key × model matrix (runout.case.conventions) is what the code does.
 
 For each key and model, a base case of that model and the same case with only that key changed
 are run: an honoured key changes the result, a refused key ends with a CaseError naming it and
@@ -15,7 +15,7 @@ import pytest
 
 from cases import TADA_BEARING
 from convention_cells import assert_cell
-from runout.conventions import KEYS, MODELS, conventions_page
+from runout.case.conventions import KEYS, MODELS, conventions_page
 
 DOC = Path(__file__).resolve().parents[2] / "docs" / "conventions.md"
 
@@ -169,5 +169,5 @@ def test_matrix_cell_is_what_the_model_does(key: str, model: str) -> None:
 
 
 def test_conventions_page_is_current() -> None:
-    # Regenerate with: python -m runout.conventions > docs/conventions.md
+    # Regenerate with: python -m runout.case.conventions > docs/conventions.md
     assert DOC.read_text(encoding="utf-8") == conventions_page()

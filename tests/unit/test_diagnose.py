@@ -1,4 +1,4 @@
-"""runout.diagnose: the issue's acceptance record and the inverse of the linear model."""
+"""runout.diagnose.fit: the issue's acceptance record and the inverse of the linear model."""
 
 from __future__ import annotations
 
@@ -9,17 +9,17 @@ import numpy as np
 import pytest
 
 import runout
-from runout._diagnose_validation import (
+from runout.case.model import load_case
+from runout.diagnose.fit import diagnose
+from runout.models.linear import closed_form_terms, rates, spectral_lines
+from runout.report.summary import operating_contact_angle
+from runout.validation.diagnosis_checks import (
     MAINS_HZ,
     Truth,
     done_when_truth,
     recovery_errors,
     synthetic_record,
 )
-from runout.case import load_case
-from runout.diagnose import diagnose
-from runout.models.linear import closed_form_terms, rates, spectral_lines
-from runout.summary import operating_contact_angle
 
 ROOT = Path(__file__).resolve().parents[2]
 CASE = ROOT / "examples" / "seed002_608.toml"
@@ -169,7 +169,7 @@ def test_velocity_record_gives_the_same_deviation(case):
     dt = record.step
     vx = np.gradient(x, dt)
     vy = np.gradient(y, dt)
-    from runout._diagnose_record import record_from_arrays
+    from runout.diagnose.record import record_from_arrays
 
     vel = record_from_arrays(record.time, vx, vy, quantity="velocity")
     (e,) = diagnose(case, vel).estimates[:1]
@@ -190,7 +190,7 @@ def test_time_origin_moves_phases_only_through_the_record(case):
 def test_package_exports_a_callable_diagnose(case):
     truth = Truth({("inner", 8, None): (0.2e-6, 0.0)})
     record, _, _ = synthetic_record(case, truth, noise=0.0, mains=0.0, samples=20000)
-    assert runout.diagnose(case, record).estimates[0].lobes == (8,)
+    assert runout.diagnose.fit(case, record).estimates[0].lobes == (8,)
 
 
 @pytest.mark.parametrize("channel", ["x", "y"])
@@ -215,7 +215,7 @@ def test_velocity_phase(case):
     z = int(case.bearing.elements)
     truth = Truth({("inner", z - 1, None): (0.2e-6, 2.5)})
     record, x, _ = synthetic_record(case, truth, noise=0.0, mains=0.0, channels="x")
-    from runout._diagnose_record import record_from_arrays
+    from runout.diagnose.record import record_from_arrays
 
     vel = record_from_arrays(record.time, np.gradient(x, record.step), quantity="velocity")
     (e,) = diagnose(case, vel).estimates
@@ -265,7 +265,7 @@ def test_two_balls_are_not_taken_for_one(case):
 
 @pytest.mark.parametrize("seed", [1, 2, 3])
 def test_pure_noise_gives_no_deviation(case, seed):
-    from runout._diagnose_record import record_from_arrays
+    from runout.diagnose.record import record_from_arrays
 
     t = np.arange(50_000) / 20000.0
     rng = np.random.default_rng(seed)

@@ -1,4 +1,4 @@
-"""Lengths at the input's scale: unit choice and formatting (runout.display)."""
+"""Lengths at the input's scale: unit choice and formatting (runout.base.display)."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from runout.display import format_length, length_unit, resolution_note
+from runout.base.display import format_length, length_unit, resolution_note
 
 # A printed number: optional sign, digits, optional decimals; nothing else.
 _NUMBER = re.compile(r"^-?\d+(\.\d+)? (nm|um|mm|m)$")
@@ -122,7 +122,7 @@ def test_own_unit_never_shows_a_thousand(value: float) -> None:
 
 
 def test_a_tiny_resolution_is_stated_as_a_bound_not_as_noise_digits() -> None:
-    from runout.display import format_resolution
+    from runout.base.display import format_resolution
 
     note = resolution_note(5.2e-16, ("nm", 1e9))
     assert note == "values below the solver's resolution (under 0.001 nm) print as 0"

@@ -11,10 +11,10 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from cases import WAVY, dynamic_case
-from runout.bearing import BallBearing
-from runout.case import parse_case
-from runout.errors import CaseError, ConvergenceError, GeometryError, NumericalError
-from runout.loading import axial_loading
+from runout.base.errors import CaseError, ConvergenceError, GeometryError, NumericalError
+from runout.case.model import parse_case
+from runout.geometry.bearing import BallBearing
+from runout.geometry.loading import axial_loading
 from runout.models import dynamic as dy
 from runout.models._quasi_static import Kinematics
 

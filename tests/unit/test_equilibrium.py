@@ -11,10 +11,10 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from runout.bearing import BallBearing, Operation
-from runout.case import parse_case
-from runout.errors import GeometryError, NumericalError
-from runout.loading import axial_loading
+from runout.base.errors import GeometryError, NumericalError
+from runout.case.model import parse_case
+from runout.geometry.bearing import BallBearing, Operation
+from runout.geometry.loading import axial_loading
 from runout.models import equilibrium as eq
 from runout.models import run_model
 

@@ -19,9 +19,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from numpy.typing import NDArray
 
-from runout.bearing import BallBearing, Operation
-from runout.contact import ball_race_contacts
-from runout.errors import ConvergenceError
+from runout.base.errors import ConvergenceError
+from runout.geometry.bearing import BallBearing, Operation
+from runout.geometry.contact import ball_race_contacts
 from runout.models import _equilibrium_kernels as kern
 from runout.models import equilibrium as eq
 from runout.models.equilibrium import ball_speeds

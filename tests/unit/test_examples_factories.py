@@ -13,8 +13,8 @@ import pytest
 
 import runout
 from runout import examples
-from runout.case import Case, load_case
-from runout.errors import CaseError
+from runout.base.errors import CaseError
+from runout.case.model import Case, load_case
 
 ROOT = Path(__file__).resolve().parents[2]
 STORED_JSON = ROOT / "tests" / "data" / "examples_json"

@@ -11,14 +11,14 @@ from typing import Any
 
 import pytest
 
-from runout import glossary
-from runout.bearing import BallBearing, Material, Operation, RollerBearing
-from runout.case import BearingSpec, MaterialSpec, OperationSpec
+from runout.base import glossary
+from runout.case.model import BearingSpec, MaterialSpec, OperationSpec
+from runout.geometry.bearing import BallBearing, Material, Operation, RollerBearing
 
 DOC = Path(__file__).resolve().parents[2] / "docs" / "glossary.md"
 SPECS = {"bearing": BearingSpec, "operation": OperationSpec, "material": MaterialSpec}
 CLASSES = (BallBearing, RollerBearing, Operation, Material)
-#: SI unit of each quantity kind of the case schema (runout.units), as the glossary writes it.
+#: SI unit of each quantity kind of the case schema (runout.base.units), as the glossary writes it.
 KIND_UNIT = {
     "length": "m",
     "force": "N",
@@ -32,7 +32,7 @@ KIND_UNIT = {
 
 
 def test_glossary_page_is_current() -> None:
-    # Regenerate with: python -m runout.glossary > docs/glossary.md
+    # Regenerate with: python -m runout.base.glossary > docs/glossary.md
     assert DOC.read_text(encoding="utf-8") == glossary.glossary_markdown()
 
 

@@ -1,4 +1,4 @@
-"""Unit tests of runout.imperfections and runout._kernels."""
+"""Unit tests of runout.geometry.imperfections and runout.geometry.kernels."""
 
 from __future__ import annotations
 
@@ -10,20 +10,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from runout._kernels import (
-    _PIO2_1,
-    _PIO2_2,
-    _PIO2_3,
-    _PIO2_4,
-    _TWO_OVER_PI,
-    fast_cos,
-    harmonic_sum,
-    harmonic_sum_reference,
-    harmonic_sum_rows,
-)
-from runout.bearing import BallBearing
-from runout.errors import GeometryError, RunoutError
-from runout.imperfections import (
+from runout.base.errors import GeometryError, RunoutError
+from runout.geometry.bearing import BallBearing
+from runout.geometry.imperfections import (
     Harmonics,
     ImperfectionError,
     Imperfections,
@@ -38,6 +27,17 @@ from runout.imperfections import (
     slant_amplitude,
     slant_angle,
     spectral_law,
+)
+from runout.geometry.kernels import (
+    _PIO2_1,
+    _PIO2_2,
+    _PIO2_3,
+    _PIO2_4,
+    _TWO_OVER_PI,
+    fast_cos,
+    harmonic_sum,
+    harmonic_sum_reference,
+    harmonic_sum_rows,
 )
 
 UM = 1e-6
@@ -456,7 +456,7 @@ class TestFromProfile:
             (np.arange(16) * TWO_PI / 16, {"uniform_tolerance": 0.7}, "uniform_tolerance"),
         ],
     )
-    @pytest.mark.filterwarnings("ignore::runout.imperfections.ProfileWarning")
+    @pytest.mark.filterwarnings("ignore::runout.geometry.imperfections.ProfileWarning")
     def test_errors(self, theta, kwargs, match) -> None:  # type: ignore[no-untyped-def]
         with pytest.raises(ProfileError, match=match):
             from_profile(theta, np.cos(3 * theta), **kwargs)

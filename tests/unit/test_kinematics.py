@@ -10,7 +10,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from runout import BallBearing, Operation
-from runout.kinematics import (
+from runout.geometry.kinematics import (
     ball_pass_inner_frequency,
     ball_pass_outer_frequency,
     ball_spin_frequency,

@@ -7,9 +7,15 @@ import math
 import numpy as np
 import pytest
 
-from runout.bearing import BallBearing, Operation
-from runout.errors import GeometryError
-from runout.imperfections import Harmonics, Imperfections, Slant, single_harmonic, spectral_law
+from runout.base.errors import GeometryError
+from runout.geometry.bearing import BallBearing, Operation
+from runout.geometry.imperfections import (
+    Harmonics,
+    Imperfections,
+    Slant,
+    single_harmonic,
+    spectral_law,
+)
 from runout.models import linear as lin
 
 UM = 1e-6

@@ -7,7 +7,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
 
-from runout.plotting import envelope_indices, orbit_indices
+from runout.report.plotting import envelope_indices, orbit_indices
 
 finite = st.floats(-1e6, 1e6, allow_nan=False)
 

@@ -20,13 +20,13 @@ from plot_checks import MAX_LINE_POINTS, figure_problems, png_problems
 from typer.testing import CliRunner
 
 from cases import KIM_BEARING, KIM_OPERATION, dynamic_case
-from runout import plotting
-from runout.case import parse_case
-from runout.cli import app
-from runout.display import format_length
+from runout.base.display import format_length
+from runout.case.model import parse_case
+from runout.cli.app import app
 from runout.models import run_model
 from runout.models.linear import ANDERON_BANDS
-from runout.study import Quantity, run_study
+from runout.report import plotting
+from runout.study.run import Quantity, run_study
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 

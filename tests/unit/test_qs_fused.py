@@ -13,12 +13,12 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from runout.api import Imperfections as Builder
-from runout.bearing import Operation
-from runout.case import Case
-from runout.errors import CaseError
+from runout.base.errors import CaseError
+from runout.case.limits import BYTES_QUASI_STATIC, estimate_run
+from runout.case.model import Case
 from runout.examples import tada_bearing
-from runout.imperfections import Harmonics, Imperfections
-from runout.limits import BYTES_QUASI_STATIC, estimate_run
+from runout.geometry.bearing import Operation
+from runout.geometry.imperfections import Harmonics, Imperfections
 from runout.models import quasi_static_2d as qs2
 from runout.models import quasi_static_3d as qs3
 from runout.models import run_model

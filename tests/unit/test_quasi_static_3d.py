@@ -12,8 +12,8 @@ from hypothesis import strategies as st
 
 from cases import typed_case
 from runout import Operation, examples
-from runout.case import Case
-from runout.errors import ContactLossError, GeometryError, NumericalError
+from runout.base.errors import ContactLossError, GeometryError, NumericalError
+from runout.case.model import Case
 from runout.models import quasi_static_3d as qs3
 
 

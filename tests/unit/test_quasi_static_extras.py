@@ -13,14 +13,14 @@ from hypothesis import strategies as st
 
 from cases import typed_case
 from runout import BallBearing, Operation
-from runout._linalg import solve_spd3
-from runout._study_kernels import solve_batch
-from runout.case import Case, parse_case
-from runout.errors import ContactLossError, NumericalError
+from runout.analysis.spectrum import extract_lines
+from runout.base.errors import ContactLossError, NumericalError
+from runout.base.linalg import solve_spd3
+from runout.case.model import Case, parse_case
 from runout.models import quasi_static_2d as qs2
 from runout.models import quasi_static_3d as qs3
 from runout.models._quasi_static import predicted_lines
-from runout.spectrum import extract_lines
+from runout.study.kernels import solve_batch
 
 
 def tada(
@@ -173,7 +173,7 @@ def test_kim_case_has_no_rro_when_split_by_lines() -> None:
     assert result.runout.nrro_pp_m == pytest.approx(result.runout.radial_pp_m, rel=1e-6)
     # synchronous averaging of the whole record over 20 revolutions would have left a visible
     # RRO bias (the f_c line leaks into the average)
-    from runout.spectrum import separate_rro_nrro
+    from runout.analysis.spectrum import separate_rro_nrro
 
     spr = 4096 // 20
     ts = np.arange(20 * spr) / (spr * 120.0)

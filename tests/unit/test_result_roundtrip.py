@@ -16,8 +16,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from runout.models.linear import LinearResult
-from runout.result_details import (
+from runout.analysis.result_details import (
     DETAILS_BY_MODEL,
     DynamicDetails,
     EquilibriumDetails,
@@ -26,7 +25,8 @@ from runout.result_details import (
     RollerDetails,
     Verdict,
 )
-from runout.results import RunResult, _radians_exactly
+from runout.analysis.results import RunResult, _radians_exactly
+from runout.models.linear import LinearResult
 
 ROOT = Path(__file__).resolve().parents[2]
 STORED = sorted((ROOT / "tests" / "data" / "examples_json").glob("*.json.gz"))

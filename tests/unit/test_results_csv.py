@@ -10,8 +10,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
 
-from runout import result_files
-from runout.result_files import write_columns
+from runout.io import result_files
+from runout.io.result_files import write_columns
 
 
 def _reference(path: Path, header: list[str], columns: list[np.ndarray]) -> None:

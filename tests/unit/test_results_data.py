@@ -10,10 +10,10 @@ import pytest
 
 from cases import KIM_TOML
 from runout import examples
-from runout.case import load_case, parse_case
+from runout.analysis.results import RunResult
+from runout.case.model import load_case, parse_case
 from runout.models import run_model
-from runout.results import RunResult
-from runout.study import Quantity, StudyResult, run_study
+from runout.study.run import Quantity, StudyResult, run_study
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 LINE_COLUMNS = [

@@ -10,8 +10,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from runout import BallBearing, GeometryError, NumericalError, Operation, RollerBearing
-from runout.imperfections import Harmonics, Imperfections, single_harmonic
-from runout.kinematics import ball_spin_frequency, cage_frequency
+from runout.geometry.imperfections import Harmonics, Imperfections, single_harmonic
+from runout.geometry.kinematics import ball_spin_frequency, cage_frequency
 from runout.models import roller_constraint as rc
 
 NU209 = RollerBearing(14, 10e-3, 54.991e-3, 75.032e-3)
@@ -312,7 +312,7 @@ samples = 241
 def test_run_case_gives_a_complete_result_and_files(tmp_path, ring: str) -> None:
     import json
 
-    from runout.case import load_case
+    from runout.case.model import load_case
     from runout.models import run_model
 
     path = tmp_path / "case.toml"
@@ -342,7 +342,7 @@ def test_summary_shows_the_motion_across_the_load() -> None:
     # the inner ring of a roller bearing moves far more across the load than along it: the
     # readable table says so, next to the measuring-direction figure
     from runout import examples
-    from runout.display import LENGTH_UNITS
+    from runout.base.display import LENGTH_UNITS
     from runout.models import run_model
 
     result = run_model(examples.nu209().case())

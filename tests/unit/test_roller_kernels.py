@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from runout import RollerBearing
-from runout.imperfections import Harmonics, Imperfections, single_harmonic
+from runout.geometry.imperfections import Harmonics, Imperfections, single_harmonic
 from runout.models import _roller_kernels as rk
 from runout.models import roller_constraint as rc
 

@@ -19,9 +19,9 @@ import numpy as np
 import pytest
 
 from runout import BallBearing, Operation, RollerBearing
-from runout.case import load_case
-from runout.imperfections import Harmonics, Imperfections, single_harmonic
-from runout.kinematics import bearing_frequencies
+from runout.case.model import load_case
+from runout.geometry.imperfections import Harmonics, Imperfections, single_harmonic
+from runout.geometry.kinematics import bearing_frequencies
 from runout.models import roller_constraint as rc
 
 Ring = Literal["inner", "outer"]

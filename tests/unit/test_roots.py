@@ -1,4 +1,4 @@
-"""runout._roots.brentq runs SciPy's Brent iterations exactly: same root to the bit."""
+"""runout.base.roots.brentq runs SciPy's Brent iterations exactly: same root to the bit."""
 
 from __future__ import annotations
 
@@ -9,9 +9,9 @@ import scipy.optimize
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from runout import loading
-from runout._roots import brentq
-from runout.bearing import BallBearing
+from runout.base.roots import brentq
+from runout.geometry import loading
+from runout.geometry.bearing import BallBearing
 
 coef = st.floats(-10.0, 10.0, allow_nan=False)
 
@@ -51,7 +51,7 @@ def test_polynomials_and_transcendentals(c, a, b, xtol, rtol) -> None:  # type: 
 
 @pytest.mark.parametrize("load", [0.5, 20.0, 300.0, 5000.0])
 def test_axial_loading_contact_angle_unchanged(load: float) -> None:
-    """The load-angle relation of runout.loading gives the same angle with SciPy's brentq."""
+    """The load-angle relation of runout.geometry.loading gives the same angle with SciPy's brentq."""
     b = BallBearing(
         elements=8,
         element_diameter=1e-3,
@@ -63,7 +63,7 @@ def test_axial_loading_contact_angle_unchanged(load: float) -> None:
     ours = loading.axial_loading(b, load).contact_angle
     original = loading.brentq if hasattr(loading, "brentq") else None
     assert original is None  # imported lazily inside axial_loading
-    import runout._roots as roots
+    import runout.base.roots as roots
 
     saved = roots.brentq
     roots.brentq = scipy.optimize.brentq  # type: ignore[assignment]

@@ -4,13 +4,13 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from runout.schema_doc import case_file_reference
+from runout.case.schema_doc import case_file_reference
 
 DOC = Path(__file__).resolve().parents[2] / "docs" / "case-file.md"
 
 
 def test_case_file_reference_is_current() -> None:
-    # Regenerate with: python -m runout.schema_doc > docs/case-file.md
+    # Regenerate with: python -m runout.case.schema_doc > docs/case-file.md
     assert DOC.read_text(encoding="utf-8") == case_file_reference()
 
 

@@ -1,4 +1,4 @@
-"""Unit tests of runout.spectrum: spectra, line extraction, RRO/NRRO, band values."""
+"""Unit tests of runout.analysis.spectrum: spectra, line extraction, RRO/NRRO, band values."""
 
 from __future__ import annotations
 
@@ -8,8 +8,8 @@ import warnings
 import numpy as np
 import pytest
 
-from runout import _line_kernels as line_kernels
-from runout.spectrum import (
+from runout.analysis import line_kernels
+from runout.analysis.spectrum import (
     ANDERON_BANDS,
     ISO15242_BANDS,
     MICROINCH,

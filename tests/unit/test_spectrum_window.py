@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 import scipy.signal
 
-from runout.spectrum import _window
+from runout.analysis.spectrum import _window
 
 
 @pytest.mark.parametrize("n", [1, 2, 3, 4, 5, 7, 8, 64, 1000, 4097, 65536])

@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 from spindle_cases import TADA, spindle_case
 
-from runout.case import Case, parse_case
+from runout.case.model import Case, parse_case
 from runout.models import quasi_static_3d as qs3
 from runout.models import run_model
 from runout.models import spindle as sp

@@ -1,4 +1,4 @@
-"""The spindle column of the key × model matrix (runout.conventions) is what the model does.
+"""The spindle column of the key × model matrix (runout.case.conventions) is what the model does.
 
 As tests/unit/test_conventions_matrix.py for the single-bearing models: a spindle base case
 and the same case with one key changed; an honoured key changes the result, a refused key
@@ -16,9 +16,9 @@ import pytest
 from spindle_cases import spindle_document
 
 from convention_cells import assert_cell
-from runout.case import parse_case
-from runout.conventions import KEYS
-from runout.errors import CaseError
+from runout.base.errors import CaseError
+from runout.case.conventions import KEYS
+from runout.case.model import parse_case
 
 Data = dict[str, Any]
 

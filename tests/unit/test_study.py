@@ -1,4 +1,4 @@
-"""Studies (runout.study): seeding, batched kernel, chunking independence, sweeps, errors."""
+"""Studies (runout.study.run): seeding, batched kernel, chunking independence, sweeps, errors."""
 
 from __future__ import annotations
 
@@ -20,16 +20,16 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from cases import KIM_TOML, kim_case
-from runout import _study_chunks as chunks_mod
-from runout import _study_files as files_mod
-from runout import study as st_mod
-from runout._study_kernels import project_rows, solve_batch, solve_batch_reference
-from runout.case import Case
-from runout.errors import CaseError
+from runout.analysis.spectrum import extract_lines
+from runout.base.errors import CaseError
+from runout.case.model import Case
 from runout.models import quasi_static_2d as qs2
 from runout.models.dynamic import exact_number, point_name
-from runout.spectrum import extract_lines
-from runout.study import (
+from runout.study import chunks as chunks_mod
+from runout.study import files as files_mod
+from runout.study import run as st_mod
+from runout.study.kernels import project_rows, solve_batch, solve_batch_reference
+from runout.study.run import (
     OutputError,
     StudyError,
     error_text,
@@ -541,7 +541,7 @@ def test_watchdog_alone_ends_a_worker_whose_parent_was_killed(tmp_path: Path) ->
             """
             import multiprocessing, os, time
             from concurrent.futures import ProcessPoolExecutor
-            from runout.study import die_with_parent
+            from runout.study.run import die_with_parent
 
             if __name__ == "__main__":
                 pool = ProcessPoolExecutor(
@@ -613,7 +613,7 @@ def test_point_names_are_exact_and_unique(a: float, b: float) -> None:
 
 def test_the_digest_covers_the_bytes_of_profile_files(tmp_path: Path) -> None:
     # A remeasured profile is another case: its chunks must not pass for the old ones.
-    from runout.case import load_case
+    from runout.case.model import load_case
 
     def profile(amplitude_um: float) -> None:
         rows = [f"{a},{amplitude_um * math.cos(math.radians(a) * 5)}" for a in range(0, 360, 2)]

@@ -1,4 +1,4 @@
-"""Studies on workers (runout._study_pool): arrays shipped to workers, fused kernel, chunk fill."""
+"""Studies on workers (runout.study.pool): arrays shipped to workers, fused kernel, chunk fill."""
 
 from __future__ import annotations
 
@@ -12,15 +12,15 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from cases import kim_case
-from runout import _study_chunks as chunks_mod
-from runout import _study_pool as pool_mod
-from runout import _study_result as result_mod
-from runout import study as st_mod
-from runout._study_kernels import _contacts, solve_batch, solve_batch_reference
-from runout.case import Case
-from runout.decompose import RESIDUAL_REL
+from runout.analysis.decompose import RESIDUAL_REL
+from runout.case.model import Case
 from runout.models import quasi_static_2d as qs2
-from runout.study import run_study
+from runout.study import chunks as chunks_mod
+from runout.study import pool as pool_mod
+from runout.study import result as result_mod
+from runout.study import run as st_mod
+from runout.study.kernels import _contacts, solve_batch, solve_batch_reference
+from runout.study.run import run_study
 
 
 def mc(samples: int, seed: int = 7, chunk: int = 250) -> Case:

@@ -11,8 +11,10 @@ from typing import Any
 import numpy as np
 import pytest
 
-from runout import _line_kernels as line_kernels
-from runout import _threads, examples, loading
+from runout import examples
+from runout.analysis import line_kernels
+from runout.base import threads as _threads
+from runout.geometry import loading
 from runout.models import _quasi_static as qsm
 from runout.models import quasi_static_2d as qs2
 from runout.models import quasi_static_3d as qs3

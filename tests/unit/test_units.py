@@ -6,7 +6,7 @@ import math
 
 import pytest
 
-from runout.units import UnitError, to_si
+from runout.base.units import UnitError, to_si
 
 
 @pytest.mark.parametrize(
@@ -58,7 +58,7 @@ def test_to_si_rejects(value, kind, words) -> None:
 def test_registry_falls_back_when_the_pint_cache_cannot_be_written(monkeypatch) -> None:
     import pint
 
-    from runout import units
+    from runout.base import units
 
     real = pint.UnitRegistry
 

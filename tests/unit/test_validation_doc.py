@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from runout import reproduce as rp
+from runout.validation import reproduce as rp
 
 ROOT = Path(__file__).resolve().parents[2]
 

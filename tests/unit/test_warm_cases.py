@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from runout._warm import WARM_CASES, WarmError, warm
+from runout.cli.warm import WARM_CASES, WarmError, warm
 from runout.models import MODEL_MODULES
 from runout.validation.cases import examples_dir
 

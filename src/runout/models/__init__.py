@@ -2,7 +2,7 @@
 
 Each model lives in ``runout/models/<id>.py`` and exposes ``run(case) -> RunResult``. A case
 that names a model this version does not provide gets a
-:class:`runout.errors.ModelNotAvailableError` saying so, never a partial answer.
+:class:`runout.base.errors.ModelNotAvailableError` saying so, never a partial answer.
 """
 
 from __future__ import annotations
@@ -16,7 +16,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from runout.errors import ModelNotAvailableError
+from runout.base.errors import ModelNotAvailableError
 
 __all__ = ["MODEL_MODULES", "available_models", "measuring_direction", "run_model"]
 
@@ -51,7 +51,7 @@ def measuring_direction(case: Any, model: str | None = None) -> NDArray[np.float
 
     Parameters
     ----------
-    case : runout.case.Case
+    case : runout.case.model.Case
         A validated case.
     model : str, optional
         Model id; default the case's ``[analysis] model``.
@@ -67,8 +67,8 @@ def measuring_direction(case: Any, model: str | None = None) -> NDArray[np.float
 def run_model(case: Any) -> Any:
     """Run the model named in ``case.analysis.model``.
 
-    The case is first checked against :mod:`runout.conventions`: a key the model refuses ends
-    the run with a :class:`runout.errors.CaseError`; the keys it does not apply are added to
+    The case is first checked against :mod:`runout.case.conventions`: a key the model refuses ends
+    the run with a :class:`runout.base.errors.CaseError`; the keys it does not apply are added to
     the result's notes.
 
     Raises
@@ -77,8 +77,8 @@ def run_model(case: Any) -> Any:
         If that model is not part of this version.
     CaseError
         If the case sets a key the model refuses, fails the model's input checks, exceeds the
-        budget of :mod:`runout.limits` or loads a contact beyond Hertz theory
-        (:func:`runout.input_checks.validate`); its warnings join the result's notes.
+        budget of :mod:`runout.case.limits` or loads a contact beyond Hertz theory
+        (:func:`runout.runner.checks.validate`); its warnings join the result's notes.
     """
     model = case.analysis.model
     if model not in available_models():
@@ -87,9 +87,9 @@ def run_model(case: Any) -> Any:
             f"{case.path}: analysis.model: model '{model}' is not available in this version "
             f"(available: {available}); `runout check` and `runout frequencies` work for any case"
         )
-    from runout.conventions import enforce
-    from runout.errors import GeometryError
-    from runout.input_checks import as_case_error, validate
+    from runout.base.errors import GeometryError
+    from runout.case.conventions import enforce
+    from runout.runner.checks import as_case_error, validate
 
     # One meaning per key: refuse what this model cannot honour, note what it does not apply.
     notes = enforce(case, model)
@@ -103,6 +103,6 @@ def run_model(case: Any) -> Any:
     if notes or warnings:
         result = dataclasses.replace(result, notes=(*result.notes, *warnings, *notes))
     # the case's [analysis] outputs beyond the model: bands, verdict, passage names
-    from runout.results import apply_analysis
+    from runout.analysis.results import apply_analysis
 
     return apply_analysis(result, case)

@@ -14,7 +14,8 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from runout.errors import ConvergenceError, GeometryError, NumericalError
+from runout.analysis.spectrum import amplitude_spectrum
+from runout.base.errors import ConvergenceError, GeometryError, NumericalError
 from runout.models._dynamic_kernels import (
     BLOWUP,
     FORCE_RTOL,  # noqa: F401 - re-exported with the kernels (docs, tests)
@@ -33,7 +34,6 @@ from runout.models._dynamic_setup import (
     linearised_natural_frequencies,
     static_equilibrium,
 )
-from runout.spectrum import amplitude_spectrum
 
 #: Default number of Newmark steps per period of the highest linearised natural frequency.
 STEPS_PER_PERIOD = 200
@@ -195,7 +195,7 @@ class IntegrationPlan:
 
 def _cost_per_step(st: DynamicSetup) -> float:
     """Estimated seconds of one Newmark step (contacts x harmonics, Newton iterations)."""
-    from runout.limits import COST_DYNAMIC_ELEMENT, COST_DYNAMIC_HARMONIC
+    from runout.case.limits import COST_DYNAMIC_ELEMENT, COST_DYNAMIC_HARMONIC
 
     z = st.n_elements
     rings = st.harmonics[0].size + st.harmonics[3].size
@@ -218,18 +218,18 @@ def plan_integration(
 
     The analysis window and one block of the transient search (integrated twice) are the
     least a run does; their time and memory are estimated from the step count and compared
-    with ``limits`` (:func:`runout.limits.budget`) before anything is allocated. The steps
+    with ``limits`` (:func:`runout.case.limits.budget`) before anything is allocated. The steps
     left in the time budget (at most ``max_steps`` in all) bound the transient search.
 
     Raises
     ------
-    runout.limits.LimitError
+    runout.case.limits.LimitError
         Naming the key that makes the run too large (``dynamics.time_step``,
         ``operation.speed``, ``dynamics.mass`` or ``analysis.revolutions``).
     GeometryError
         No contact stiffness at the static position.
     """
-    from runout.limits import LimitError, budget, format_bytes, format_seconds
+    from runout.case.limits import LimitError, budget, format_bytes, format_seconds
 
     limits = budget() if limits is None else limits
     f_hi = float(natural.max()) if natural.size else 0.0
@@ -398,8 +398,8 @@ def integrate(
         Called with the fraction done (0..1) after each block.
     max_steps : int
         Step budget of the whole run (transient search twice and the window).
-    limits : runout.limits.Budget or None
-        Memory and time budget (default :func:`runout.limits.budget`); the plan is refused
+    limits : runout.case.limits.Budget or None
+        Memory and time budget (default :func:`runout.case.limits.budget`); the plan is refused
         before any array is allocated when it exceeds it, and what is left of the time bounds
         the transient search.
 
@@ -407,7 +407,7 @@ def integrate(
     ------
     ConvergenceError, NumericalError
         Naming the step and time of the failure.
-    runout.limits.LimitError
+    runout.case.limits.LimitError
         A window or a transient block beyond the budget (:func:`plan_integration`).
     """
     q_static = static_equilibrium(st, np.array([0.0]))[0]

@@ -26,12 +26,12 @@ import numba
 import numpy as np
 from numpy.typing import NDArray
 
-from runout._linalg import solve_spd3
+from runout.base.linalg import solve_spd3
 
 FloatArray = NDArray[np.float64]
 IntArray = NDArray[np.int64]
 #: Packed harmonics of the inner ring, outer ring and balls: orders, amplitudes [m], phases
-#: [rad] of each (:func:`runout.imperfections.pack_harmonics`) and the balls' offsets.
+#: [rad] of each (:func:`runout.geometry.imperfections.pack_harmonics`) and the balls' offsets.
 Harmonics = tuple[
     FloatArray, FloatArray, FloatArray, FloatArray, FloatArray, FloatArray,
     FloatArray, FloatArray, FloatArray, IntArray,

@@ -15,17 +15,17 @@ from typing import Any, Literal
 import numpy as np
 from numpy.typing import NDArray
 
-from runout.bearing import BallBearing
-from runout.contact import (
+from runout.base.errors import ConvergenceError, GeometryError
+from runout.geometry.bearing import BallBearing
+from runout.geometry.contact import (
     RaceName,
     ball_race_contacts,
     ball_race_curvature,
     combined_stiffness,
     stiffness_from_delta_star_table,
 )
-from runout.errors import ConvergenceError, GeometryError
-from runout.imperfections import pack_harmonics
-from runout.kinematics import ball_spin_frequency, cage_frequency
+from runout.geometry.imperfections import pack_harmonics
+from runout.geometry.kinematics import ball_spin_frequency, cage_frequency
 from runout.models._dynamic_kernels import (
     FORCE_RTOL,  # noqa: F401 - re-exported with the kernels (docs, tests)
     N_PAR,

@@ -13,7 +13,7 @@ Conventions (both models)
 * The contact point of ball j in its own frame is at :math:`\pm 2\pi f_b t` (spin relative to
   the cage, seed 000 §2.1, seed 001 eq. 9; the sign is :attr:`Kinematics.contact_rate`'s); the
   diameter deviation along the contact line is
-  :meth:`runout.imperfections.Imperfections.evaluate_element_diameters` (seed 002 eq. 26).
+  :meth:`runout.geometry.imperfections.Imperfections.evaluate_element_diameters` (seed 002 eq. 26).
 """
 
 from __future__ import annotations
@@ -27,13 +27,20 @@ import numba
 import numpy as np
 from numpy.typing import NDArray
 
-from runout._threads import halves, in_spans
-from runout.decompose import Candidate, Direction, Kinematic, Phasors, fit_lines, split_runout
-from runout.errors import GeometryError
-from runout.imperfections import Harmonics, Imperfections
-from runout.kinematics import bearing_frequencies
-from runout.result_details import QuasiStaticDetails
-from runout.results import RunResult, Source
+from runout.analysis.decompose import (
+    Candidate,
+    Direction,
+    Kinematic,
+    Phasors,
+    fit_lines,
+    split_runout,
+)
+from runout.analysis.result_details import QuasiStaticDetails
+from runout.analysis.results import RunResult, Source
+from runout.base.errors import GeometryError
+from runout.base.threads import halves, in_spans
+from runout.geometry.imperfections import Harmonics, Imperfections
+from runout.geometry.kinematics import bearing_frequencies
 
 __all__ = [
     "ANCHOR",
@@ -100,7 +107,7 @@ class Kinematics:
         r"""Signed rate of the contact-point angle in each element's own frame [Hz].
 
         Rolling without slip, an element spins against the inner ring's motion relative to the
-        cage (:mod:`runout.kinematics`): seen from the cage, its contact point then runs over
+        cage (:mod:`runout.geometry.kinematics`): seen from the cage, its contact point then runs over
         its surface at :math:`+f_b` when the inner ring turns faster than the outer (ball inside
         a stationary outer race, spinning against its orbit) and at :math:`-f_b` when the outer
         ring is the faster (ball rolling on a stationary inner race, spinning with its orbit).
@@ -296,7 +303,7 @@ def contact_sources(
     planar : bool
         Seed 001's planar combination.
     """
-    from runout.imperfections import pack_harmonics
+    from runout.geometry.imperfections import pack_harmonics
 
     z = kin.n_elements
     rates = np.array(
@@ -964,9 +971,9 @@ def run_quasi_static(
 ) -> RunResult:
     """The run flow shared by the quasi-static models (seeds 000 and 001).
 
-    Solve on the analysis grid, decompose the record (:mod:`runout.decompose`: the predicted
+    Solve on the analysis grid, decompose the record (:mod:`runout.analysis.decompose`: the predicted
     lines, the residual search, RRO/NRRO from the lines), and assemble the result with its
-    notes and the model's details (:class:`~runout.result_details.QuasiStaticDetails`; the
+    notes and the model's details (:class:`~runout.analysis.result_details.QuasiStaticDetails`; the
     files layer draws its ``bearing.gif``).
 
     Parameters

@@ -17,9 +17,9 @@ from typing import Any, Literal
 import numpy as np
 from numpy.typing import NDArray
 
-from runout.bearing import BallBearing, Bearing, Operation, RollerBearing
-from runout.errors import GeometryError
-from runout.imperfections import Harmonics, Imperfections
+from runout.base.errors import GeometryError
+from runout.geometry.bearing import BallBearing, Bearing, Operation, RollerBearing
+from runout.geometry.imperfections import Harmonics, Imperfections
 from runout.models._roller_kernels import Bodies
 
 FloatArray = NDArray[np.float64]
@@ -129,7 +129,7 @@ def elements_to_fixed_frame(
     differ by the roller's position β_j, so :math:`\psi_f = \psi_c + \beta_j` and
     :math:`\varphi^f_k = \varphi^c_k - k\beta_j` (``shifted(-β_j)``) at every later angle
     too, whatever the spin. Inverse of
-    :meth:`runout.imperfections.Imperfections.element_phases_from_fixed_frame`.
+    :meth:`runout.geometry.imperfections.Imperfections.element_phases_from_fixed_frame`.
 
     Parameters
     ----------

@@ -17,8 +17,8 @@ import numba
 import numpy as np
 from numpy.typing import NDArray
 
-from runout.errors import ConvergenceError, GeometryError, NumericalError
-from runout.imperfections import Harmonics, single_harmonic
+from runout.base.errors import ConvergenceError, GeometryError, NumericalError
+from runout.geometry.imperfections import Harmonics, single_harmonic
 from runout.models._roller_kernels import (
     _FAR_CONTACT,
     _NO_STABLE,

@@ -55,13 +55,13 @@ Notes
   it puts W in the x equation, i.e. the paper's x axis points along the load, while our load
   is along −y by default, so the paper's x is our −y. The contact constant of eq. 2.11–2.15 is
   wrong in the source (see VALIDATION.md); K_n comes from
-  :func:`runout.contact.ball_race_contacts` (``contact_law = "exact"``) or from the paper's
-  δ* table (``"delta_star_table"``, :func:`runout.contact.stiffness_from_delta_star_table`),
+  :func:`runout.geometry.contact.ball_race_contacts` (``contact_law = "exact"``) or from the paper's
+  δ* table (``"delta_star_table"``, :func:`runout.geometry.contact.stiffness_from_delta_star_table`),
   at the preloaded contact angle.
 * Eq. 2.21 is the zero-clearance case of Harris's load-angle relation; we solve the full
   relation with clearance, :math:`F_a = Z K_n (A\cos\alpha^0/\cos\alpha_p - A)^{3/2}
   \sin\alpha_p`, with K_n of the chosen law at α_p (for the exact law this is
-  :func:`runout.loading.axial_loading`). Then :math:`z_p = A\cos\alpha^0\tan\alpha_p`.
+  :func:`runout.geometry.loading.axial_loading`). Then :math:`z_p = A\cos\alpha^0\tan\alpha_p`.
 * Departures from the paper: the contact normal turns with the motion (exact curvature-centre
   geometry instead of a fixed angle); z is optional; waviness of both raceways and of the
   balls, ball size and pitch errors are included; the cage and spin rates use α_p.
@@ -93,10 +93,13 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from runout.decompose import Candidate, Direction, fit_lines, split_runout
-from runout.display import format_resolution
-from runout.errors import GeometryError
-from runout.kinematics import bearing_frequencies
+from runout.analysis.decompose import Candidate, Direction, fit_lines, split_runout
+from runout.analysis.result_details import DynamicDetails
+from runout.analysis.results import RunResult, Source
+from runout.analysis.spectrum import amplitude_spectrum, extract_lines
+from runout.base.display import format_resolution
+from runout.base.errors import GeometryError
+from runout.geometry.kinematics import bearing_frequencies
 from runout.models._dynamic_integration import (  # noqa: F401 - the model's names in one place
     MAX_BLOCK_REVOLUTIONS,
     MAX_STEPS,
@@ -109,7 +112,7 @@ from runout.models._dynamic_integration import (  # noqa: F401 - the model's nam
     integrate,
 )
 from runout.models._dynamic_integration import (
-    plan_integration as plan_integration,  # runout.input_checks plans with it
+    plan_integration as plan_integration,  # runout.runner.checks plans with it
 )
 from runout.models._dynamic_kernels import (  # noqa: F401 - re-exported with the kernels
     FORCE_RTOL,
@@ -147,9 +150,6 @@ from runout.models._quasi_static import (
     decomposition_kinematic,
     predicted_lines,
 )
-from runout.result_details import DynamicDetails
-from runout.results import RunResult, Source
-from runout.spectrum import amplitude_spectrum, extract_lines
 
 __all__ = [
     "STEPS_PER_PERIOD",
@@ -273,7 +273,7 @@ def run(case: Any, progress: Callable[[float], None] | None = None) -> RunResult
     RunResult
         Steady-state history of the rotor centre (inner ring relative to the outer ring),
         labelled lines, runout figures; details
-        (:class:`~runout.result_details.DynamicDetails`) ``natural_frequencies_hz`` and the
+        (:class:`~runout.analysis.result_details.DynamicDetails`) ``natural_frequencies_hz`` and the
         integration facts, among them ``transient_s``, the length of the transient [s].
         ``time`` starts at 0 at the first reported instant, where the ball angles and the
         unbalance phase are those of every model's t = 0 (the transient ran from
@@ -284,7 +284,7 @@ def run(case: Any, progress: Callable[[float], None] | None = None) -> RunResult
     op = case.operation
     dyn = _dyn(case)
     revs, spr, notes = _analysis_grid(case)
-    from runout.limits import case_budget
+    from runout.case.limits import case_budget
 
     integ = integrate(
         st, op.speed, revs, spr, time_step=dyn.time_step, progress=progress,
@@ -386,7 +386,7 @@ def run(case: Any, progress: Callable[[float], None] | None = None) -> RunResult
 # --------------------------------------------------------------------------------------------
 def _variant(case: Any, elements: int | None, preload: float | None) -> Any:
     """The case with another number of balls and/or axial preload."""
-    from runout.case import parse_case
+    from runout.case.model import parse_case
 
     data = case.spec.model_dump(mode="python", exclude_none=True)
     if elements is not None:
@@ -523,7 +523,7 @@ def sweep(
     that is damaged, of another case or of another point is recomputed, and said through
     ``notify``. The panels (``spectra_elements_P<p>N.png``, ``spectra_preload_Z<z>.png``),
     ``trend.png`` and ``sweep.csv`` are written at the end. ``out`` is locked for the whole
-    sweep (:func:`runout.study.output_lock`) and must be new, empty or a sweep's output.
+    sweep (:func:`runout.study.run.output_lock`) and must be new, empty or a sweep's output.
 
     Parameters
     ----------
@@ -548,9 +548,9 @@ def sweep(
 
     Raises
     ------
-    runout.study.OutputError
+    runout.study.run.OutputError
         ``out`` empty, a file, unwritable, not a sweep's output, or locked by another writer.
-    runout.study.StudyError
+    runout.study.run.StudyError
         A point failed with an exception that is not a runout error (the points finished
         before it are kept).
     """
@@ -561,7 +561,7 @@ def sweep(
             raise GeometryError("preload", f"must be >= 0 N, got {p!r}")
     if out is None:
         return _sweep_points(case, zs, ps, None, progress, notify)
-    from runout.study import output_directory, output_lock, refuse_foreign
+    from runout.study.run import output_directory, output_lock, refuse_foreign
 
     directory = output_directory(out)
     refuse_foreign(directory, "sweep-dynamic", force)
@@ -579,8 +579,8 @@ def _sweep_points(
 ) -> list[SweepPoint]:
     """The points of :func:`sweep`; ``out`` is checked and locked by the caller."""
 
-    from runout.errors import RunoutError
-    from runout.study import (
+    from runout.base.errors import RunoutError
+    from runout.study.run import (
         OutputError,
         StudyError,
         _dumps,
@@ -659,8 +659,8 @@ def _write_str(text: str, fh: Any) -> None:
 def _write_sweep(
     points: list[SweepPoint], zs: list[int], ps: list[float], out: Path, title: str
 ) -> list[Path]:
-    from runout import plotting
-    from runout.study import write_atomic
+    from runout.report import plotting
+    from runout.study.run import write_atomic
 
     rows = [
         "elements,preload_n,contact_angle_deg,ball_passage_hz,natural_frequency_1_hz,"

@@ -119,20 +119,20 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import NDArray
 
-from runout.bearing import BallBearing, Operation
-from runout.contact import ball_race_curvature, combined_stiffness, hertz_point_stiffness
-from runout.errors import ConvergenceError, GeometryError, NumericalError
-from runout.kinematics import bearing_frequencies
-from runout.result_details import (
+from runout.analysis.result_details import (
     EquilibriumDetails,
     RadialStiffness,
     RingDisplacement,
     StiffnessMatrix,
 )
-from runout.results import Runout, RunResult
+from runout.analysis.results import Runout, RunResult
+from runout.base.errors import ConvergenceError, GeometryError, NumericalError
+from runout.geometry.bearing import BallBearing, Operation
+from runout.geometry.contact import ball_race_curvature, combined_stiffness, hertz_point_stiffness
+from runout.geometry.kinematics import bearing_frequencies
 
 if TYPE_CHECKING:
-    from runout.case import Case
+    from runout.case.model import Case
 
 __all__ = [
     "DOF_NAMES",
@@ -583,7 +583,7 @@ def _hertz_constants(
 ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """K_i, K_o [N/m^1.5] at contact angles in [0, π/2) [rad], in one call of the Hertz solver.
 
-    The values of :func:`runout.contact.ball_race_contacts` angle by angle, to the last bit
+    The values of :func:`runout.geometry.contact.ball_race_contacts` angle by angle, to the last bit
     or two (every entry of the vectorised solver is solved on its own; vectorised ufuncs may
     round differently from scalar ones).
     """
@@ -615,7 +615,7 @@ def _axial_start(bearing: BallBearing, axial_load: float, kn: float) -> tuple[fl
     on :math:`[\alpha^0, \pi/2)` (the load grows with α there), then
     :math:`\delta_a = (A + \delta_n)\sin\alpha - A\sin\alpha^0`,
     :math:`\delta_n = (F_a/(Z K_n\sin\alpha))^{2/3}`. Only a start: the ring Newton then
-    evaluates K at each ball's own angles (:func:`runout.loading.axial_loading` gives the
+    evaluates K at each ball's own angles (:func:`runout.geometry.loading.axial_loading` gives the
     static solution with K at the loaded angle, at some twenty Hertz solutions).
     """
     a = bearing.curvature_distance
@@ -848,7 +848,7 @@ class EquilibriumResult(RunResult):
     """A :class:`RunResult` of the equilibrium model with its solver state.
 
     Its tables and files come from :attr:`details`
-    (:class:`~runout.result_details.EquilibriumDetails`, also in the JSON); ``solution``
+    (:class:`~runout.analysis.result_details.EquilibriumDetails`, also in the JSON); ``solution``
     is the full solution (per-ball speeds, forces, the Newton record) for Python use.
     """
 

@@ -29,7 +29,7 @@ Notes
 Departures from seed 002 and choices it leaves open (the theory page docs/models/linear.md
 derives them):
 
-* **Outer-raceway sign.** :mod:`runout.imperfections` stores *radius* deviations. A larger
+* **Outer-raceway sign.** :mod:`runout.geometry.imperfections` stores *radius* deviations. A larger
   outer-raceway radius moves the outer ring towards the element, so it enters with a minus
   sign (as in seed 000 eq. 2, ``(W_i - W_o) cos α``). Seed 002 eq. 27 adds w_o; its w_o is the
   deviation measured into the material. The lines are identical up to a phase of π; seed 002's
@@ -40,7 +40,7 @@ derives them):
   scaled like the other inner-ring terms (``cos α`` in the radial-spring variant, 1 in the
   force-balance one). A stationary inner ring gives a constant (static) offset.
 * **Rotating outer ring.** The same sum with ψ_o = θ, ψ_i = 0 and the cage and spin rates of
-  :mod:`runout.kinematics`. The contact-point angle on an element turns at the signed rate
+  :mod:`runout.geometry.kinematics`. The contact-point angle on an element turns at the signed rate
   ``f_b sign(f_i − f_o)``; seed 002 (inner ring rotating) has the positive sense.
 * **Pitch errors.** Eq. 19-20 need equally spaced elements. With pitch errors the direct sum
   solves the full 2 × 2 balance at each instant, ``(Z/2) u + (1/2) P ū = R`` with
@@ -63,15 +63,10 @@ from typing import Any, Literal
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from runout.attribution import attribution_rows
-from runout.bearing import Bearing, Operation
-from runout.decompose import exact_shares, split_runout
-from runout.errors import GeometryError
-from runout.imperfections import Harmonics, Imperfections
-from runout.kinematics import Frequencies, bearing_frequencies, pitch_ratio
-from runout.result_details import LinearDetails
-from runout.results import Component, RunResult, Source
-from runout.spectrum import (
+from runout.analysis.decompose import exact_shares, split_runout
+from runout.analysis.result_details import LinearDetails
+from runout.analysis.results import Component, RunResult, Source
+from runout.analysis.spectrum import (
     ANDERON_BANDS,
     MICROINCH,
     BandSet,
@@ -80,6 +75,11 @@ from runout.spectrum import (
     anderon_bands_from_lines,
     anderon_bands_from_waveform,
 )
+from runout.base.errors import GeometryError
+from runout.geometry.attribution import attribution_rows
+from runout.geometry.bearing import Bearing, Operation
+from runout.geometry.imperfections import Harmonics, Imperfections
+from runout.geometry.kinematics import Frequencies, bearing_frequencies, pitch_ratio
 
 __all__ = [
     "VARIANTS",
@@ -702,7 +702,7 @@ def synthesize(
 ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
     """x(θ), y(θ) from the lines on θ = 2π · revolutions · n / samples (compiled kernel).
 
-    Rotating phasors re-anchored every 256 samples (:mod:`runout.spectrum`); agrees with
+    Rotating phasors re-anchored every 256 samples (:mod:`runout.analysis.spectrum`); agrees with
     :meth:`SpectralLines.evaluate` to about 1e-13 of the largest amplitude.
 
     Returns
@@ -808,7 +808,7 @@ class LinearResult(RunResult):
         Angle of the rotating ring at each instant [rad].
 
     The variant and the attribution table are in :attr:`details`
-    (:class:`~runout.result_details.LinearDetails`).
+    (:class:`~runout.analysis.result_details.LinearDetails`).
     """
 
     spectral_lines: SpectralLines | None = None
@@ -823,7 +823,7 @@ class LinearResult(RunResult):
 
     @property
     def attribution(self) -> list[dict[str, Any]]:
-        """Frequency attribution table of the bearing (:mod:`runout.attribution`)."""
+        """Frequency attribution table of the bearing (:mod:`runout.geometry.attribution`)."""
         d = self.details
         return [dict(row) for row in d.attribution] if isinstance(d, LinearDetails) else []
 
@@ -925,7 +925,7 @@ class LinearResult(RunResult):
 
 def linear_result(result: RunResult) -> LinearResult:
     r"""A :class:`LinearResult` of a linear run read back from its JSON
-    (:meth:`runout.results.RunResult.from_json`): its lines rebuilt from the components.
+    (:meth:`runout.analysis.results.RunResult.from_json`): its lines rebuilt from the components.
 
     Each order's x and y phasors X, Y give :math:`C_+ = (X + iY)/2` and
     :math:`\bar C_- = (X - iY)/2` (:class:`SpectralLines`); the DC line (order 0) and the
@@ -999,7 +999,7 @@ def run(case: Any) -> LinearResult:
 
     Parameters
     ----------
-    case : runout.case.Case
+    case : runout.case.model.Case
         Bearing, operation, imperfections; ``analysis.revolutions`` and ``analysis.samples``
         set the waveform window and ``analysis.linear_variant`` the contact model.
 
@@ -1010,7 +1010,7 @@ def run(case: Any) -> LinearResult:
         NRRO = the rest, p-p along the measuring direction over the window), Anderon bands from
         the exact lines, and the attribution table (JSON key ``attribution``).
     """
-    from runout.summary import operating_contact_angle
+    from runout.report.summary import operating_contact_angle
 
     bearing, operation, imp = case.bearing, case.operation, case.imperfections
     variant = getattr(case.analysis, "linear_variant", "radial_spring")

@@ -12,7 +12,7 @@ added), :math:`W_{ok}` the outer-raceway radius deviation (positive = radius lar
 :math:`w_{bk}` the ball's diameter deviation along its contact line (eq. 13, read as seed 002
 eq. 26; size error included) and :math:`\delta_0 = (\delta_i + \delta_o)/2` the mean of the
 two Hertz approaches of the static axial-load solution (text after eq. 18;
-:func:`runout.loading.axial_loading` at the operating contact angle). The load is
+:func:`runout.geometry.loading.axial_loading` at the operating contact angle). The load is
 :math:`P_k = C_k (2\delta_k)^{3/2}` with :math:`C_k = K_n` (eq. 14-15), so a ball whose
 bracket turns negative carries none (counted and reported).
 
@@ -22,11 +22,11 @@ Notes
   total approach 2δ_k. The balance (eq. 16-17) is homogeneous in C_k, so the shaft position
   does not depend on this choice; it does make the loads physical.
 * Eq. 10 is planar: x, y and the deviations enter without the contact angle, exactly as
-  printed. The contact angle (:func:`runout.summary.operating_contact_angle`) sets the
+  printed. The contact angle (:func:`runout.report.summary.operating_contact_angle`) sets the
   kinematics (eq. 7, 9) and δ_0 only. ``element_projection="radial"`` multiplies the ball
   deviations by cos α instead (their projection on the radial plane), an option for studies:
   Tables 4-8 are reproduced with eq. 10 as printed once the paper's FFT reading is applied
-  (VALIDATION.md, :func:`runout.spectrum.peak_bin_gain`).
+  (VALIDATION.md, :func:`runout.analysis.spectrum.peak_bin_gain`).
 * Eq. 11-12 write the raceway radii as functions of the ball angle θ_k; for a rotating ring we
   evaluate its profile in the ring's frame, :math:`r(\theta_k - 2\pi f_{ring} t)`.
 * The shaft is the measured body: the displacement reported is the inner ring's centre
@@ -55,11 +55,12 @@ import numba
 import numpy as np
 from numpy.typing import NDArray
 
-from runout.bearing import BallBearing
-from runout.contact import ball_race_contacts
-from runout.errors import ContactLossError, ConvergenceError, GeometryError, NumericalError
-from runout.kinematics import ball_spin_frequency, cage_frequency
-from runout.loading import axial_loading
+from runout.analysis.results import RunResult
+from runout.base.errors import ContactLossError, ConvergenceError, GeometryError, NumericalError
+from runout.geometry.bearing import BallBearing
+from runout.geometry.contact import ball_race_contacts
+from runout.geometry.kinematics import ball_spin_frequency, cage_frequency
+from runout.geometry.loading import axial_loading
 from runout.models._quasi_static import (
     Kinematics,
     contact_advance,
@@ -75,11 +76,10 @@ from runout.models._quasi_static import (
     solve_in_halves,
     time_step,
 )
-from runout.results import RunResult
-from runout.summary import operating_contact_angle
+from runout.report.summary import operating_contact_angle
 
 if TYPE_CHECKING:
-    from runout.case import Case
+    from runout.case.model import Case
 
 __all__ = [
     "Setup",

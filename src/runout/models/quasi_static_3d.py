@@ -3,7 +3,7 @@ r"""Three-dimensional quasi-static NRRO model with a fixed contact angle (seed 0
 The inner ring's geometric centre is fixed; the outer ring's centre :math:`(x, y, z)` settles,
 at every instant, where the Hertz forces of the Z balls balance the constant axial preload
 :math:`F_a` (and a radial load, if any). The contact angle α stays at its preloaded value
-(:func:`runout.summary.operating_contact_angle`); the balls move with the cage, spin at
+(:func:`runout.report.summary.operating_contact_angle`); the balls move with the cage, spin at
 :math:`f_b` relative to it and carry the raceway and ball wavinesses, size and pitch errors
 with them (seed 000 §2.1).
 
@@ -25,7 +25,7 @@ with
 * x, y, z the outer ring's centre relative to the inner ring's; +z opens the contacts.
 
 Load :math:`Q_j = K_n[\delta_j]_+^{3/2}` (eq. 3, K_n of eq. 4 from
-:func:`runout.contact.ball_race_contacts`); a ball with :math:`\delta_j \le 0` carries none. The
+:func:`runout.geometry.contact.ball_race_contacts`); a ball with :math:`\delta_j \le 0` carries none. The
 balance (eq. 5), with the unit contact normal :math:`n_j = (\cos\alpha\cos\theta_j,
 \cos\alpha\sin\theta_j, \sin\alpha)`, is
 
@@ -71,11 +71,12 @@ import numba
 import numpy as np
 from numpy.typing import NDArray
 
-from runout._linalg import solve_spd3
-from runout.bearing import BallBearing
-from runout.contact import ball_race_contacts
-from runout.errors import ContactLossError, ConvergenceError, GeometryError, NumericalError
-from runout.kinematics import ball_spin_frequency, cage_frequency
+from runout.analysis.results import RunResult
+from runout.base.errors import ContactLossError, ConvergenceError, GeometryError, NumericalError
+from runout.base.linalg import solve_spd3
+from runout.geometry.bearing import BallBearing
+from runout.geometry.contact import ball_race_contacts
+from runout.geometry.kinematics import ball_spin_frequency, cage_frequency
 from runout.models._quasi_static import (
     Kinematics,
     contact_advance,
@@ -92,11 +93,10 @@ from runout.models._quasi_static import (
     time_grid,
     time_step,
 )
-from runout.results import RunResult
-from runout.summary import operating_contact_angle
+from runout.report.summary import operating_contact_angle
 
 if TYPE_CHECKING:
-    from runout.case import Case
+    from runout.case.model import Case
 
 __all__ = [
     "Setup",

@@ -58,7 +58,7 @@ Notes
 -----
 * Seed 004 eq. 2 as extracted gives the roller spin as
   :math:`((d_i+d_e)^2 - 4D_w^2)/((d_i+d_e)D_w)\,\alpha`, four times the spin relative to the
-  cage (see :mod:`runout.kinematics`). Because the roller frame of eq. 7 is parallel to the
+  cage (see :mod:`runout.geometry.kinematics`). Because the roller frame of eq. 7 is parallel to the
   global frame (it translates, it does not turn with the cage), the angle needed there is the
   absolute spin. Pure rolling on both raceways gives
   :math:`\omega = [\Omega_o (d_m + D_w) - \Omega_i (d_m - D_w)]/(2 D_w)` per unit ring
@@ -87,7 +87,7 @@ Notes
   of their diameter on the groove-bottom diameters ``d_m ∓ (D + P_d/2)``; groove conformity,
   axial play and slant are ignored. This is a simplification for light-load radial runout.
 * The profiles must be convex (every harmonic with :math:`C_m m^2` well below the radius);
-  otherwise the rigid contact is not unique and a :class:`~runout.errors.GeometryError` says so.
+  otherwise the rigid contact is not unique and a :class:`~runout.base.errors.GeometryError` says so.
 """
 
 from __future__ import annotations
@@ -101,10 +101,12 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import NDArray
 
-from runout.bearing import BallBearing, Operation
-from runout.decompose import Candidate, Kinematic, fit_lines, split_runout
-from runout.imperfections import Harmonics
-from runout.kinematics import bearing_frequencies
+from runout.analysis.decompose import Candidate, Kinematic, fit_lines, split_runout
+from runout.analysis.result_details import Iso492, RollerContacts, RollerDetails
+from runout.analysis.results import Component, Runout, RunResult, Source
+from runout.geometry.bearing import BallBearing, Operation
+from runout.geometry.imperfections import Harmonics
+from runout.geometry.kinematics import bearing_frequencies
 from runout.models._roller_kernels import (
     TOL_FEASIBLE,  # noqa: F401 - part of this module's documented constants
     TOL_MULTIPLIER,  # noqa: F401
@@ -137,11 +139,9 @@ from runout.models._roller_solve import (
     solve_many,
     support_function,
 )
-from runout.result_details import Iso492, RollerContacts, RollerDetails
-from runout.results import Component, Runout, RunResult, Source
 
 if TYPE_CHECKING:
-    from runout.case import Case
+    from runout.case.model import Case
 
 __all__ = [
     "ConstraintGeometry",
@@ -256,7 +256,7 @@ def _same_profiles(elements: Sequence[Harmonics]) -> bool:
 def _components(
     sol: Solution, rotation_hz: float, notes: list[str]
 ) -> tuple[tuple[Component, ...], FloatArray | None, float]:
-    """Lines of the ring centre (:func:`runout.decompose.fit_lines`), the residual and the
+    """Lines of the ring centre (:func:`runout.analysis.decompose.fit_lines`), the residual and the
     explained fraction of the variance."""
     geo = sol.geometry
     rev = sol.alpha / (2.0 * math.pi)

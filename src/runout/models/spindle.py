@@ -47,7 +47,7 @@ Arrangement and preload
   spring (a sixth coordinate w, their axial slide; their balls see :math:`z - w`) and the
   spring pushes them with F_p: the -z group carries exactly F_p, the +z group F_p plus the
   axial load. In DT the preload is an axial force on the shaft. Each bearing's contact angle
-  is its own at the preload it carries (:func:`runout.summary.operating_contact_angle`, or the
+  is its own at the preload it carries (:func:`runout.report.summary.operating_contact_angle`, or the
   fixed ``contact_angle``), shared equally within a group.
 * Position (rigid) preload δ_a: the outer rings are fixed; at q = 0 each bearing is pressed
   :math:`\delta_a/2` axially into its contacts, :math:`c_{0b} = (\delta_a/2)\sin\alpha_b`,
@@ -74,12 +74,15 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import NDArray
 
-from runout.bearing import BallBearing
-from runout.contact import ball_race_contacts
-from runout.decompose import Candidate, fit_lines, split_runout
-from runout.errors import ContactLossError, ConvergenceError, GeometryError, NumericalError
-from runout.imperfections import Imperfections
-from runout.kinematics import ball_spin_frequency, bearing_frequencies, cage_frequency
+from runout.analysis.decompose import Candidate, fit_lines, split_runout
+from runout.analysis.result_details import SpindleBearingResult, SpindleDetails, StiffnessMatrix
+from runout.analysis.results import RunResult
+from runout.base.errors import ContactLossError, ConvergenceError, GeometryError, NumericalError
+from runout.geometry.bearing import BallBearing
+from runout.geometry.contact import ball_race_contacts
+from runout.geometry.imperfections import Imperfections
+from runout.geometry.kinematics import ball_spin_frequency, bearing_frequencies, cage_frequency
+from runout.geometry.spindle_layout import SpindleLayout
 from runout.models._quasi_static import (
     Kinematics,
     contact_series,
@@ -90,7 +93,6 @@ from runout.models._quasi_static import (
     time_grid,
     unloaded_note,
 )
-from runout.models._spindle_inputs import SpindleLayout
 from runout.models._spindle_kernels import (
     NOT_CONVERGED,
     OK,
@@ -98,13 +100,11 @@ from runout.models._spindle_kernels import (
     solve_chunk,
 )
 from runout.models.quasi_static_3d import check_axial_room, preload_approach
-from runout.result_details import SpindleBearingResult, SpindleDetails, StiffnessMatrix
-from runout.results import RunResult
-from runout.summary import operating_contact_angle
+from runout.report.summary import operating_contact_angle
 
 if TYPE_CHECKING:
-    from runout.bearing import Operation
-    from runout.case import Case
+    from runout.case.model import Case
+    from runout.geometry.bearing import Operation
 
 __all__ = [
     "BearingSetup",

@@ -64,7 +64,7 @@ __all__ = [
 SECTIONS: list[Section] = [
     Section(
         "kinematics",
-        "Kinematics (`runout.kinematics`)",
+        "Kinematics (`runout.geometry.kinematics`)",
         "Tests: `tests/reference/test_kinematics_references.py`. Orders = multiples of the "
         "rotating ring's speed.",
         [
@@ -73,13 +73,13 @@ SECTIONS: list[Section] = [
                 "",
                 kinematics.checks,
                 "Seed 004 eq. 2 (roller spin angle) as extracted is four times the pure-rolling "
-                "spin; we use the consistent value (see `runout.kinematics`).",
+                "spin; we use the consistent value (see `runout.geometry.kinematics`).",
             )
         ],
     ),
     Section(
         "contact",
-        "Hertz contact and axial loading (`runout.contact`, `runout.loading`)",
+        "Hertz contact and axial loading (`runout.geometry.contact`, `runout.geometry.loading`)",
         "Tests: `tests/reference/test_contact_references.py`, "
         '`tests/reference/test_kim_table2.py`. "Ours" is the exact Hertz solution '
         "(ellipticity solved from the complete elliptic integrals) unless the row says "
@@ -98,7 +98,7 @@ SECTIONS: list[Section] = [
     ),
     Section(
         "spectrum",
-        "Spectra and band values (`runout.spectrum`)",
+        "Spectra and band values (`runout.analysis.spectrum`)",
         seed002_anderon.SPECTRUM_INTRO,
         [Group("", "", seed002_anderon.spectrum_checks)],
     ),
@@ -156,13 +156,13 @@ SECTIONS: list[Section] = [
     ),
     Section(
         "diagnosis",
-        "Diagnosis from a measured record (`runout.diagnose`)",
+        "Diagnosis from a measured record (`runout.diagnose.fit`)",
         diagnosis.INTRO,
         [Group("", "", diagnosis.checks)],
     ),
     Section(
         "studies",
-        "Studies (`runout.study`, `runout.arrangement`)",
+        "Studies (`runout.study.run`, `runout.study.arrangement`)",
         "",
         [
             Group(
@@ -189,7 +189,7 @@ def build(
     wanted = list(keys if only is None else only)
     unknown = [k for k in wanted if k not in keys]
     if unknown:
-        from runout.errors import RunoutError
+        from runout.base.errors import RunoutError
 
         raise RunoutError(f"unknown section(s) {', '.join(unknown)}; choose from {', '.join(keys)}")
     sections = [s for s in SECTIONS if s.key in wanted]

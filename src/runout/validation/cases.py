@@ -1,6 +1,6 @@
 """The example case files the checks compute from, and their variants.
 
-The files ship inside the package (``runout._examples_data``, byte-identical copies of the
+The files ship inside the package (``runout.examples.data``, byte-identical copies of the
 repository's ``examples/*.toml``) and are found with :mod:`importlib.resources`, so that
 ``runout reproduce`` works from an installed wheel as from a source checkout. A check that
 reproduces a table or a figure names its file with :func:`uses`; the document lists them under
@@ -16,8 +16,8 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
-    from runout.bearing import BallBearing
-    from runout.case import Case
+    from runout.case.model import Case
+    from runout.geometry.bearing import BallBearing
 
 __all__ = [
     "EXAMPLE_USES",
@@ -41,10 +41,10 @@ def examples_dir() -> Path:
     Returns
     -------
     Path
-        ``runout/_examples_data`` of the imported package (a source checkout or an installed
+        ``runout/examples/data`` of the imported package (a source checkout or an installed
         wheel; both are plain directories).
     """
-    root = resources.files("runout._examples_data")
+    root = resources.files("runout.examples.data")
     # an installed wheel and a checkout are both directories on disk; a zipped import is not
     # supported (parse_case resolves relative profile paths against a real directory)
     return Path(str(root))
@@ -54,7 +54,7 @@ def example_path(name: str) -> Path:
     """The path of the example case file ``name`` (e.g. ``"seed002_608.toml"``)."""
     path = examples_dir() / name
     if not path.is_file():
-        from runout.errors import RunoutError
+        from runout.base.errors import RunoutError
 
         raise RunoutError(f"no example case file {name!r} in {examples_dir()}")
     return path
@@ -62,14 +62,14 @@ def example_path(name: str) -> Path:
 
 def load(name: str) -> Case:
     """The example case file ``name``, parsed and validated."""
-    from runout.case import load_case
+    from runout.case.model import load_case
 
     return load_case(example_path(name))
 
 
 def variant(name: str, mutate: Callable[[dict[str, Any]], None]) -> Case:
     """The example ``name`` with its data changed by ``mutate`` (a loop done in code)."""
-    from runout.case import parse_case
+    from runout.case.model import parse_case
 
     case = load(name)
     data = case.spec.model_dump(exclude_none=True)
@@ -85,7 +85,7 @@ def uses(name: str, what: str) -> str:
 
 def ball_bearing(case: Case) -> BallBearing:
     """The ball bearing of ``case`` (a check built for ball bearings refuses a roller one)."""
-    from runout.bearing import BallBearing
+    from runout.geometry.bearing import BallBearing
 
     if not isinstance(case.bearing, BallBearing):
         raise TypeError(f"{case.path}: the check needs a ball bearing")

@@ -77,7 +77,7 @@ def _harris_steel() -> Material:
 
 
 def _harris_209_curvature(race: str, which: int) -> float:
-    from runout.contact import ball_race_curvature
+    from runout.geometry.contact import ball_race_curvature
 
     h = HARRIS_209
     values = ball_race_curvature(
@@ -107,7 +107,7 @@ def harris_209_bearing() -> BallBearing:
 
 
 def _harris_209_approach_um(race: str) -> float:
-    from runout.contact import ball_race_contacts
+    from runout.geometry.contact import ball_race_contacts
 
     contacts = ball_race_contacts(harris_209_bearing())
     contact = contacts.inner if race == "inner" else contacts.outer
@@ -115,7 +115,7 @@ def _harris_209_approach_um(race: str) -> float:
 
 
 def _delta_star_rows(worst_row: bool) -> float:
-    from runout.contact import HARRIS_DELTA_STAR_TABLE, dimensionless_factors
+    from runout.geometry.contact import HARRIS_DELTA_STAR_TABLE, dimensionless_factors
 
     errors = []
     for f, ds in HARRIS_DELTA_STAR_TABLE[:-1]:
@@ -126,13 +126,13 @@ def _delta_star_rows(worst_row: bool) -> float:
 
 
 def _delta_star_083595() -> float:
-    from runout.contact import dimensionless_factors
+    from runout.geometry.contact import dimensionless_factors
 
     return float(dimensionless_factors(0.83595)[2])
 
 
 def _interpolated_stiffness_error() -> float:
-    from runout.contact import hertz_point_stiffness, stiffness_from_delta_star_table
+    from runout.geometry.contact import hertz_point_stiffness, stiffness_from_delta_star_table
 
     f = np.linspace(0.0, 0.9998527, 4001)
     exact = hertz_point_stiffness(1e3, f, 2.28e11)
@@ -145,7 +145,7 @@ def _steel_constant() -> float:
 
 
 def _inverse_constant() -> float:
-    from runout.contact import hertz_point_stiffness
+    from runout.geometry.contact import hertz_point_stiffness
 
     return float(hertz_point_stiffness(1.0, 0.0, _harris_steel().effective_modulus))
 
@@ -158,7 +158,7 @@ def _purohit_k_n_mm() -> float:
 
 
 def _hamrock_brewe(i: int) -> float:
-    from runout.contact import curvature_difference_from_ratio, ellipticity, hamrock_brewe
+    from runout.geometry.contact import curvature_difference_from_ratio, ellipticity, hamrock_brewe
 
     r = np.logspace(0.0, 2.0, 201)
     exact = ellipticity(curvature_difference_from_ratio(r))
@@ -169,7 +169,7 @@ def _hamrock_brewe(i: int) -> float:
 
 def _eq9_error() -> float:
     from runout import Material
-    from runout.contact import PointContact, ball_flat_contact_radius
+    from runout.geometry.contact import PointContact, ball_flat_contact_radius
 
     steel = Material()
     rb = 1e-3
@@ -184,7 +184,7 @@ def _eq9_error() -> float:
 
 def _ball_flat_um(which: str) -> float:
     from runout import Material
-    from runout.contact import PointContact, ball_flat_cap_displacement
+    from runout.geometry.contact import PointContact, ball_flat_cap_displacement
 
     steel = Material()
     if which == "cap":
@@ -194,7 +194,7 @@ def _ball_flat_um(which: str) -> float:
 
 
 def _palmgren() -> float:
-    from runout.contact import line_contact_load
+    from runout.geometry.contact import line_contact_load
 
     return float(line_contact_load(0.004 * MM, 15.0 * MM))
 

@@ -16,14 +16,14 @@ from runout.validation.cases import load, uses
 from runout.validation.core import Check, bind
 
 if TYPE_CHECKING:
-    from runout.case import Case
+    from runout.case.model import Case
 
 __all__ = ["INTRO", "checks", "cross_case", "cross_gap", "cross_lines"]
 
 
 def cross_case(ring: str, model: str) -> Case:
     """Tada's standard bearing with 1 nm of inner, outer and ball waviness, for ``model``."""
-    from runout.case import parse_case
+    from runout.case.model import parse_case
 
     wav = [
         {"part": "inner", "order": 9, "amplitude": 1e-9, "phase": math.radians(20)},

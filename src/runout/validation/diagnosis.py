@@ -1,4 +1,4 @@
-"""Diagnosis (:mod:`runout.diagnose`): seed 002's reading of a measurement, and the bias on a
+"""Diagnosis (:mod:`runout.diagnose.fit`): seed 002's reading of a measurement, and the bias on a
 record of the nonlinear 3-D model.
 
 Seed 002 ("Anderon vibration", the 608 of Tab. 1) computes band values from known part
@@ -42,15 +42,15 @@ unbiased to the linearisation error and the radial-spring variant reads the ring
 
 @functools.cache
 def _seed002() -> list[tuple[str, float, float, float, str]]:
-    # imported here: runout._diagnose_validation imports this package's published numbers
-    from runout._diagnose_validation import seed002_rows
+    # imported here: runout.validation.diagnosis_checks imports this package's published numbers
+    from runout.validation.diagnosis_checks import seed002_rows
 
     return seed002_rows()
 
 
 @functools.cache
 def _bias() -> list[tuple[str, float, float, float, str]]:
-    from runout._diagnose_validation import nonlinear_bias_rows
+    from runout.validation.diagnosis_checks import nonlinear_bias_rows
 
     return nonlinear_bias_rows(BIAS_AMPLITUDE)
 
@@ -62,7 +62,7 @@ def _seed002_ours(i: int) -> float:
 @functools.cache
 def _bias_contact_angle() -> float:
     """Operating contact angle of the bias record's bearing at its preload [rad]."""
-    from runout.summary import operating_contact_angle
+    from runout.report.summary import operating_contact_angle
 
     case = load("seed000_tada_table2.toml")
     return operating_contact_angle(case.bearing, case.operation)[0]

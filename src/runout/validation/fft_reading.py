@@ -19,7 +19,7 @@ class FftReading:
     """How a paper read its lines: a Hann FFT of a record, plus a constant line (its floor).
 
     ``read(f, line)`` is what the paper's spectrum shows at its bin nearest ``f`` for a true
-    line phasor ``line``: :func:`runout.spectrum.peak_bin_gain` × |line + floor|.
+    line phasor ``line``: :func:`runout.analysis.spectrum.peak_bin_gain` × |line + floor|.
 
     Attributes
     ----------
@@ -40,7 +40,7 @@ class FftReading:
     rows: int
 
     def read(self, frequency: float, line: complex) -> float:
-        from runout.spectrum import peak_bin_gain
+        from runout.analysis.spectrum import peak_bin_gain
 
         gain = float(peak_bin_gain(frequency, self.duration))
         return gain * abs(line + self.floor)
@@ -65,7 +65,7 @@ def identify_fft_reading(
     """
     from scipy.optimize import least_squares
 
-    from runout.spectrum import peak_bin_gain
+    from runout.analysis.spectrum import peak_bin_gain
 
     def floor_size(T: float, samples: int = 8192) -> np.ndarray:
         return floor_reading / peak_bin_gain(np.asarray(floor_frequency), T, samples=samples)

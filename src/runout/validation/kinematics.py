@@ -61,7 +61,7 @@ KIM_FREQUENCIES_HZ = {"cage": 50.0, "ball_spin": 335.0}
 def cwru_orders() -> dict[str, float]:
     """Our orders of the CWRU 6205 (inner ring turning at 1 Hz)."""
     from runout import BallBearing, Operation
-    from runout.kinematics import bearing_frequencies
+    from runout.geometry.kinematics import bearing_frequencies
 
     bearing = BallBearing(9, 0.3126 * INCH, 1.537 * INCH, contact_angle=0.0)
     return dict(bearing_frequencies(bearing, Operation("inner", speed=1.0)).orders())
@@ -71,14 +71,14 @@ def cwru_orders() -> dict[str, float]:
 def orders_608() -> dict[str, float]:
     """Our orders of the 608 of ``examples/seed002_608.toml`` (inner ring turning at 1 Hz)."""
     from runout import Operation
-    from runout.kinematics import bearing_frequencies
+    from runout.geometry.kinematics import bearing_frequencies
 
     case = load("seed002_608.toml")
     return dict(bearing_frequencies(case.bearing, Operation("inner", speed=1.0)).orders())
 
 
 def _kim_freq(which: str) -> float:
-    from runout.kinematics import bearing_frequencies
+    from runout.geometry.kinematics import bearing_frequencies
 
     case = load("seed001_kim_spindle.toml")
     f = bearing_frequencies(case.bearing, case.operation, math.radians(18.73))
@@ -87,7 +87,7 @@ def _kim_freq(which: str) -> float:
 
 def _seed003_bpf_error() -> float:
     from runout import Operation
-    from runout.kinematics import bearing_frequencies
+    from runout.geometry.kinematics import bearing_frequencies
 
     case = load("seed003_purohit.toml")
     b = case.bearing
@@ -98,7 +98,7 @@ def _seed003_bpf_error() -> float:
 
 def _seed004_cage_error() -> float:
     from runout import Operation
-    from runout.kinematics import bearing_frequencies
+    from runout.geometry.kinematics import bearing_frequencies
 
     b = nu209_bearing()
     f = bearing_frequencies(b, Operation("inner", speed=1.0))

@@ -19,7 +19,7 @@ from runout.validation.cases import uses, variant
 from runout.validation.core import Check, bind
 
 if TYPE_CHECKING:
-    from runout.case import Case
+    from runout.case.model import Case
 
 __all__ = [
     "INTRO",
@@ -84,7 +84,7 @@ def tada_case(
 
 def tada_frequencies(case: Case) -> dict[str, float]:
     """f_c, f_b, f_r and Tada's f_i = Z f_c, f_o = Z (f_r − f_c) [Hz] at the loaded angle."""
-    from runout.kinematics import ball_spin_frequency, cage_frequency
+    from runout.geometry.kinematics import ball_spin_frequency, cage_frequency
     from runout.models import quasi_static_3d as qs3
 
     alpha = qs3.setup(case).contact_angle
@@ -101,8 +101,8 @@ def tada_line_pp(case: Case, freqs: Sequence[float], disp: np.ndarray | None = N
     ``disp`` is the displacement (3, samples) [m] on ``qs3.time_grid_of(case)`` when already
     solved; otherwise the case is solved here.
     """
+    from runout.analysis.spectrum import extract_lines
     from runout.models import quasi_static_3d as qs3
-    from runout.spectrum import extract_lines
 
     t = qs3.time_grid_of(case)
     if disp is None:
@@ -223,8 +223,8 @@ TADA_FIG6 = [
 @functools.cache
 def _tada_fig6_cell(i: int) -> tuple[float, float, float]:
     """(major-axis error, minor-axis error (relative to the 20 nm unit), inclination [deg])."""
+    from runout.analysis.spectrum import extract_lines
     from runout.models import quasi_static_3d as qs3
-    from runout.spectrum import extract_lines
 
     a7, t7, a9, t9, _ = TADA_FIG6[i]
     wav = [
@@ -350,4 +350,4 @@ E = 208 GPa, ν = 0.3, P_d = 10 µm. **The paper gives no groove conformities; w
 (inner) / 0.53 (outer).** Inputs are peak-to-peak as in the paper (20 nm). Tada's eq. 1
 (waviness functions) is missing from the extraction; we derive it from the kinematics (module
 docstring). Line amplitudes are fitted at the predicted frequencies
-(`runout.spectrum.extract_lines`, no leakage). Tests: `tests/reference/test_seed000_tada.py`."""
+(`runout.analysis.spectrum.extract_lines`, no leakage). Tests: `tests/reference/test_seed000_tada.py`."""

@@ -21,8 +21,8 @@ from runout.validation.core import UM, Check, bind
 from runout.validation.fft_reading import FftReading, identify_fft_reading
 
 if TYPE_CHECKING:
-    from runout.case import Case
-    from runout.loading import AxialLoading
+    from runout.case.model import Case
+    from runout.geometry.loading import AxialLoading
 
 __all__ = [
     "EQUILIBRIUM_INTRO",
@@ -67,7 +67,7 @@ KIM_TABLE2 = {
 @functools.cache
 def kim_fitted_preload() -> float:
     """The axial load [N] that gives Table 2's 18.73° at Z = 10 (static solution)."""
-    from runout.loading import axial_load_for_contact_angle
+    from runout.geometry.loading import axial_load_for_contact_angle
 
     return float(
         axial_load_for_contact_angle(kim_bearing(elements=10), math.radians(KIM_TABLE2[10][0]))
@@ -77,7 +77,7 @@ def kim_fitted_preload() -> float:
 @functools.cache
 def kim_axial_loading(z: int) -> AxialLoading:
     """The axial-load solution with ``z`` balls at :func:`kim_fitted_preload`."""
-    from runout.loading import axial_loading
+    from runout.geometry.loading import axial_loading
 
     return axial_loading(kim_bearing(elements=z), kim_fitted_preload())
 
@@ -206,8 +206,8 @@ def kim_lines(name: str, z: int, balls: tuple[int, ...], form: bool = False) -> 
     waviness only (y is the same whirl, so x says it all). The phase is that of
     x = Σ A cos(2π f t + φ), t = 0 when ball 1 is at θ = 0 (seed 001 eq. 8).
     """
+    from runout.analysis.spectrum import extract_lines
     from runout.models import quasi_static_2d as qs2
-    from runout.spectrum import extract_lines
 
     case = _kim_case(name, z, balls, size=not form, form=form)
     st = qs2.setup(case)
@@ -406,10 +406,10 @@ properties of that reading explain all of them:
   true line it raises or lowers a reading by up to 1 nm depending on the arrangement's phase:
   this is why (1,4,7) reads high and (1,5,9) low;
 * **a Hann window on a finite record**: the f_c line falls between two bins and is read low
-  by the scalloping loss (`runout.spectrum.peak_bin_gain`). f_c moves with the contact angle
+  by the scalloping loss (`runout.analysis.spectrum.peak_bin_gain`). f_c moves with the contact angle
   of each Z (Table 2), so the loss changes with Z: this is the Z-trend of Table 4.
 
-Identification (`runout.reproduce.identify_fft_reading`): the floor's size is taken from the
+Identification (`runout.validation.reproduce.identify_fft_reading`): the floor's size is taken from the
 balanced rows (0.99 nm as read, i.e. {floor_pp:.3f} nm p-p before the window); the record
 length and the floor's phase are fitted by least squares to the {r.rows} other published f_c
 values of Table 4 and Tables 5–8: T = {r.duration:.4f} s (records one f_c period, ≈ 0.02 s,
@@ -431,7 +431,7 @@ alone does not reproduce their Z-trend."""
 @functools.cache
 def kim_equilibrium_angles(z: int, speed_factor: float = 1.0) -> tuple[float, float]:
     """(α_i, α_o) [°] of the Jones–Harris equilibrium, ``z`` balls, speed × ``speed_factor``."""
-    from runout.bearing import Operation
+    from runout.geometry.bearing import Operation
     from runout.models.equilibrium import solve_equilibrium
 
     def mutate(data: dict[str, Any]) -> None:
@@ -488,6 +488,6 @@ Case `examples/seed001_kim_equilibrium.toml` (the number of balls changed in cod
 60.68 N. At 7200 rpm the centrifugal force opens the inner angle and closes the outer one by a
 few thousandths of a degree, so Table 2 stays matched. Tests:
 `tests/reference/test_seed001_kim_equilibrium.py` (also: at speed → 0 the solution equals
-`runout.loading.axial_loading`; the stiffness matrix equals central differences of the
+`runout.geometry.loading.axial_loading`; the stiffness matrix equals central differences of the
 re-solved ring forces). The deflections keep the static gap to Table 2 (contact section): speed
 cannot explain it."""

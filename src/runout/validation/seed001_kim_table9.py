@@ -1,6 +1,6 @@
 """Seed 001 (Y.-C. Kim, S.-K. Choi, K.-C. Yoon, "Vibration analysis of ball bearings with ball
 geometric imperfections") Table 9: the f_c line of 1000 bearings with random ball diameters
-(``runout.study`` Monte Carlo), and the Rayleigh law it follows.
+(``runout.study.run`` Monte Carlo), and the Rayleigh law it follows.
 """
 
 from __future__ import annotations
@@ -24,8 +24,8 @@ STUDY_SAMPLES: int | None = None
 @functools.cache
 def kim_table9(sigma: float) -> np.ndarray:
     """f_c p-p [nm] of every bearing of the Monte Carlo at ball diameter σ."""
-    from runout.case import parse_case
-    from runout.study import run_study
+    from runout.case.model import parse_case
+    from runout.study.run import run_study
 
     case = load("seed001_kim_table9.toml")
     data = case.spec.model_dump(exclude_none=True)

@@ -21,9 +21,9 @@ from runout.validation.cases import ball_bearing, fixed_contact_angle, uses, var
 from runout.validation.core import UM, Check, bind
 
 if TYPE_CHECKING:
-    from runout.bearing import BallBearing, Operation
-    from runout.case import Case
-    from runout.imperfections import Imperfections
+    from runout.case.model import Case
+    from runout.geometry.bearing import BallBearing, Operation
+    from runout.geometry.imperfections import Imperfections
 
 __all__ = [
     "BANDS",
@@ -138,7 +138,11 @@ def ball_lines() -> tuple[np.ndarray, np.ndarray]:
 
 
 def _bands(lines: tuple[np.ndarray, np.ndarray], band: str, printed_edges: bool = False) -> float:
-    from runout.spectrum import ANDERON_BANDS, ANDERON_BANDS_PRINTED, anderon_bands_from_lines
+    from runout.analysis.spectrum import (
+        ANDERON_BANDS,
+        ANDERON_BANDS_PRINTED,
+        anderon_bands_from_lines,
+    )
 
     bands = ANDERON_BANDS_PRINTED if printed_edges else ANDERON_BANDS
     return float(anderon_bands_from_lines(*lines, bands)[band])
@@ -154,7 +158,7 @@ def _eccentricity(cos_alpha: bool) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _a_band_from_printed() -> float:
-    from runout.spectrum import ANDERON_BANDS
+    from runout.analysis.spectrum import ANDERON_BANDS
 
     octaves = {b.name: b.octaves for b in ANDERON_BANDS.bands}
     ms = sum(FIG12[b] ** 2 * octaves[b] for b in ("U", "R", "E"))
@@ -164,7 +168,7 @@ def _a_band_from_printed() -> float:
 @functools.cache
 def _outer_l_draws() -> tuple[float, float, float]:
     """5 %, 95 % of band L over 2000 random phase draws, and the share ≥ the published."""
-    from runout.spectrum import ANDERON_BANDS, anderon_bands_from_lines
+    from runout.analysis.spectrum import ANDERON_BANDS, anderon_bands_from_lines
 
     o, w1, w2 = _outer_pairs()
     rng = np.random.default_rng(7)
@@ -349,8 +353,12 @@ def anderon_band_values(
     contact angle; the DFT is the paper's route: :data:`DFT_REVOLUTIONS` revolutions of dx/dθ,
     :data:`DFT_SAMPLES_PER_REV` samples per revolution, rectangular window (eq. 42, eq. 1).
     """
+    from runout.analysis.spectrum import (
+        ANDERON_BANDS,
+        anderon_bands_from_lines,
+        anderon_bands_from_waveform,
+    )
     from runout.models import linear as lin
-    from runout.spectrum import ANDERON_BANDS, anderon_bands_from_lines, anderon_bands_from_waveform
 
     alpha = fixed_contact_angle(bearing)
     rates = lin.rates(bearing, operation, alpha)

@@ -62,7 +62,7 @@ def eq17_gap(clearance: float) -> float:
         raceway diameter is changed to give it).
     """
     from runout import RollerBearing
-    from runout.imperfections import Imperfections
+    from runout.geometry.imperfections import Imperfections
     from runout.models import roller_constraint as rc
 
     b = nu209_bearing()
@@ -86,7 +86,7 @@ def ellipse_gaps(semi_minor: float) -> tuple[float, float]:
     [m]; "exact" is the closest distance (a parallel curve), eq. 18–21 the paper's.
     """
     from runout import RollerBearing
-    from runout.imperfections import Imperfections
+    from runout.geometry.imperfections import Imperfections
     from runout.models import roller_constraint as rc
 
     b = nu209_bearing()

@@ -1,0 +1,844 @@
+"""Typed model-specific parts of a run result, and the ``[analysis]`` outputs added to it.
+
+Each model fills :attr:`runout.analysis.results.RunResult.details` with one of the frozen dataclasses
+here (:data:`ModelDetails`); :meth:`to_json` gives the model's own entries of the JSON contract
+(keys and order as documented per model in docs/models/) and :meth:`from_json` reads them
+back from a ``result.json``. :class:`Iso15242` and :class:`Verdict` are what
+:func:`runout.analysis.results.apply_analysis` adds for ``[analysis] bands = "iso15242"`` and
+``[analysis] limit``.
+
+Some details also hold in-memory data of the run that the JSON does not carry (the rigid
+model's contact solution, the dynamic model's sample rate): these are excluded from
+comparison and JSON, and are None in a result read back from a file.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any, Literal, TypeAlias
+
+if TYPE_CHECKING:
+    from runout.analysis.results import Runout
+    from runout.models.roller_constraint import Solution
+
+__all__ = [
+    "DETAILS_BY_MODEL",
+    "DynamicDetails",
+    "EquilibriumDetails",
+    "Iso492",
+    "Iso15242",
+    "Iso15242Band",
+    "LinearDetails",
+    "ModelDetails",
+    "QuasiStaticDetails",
+    "RadialStiffness",
+    "RingDisplacement",
+    "RollerContacts",
+    "RollerDetails",
+    "SpindleBearingResult",
+    "SpindleDetails",
+    "StiffnessMatrix",
+    "Verdict",
+    "details_from_json",
+]
+
+#: One row of a table of the JSON contract (attribution rows, the per-ball table).
+Row: TypeAlias = dict[str, Any]
+
+
+# --------------------------------------------------------------------------------------------
+# linear model (seed 002)
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class LinearDetails:
+    """What the linear model adds to its result.
+
+    Attributes
+    ----------
+    attribution : tuple of dict
+        Frequency attribution table of the bearing (:func:`runout.geometry.attribution.attribution_rows`:
+        part, factor, lobes, formula, order [-], frequency_hz [Hz]).
+    linear_variant : {"radial_spring", "force_balance"}
+        Contact model of the closed form.
+    explained_fraction : float
+        Share of the record's x, y variance the listed lines explain [-].
+    """
+
+    attribution: tuple[Row, ...]
+    linear_variant: str
+    explained_fraction: float
+
+    def to_json(self) -> dict[str, Any]:
+        """The linear model's JSON entries."""
+        return {
+            "attribution": [dict(row) for row in self.attribution],
+            "linear_variant": self.linear_variant,
+            "explained_fraction": self.explained_fraction,
+        }
+
+    @classmethod
+    def from_json(cls, doc: dict[str, Any]) -> LinearDetails:
+        """Read the entries of :meth:`to_json` from a result's JSON object."""
+        return cls(
+            attribution=tuple(dict(row) for row in doc["attribution"]),
+            linear_variant=str(doc["linear_variant"]),
+            explained_fraction=float(doc["explained_fraction"]),
+        )
+
+
+# --------------------------------------------------------------------------------------------
+# quasi-static models (seeds 000, 001)
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class QuasiStaticDetails:
+    """What the quasi-static models (2-D and 3-D) add to their result.
+
+    Attributes
+    ----------
+    planar : bool
+        True for ``quasi_static_2d`` (its approach is the initial one under the radial load),
+        False for ``quasi_static_3d`` (the approach under the axial preload).
+    approach_m : float
+        Reference elastic approach [m]: ``initial_approach_m`` (2-D) or
+        ``preload_approach_m`` (3-D) in the JSON.
+    unloaded_balls_max : int
+        Largest number of balls out of contact at one instant.
+    n_elements : int
+        Number of balls.
+    explained_fraction : float
+        Share of the record's variance the fitted lines explain [-].
+    """
+
+    planar: bool
+    approach_m: float
+    unloaded_balls_max: int
+    n_elements: int
+    explained_fraction: float
+
+    @property
+    def approach_key(self) -> str:
+        """JSON key of :attr:`approach_m`."""
+        return "initial_approach_m" if self.planar else "preload_approach_m"
+
+    def to_json(self) -> dict[str, Any]:
+        """The quasi-static model's JSON entries."""
+        return {
+            self.approach_key: self.approach_m,
+            "unloaded_balls_max": self.unloaded_balls_max,
+            "n_elements": self.n_elements,
+            "explained_fraction": self.explained_fraction,
+        }
+
+    @classmethod
+    def from_json(cls, doc: dict[str, Any], *, planar: bool) -> QuasiStaticDetails:
+        """Read the entries of :meth:`to_json` (``planar``: the 2-D model's)."""
+        key = "initial_approach_m" if planar else "preload_approach_m"
+        return cls(
+            planar=planar,
+            approach_m=float(doc[key]),
+            unloaded_balls_max=int(doc["unloaded_balls_max"]),
+            n_elements=int(doc["n_elements"]),
+            explained_fraction=float(doc["explained_fraction"]),
+        )
+
+
+# --------------------------------------------------------------------------------------------
+# Jones-Harris equilibrium (seed 001 §2.1)
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class RingDisplacement:
+    """Displacement of the inner ring relative to the outer ring at equilibrium.
+
+    Attributes
+    ----------
+    axial_m, x_m, y_m : float
+        Axial (from the contact on one groove flank) and radial displacements [m].
+    tilt_x_rad, tilt_y_rad : float
+        Tilts about x and y [rad].
+    """
+
+    axial_m: float
+    x_m: float
+    y_m: float
+    tilt_x_rad: float
+    tilt_y_rad: float
+
+    def to_json(self) -> dict[str, float]:
+        """JSON ``ring_displacement``."""
+        return {
+            "axial_m": self.axial_m,
+            "x_m": self.x_m,
+            "y_m": self.y_m,
+            "tilt_x_rad": self.tilt_x_rad,
+            "tilt_y_rad": self.tilt_y_rad,
+        }
+
+    def as_tuple(self) -> tuple[float, float, float, float, float]:
+        """(axial, x, y, tilt_x, tilt_y) [m, m, m, rad, rad]: the solver's order."""
+        return (self.axial_m, self.x_m, self.y_m, self.tilt_x_rad, self.tilt_y_rad)
+
+
+@dataclass(frozen=True)
+class StiffnessMatrix:
+    """The 5 x 5 bearing stiffness at equilibrium.
+
+    Attributes
+    ----------
+    dofs : tuple of str
+        Degrees of freedom, rows and columns: axial, x, y, tilt_x, tilt_y.
+    units : str
+        Units of the entries (rows F_a, F_x, F_y [N], M_x, M_y [N m]; columns per m or per rad).
+    matrix : tuple of tuple of float
+        The entries [N/m, N/rad, N m/m, N m/rad].
+    """
+
+    dofs: tuple[str, ...]
+    units: str
+    matrix: tuple[tuple[float, ...], ...]
+
+    def to_json(self) -> dict[str, Any]:
+        """JSON ``stiffness_matrix``."""
+        return {
+            "dofs": list(self.dofs),
+            "units": self.units,
+            "matrix": [list(row) for row in self.matrix],
+        }
+
+    @classmethod
+    def from_json(cls, doc: dict[str, Any]) -> StiffnessMatrix:
+        """Read :meth:`to_json` back."""
+        return cls(
+            dofs=tuple(str(d) for d in doc["dofs"]),
+            units=str(doc["units"]),
+            matrix=tuple(tuple(float(v) for v in row) for row in doc["matrix"]),
+        )
+
+
+@dataclass(frozen=True)
+class RadialStiffness:
+    """Radial 2 x 2 block of the bearing stiffness.
+
+    As :func:`runout.models.equilibrium.radial_stiffness` gives it.
+
+    Attributes
+    ----------
+    kxx_n_per_m, kxy_n_per_m, kyx_n_per_m, kyy_n_per_m : float
+        Entries [N/m].
+    speed_rpm : float
+        Speed of the rotating ring [rev/min].
+    """
+
+    kxx_n_per_m: float
+    kxy_n_per_m: float
+    kyx_n_per_m: float
+    kyy_n_per_m: float
+    speed_rpm: float
+
+    def to_json(self) -> dict[str, float]:
+        """JSON ``radial_stiffness``."""
+        return {
+            "kxx_n_per_m": self.kxx_n_per_m,
+            "kxy_n_per_m": self.kxy_n_per_m,
+            "kyx_n_per_m": self.kyx_n_per_m,
+            "kyy_n_per_m": self.kyy_n_per_m,
+            "speed_rpm": self.speed_rpm,
+        }
+
+
+@dataclass(frozen=True)
+class EquilibriumDetails:
+    """What the Jones-Harris equilibrium model adds to its result.
+
+    Attributes
+    ----------
+    race_control : {"outer", "inner", "none"}
+        Raceway control hypothesis.
+    ring_displacement : RingDisplacement
+        Ring displacements and tilts [m, rad].
+    stiffness_matrix : StiffnessMatrix
+        5 x 5 stiffness.
+    radial_stiffness : RadialStiffness
+        Its radial block [N/m].
+    inner_contact_angle_deg, outer_contact_angle_deg : tuple of float
+        Contact angle of each ball [deg].
+    balls : tuple of dict
+        Per-ball table (SI values, unit in the key; ``ball`` 1-based).
+    newton_iterations : int
+        Newton iterations of the ring solve.
+    """
+
+    race_control: str
+    ring_displacement: RingDisplacement
+    stiffness_matrix: StiffnessMatrix
+    radial_stiffness: RadialStiffness
+    inner_contact_angle_deg: tuple[float, ...]
+    outer_contact_angle_deg: tuple[float, ...]
+    balls: tuple[Row, ...]
+    newton_iterations: int
+
+    def to_json(self) -> dict[str, Any]:
+        """The equilibrium model's JSON entries."""
+        return {
+            "race_control": self.race_control,
+            "ring_displacement": self.ring_displacement.to_json(),
+            "stiffness_matrix": self.stiffness_matrix.to_json(),
+            "radial_stiffness": self.radial_stiffness.to_json(),
+            "inner_contact_angle_deg": list(self.inner_contact_angle_deg),
+            "outer_contact_angle_deg": list(self.outer_contact_angle_deg),
+            "balls": [dict(row) for row in self.balls],
+            "newton_iterations": self.newton_iterations,
+        }
+
+    @classmethod
+    def from_json(cls, doc: dict[str, Any]) -> EquilibriumDetails:
+        """Read the entries of :meth:`to_json` from a result's JSON object."""
+        return cls(
+            race_control=str(doc["race_control"]),
+            ring_displacement=RingDisplacement(**doc["ring_displacement"]),
+            stiffness_matrix=StiffnessMatrix.from_json(doc["stiffness_matrix"]),
+            radial_stiffness=RadialStiffness(**doc["radial_stiffness"]),
+            inner_contact_angle_deg=tuple(float(v) for v in doc["inner_contact_angle_deg"]),
+            outer_contact_angle_deg=tuple(float(v) for v in doc["outer_contact_angle_deg"]),
+            balls=tuple(dict(row) for row in doc["balls"]),
+            newton_iterations=int(doc["newton_iterations"]),
+        )
+
+
+# --------------------------------------------------------------------------------------------
+# dynamic model (seed 003)
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class DynamicDetails:
+    """What the dynamic model adds to its result.
+
+    Attributes
+    ----------
+    natural_frequencies_hz : tuple of float
+        Linearised natural frequencies at the static start, ascending [Hz].
+    ball_passage_hz : float
+        Ball passage frequency [Hz].
+    time_step_s : float
+        Newmark step [s].
+    transient_s : float
+        Length of the transient before the record [s].
+    transient_end : str
+        How the transient ended (``"settled"``, ``"stationary"``, ``"limit"``).
+    static_displacement_m : tuple of float
+        Static position the integration started from [m].
+    contact_law : str
+        Contact law of the balls.
+    contact_stiffness_n_per_m1_5 : float
+        Hertz constant [N/m^1.5].
+    preload_contact_angle_deg : float
+        Contact angle under the preload [deg].
+    axial_dof : bool
+        True when the rotor moves axially (3 degrees of freedom).
+    min_loaded_balls : int
+        Fewest balls in contact at one instant.
+    solver_resolution_m : float
+        Smallest p-p the solver resolves [m].
+    explained_fraction : float
+        Share of the record's variance the fitted lines explain [-].
+    mean_axial_displacement_m : float or None
+        Mean axial displacement from the preloaded position [m] (with ``axial_dof`` only).
+    sample_rate_hz : float or None
+        Samples per second of the record [Hz] (not in the JSON; None when read back: the
+        record's spacing is used).
+    """
+
+    natural_frequencies_hz: tuple[float, ...]
+    ball_passage_hz: float
+    time_step_s: float
+    transient_s: float
+    transient_end: str
+    static_displacement_m: tuple[float, ...]
+    contact_law: str
+    contact_stiffness_n_per_m1_5: float
+    preload_contact_angle_deg: float
+    axial_dof: bool
+    min_loaded_balls: int
+    solver_resolution_m: float
+    explained_fraction: float
+    mean_axial_displacement_m: float | None = None
+    sample_rate_hz: float | None = field(default=None, compare=False, repr=False)
+
+    def to_json(self) -> dict[str, Any]:
+        """The dynamic model's JSON entries."""
+        out: dict[str, Any] = {
+            "natural_frequencies_hz": list(self.natural_frequencies_hz),
+            "ball_passage_hz": self.ball_passage_hz,
+            "time_step_s": self.time_step_s,
+            "transient_s": self.transient_s,
+            "transient_end": self.transient_end,
+            "static_displacement_m": list(self.static_displacement_m),
+            "contact_law": self.contact_law,
+            "contact_stiffness_n_per_m1_5": self.contact_stiffness_n_per_m1_5,
+            "preload_contact_angle_deg": self.preload_contact_angle_deg,
+            "axial_dof": self.axial_dof,
+            "min_loaded_balls": self.min_loaded_balls,
+            "solver_resolution_m": self.solver_resolution_m,
+            "explained_fraction": self.explained_fraction,
+        }
+        if self.mean_axial_displacement_m is not None:
+            out["mean_axial_displacement_m"] = self.mean_axial_displacement_m
+        return out
+
+    @classmethod
+    def from_json(cls, doc: dict[str, Any]) -> DynamicDetails:
+        """Read the entries of :meth:`to_json` from a result's JSON object."""
+        mean_axial = doc.get("mean_axial_displacement_m")
+        return cls(
+            natural_frequencies_hz=tuple(float(v) for v in doc["natural_frequencies_hz"]),
+            ball_passage_hz=float(doc["ball_passage_hz"]),
+            time_step_s=float(doc["time_step_s"]),
+            transient_s=float(doc["transient_s"]),
+            transient_end=str(doc["transient_end"]),
+            static_displacement_m=tuple(float(v) for v in doc["static_displacement_m"]),
+            contact_law=str(doc["contact_law"]),
+            contact_stiffness_n_per_m1_5=float(doc["contact_stiffness_n_per_m1_5"]),
+            preload_contact_angle_deg=float(doc["preload_contact_angle_deg"]),
+            axial_dof=bool(doc["axial_dof"]),
+            min_loaded_balls=int(doc["min_loaded_balls"]),
+            solver_resolution_m=float(doc["solver_resolution_m"]),
+            explained_fraction=float(doc["explained_fraction"]),
+            mean_axial_displacement_m=None if mean_axial is None else float(mean_axial),
+        )
+
+
+# --------------------------------------------------------------------------------------------
+# rigid constraint model (seed 004)
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class RollerContacts:
+    """Which rollers held the ring over the record.
+
+    Attributes
+    ----------
+    rollers_touched : tuple of int
+        Rollers (1-based) in contact at some angle.
+    pairs : tuple of (int, int)
+        Distinct pairs of rollers holding the ring (1-based).
+    pair_counts : tuple of int
+        Angles at which each pair held it.
+    max_touching : int
+        Most rollers touching at one angle.
+    fraction_three_or_more : float
+        Share of the angles with three or more rollers touching [-].
+    """
+
+    rollers_touched: tuple[int, ...]
+    pairs: tuple[tuple[int, int], ...]
+    pair_counts: tuple[int, ...]
+    max_touching: int
+    fraction_three_or_more: float
+
+    def to_json(self) -> dict[str, Any]:
+        """JSON ``contacts``."""
+        return {
+            "rollers_touched": list(self.rollers_touched),
+            "pairs": [list(p) for p in self.pairs],
+            "pair_counts": list(self.pair_counts),
+            "max_touching": self.max_touching,
+            "fraction_three_or_more": self.fraction_three_or_more,
+        }
+
+    @classmethod
+    def from_json(cls, doc: dict[str, Any]) -> RollerContacts:
+        """Read :meth:`to_json` back."""
+        return cls(
+            rollers_touched=tuple(int(j) for j in doc["rollers_touched"]),
+            pairs=tuple((int(a), int(b)) for a, b in doc["pairs"]),
+            pair_counts=tuple(int(c) for c in doc["pair_counts"]),
+            max_touching=int(doc["max_touching"]),
+            fraction_three_or_more=float(doc["fraction_three_or_more"]),
+        )
+
+
+@dataclass(frozen=True)
+class Iso492:
+    """The ISO 492 name of the rigid model's radial runout.
+
+    Attributes
+    ----------
+    quantity : {"Kia", "Kea"}
+        Radial runout of the assembled bearing's inner (Kia) or outer (Kea) ring.
+    radial_runout_m : float
+        Its value [m].
+    """
+
+    quantity: str
+    radial_runout_m: float
+
+    def to_json(self) -> dict[str, Any]:
+        """JSON ``iso492``."""
+        return {"quantity": self.quantity, "radial_runout_m": self.radial_runout_m}
+
+
+@dataclass(frozen=True)
+class RollerDetails:
+    """What the rigid constraint model (``roller_constraint``) adds to its result.
+
+    Attributes
+    ----------
+    horizontal_pp_m : float
+        Peak-to-peak across the measuring load [m].
+    explained_fraction : float
+        Share of the record's variance the fitted lines explain [-].
+    contacts : RollerContacts
+        Which rollers held the ring.
+    rotating_ring : {"inner", "outer"}
+        The turning (and loaded) ring.
+    radial_clearance_m : float
+        Diametral clearance [m].
+    iso492 : Iso492
+        ISO 492 name and value of the radial runout.
+    solution : Solution or None
+        The contact solution at every angle (not in the JSON: it writes ``contacts.csv``,
+        ``order_sweep.csv`` and the model's figures); None when read back.
+    """
+
+    horizontal_pp_m: float
+    explained_fraction: float
+    contacts: RollerContacts
+    rotating_ring: str
+    radial_clearance_m: float
+    iso492: Iso492
+    solution: Solution | None = field(default=None, compare=False, repr=False)
+
+    def to_json(self) -> dict[str, Any]:
+        """The rigid model's JSON entries."""
+        return {
+            "horizontal_pp_m": self.horizontal_pp_m,
+            "explained_fraction": self.explained_fraction,
+            "contacts": self.contacts.to_json(),
+            "rotating_ring": self.rotating_ring,
+            "radial_clearance_m": self.radial_clearance_m,
+            "iso492": self.iso492.to_json(),
+        }
+
+    @classmethod
+    def from_json(cls, doc: dict[str, Any]) -> RollerDetails:
+        """Read the entries of :meth:`to_json` from a result's JSON object."""
+        return cls(
+            horizontal_pp_m=float(doc["horizontal_pp_m"]),
+            explained_fraction=float(doc["explained_fraction"]),
+            contacts=RollerContacts.from_json(doc["contacts"]),
+            rotating_ring=str(doc["rotating_ring"]),
+            radial_clearance_m=float(doc["radial_clearance_m"]),
+            iso492=Iso492(str(doc["iso492"]["quantity"]), float(doc["iso492"]["radial_runout_m"])),
+        )
+
+
+#: The details of any model.
+# --------------------------------------------------------------------------------------------
+# spindle (a rigid shaft on several bearings)
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class SpindleBearingResult:
+    """One bearing of a spindle run (a row of the JSON ``bearings``).
+
+    Attributes
+    ----------
+    name : str
+    position_m : float
+        Axial coordinate of its ball-set plane [m].
+    contact_angle_deg : float
+        Its contact angle [deg].
+    thrust : {"+z", "-z"}
+        Direction of the axial load on the shaft it carries (the arrangement).
+    preload_n : float
+        Preload it carries [N].
+    preload_approach_m : float
+        Elastic approach along the contact line under that preload [m].
+    pressure_centre_m : float
+        Axial coordinate where its contact lines cross the axis [m].
+    runout : Runout
+        The shaft's runout at its plane (relative to the housing) [m].
+    mean_displacement_m : tuple of float
+        Mean (x, y, z) of the shaft at its plane [m].
+    """
+
+    name: str
+    position_m: float
+    contact_angle_deg: float
+    thrust: str
+    preload_n: float
+    preload_approach_m: float
+    pressure_centre_m: float
+    runout: Runout
+    mean_displacement_m: tuple[float, float, float]
+
+    def to_json(self) -> dict[str, Any]:
+        """JSON row of ``bearings``."""
+        return {
+            "name": self.name,
+            "position_m": self.position_m,
+            "contact_angle_deg": self.contact_angle_deg,
+            "thrust": self.thrust,
+            "preload_n": self.preload_n,
+            "preload_approach_m": self.preload_approach_m,
+            "pressure_centre_m": self.pressure_centre_m,
+            "runout": self.runout.to_json(),
+            "mean_displacement_m": list(self.mean_displacement_m),
+        }
+
+    @classmethod
+    def from_json(cls, doc: dict[str, Any]) -> SpindleBearingResult:
+        """Read :meth:`to_json` back."""
+        from runout.analysis.results import Runout
+
+        x, y, z = (float(v) for v in doc["mean_displacement_m"])
+        return cls(
+            name=str(doc["name"]),
+            position_m=float(doc["position_m"]),
+            contact_angle_deg=float(doc["contact_angle_deg"]),
+            thrust=str(doc["thrust"]),
+            preload_n=float(doc["preload_n"]),
+            preload_approach_m=float(doc["preload_approach_m"]),
+            pressure_centre_m=float(doc["pressure_centre_m"]),
+            runout=Runout(**{k: float(v) for k, v in doc["runout"].items()}),
+            mean_displacement_m=(x, y, z),
+        )
+
+
+@dataclass(frozen=True)
+class SpindleDetails:
+    """What the spindle model adds to its result (the nose's record is the result's own).
+
+    Attributes
+    ----------
+    arrangement : {"DB", "DF", "DT"}
+    nose_position_m : float
+        Axial coordinate of the reported runout [m].
+    tilt_pp_rad : tuple of float
+        Peak-to-peak of the shaft's tilts θx, θy [rad].
+    static_position : tuple of float
+        The shaft's position without imperfections (x, y, z [m], θx, θy [rad]) at the axial
+        origin, from its preload reference.
+    bearings : tuple of SpindleBearingResult
+    stiffness_matrix : StiffnessMatrix
+        5×5 stiffness of the shaft at the nose (x, y, z, tilt_x, tilt_y).
+    unloaded_balls_max : int
+        Largest number of balls (all bearings) out of contact at one instant.
+    n_elements : int
+        Balls of all bearings.
+    explained_fraction : float
+        Share of the nose record's variance the fitted lines explain [-].
+    """
+
+    arrangement: str
+    nose_position_m: float
+    tilt_pp_rad: tuple[float, float]
+    static_position: tuple[float, ...]
+    bearings: tuple[SpindleBearingResult, ...]
+    stiffness_matrix: StiffnessMatrix
+    unloaded_balls_max: int
+    n_elements: int
+    explained_fraction: float
+
+    def to_json(self) -> dict[str, Any]:
+        """The spindle model's JSON entries."""
+        return {
+            "arrangement": self.arrangement,
+            "nose_position_m": self.nose_position_m,
+            "tilt_pp_rad": {"x": self.tilt_pp_rad[0], "y": self.tilt_pp_rad[1]},
+            "static_position": list(self.static_position),
+            "bearings": [b.to_json() for b in self.bearings],
+            "stiffness_matrix": self.stiffness_matrix.to_json(),
+            "unloaded_balls_max": self.unloaded_balls_max,
+            "n_elements": self.n_elements,
+            "explained_fraction": self.explained_fraction,
+        }
+
+    @classmethod
+    def from_json(cls, doc: dict[str, Any]) -> SpindleDetails:
+        """Read :meth:`to_json` back."""
+        tilt = doc["tilt_pp_rad"]
+        return cls(
+            arrangement=str(doc["arrangement"]),
+            nose_position_m=float(doc["nose_position_m"]),
+            tilt_pp_rad=(float(tilt["x"]), float(tilt["y"])),
+            static_position=tuple(float(v) for v in doc["static_position"]),
+            bearings=tuple(SpindleBearingResult.from_json(b) for b in doc["bearings"]),
+            stiffness_matrix=StiffnessMatrix.from_json(doc["stiffness_matrix"]),
+            unloaded_balls_max=int(doc["unloaded_balls_max"]),
+            n_elements=int(doc["n_elements"]),
+            explained_fraction=float(doc["explained_fraction"]),
+        )
+
+
+ModelDetails: TypeAlias = (
+    LinearDetails
+    | QuasiStaticDetails
+    | EquilibriumDetails
+    | DynamicDetails
+    | RollerDetails
+    | SpindleDetails
+)
+
+
+def details_from_json(model: str, doc: dict[str, Any]) -> ModelDetails | None:
+    """The details of ``model`` read from a result's JSON object (None for an unknown model).
+
+    Parameters
+    ----------
+    model : str
+        Model id (the JSON's ``model``).
+    doc : dict
+        The result's JSON object.
+    """
+    if model == "linear":
+        return LinearDetails.from_json(doc)
+    if model in ("quasi_static_2d", "quasi_static_3d"):
+        return QuasiStaticDetails.from_json(doc, planar=model == "quasi_static_2d")
+    if model == "equilibrium":
+        return EquilibriumDetails.from_json(doc)
+    if model == "dynamic":
+        return DynamicDetails.from_json(doc)
+    if model == "roller_constraint":
+        return RollerDetails.from_json(doc)
+    if model == "spindle":
+        return SpindleDetails.from_json(doc)
+    return None
+
+
+#: Model id -> its details class.
+DETAILS_BY_MODEL: dict[str, type[ModelDetails]] = {
+    "linear": LinearDetails,
+    "quasi_static_2d": QuasiStaticDetails,
+    "quasi_static_3d": QuasiStaticDetails,
+    "equilibrium": EquilibriumDetails,
+    "dynamic": DynamicDetails,
+    "roller_constraint": RollerDetails,
+    "spindle": SpindleDetails,
+}
+
+
+# --------------------------------------------------------------------------------------------
+# [analysis] outputs
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class Iso15242Band:
+    """One ISO 15242-1 band.
+
+    Attributes
+    ----------
+    low_hz, high_hz : float
+        Band edges [Hz].
+    rms_um_per_s : float
+        RMS velocity in the band [um/s].
+    """
+
+    low_hz: float
+    high_hz: float
+    rms_um_per_s: float
+
+    def to_json(self) -> dict[str, float]:
+        """JSON band object."""
+        return {"low_hz": self.low_hz, "high_hz": self.high_hz, "rms_um_per_s": self.rms_um_per_s}
+
+
+@dataclass(frozen=True)
+class Iso15242:
+    """RMS velocity per ISO 15242-1 band, from the lines along the measuring direction.
+
+    Attributes
+    ----------
+    unit : str
+        Unit of the band values (``"um/s"``).
+    speed_rpm : float
+        Speed of the rotating ring [rev/min] (the band edges scale with it).
+    direction : {"x", "y", "measuring"}
+        Measuring direction by name, ``"measuring"`` when along no axis.
+    measuring_direction : tuple of float
+        Unit vector of the measuring direction (x, y).
+    bands : dict
+        Band name (L, M, H) -> :class:`Iso15242Band`.
+    """
+
+    unit: str
+    speed_rpm: float
+    direction: str
+    measuring_direction: tuple[float, float]
+    bands: dict[str, Iso15242Band]
+
+    def to_json(self) -> dict[str, Any]:
+        """JSON ``iso15242``."""
+        return {
+            "unit": self.unit,
+            "speed_rpm": self.speed_rpm,
+            "direction": self.direction,
+            "measuring_direction": list(self.measuring_direction),
+            "bands": {name: band.to_json() for name, band in self.bands.items()},
+        }
+
+    @classmethod
+    def from_json(cls, doc: dict[str, Any]) -> Iso15242:
+        """Read :meth:`to_json` back."""
+        u = doc["measuring_direction"]
+        return cls(
+            unit=str(doc["unit"]),
+            speed_rpm=float(doc["speed_rpm"]),
+            direction=str(doc["direction"]),
+            measuring_direction=(float(u[0]), float(u[1])),
+            bands={
+                str(name): Iso15242Band(
+                    float(b["low_hz"]), float(b["high_hz"]), float(b["rms_um_per_s"])
+                )
+                for name, b in doc["bands"].items()
+            },
+        )
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """A runout figure or band value against the case's ``[analysis] limit``.
+
+    Attributes
+    ----------
+    quantity : str
+        ``radial_pp``, ``rro_pp``, ``nrro_pp``, ``axial_pp`` or ``iso15242.<band>``.
+    limit : float
+        The limit [m] for a p-p, [um/s] for a band.
+    value : float
+        The result's value, same unit.
+    passed : bool
+        True when ``value <= limit``.
+    unit : {"m", "um/s"}
+        Unit of ``limit`` and ``value`` (JSON ``limit_m`` / ``limit_um_per_s``).
+    """
+
+    quantity: str
+    limit: float
+    value: float
+    passed: bool
+    unit: Literal["m", "um/s"] = "m"
+
+    def to_json(self) -> dict[str, Any]:
+        """JSON ``verdict``."""
+        suffix = "m" if self.unit == "m" else "um_per_s"
+        return {
+            "quantity": self.quantity,
+            f"limit_{suffix}": self.limit,
+            f"value_{suffix}": self.value,
+            "pass": self.passed,
+        }
+
+    @classmethod
+    def from_json(cls, doc: dict[str, Any]) -> Verdict:
+        """Read :meth:`to_json` back."""
+        if "limit_m" in doc:
+            return cls(
+                str(doc["quantity"]),
+                float(doc["limit_m"]),
+                float(doc["value_m"]),
+                bool(doc["pass"]),
+                "m",
+            )
+        return cls(
+            str(doc["quantity"]),
+            float(doc["limit_um_per_s"]),
+            float(doc["value_um_per_s"]),
+            bool(doc["pass"]),
+            "um/s",
+        )

@@ -1,0 +1,656 @@
+"""Limits as policy: how much memory and time a case may ask for, checked before any work.
+
+Every size a case file can set (orders, numbers of harmonics, samples, revolutions, time steps,
+study samples, sweep points, file sizes) is bounded here, in one place. A bound is either
+*fixed* (a case file or a quantity string longer than any a person types, an order beyond any
+a contact can feel) or *derived*: the memory and the time a run would take are estimated from
+the case before anything is allocated, and a case whose estimate exceeds the budget is refused
+with one line that says the estimate and the key to change.
+
+The budget
+----------
+``max_memory`` (default :data:`DEFAULT_MAX_MEMORY`, 2 GiB of the large arrays) and
+``max_time`` (default :data:`DEFAULT_MAX_TIME`, 2 min of estimated computing) come, first
+found first used, from
+
+1. the case's own ``[analysis] max_memory = "8 GiB"`` and ``max_time = "1 h"``;
+2. the environment variables ``RUNOUT_MAX_MEMORY`` and ``RUNOUT_MAX_TIME`` (same syntax);
+3. the defaults.
+
+A budget above the machine's physical memory is refused. The estimates are deliberately
+simple (measured costs per instant, contact and harmonic on a 2-core x86-64 machine; see the
+``COST_*`` constants) and meant to be right within a factor of a few: they separate a run of
+minutes from one of days, not seconds from seconds.
+
+Profiles (``[[profile]] file``) must be regular files no larger than :func:`max_profile_bytes`
+and lie inside the case file's directory; ``RUNOUT_PROFILE_DIRS`` (directories separated by
+``os.pathsep``) names further directories profiles may be read from. A measured record
+(``runout diagnose --record``) may be no larger than :func:`max_record_bytes`.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from collections.abc import Mapping
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from runout.base.errors import GeometryError
+
+__all__ = [
+    "DEFAULT_MAX_MEMORY",
+    "DEFAULT_MAX_TIME",
+    "ENV_MAX_MEMORY",
+    "ENV_MAX_TIME",
+    "ENV_PROFILE_DIRS",
+    "MAX_CASE_FILE_BYTES",
+    "MAX_ELEMENTS",
+    "MAX_ENTRIES",
+    "MAX_ORDER",
+    "MAX_TOML_DEPTH",
+    "Budget",
+    "Estimate",
+    "LimitError",
+    "budget",
+    "check",
+    "format_bytes",
+    "format_seconds",
+    "harmonics_memory",
+    "max_profile_bytes",
+    "max_record_bytes",
+    "profile_allowed",
+]
+
+KiB = 1024
+MiB = 1024 * KiB
+GiB = 1024 * MiB
+
+#: Default budget of the large arrays of one run or study [bytes].
+DEFAULT_MAX_MEMORY = 2 * GiB
+#: Default budget of estimated computing time of one run or study [s].
+DEFAULT_MAX_TIME = 120.0
+ENV_MAX_MEMORY = "RUNOUT_MAX_MEMORY"
+ENV_MAX_TIME = "RUNOUT_MAX_TIME"
+ENV_PROFILE_DIRS = "RUNOUT_PROFILE_DIRS"
+
+#: Largest case file read [bytes]: a case is text a person writes; 4 MiB holds ~100 000 lines.
+MAX_CASE_FILE_BYTES = 4 * MiB
+#: Deepest nesting of TOML tables and arrays in a case file (the schema needs 4).
+MAX_TOML_DEPTH = 32
+#: Largest waviness order. A wave of 10^6 lobes is 3 µm long even on a 1 m raceway, shorter
+#: than the contact ellipse of any loaded ball or roller, which filters it out.
+MAX_ORDER = 1_000_000
+#: Largest number of histogram bins of a Monte Carlo summary.
+MAX_BINS = 10_000
+#: Most entries of an array table ([[waviness]], [[waviness_spectrum]], [[profile]]).
+MAX_ENTRIES = 1000
+#: Most rolling elements. The largest slewing bearings have a few hundred; every element is an
+#: object of its own while the case is built, so 10 000 keep that under a second.
+MAX_ELEMENTS = 10_000
+
+# --- measured costs (2-core x86-64, numba kernels compiled) ---------------------------------
+#: Seconds per instant × contact × harmonic of the quasi-static solves (deviations + Newton).
+COST_QUASI_STATIC = 6e-9
+#: Seconds per instant × spectral line of the line fit and the RRO/NRRO split.
+COST_LINE_FIT = 2e-8
+#: Seconds per instant × spectral line of the linear model's synthesis.
+COST_LINEAR = 2e-9
+#: Seconds per instant × element × harmonic of the rigid roller constraint (vertex search).
+COST_ROLLER = 3e-7
+#: Seconds per Newmark step and element of the dynamic model (contact forces, Newton).
+COST_DYNAMIC_ELEMENT = 1e-7
+#: Seconds per Newmark step × contact × harmonic of the dynamic model (the deviations).
+COST_DYNAMIC_HARMONIC = 1.5e-8
+#: Seconds of fixed cost of one run (set-up, result assembly).
+COST_RUN = 5e-3
+#: Bytes per instant of a quasi-static run at its peak: the record (time, the (3, n)
+#: displacement: 32 B, the unloaded-ball counts: 2 B; the deviations are evaluated in the
+#: kernel, without (n, Z) arrays) and the decomposition's arrays (the residual, the window and
+#: the spectrum of one direction, ~56 B). Measured: 90 B by tracemalloc, 97 B of RSS growth
+#: at 2^22 instants (Fig. 7 case of seed 000); doubled.
+BYTES_QUASI_STATIC = 192.0
+#: Bytes per instant and fitted line of the line fit (3 directions x 16 B per block of 256
+#: instants: 0.19 B measured), doubled.
+BYTES_LINE_INSTANT = 0.5
+#: Largest angle the quasi-static models evaluate, 2π x revolutions x the highest order x the
+#: balls' spin ratio d_m / (2 D) (a ball's harmonics turn with its spin) [rad]:
+#: a double holds an angle of 1e9 rad to 1e-7 rad, so beyond it the phases of the record, not
+#: the bearing, set the smallest lines (a perfect bearing over 1e9 revolutions shows 1e-13 m
+#: of round-off runout).
+MAX_PHASE_ANGLE = 1e9
+#: Bytes per stored harmonic (orders, amplitudes, phases and the temporaries of normalising,
+#: packing and per-element copies).
+BYTES_PER_HARMONIC = 160
+#: Bytes per profile byte while a profile file is read (lines, floats, arrays).
+BYTES_PER_PROFILE_BYTE = 24
+#: Memory of a diagnosis per byte of its record CSV: the parsed columns, the displacement and
+#: residual arrays of the fit and their temporaries (measured: 226 MiB of peak memory for a
+#: 39 MB file of 10^6 rows of x and y).
+RECORD_BYTES_PER_FILE_BYTE = 6.0
+
+
+class LimitError(GeometryError):
+    """A case that would need more memory or time than the budget, or a size beyond a bound.
+
+    Parameters
+    ----------
+    key : str
+        The case key to change (``"analysis.samples"``).
+    message : str
+        The estimate and what to change, ending with how to raise the budget when it applies.
+    """
+
+
+@dataclass(frozen=True)
+class Budget:
+    """Memory [bytes] and time [s] one run (or one study) may use, and where they came from."""
+
+    memory: float = float(DEFAULT_MAX_MEMORY)
+    time: float = DEFAULT_MAX_TIME
+    memory_from: str = "default"
+    time_from: str = "default"
+
+    def raise_hint(self, what: str) -> str:
+        """How to raise the budget of ``what`` ("memory" or "time")."""
+        if what == "memory":
+            return (
+                f"or raise the limit ({format_bytes(self.memory)}, {self.memory_from}) with "
+                f'[analysis] max_memory = "8 GiB" or {ENV_MAX_MEMORY}'
+            )
+        return (
+            f"or raise the limit ({format_seconds(self.time)}, {self.time_from}) with "
+            f'[analysis] max_time = "1 h" or {ENV_MAX_TIME}'
+        )
+
+
+@dataclass(frozen=True)
+class Estimate:
+    """What one run or study is expected to need.
+
+    Attributes
+    ----------
+    memory : float
+        Peak size of the large arrays [bytes].
+    seconds : float
+        Computing time [s].
+    memory_key, time_key : str
+        Case key that sizes each the most (the one to change).
+    memory_what, time_what : str
+        The sizes behind each figure, in words ("16384 instants x 7 balls").
+    """
+
+    memory: float
+    seconds: float
+    memory_key: str
+    time_key: str
+    memory_what: str
+    time_what: str
+
+
+def physical_memory() -> float | None:
+    """Installed memory of this machine [bytes], None when the system does not say."""
+    try:
+        return float(os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES"))
+    except (AttributeError, OSError, ValueError):
+        return None
+
+
+def _from_env(name: str, kind: str, environ: Mapping[str, str]) -> float | None:
+    from runout.base.units import UnitError, to_si
+
+    text = environ.get(name)
+    if text is None or not text.strip():
+        return None
+    try:
+        value = to_si(text.strip(), kind)
+    except UnitError as exc:
+        raise LimitError(name, f"environment variable: {exc}") from None
+    if not value > 0.0:
+        raise LimitError(name, f"environment variable: must be > 0, got {text!r}")
+    return value
+
+
+def budget(
+    max_memory: float | None = None,
+    max_time: float | None = None,
+    environ: Mapping[str, str] | None = None,
+) -> Budget:
+    """The budget of one run: the case's own keys, else the environment, else the defaults.
+
+    Parameters
+    ----------
+    max_memory : float or None
+        ``[analysis] max_memory`` [bytes].
+    max_time : float or None
+        ``[analysis] max_time`` [s].
+    environ : mapping, optional
+        Environment (default ``os.environ``).
+
+    Raises
+    ------
+    LimitError
+        An environment variable that is not a positive amount, or a memory budget above the
+        machine's physical memory.
+    """
+    env = os.environ if environ is None else environ
+    memory, memory_from = float(DEFAULT_MAX_MEMORY), "default"
+    seconds, time_from = DEFAULT_MAX_TIME, "default"
+    env_memory = _from_env(ENV_MAX_MEMORY, "memory", env)
+    env_time = _from_env(ENV_MAX_TIME, "time", env)
+    if max_memory is not None:
+        memory, memory_from = max_memory, "analysis.max_memory"
+    elif env_memory is not None:
+        memory, memory_from = env_memory, ENV_MAX_MEMORY
+    if max_time is not None:
+        seconds, time_from = max_time, "analysis.max_time"
+    elif env_time is not None:
+        seconds, time_from = env_time, ENV_MAX_TIME
+    installed = physical_memory()
+    if installed is not None and memory > installed:
+        key = "analysis.max_memory" if memory_from == "analysis.max_memory" else memory_from
+        raise LimitError(
+            key,
+            f"{format_bytes(memory)} is more than this machine's memory "
+            f"({format_bytes(installed)})",
+        )
+    return Budget(memory, seconds, memory_from, time_from)
+
+
+def case_budget(case_or_spec: Any) -> Budget:
+    """:func:`budget` of a case (or its validated spec) from its ``[analysis]`` keys."""
+    spec = getattr(case_or_spec, "spec", case_or_spec)
+    analysis = getattr(spec, "analysis", None)
+    return budget(
+        getattr(analysis, "max_memory", None),
+        getattr(analysis, "max_time", None),
+    )
+
+
+def check(estimate: Estimate, limits: Budget) -> None:
+    """Refuse an estimate beyond the budget, naming the key to change.
+
+    Raises
+    ------
+    LimitError
+        Memory first (it fails hard), then time.
+    """
+    if not estimate.memory <= limits.memory:
+        raise LimitError(
+            estimate.memory_key,
+            f"would need about {format_bytes(estimate.memory)} of memory "
+            f"({estimate.memory_what}); lower {estimate.memory_key} "
+            f"{limits.raise_hint('memory')}",
+        )
+    if not estimate.seconds <= limits.time:
+        raise LimitError(
+            estimate.time_key,
+            f"would take about {format_seconds(estimate.seconds)} ({estimate.time_what}); "
+            f"lower {estimate.time_key} {limits.raise_hint('time')}",
+        )
+
+
+def format_bytes(n: float) -> str:
+    """``1.5 GiB``-style size of ``n`` bytes."""
+    if not math.isfinite(n):
+        return "an unbounded amount"
+    for unit, size in (("EiB", 1024.0**6), ("PiB", 1024.0**5), ("TiB", 1024.0**4)):
+        if n >= size:
+            return f"{n / size:.3g} {unit}"
+    for unit, size in (("GiB", GiB), ("MiB", MiB), ("KiB", KiB)):
+        if n >= size:
+            return f"{n / size:.3g} {unit}"
+    return f"{n:.0f} B"
+
+
+def format_seconds(s: float) -> str:
+    """``2.5 h``-style duration of ``s`` seconds."""
+    if not math.isfinite(s):
+        return "forever"
+    year = 365.25 * 86400.0
+    for unit, size in (("years", year), ("days", 86400.0), ("h", 3600.0), ("min", 60.0)):
+        if s >= size:
+            return f"{s / size:.3g} {unit}"
+    return f"{s:.3g} s"
+
+
+# --------------------------------------------------------------------------------------------
+# fixed bounds and file sizes
+# --------------------------------------------------------------------------------------------
+def harmonics_memory(count: float) -> float:
+    """Memory of ``count`` harmonics while they are built and packed [bytes]."""
+    return float(count) * BYTES_PER_HARMONIC
+
+
+def max_profile_bytes(limits: Budget) -> int:
+    """Largest profile file read within the memory budget [bytes]."""
+    return int(limits.memory // BYTES_PER_PROFILE_BYTE)
+
+
+def max_record_bytes(limits: Budget) -> int:
+    """Largest measured-record CSV ``runout diagnose`` reads within the memory budget [bytes]."""
+    return int(limits.memory // RECORD_BYTES_PER_FILE_BYTE)
+
+
+def profile_roots(base_dir: Path, environ: Mapping[str, str] | None = None) -> list[Path]:
+    """Directories a case's profiles may come from: the case's own and ``RUNOUT_PROFILE_DIRS``."""
+    env = os.environ if environ is None else environ
+    roots = [base_dir.resolve()]
+    for part in env.get(ENV_PROFILE_DIRS, "").split(os.pathsep):
+        if part.strip():
+            roots.append(Path(part.strip()).expanduser().resolve())
+    return roots
+
+
+def profile_allowed(path: Path, base_dir: Path, environ: Mapping[str, str] | None = None) -> bool:
+    """True when ``path`` (resolved, symbolic links followed) lies under an allowed directory."""
+    resolved = path.resolve()
+    return any(resolved.is_relative_to(root) for root in profile_roots(base_dir, environ))
+
+
+# --------------------------------------------------------------------------------------------
+# estimates of the models
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class Sizes:
+    """The sizes of a case that set the work of a run.
+
+    Attributes
+    ----------
+    elements : int
+        Z.
+    ring_harmonics : int
+        Harmonics of the inner plus the outer raceway.
+    element_harmonics : int
+        Harmonics of every element's diameter deviation, summed over the elements.
+    largest_element : int
+        Harmonics of the most detailed element.
+    max_order : int
+        Highest order of any part.
+    samples, revolutions : float
+        ``[analysis]`` samples and revolutions.
+    """
+
+    elements: int
+    ring_harmonics: int
+    element_harmonics: int
+    largest_element: int
+    max_order: int
+    samples: float
+    revolutions: float
+
+    @property
+    def contact_harmonics(self) -> float:
+        """Harmonic evaluations per instant: Z contacts see both rings, each element its own."""
+        return self.elements * (self.ring_harmonics + 1) + self.element_harmonics
+
+    @property
+    def lines(self) -> float:
+        """Rough number of spectral lines fitted (a few per harmonic, and the Z multiples)."""
+        return 4.0 * (self.ring_harmonics + self.element_harmonics) + 32.0
+
+
+def sizes_of(case: Any) -> Sizes:
+    """:class:`Sizes` of a validated case."""
+    imp = case.imperfections
+    elements = [len(imp.elements[j]) + 1 for j in range(imp.n_elements)]
+    orders = [imp.inner.max_order, imp.outer.max_order]
+    orders += [h.max_order for h in imp.elements]
+    return Sizes(
+        elements=int(case.bearing.elements),
+        ring_harmonics=len(imp.inner) + len(imp.outer),
+        element_harmonics=sum(elements),
+        largest_element=max(elements, default=1),
+        max_order=max(orders, default=0),
+        samples=float(case.analysis.samples),
+        revolutions=float(case.analysis.revolutions),
+    )
+
+
+def _sync_instants(s: Sizes) -> float:
+    """Instants of the synchronous grid of whole revolutions the quasi-static models solve."""
+    whole = math.floor(s.revolutions + 1e-9)
+    if whole < 2:
+        return 0.0
+    return whole * max(16.0, math.ceil(s.samples / whole))
+
+
+def _instants_key(s: Sizes) -> str:
+    """The key that sets the number of instants: revolutions when the synchronous grid rules."""
+    return "analysis.revolutions" if _sync_instants(s) > 2.0 * s.samples else "analysis.samples"
+
+
+def _highest_order_key(spec: Any) -> str:
+    """The waviness, spectrum or profile entry with the highest order."""
+    best, key = -1, "waviness"
+    for table in ("waviness", "waviness_spectrum", "profile"):
+        for i, entry in enumerate(getattr(spec, table), start=1):
+            order = entry.order if table == "waviness" else entry.orders[1]
+            if order > best:
+                best = order
+                key = f"{table}[{i}].order" if table == "waviness" else f"{table}[{i}].orders"
+    return key
+
+
+def estimate_run(case: Any, model: str) -> Estimate:
+    """Memory and time of one run of ``model`` on ``case`` (before any allocation).
+
+    The dynamic model's step count needs its natural frequencies;
+    :func:`runout.models.dynamic.plan_integration` refines this estimate once they are known.
+    """
+    from runout.case.model import harmonic_counts
+
+    if model == "spindle" and getattr(case, "spindle", None) is not None:
+        return _estimate_spindle(case)
+    s = sizes_of(case)
+    z = s.elements
+    n = max(s.samples, _sync_instants(s))
+    key = _instants_key(s)
+    counts = harmonic_counts(case.spec, z)
+    harmonics_key = max(counts, key=lambda c: c[1])[0] if counts else key
+    instants = f"{n:.4g} instants"
+    if model == "linear":
+        memory = n * (8.0 * 16) + n * 16.0 * 4
+        if case.imperfections.pitch_errors.any():
+            seconds = n * s.contact_harmonics * COST_QUASI_STATIC
+        else:
+            seconds = n * s.lines * COST_LINEAR
+        what = f"{instants} x {s.lines:.4g} lines"
+    elif model in ("quasi_static_2d", "quasi_static_3d"):
+        # one solve on the analysis grid; the deviations are evaluated inside the kernel
+        n, key = s.samples, "analysis.samples"
+        # a ball's harmonics turn with its spin, up to d_m / (2 D) times the ring's rotation
+        bearing = case.bearing
+        spin = max(1.0, bearing.pitch_diameter / (2.0 * bearing.element_diameter))
+        angle = 2.0 * math.pi * s.revolutions * max(1, s.max_order) * spin
+        if angle > MAX_PHASE_ANGLE:
+            raise LimitError(
+                "analysis.revolutions",
+                f"the angles of the record would reach {angle:.3g} rad (2 pi x revolutions x "
+                f"highest order {max(1, s.max_order)} x ball spin ratio {spin:.3g}), beyond "
+                f"the {MAX_PHASE_ANGLE:.0e} rad within which double precision keeps their "
+                "phase to 1e-7 rad; lower analysis.revolutions",
+            )
+        # the line fit keeps partial sums per line, direction and block of 256 instants, and
+        # blocks of 2048 instants per line; pairs of ring harmonics add lines (seed 000 eq. 7)
+        paired = min(s.ring_harmonics, 48)
+        fitted = s.lines + 6.0 * paired * (paired - 1) / 2.0 / z
+        per_line = BYTES_LINE_INSTANT * fitted * max(n, 256.0)
+        memory = n * BYTES_QUASI_STATIC + per_line + 16.0 * min(fitted, 4096.0) * 4096.0
+        if per_line > n * BYTES_QUASI_STATIC:
+            key = harmonics_key  # the lines, i.e. the harmonics, not the record, are to cut
+        seconds = n * s.contact_harmonics * COST_QUASI_STATIC
+        seconds += n * s.lines * COST_LINE_FIT
+        instants = f"{n:.4g} instants"
+        what = f"{instants} x {z} elements x {s.contact_harmonics / z:.4g} harmonics"
+    elif model == "roller_constraint":
+        n = s.samples
+        memory = n * (z * 8.0 * 16 + 3 * 8.0 * 8) + 16.0 * 8.0 * (s.max_order + 16) * 8
+        per = s.ring_harmonics + s.largest_element + 2
+        seconds = n * z * per * COST_ROLLER
+        # the convexity check samples every part at 16 points per wave of its highest order
+        grid = max(256.0, 16.0 * s.max_order)
+        convexity = (z + 2) * 3 * grid * per * COST_QUASI_STATIC
+        seconds += convexity
+        what = f"{n:.4g} instants x {z} elements x {per} harmonics"
+        key = "analysis.samples"
+        if convexity > 0.5 * seconds:
+            what = f"convexity of {z + 2} parts on {grid:.4g} angles x {per} harmonics"
+            return Estimate(
+                memory, seconds + COST_RUN, key, _highest_order_key(case.spec), what, what
+            )
+    elif model == "dynamic":
+        # without the natural frequencies: at least one Newmark step per output instant
+        memory = n * (3 * 8.0 * 8 + 16.0 * min(s.lines, 4096.0))
+        seconds = n * (z * COST_DYNAMIC_ELEMENT + s.contact_harmonics * COST_DYNAMIC_HARMONIC)
+        what = f"{n:.4g} output instants x {z} elements"
+    else:  # equilibrium: one static solution, no record
+        memory, seconds, what = 0.0, 0.0, "one equilibrium"
+    seconds += COST_RUN
+    time_key = key
+    if s.ring_harmonics + s.element_harmonics > 64 * z and model != "equilibrium":
+        # many harmonics: the orders, not the record, are what to cut
+        time_key = harmonics_key
+    return Estimate(memory, seconds, key, time_key, what, what)
+
+
+def _estimate_spindle(case: Any) -> Estimate:
+    """A spindle run: each bearing's contacts as a quasi_static_3d run of it, the line fit
+    repeated at the nose and at every bearing's plane, the contact arrays of one chunk of
+    instants and the shaft's record. Measured after compilation: examples/spindle_hdd.toml
+    runs in 0.04 s (estimated 0.12 s), examples/spindle_machine_tool.toml (2 x 20 balls,
+    2 x 44 harmonics, 4096 instants) in 0.09 s (estimated 0.52 s)."""
+    from types import SimpleNamespace
+
+    layout = case.spindle
+    parts = [
+        estimate_run(
+            SimpleNamespace(
+                imperfections=b.imperfections,
+                bearing=b.bearing,
+                analysis=case.analysis,
+                spec=case.spec,
+                spindle=None,
+            ),
+            "quasi_static_3d",
+        )
+        for b in layout.bearings
+    ]
+    # the nose and every bearing's plane; with several imperfect bearings, also the shaft
+    # solved and fitted with each bearing's imperfections alone (the shares of shared lines)
+    imperfect = sum(1 for b in layout.bearings if not b.imperfections.is_perfect)
+    fits = len(layout.bearings) + 1 + (len(layout.bearings) if imperfect > 1 else 0)
+    balls = sum(int(b.bearing.elements) for b in layout.bearings)
+    n = float(case.analysis.samples)
+    memory = max(p.memory for p in parts) + n * (6 + 3 * fits) * 8.0 + 4096.0 * balls * 24.0
+    seconds = sum(p.seconds for p in parts) * fits + COST_RUN
+    worst = max(parts, key=lambda p: p.seconds)
+    what = (
+        f"{len(layout.bearings)} bearings, {balls} balls: {worst.time_what} each, {fits} line fits"
+    )
+    return Estimate(memory, seconds, worst.memory_key, worst.time_key, what, what)
+
+
+def study_points(case: Any) -> int:
+    """Number of runs a case's ``[study]`` asks for (samples, or sweep points x models)."""
+    from runout.case.model import sweep_count
+
+    study = case.study
+    if study is None:
+        return 0
+    if study.kind == "montecarlo":
+        return int(study.samples)
+    models = len(study.models) if study.models else 1
+    total = models
+    for key, entry in study.vary.items():
+        total *= sweep_count(case.spec, key, entry)
+    return int(total)
+
+
+def _study_key(case: Any) -> str:
+    """The key that sets the number of runs of a study: samples, or the largest sweep."""
+    from runout.case.model import VarySpec, sweep_count
+
+    study = case.study
+    if study is None or study.kind == "montecarlo":
+        return "study.samples"
+    best, key = 0, "study.vary"
+    for name, entry in study.vary.items():
+        count = sweep_count(case.spec, name, entry)
+        if count > best and isinstance(entry, VarySpec):
+            field = "values" if entry.values is not None else "num" if entry.num else "step"
+            best, key = count, f"study.vary.{name}.{field}"
+    return key
+
+
+#: Bytes a study keeps per run (runout figures, line p-p and varied values; the records are not
+#: kept: chunks are summarised as they finish).
+STUDY_BYTES_PER_RUN = 2048.0
+#: Seconds per instant and element of a batched ball-size Monte Carlo, everything included
+#: (draws, kernel, line fit, RRO/NRRO split, records) on one thread: measured 15 ns (2x10^4
+#: bearings x 1024 instants x 10 balls in 3.1 s of CPU). Two Numba threads in-process or two
+#: worker processes take about half of that in wall time.
+COST_BATCH = 1.5e-8
+
+
+def batched_study(case: Any) -> bool:
+    """The ball-size Monte Carlo of the unloaded 2-D model, which runs batched (runout.study.run)."""
+    study = case.study
+    models = tuple(study.models) if study.models else (case.analysis.model,)
+    return bool(
+        study.kind == "montecarlo"
+        and models == ("quasi_static_2d",)
+        and case.operation.radial_load == 0.0
+        and all(key in ("element_diameter_sigma", "elements.diameter_errors") for key in study.vary)
+    )
+
+
+def batched_memory(case: Any, workers: int = 1) -> float:
+    """Memory of a batched ball-size Monte Carlo's arrays [B], summaries apart.
+
+    The shared arrays (time, the balls' approaches and angles, the line projector:
+    :class:`runout.study.pool.BatchArrays`) exist once in this process, and with worker
+    processes once more in every worker and in the pickles of its chunks in flight (two per
+    worker); each concurrent evaluation (a Numba thread in this process, or a worker) holds one
+    pass of rows (:data:`runout.study.pool.PASS_BYTES` at most).
+
+    Parameters
+    ----------
+    case : Case
+    workers : int
+        Worker processes (1: the study runs in this process, one chunk per Numba thread).
+    """
+    from runout.study.pool import BYTES_PER_ROW_INSTANT, PASS_BYTES
+
+    s = sizes_of(case)
+    n = float(s.samples)
+    shared = n * (8.0 + 16.0 * s.elements + 8.0 * (1.0 + 2.0 * s.lines))
+    if workers <= 1:
+        copies, concurrent = 1.0, float(max(2, os.cpu_count() or 1))
+    else:
+        copies, concurrent = 1.0 + 3.0 * workers, float(workers)
+    chunk = float(min(case.study.chunk_size, case.study.samples))
+    one_pass = min(float(PASS_BYTES), max(1.0, chunk) * n * BYTES_PER_ROW_INSTANT)
+    return copies * shared + concurrent * one_pass
+
+
+def estimate_study(case: Any, per_run: Estimate) -> Estimate:
+    """Memory and time of a case's whole ``[study]`` from the estimate of one run.
+
+    The records are not kept (each chunk is summarised as it finishes): memory is one run's
+    plus :data:`STUDY_BYTES_PER_RUN` per run; a batched ball-size Monte Carlo holds its shared
+    arrays and one pass of rows per concurrent evaluation (:func:`batched_memory`, in this
+    process; :func:`runout.study.run.run_study` checks again for worker processes) and costs
+    :data:`COST_BATCH` per instant and ball instead of a whole run.
+    """
+    points = study_points(case)
+    key = _study_key(case)
+    memory = per_run.memory + points * STUDY_BYTES_PER_RUN
+    each = per_run.seconds
+    if batched_study(case):
+        memory = max(memory, batched_memory(case) + points * STUDY_BYTES_PER_RUN)
+        each = case.analysis.samples * case.bearing.elements * COST_BATCH
+    seconds = points * each
+    what = f"{points} runs x about {format_seconds(each)} each"
+    return Estimate(memory, seconds, key, key, f"{points} runs", what)

@@ -1,0 +1,617 @@
+"""Case files: TOML in, validated frozen dataclasses out.
+
+A case file describes one bearing, how it runs, what is wrong with its parts and which analysis
+to run (docs/case-file.md, generated from the schema below, and docs/conventions.md). A
+number is SI; a string carries its unit and is parsed by :mod:`runout.base.units`.
+
+Every problem is reported as a :class:`runout.base.errors.CaseError` that names the file, the key
+path (``bearing.elements``, ``waviness[2].order``; array entries are counted from 1) and what is
+wrong. Unknown keys are errors with a did-you-mean hint.
+"""
+
+from __future__ import annotations
+
+import re
+import stat
+import tomllib
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from pydantic import ValidationError
+
+from runout.base.errors import CaseError, GeometryError
+from runout.case.build import (
+    _GEOMETRY_KEYS,
+    _build_bearing,
+    _build_imperfections,
+    _CaseKeyError,
+    _check_limits,
+    harmonic_counts,
+)
+from runout.case.limits import MAX_CASE_FILE_BYTES, MAX_TOML_DEPTH, case_budget, format_bytes
+from runout.case.schema import (
+    MAX_CONFORMITY,
+    MODEL_IDS,
+    STUDY_SHORTHANDS,
+    AnalysisSpec,
+    BearingSpec,
+    CaseSpec,
+    DynamicsSpec,
+    ElementsSpec,
+    MaterialSpec,
+    OperationSpec,
+    ProfileSpec,
+    SlantSpec,
+    SpindleBearingSpec,
+    SpindleSpec,
+    StudySpec,
+    VarySpec,
+    WavinessSpec,
+    WavinessSpectrumSpec,
+    first_validation_error,
+    is_band_quantity,
+    limit_si,
+    parse_vary_key,
+    study_paths,
+    sweep_count,
+)
+from runout.case.schema import _table_type as _table_type  # runout.api, runout.report.plotting
+from runout.geometry.bearing import Bearing, Operation
+from runout.geometry.imperfections import Imperfections
+from runout.geometry.spindle_layout import SpindleLayout
+
+__all__ = [
+    "MAX_CONFORMITY",
+    "MODEL_IDS",
+    "STUDY_SHORTHANDS",
+    "Analysis",
+    "AnalysisSpec",
+    "BearingSpec",
+    "Case",
+    "CaseSpec",
+    "DynamicsSpec",
+    "ElementsSpec",
+    "MaterialSpec",
+    "OperationSpec",
+    "ProfileSpec",
+    "SlantSpec",
+    "SpindleBearingSpec",
+    "SpindleSpec",
+    "StudySpec",
+    "VarySpec",
+    "WavinessSpec",
+    "WavinessSpectrumSpec",
+    "apply_overrides",
+    "first_validation_error",
+    "harmonic_counts",
+    "is_band_quantity",
+    "limit_si",
+    "load_case",
+    "parse_case",
+    "parse_override",
+    "parse_vary_key",
+    "read_case_data",
+    "study_paths",
+    "sweep_count",
+]
+
+
+# --------------------------------------------------------------------------------------------
+# the validated case
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class Analysis:
+    """What to compute: model id, revolutions of the rotating ring, number of instants."""
+
+    model: str = "quasi_static_3d"
+    revolutions: float = 20.0
+    samples: int = 4096
+    linear_variant: str = "radial_spring"
+    race_control: str = "outer"
+    bands: str | None = None
+    limit: float | None = None
+    limit_on: str = "radial_pp"
+
+
+#: Measured profiles held in memory: file name in ``[[profile]] file`` -> (angles [rad],
+#: deviations [m]), read instead of a file (profiles given to the Python API as arrays).
+ProfileData = Mapping[str, tuple[np.ndarray, np.ndarray]]
+
+
+@dataclass(frozen=True)
+class Case:
+    """A validated case: every quantity SI, ready for the models.
+
+    Build one from a case file with :func:`load_case`, or in code with
+    :meth:`Case.from_inputs` (or let :func:`runout.run` build and run it); do not call the
+    constructor yourself: ``spec``, the validated case-file document, is what the models and
+    :meth:`to_toml` read.
+
+    Attributes
+    ----------
+    path : str
+        The case file as given, or ``"<python>"`` for a case built in code.
+    title : str
+    bearing : BallBearing or RollerBearing
+    operation : Operation
+    imperfections : runout.geometry.imperfections.Imperfections
+        The resolved harmonics of every part (what the models use).
+    analysis : Analysis
+    spec : CaseSpec
+        The validated case-file document.
+    profile_data : mapping
+        Measured profiles given as arrays: ``[[profile]] file`` name -> (angles [rad],
+        deviations [m]); empty for a case read from a file.
+    spindle : SpindleLayout or None
+        A spindle case's bearings, positions and preload (``[spindle]``, ``[[bearings]]``);
+        ``bearing`` and ``imperfections`` are then its first bearing's. None otherwise.
+    """
+
+    path: str
+    title: str
+    bearing: Bearing
+    operation: Operation
+    imperfections: Imperfections
+    analysis: Analysis
+    spec: CaseSpec = field(repr=False)
+    profile_data: ProfileData = field(default_factory=dict, repr=False, compare=False)
+    spindle: SpindleLayout | None = field(default=None, repr=False)
+
+    @property
+    def dynamics(self) -> DynamicsSpec | None:
+        """The ``[dynamics]`` table, if any."""
+        return self.spec.dynamics
+
+    @property
+    def study(self) -> StudySpec | None:
+        """The ``[study]`` table, if any."""
+        return self.spec.study
+
+    @classmethod
+    def from_inputs(
+        cls,
+        bearing: Bearing,
+        operation: Operation | None = None,
+        imperfections: Any = None,
+        *,
+        title: str = "",
+        analysis: Mapping[str, Any] | None = None,
+        dynamics: Mapping[str, Any] | None = None,
+        study: Mapping[str, Any] | None = None,
+        base_dir: str | Path | None = None,
+    ) -> Case:
+        """The case a case file with these tables would give, validated the same way.
+
+        Parameters
+        ----------
+        bearing : BallBearing or RollerBearing
+            Geometry and material (``[bearing]``, ``[material]``).
+        operation : Operation, optional
+            ``[operation]``; default a bearing at rest without load.
+        imperfections : runout.Imperfections, optional
+            The builder of ``[[waviness]]``, ``[[waviness_spectrum]]``, ``[[profile]]``,
+            ``[slant]`` and ``[elements]`` (:class:`runout.api.Imperfections`); default none.
+        title : str
+        analysis, dynamics, study : mapping, optional
+            The ``[analysis]``, ``[dynamics]`` and ``[study]`` keys, by their case-file names:
+            SI numbers or strings with units.
+        base_dir : str or Path, optional
+            Directory that ``[[profile]]`` files are read from; default the working directory.
+
+        Raises
+        ------
+        CaseError
+            Naming ``<python>`` and the case key, with the message a case file would give.
+        """
+        from runout.api import build_case
+
+        return build_case(
+            bearing,
+            operation,
+            imperfections,
+            title=title,
+            analysis=analysis,
+            dynamics=dynamics,
+            study=study,
+            base_dir=base_dir,
+        )
+
+    def to_document(self) -> dict[str, Any]:
+        """The case-file document (tables of SI numbers) that gives this case again."""
+        return self.spec.model_dump(mode="python", exclude_unset=True, exclude_none=True)
+
+    def to_toml(self) -> str:
+        """The case as case-file text (SI numbers), for ``runout run`` or :func:`load_case`.
+
+        Keys given at their defaults are written only when they were given; ``[[profile]]``
+        files are named as in the case and read relative to the saved file.
+
+        Raises
+        ------
+        CaseError
+            A profile given as arrays has no file to name: use :meth:`save`, which writes it.
+        """
+        if self.profile_data:
+            name = next(iter(self.profile_data))
+            raise CaseError(
+                self.path,
+                _profile_key(self.spec, name),
+                "was given as arrays and has no file; Case.save(path) writes the case with "
+                "its profiles as CSV files next to it",
+            )
+        return self._toml()
+
+    def _toml(self, files: dict[str, str] | None = None) -> str:
+        import tomli_w
+
+        # tables in the order of the case-file reference, and every entry of an array of
+        # tables as its own [[table]] (tomli_w would write short ones inline)
+        document = self.to_document()
+        for entry in document.get("profile", []):  # profiles saved under other names
+            entry["file"] = (files or {}).get(entry.get("file", ""), entry.get("file"))
+        chunks = []
+        top = {k: v for k, v in document.items() if not isinstance(v, dict | list)}
+        if top:
+            chunks.append(tomli_w.dumps(top))
+        for name in CaseSpec.model_fields:
+            value = document.get(name)
+            if isinstance(value, dict):
+                chunks.append(tomli_w.dumps({name: value}))
+            elif isinstance(value, list):
+                chunks.extend(f"[[{name}]]\n" + tomli_w.dumps(entry) for entry in value)
+        return "\n".join(chunk.strip("\n") + "\n" for chunk in chunks)
+
+    def save(self, path: str | Path) -> Path:
+        """Write :meth:`to_toml` to ``path``, and profiles given as arrays as CSV beside it.
+
+        Each profile's CSV is named after the case file (``<stem>.<part>_profile_<k>.csv``), so
+        that cases saved into one directory do not share a profile file.
+
+        Returns
+        -------
+        Path
+            The case file written.
+        """
+        target = Path(path)
+        # named after the case file: two cases saved in one directory keep their own profiles
+        files = {name: f"{target.stem}.{name}" for name in self.profile_data}
+        for name, (angles, deviations) in self.profile_data.items():
+            rows = "".join(
+                f"{float(a)!r},{float(d)!r}\n" for a, d in zip(angles, deviations, strict=True)
+            )
+            (target.parent / files[name]).write_text(
+                "# angle, radius deviation (units: the case file's [[profile]] entry)\n" + rows,
+                encoding="utf-8",
+            )
+        target.write_text(self._toml(files), encoding="utf-8")
+        return target
+
+
+def _profile_key(spec: CaseSpec, name: str) -> str:
+    for i, p in enumerate(spec.profile, start=1):
+        if p.file == name:
+            return f"profile[{i}].file"
+    return "profile"
+
+
+def _depth(value: object, limit: int) -> int:
+    """Nesting depth of tables and arrays, counted up to ``limit + 1`` (no recursion)."""
+    stack: list[tuple[object, int]] = [(value, 0)]
+    deepest = 0
+    while stack:
+        node, depth = stack.pop()
+        deepest = max(deepest, depth)
+        if deepest > limit:
+            return deepest
+        if isinstance(node, dict):
+            stack.extend((v, depth + 1) for v in node.values())
+        elif isinstance(node, list):
+            stack.extend((v, depth + 1) for v in node)
+    return deepest
+
+
+def parse_case(
+    data: dict[str, Any],
+    path: str = "<case>",
+    base_dir: Path | None = None,
+    *,
+    profile_data: ProfileData | None = None,
+) -> Case:
+    """Validate a parsed TOML document and build the domain objects.
+
+    Parameters
+    ----------
+    data : dict
+        The TOML document as a dictionary.
+    path : str
+        File name used in error messages.
+    base_dir : Path or None
+        Directory that relative file references (profiles) are resolved against, and the only
+        one profiles may come from (with those of RUNOUT_PROFILE_DIRS).
+    profile_data : mapping, optional
+        Profiles given as arrays: ``[[profile]] file`` name -> (angles, deviations) in the
+        units of the entry, used instead of reading that file.
+
+    Raises
+    ------
+    CaseError
+        Naming ``path``, the key path and the problem; also for a case whose estimated memory
+        or time exceeds the budget (:mod:`runout.case.limits`).
+    """
+    if _depth(data, MAX_TOML_DEPTH) > MAX_TOML_DEPTH:
+        raise CaseError(path, "", f"tables and arrays are nested deeper than {MAX_TOML_DEPTH}")
+    try:
+        spec = CaseSpec.model_validate(data)
+    except ValidationError as exc:
+        key, message = first_validation_error(exc)
+        raise CaseError(path, key, message) from None
+    try:
+        limits = case_budget(spec)
+    except GeometryError as exc:
+        raise CaseError(path, exc.key, exc.message) from None
+    spindle = None
+    if spec.bearings:
+        # a spindle: each bearing read as its own single-bearing case (the lead one stands
+        # for the case's bearing in summaries; the model reads case.spindle)
+        from runout.geometry.spindle_layout import build_layout
+
+        spindle, own_cases = build_layout(spec, path, base_dir, profile_data)
+        bearing = own_cases[0].bearing
+    else:
+        try:
+            bearing = _build_bearing(spec)
+        except GeometryError as exc:
+            raise CaseError(path, _GEOMETRY_KEYS.get(exc.key, exc.key), exc.message) from None
+    try:
+        operation = Operation(
+            rotating_ring=spec.operation.rotating_ring,
+            speed=spec.operation.speed,
+            other_ring_speed=spec.operation.other_ring_speed,
+            axial_load=spec.operation.axial_load,
+            radial_load=spec.operation.radial_load,
+            radial_load_direction=spec.operation.radial_load_direction,
+            moment_load=spec.operation.moment_load,
+            moment_load_direction=spec.operation.moment_load_direction,
+        )
+    except GeometryError as exc:
+        raise CaseError(path, exc.key, exc.message) from None
+    try:
+        imperfections = (
+            own_cases[0].imperfections
+            if spindle is not None
+            else _build_imperfections(spec, bearing, base_dir or Path.cwd(), limits, profile_data)
+        )
+    except _CaseKeyError as exc:
+        raise CaseError(path, exc.key, exc.message) from None
+    except GeometryError as exc:
+        raise CaseError(path, exc.key, exc.message) from None
+    except ValueError as exc:
+        raise CaseError(path, "", str(exc)) from None
+    analysis = Analysis(
+        model=spec.analysis.model,
+        revolutions=spec.analysis.revolutions,
+        samples=spec.analysis.samples,
+        linear_variant=spec.analysis.linear_variant,
+        race_control=spec.analysis.race_control,
+        bands=spec.analysis.bands,
+        limit=(
+            None
+            if spec.analysis.limit is None
+            else limit_si(spec.analysis.limit, spec.analysis.limit_on)
+        ),
+        limit_on=spec.analysis.limit_on,
+    )
+    case = Case(
+        path=path,
+        title=spec.title,
+        bearing=bearing,
+        operation=operation,
+        imperfections=imperfections,
+        analysis=analysis,
+        spec=spec,
+        profile_data=dict(profile_data or {}),
+        spindle=spindle,
+    )
+    try:
+        _check_limits(case)
+    except GeometryError as exc:
+        raise CaseError(path, exc.key, exc.message) from None
+    return case
+
+
+def load_case(
+    path: str | Path,
+    *,
+    model: str | None = None,
+    overrides: Mapping[str, Any] | None = None,
+) -> Case:
+    """Read and validate a TOML case file.
+
+    Only a regular file of at most :data:`runout.case.limits.MAX_CASE_FILE_BYTES` is read (a FIFO
+    or /dev/zero is refused before it is opened for reading); a UTF-8 byte-order mark is
+    allowed.
+
+    Parameters
+    ----------
+    path : str or Path
+        The case file.
+    model : str, optional
+        Model id replacing ``[analysis] model`` (``runout run --model``).
+    overrides : mapping, optional
+        Case keys by dotted path (``"operation.axial_load"``, ``"waviness[2].order"``,
+        ``"title"``) -> value as the file would give it (SI number or string with unit),
+        replacing or adding that key before validation (``runout run --set``).
+
+    Returns
+    -------
+    Case
+
+    Raises
+    ------
+    CaseError
+        If the file cannot be read, is not TOML, or is invalid (with the overrides), naming
+        the file and the key.
+    """
+    name = str(path)
+    data = read_case_data(path)
+    changes = dict(overrides or {})
+    if model is not None:
+        if "analysis.model" in changes:  # one would silently replace the other
+            raise CaseError(name, "analysis.model", "given both as --model and with --set")
+        study = data.get("study")
+        if isinstance(study, dict) and "models" in study and "study.models" not in changes:
+            # a study's models list decides which models run: --model would be ignored
+            raise CaseError(
+                name,
+                "study.models",
+                f"the study runs the models it lists; write --set study.models='[\"{model}\"]' "
+                "instead of --model",
+            )
+        changes["analysis.model"] = model
+    if not changes:
+        return parse_case(data, name, Path(path).parent)
+    try:
+        apply_overrides(data, changes, name)
+        return parse_case(data, name, Path(path).parent)
+    except CaseError as exc:
+        given = next((k for k in changes if exc.key == k or exc.key.startswith(f"{k}[")), None)
+        if given is None:
+            raise
+        how = "--model" if given == "analysis.model" and model is not None else "--set"
+        raise CaseError(name, exc.key, f"{exc.message} (given by {how})") from None
+
+
+def read_case_data(path: str | Path) -> dict[str, Any]:
+    """The TOML document of a case file, read within the size limit, not yet validated.
+
+    Raises
+    ------
+    CaseError
+        If the file cannot be read or is not TOML.
+    """
+    p = Path(path)
+    name = str(path)
+    try:
+        info = p.stat()
+    except FileNotFoundError:
+        raise CaseError(name, "", "no such file") from None
+    except OSError as exc:
+        raise CaseError(name, "", f"cannot be read ({exc.strerror or exc})") from None
+    if stat.S_ISDIR(info.st_mode):
+        raise CaseError(name, "", "is a directory, not a case file")
+    if not stat.S_ISREG(info.st_mode):
+        raise CaseError(name, "", "is not a regular file (a device or FIFO is not a case file)")
+    if info.st_size > MAX_CASE_FILE_BYTES:
+        raise CaseError(
+            name,
+            "",
+            f"is {format_bytes(info.st_size)}; a case file is at most "
+            f"{format_bytes(MAX_CASE_FILE_BYTES)} (put measured data in [[profile]] files)",
+        )
+    try:
+        with p.open("rb") as handle:
+            raw = handle.read(MAX_CASE_FILE_BYTES + 1)
+    except OSError as exc:
+        raise CaseError(name, "", f"cannot be read ({exc.strerror or exc})") from None
+    if len(raw) > MAX_CASE_FILE_BYTES:
+        raise CaseError(name, "", f"is larger than {format_bytes(MAX_CASE_FILE_BYTES)}")
+    try:
+        # utf-8-sig: editors on Windows start files with a byte-order mark
+        text = raw.decode("utf-8-sig")
+    except UnicodeDecodeError as exc:
+        raise CaseError(
+            name, "", f"is not UTF-8 text (byte {exc.start + 1} cannot be decoded)"
+        ) from None
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise CaseError(name, "", f"is not valid TOML: {exc}") from None
+    except RecursionError:
+        raise CaseError(
+            name, "", f"is not valid TOML: nested deeper than {MAX_TOML_DEPTH} levels"
+        ) from None
+
+
+def parse_override(text: str) -> tuple[str, Any]:
+    """``KEY=VALUE`` of ``--set`` as (dotted key, value).
+
+    The value is read as a TOML value (``8192``, ``"30 N"``, ``[1, 2]``, ``true``); a bare
+    word that is not one (``30 N`` without quotes, ``outer``) is taken as a string.
+
+    Raises
+    ------
+    ValueError
+        Without ``=`` or without a key.
+    """
+    key, sep, value = text.partition("=")
+    key = key.strip()
+    if not sep or not key:
+        raise ValueError(f"expected KEY=VALUE (e.g. operation.axial_load='30 N'), got {text!r}")
+    value = value.strip()
+    try:
+        parsed = tomllib.loads(f"v = {value}")
+        if set(parsed) == {"v"}:
+            return key, parsed["v"]
+    except tomllib.TOMLDecodeError:
+        pass
+    return key, value
+
+
+_OVERRIDE_KEY = re.compile(r"([a-z_]+)(?:\[(\d+)\])?(?:\.([a-z_]+))?")
+
+
+def apply_overrides(data: dict[str, Any], overrides: Mapping[str, Any], path: str) -> None:
+    """Set case keys by dotted path in a TOML document, in place, before it is validated.
+
+    ``title``, ``table.key`` or ``table[i].key`` (entries counted from 1); a table the
+    document lacks is created. A key the case does not have is left to the validation, which
+    names it with a did-you-mean hint.
+
+    Raises
+    ------
+    CaseError
+        A path that is not a case key's shape, or an array entry the document does not have.
+    """
+    for key, value in overrides.items():
+        match = _OVERRIDE_KEY.fullmatch(key)
+        if match is None:
+            raise CaseError(
+                path,
+                _one_line(key),
+                "not a case key: expected 'title', 'table.key' or 'table[i].key' (e.g. "
+                "operation.axial_load or waviness[1].order)",
+            )
+        table, index, name = match.group(1), match.group(2), match.group(3)
+        if name is None:
+            if index is not None or (table in CaseSpec.model_fields and table != "title"):
+                raise CaseError(path, key, "name a key of the table, e.g. 'operation.speed'")
+            data[table] = value
+            continue
+        if index is None:
+            section = data.setdefault(table, {})
+            if not isinstance(section, dict):
+                raise CaseError(
+                    path, table, "is an array of tables: name one, e.g. " + table + "[1]"
+                )
+            section[name] = value
+            continue
+        entries = data.get(table, [])
+        position = int(index)
+        if not isinstance(entries, list) or not 1 <= position <= len(entries):
+            count = len(entries) if isinstance(entries, list) else 0
+            raise CaseError(
+                path,
+                f"{table}[{position}]",
+                f"the case has {count} [[{table}]] entries (counted from 1)",
+            )
+        entry = entries[position - 1]
+        if not isinstance(entry, dict):  # a malformed file: `waviness = [1, 2]`
+            raise CaseError(path, f"{table}[{position}]", "is not a table; fix the file first")
+        entry[name] = value
+
+
+def _one_line(text: str) -> str:
+    return "".join(ch if ch.isprintable() else repr(ch)[1:-1] for ch in text)

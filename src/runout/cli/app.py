@@ -1,0 +1,958 @@
+"""The ``runout`` command-line tool.
+
+Bad input ends with one clear line on stderr, ``error: FILE: key.path: problem``, and exit
+status 2, never a traceback. Warnings raised while a command runs (a poorly resolved profile,
+a numerical overflow) are collected and printed as one ``warning:`` line after it, without the
+source paths Python's warnings module would print. A failure that is not runout's own (a bug)
+is one ``error:`` line too, with exit status 70; ``RUNOUT_DEBUG=1`` shows its traceback.
+
+Output meant for scripts does not depend on the terminal: JSON is written as is, one-line
+messages are never wrapped, and tables written to a pipe or a file are laid out for a fixed
+width (:data:`PIPE_WIDTH`), whatever the terminal or ``COLUMNS``.
+"""
+
+from __future__ import annotations
+
+import errno
+import functools
+import json
+import math
+import os
+import shutil
+import sys
+import warnings
+from collections.abc import Callable
+from pathlib import Path
+from typing import Annotated, Any, NoReturn, TypeVar
+
+import typer
+from rich.console import Console
+from rich.markup import escape
+from rich.table import Table
+
+from runout import __version__
+from runout.base.errors import GeometryError, NumericalError, RunoutError
+from runout.cli import compile_notice as _compile_notice
+
+app = typer.Typer(
+    name="runout",
+    help=(
+        "Runout (RRO/NRRO) and vibration of rolling bearings from the geometry of their parts.\n\n"
+        "Example: runout check examples/seed002_608.toml"
+    ),
+    no_args_is_help=True,
+    add_completion=False,
+    pretty_exceptions_enable=False,
+)
+_out = Console()
+_err = Console(stderr=True)
+
+F = TypeVar("F", bound=Callable[..., Any])
+
+CaseArg = Annotated[
+    Path, typer.Argument(help="TOML case file (see docs/case-file.md).", show_default=False)
+]
+JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON object on stdout.")]
+ModelOpt = Annotated[
+    str | None,
+    typer.Option(
+        "--model",
+        metavar="NAME",
+        help="Model id replacing the case's [analysis] model (e.g. linear).",
+        show_default=False,
+    ),
+]
+SetOpt = Annotated[
+    list[str] | None,
+    typer.Option(
+        "--set",
+        metavar="KEY=VALUE",
+        help="Set one case key by its dotted path before validation (repeatable), e.g. "
+        '--set operation.axial_load="30 N" --set analysis.samples=8192 --set '
+        "waviness[1].order=9. VALUE is read as a TOML value; a bare word is a string.",
+        show_default=False,
+    ),
+]
+
+
+#: Width of tables written to a pipe or a file (not to a terminal).
+PIPE_WIDTH = 200
+#: Exit status of a failure that is a bug, not bad input (sysexits' EX_SOFTWARE).
+EXIT_INTERNAL = 70
+
+
+#: The command-line framework's own exits and usage errors. Typer (0.26 on) carries its own
+#: copy of click, whose usage errors derive from ``TyperException``; click itself is not a
+#: dependency and must not be imported.
+_CLI_EXITS = (typer.Exit, typer.Abort, typer.exceptions.TyperException)
+
+
+#: Warning categories that are about the case and reach the user as one ``warning:`` line.
+_CASE_WARNINGS = (RuntimeWarning, UserWarning)
+
+
+def _one_line(text: str) -> str:
+    """``text`` on one line: control characters (a newline in a quoted TOML key) escaped."""
+    return "".join(ch if ch.isprintable() else repr(ch)[1:-1] for ch in text)
+
+
+def _fail(message: str, status: int = 2) -> None:
+    # emoji=False: ":x:" in a value or a file's line is text, not an emoji
+    _err.print(
+        f"[bold red]error:[/] {escape(_one_line(message))}",
+        highlight=False,
+        soft_wrap=True,
+        emoji=False,
+    )
+    raise typer.Exit(status)
+
+
+def _warn(file: object, messages: list[str]) -> None:
+    """One ``warning:`` line on stderr for all of ``messages`` (nothing when empty)."""
+    unique = list(dict.fromkeys(m for m in messages if m))
+    if not unique:
+        return
+    where = f"{file}: " if file is not None else ""
+    text = "; ".join(unique[:5]) + (f" (and {len(unique) - 5} more)" if len(unique) > 5 else "")
+    _err.print(
+        f"[bold yellow]warning:[/] {escape(_one_line(where + text))}",
+        highlight=False,
+        soft_wrap=True,
+        emoji=False,
+    )
+
+
+def _named(message: str, file: object) -> str:
+    """``message`` starting with the case file, once."""
+    if file is None or message.startswith(f"{file}:"):
+        return message
+    return f"{file}: {message}"
+
+
+def _guard(fn: F) -> F:
+    """One line on stderr for every failure: exit status 2 for runout's own errors.
+
+    Errors raised by a model (a geometry check, a solver that lost contact) name the case
+    file too; warnings are collected into one ``warning:`` line, printed after a command that
+    succeeded (an error line stays the only line of a failure).
+    """
+
+    @functools.wraps(fn)
+    def wrapper(*args: Any, **kwargs: Any) -> Any:
+        file = kwargs.get("case_file")
+        # a first run after installation compiles kernels for a few seconds: say so
+        _compile_notice.watch(sys.stderr)
+        with warnings.catch_warnings(record=True) as caught:
+            try:
+                result = fn(*args, **kwargs)
+            except RunoutError as exc:
+                message = str(exc)
+                if isinstance(exc, GeometryError | NumericalError):
+                    message = _named(message, file)
+                _fail(message)
+            except KeyboardInterrupt:
+                _err.print("interrupted")
+                raise typer.Exit(130) from None
+            except _CLI_EXITS:
+                raise
+            except MemoryError:
+                _fail(
+                    _named(
+                        "ran out of memory; lower analysis.samples or the orders, or raise "
+                        "[analysis] max_memory only if the machine has the memory",
+                        file,
+                    )
+                )
+            except Exception as exc:
+                if os.environ.get("RUNOUT_DEBUG"):
+                    raise
+                if _output_lost(exc):  # stdout closed or its disk full: not runout's bug
+                    _fail(_named(f"cannot write the output ({exc})", file), 1)
+                _fail(
+                    _named(
+                        f"internal error ({type(exc).__name__}: {exc}); this is a bug in "
+                        "runout, please report it with the case file (RUNOUT_DEBUG=1 shows "
+                        "the traceback)",
+                        file,
+                    ),
+                    EXIT_INTERNAL,
+                )
+        # what concerns the case (a profile, a line too close to another, an overflow), not
+        # the deprecations and compiler notes of the libraries underneath
+        _warn(file, [str(w.message) for w in caught if issubclass(w.category, _CASE_WARNINGS)])
+        compiled = _compile_notice.finish()
+        if compiled is not None:
+            print(compiled, file=sys.stderr, flush=True)
+        return result
+
+    return wrapper  # type: ignore[return-value]
+
+
+def _load(case_file: Path, model: str | None = None, sets: list[str] | None = None) -> Any:
+    """The case of ``case_file`` with ``--model`` and ``--set`` applied, validated as a file."""
+    from runout.base.errors import CaseError
+    from runout.case.model import load_case, parse_override
+
+    overrides: dict[str, Any] = {}
+    for text in sets or ():
+        try:
+            key, value = parse_override(text)
+        except ValueError as exc:
+            raise CaseError(str(case_file), "", f"--set: {exc}") from None
+        if key in overrides:
+            # the later one would silently replace the first
+            raise CaseError(str(case_file), key, "given twice with --set")
+        overrides[key] = value
+    return load_case(case_file, model=model, overrides=overrides or None)
+
+
+def _print_json(payload: dict[str, Any]) -> None:
+    sys.stdout.write(json.dumps(payload, indent=2, allow_nan=False) + "\n")
+
+
+def _rows_table(title: str, rows: list[tuple[str, str, str]]) -> Table:
+    table = Table(title=title, title_justify="left", show_header=True, header_style="bold")
+    table.add_column("quantity")
+    table.add_column("value", justify="right")
+    table.add_column("unit")
+    for name, value, unit in rows:
+        table.add_row(escape(name), escape(value), escape(unit))
+    return table
+
+
+def _print_sections(sections: list[tuple[str, list[tuple[str, str, str]]]]) -> None:
+    """Titled tables; a section whose rows have no value and no unit prints as a list."""
+    for title, rows in sections:
+        if rows and all(not value and not unit for _, value, unit in rows):
+            _out.print(f"[bold]{escape(title)}[/]", soft_wrap=True)
+            for text, _, _ in rows:
+                _out.print(f"- {escape(text)}", highlight=False, soft_wrap=True, emoji=False)
+        else:
+            _out.print(_rows_table(title, rows))
+
+
+def _version_callback(value: bool) -> None:
+    if value:
+        _out.print(f"runout {__version__}")
+        raise typer.Exit()
+
+
+@app.callback()
+def _main(
+    version: Annotated[
+        bool,
+        typer.Option("--version", callback=_version_callback, is_eager=True, help="Print version."),
+    ] = False,
+) -> None:
+    """Runout (RRO/NRRO) and vibration of rolling bearings from the geometry of their parts."""
+    # Rich measures the terminal on stdin/stderr even when stdout is a pipe, and honours
+    # COLUMNS: output read by scripts and tests would depend on where it ran.
+    if not _out.is_terminal:
+        _out.size = (PIPE_WIDTH, 25)
+
+
+@app.command()
+@_guard
+def check(
+    case_file: CaseArg,
+    as_json: JsonOpt = False,
+    model: ModelOpt = None,
+    sets: SetOpt = None,
+) -> None:
+    """Validate a case file and print the derived geometry, contact constants and frequencies.
+
+    Runs every check a run does (the model's input checks, the memory and time budget, Hertz
+    validity), so a case called valid is not refused on input later; warnings go to one
+    warning: line (--json: "warnings"). --model and --set check the case as run would run it.
+
+    Example: runout check examples/seed001_kim_spindle.toml --json
+    """
+    from runout.base.errors import CaseError
+    from runout.report.summary import bearing_summary, model_use
+    from runout.runner.checks import validate
+
+    case = _load(case_file, model, sets)
+    summary = bearing_summary(case.bearing, case.operation)
+    use = model_use(case)
+    named = "model" in case.spec.analysis.model_fields_set
+    if use.refusals and named:
+        # `check` calls a case valid only when the model it names will run it
+        key, message = use.refusals[0]
+        raise CaseError(str(case_file), key, message)
+    # the model's own input checks, the budget and the Hertz validity, as `run` does them
+    notes = list(validate(case, strict=named))
+    if as_json:
+        payload = {"title": case.title, "case": str(case_file), **summary.to_json()}
+        payload["model_use"] = use.to_json()
+        payload["warnings"] = notes
+        _print_json(payload)
+        return
+    _warn(case_file, notes)
+    # soft_wrap: one line however long the path, so that "is valid" is never split
+    _out.print(
+        f"[bold]{escape(case.title or str(case_file))}[/]  ({escape(str(case_file))}) is valid.",
+        soft_wrap=True,
+    )
+    for title, rows in summary.sections():
+        _out.print(_rows_table(title, rows))
+    _out.print(_rows_table(f"As the {use.model} model uses it", use.rows()))
+    if case.spindle is not None:  # one table per bearing: each has its own parts
+        for b in case.spindle.bearings:
+            if not b.imperfections.is_perfect:
+                _out.print(_imperfection_table(b.imperfections, f"Imperfections: {b.name} bearing"))
+    elif not case.imperfections.is_perfect:
+        _out.print(_imperfection_table(case.imperfections))
+
+
+def _imperfection_table(imperfections: Any, title: str = "Imperfections") -> Table:
+    table = Table(title=escape(title), title_justify="left", header_style="bold")
+    for col in ("part", "element", "order", "amplitude 0-p [nm]", "phase [deg]"):
+        table.add_column(escape(col), justify="right" if col != "part" else "left")
+    rows = imperfections.summary()
+    for row in rows[:40]:
+        element = row.get("element")
+        table.add_row(
+            str(row["part"]),
+            "all" if element is None else str(element),
+            str(row["order"]),
+            f"{row['amplitude'] * 1e9:.4g}",
+            f"{math.degrees(row['phase']):.4g}",
+        )
+    if len(rows) > 40:
+        table.caption = f"... and {len(rows) - 40} more harmonics"
+    return table
+
+
+@app.command()
+@_guard
+def frequencies(case_file: CaseArg, as_json: JsonOpt = False) -> None:
+    """Print cage, element-spin and element-pass frequencies in Hz and in orders.
+
+    A roller bearing's JSON also has roller_pass_inner/roller_pass_outer (equal to
+    ball_pass_inner/ball_pass_outer, which stay for every bearing).
+
+    Example: runout frequencies examples/seed002_608.toml --json
+    """
+    from runout.analysis.results import frequencies_json
+    from runout.case.model import load_case
+    from runout.geometry.bearing import RollerBearing
+    from runout.geometry.kinematics import bearing_frequencies
+    from runout.report.summary import bearing_summary
+
+    case = load_case(case_file)
+    # (name, bearing, contact angle): a spindle's bearings each at the angle its model uses
+    sets: list[tuple[str | None, Any, float]]
+    if case.spindle is not None:
+        from runout.models import spindle
+
+        setups = spindle.setup(case.spindle, case.operation).bearings
+        sets = [
+            (b.name, b.bearing, s.contact_angle)
+            for b, s in zip(case.spindle.bearings, setups, strict=True)
+        ]
+    else:
+        sets = [(None, case.bearing, bearing_summary(case.bearing, case.operation).contact_angle)]
+
+    def entry(bearing: Any, angle: float) -> dict[str, Any]:
+        freqs = bearing_frequencies(bearing, case.operation, angle)
+        element = "roller" if isinstance(bearing, RollerBearing) else "ball"
+        return {
+            "contact_angle_deg": math.degrees(angle),
+            "frequencies_hz": frequencies_json(freqs.to_dict(), element),
+            "orders": frequencies_json(freqs.orders(), element) if freqs.rotation > 0 else None,
+        }
+
+    if as_json:
+        payload = {"title": case.title, "case": str(case_file), **entry(*sets[0][1:])}
+        if case.spindle is not None:  # the first bearing above, as in runout run's output
+            payload["bearings"] = [{"name": n, **entry(b, a)} for n, b, a in sets]
+        _print_json(payload)
+        return
+    for name, bearing, angle in sets:
+        _out.print(_frequency_table(case, case_file, name, bearing, angle))
+
+
+def _frequency_table(
+    case: Any, case_file: Path, name: str | None, bearing: Any, angle: float
+) -> Table:
+    from runout.geometry.bearing import RollerBearing
+    from runout.geometry.kinematics import bearing_frequencies
+
+    freqs = bearing_frequencies(bearing, case.operation, angle)
+    element = "roller" if isinstance(bearing, RollerBearing) else "ball"
+    which = "" if name is None else f", {name} bearing"
+    table = Table(
+        title=f"{case.title or case_file}: characteristic frequencies{which} "
+        f"(contact angle {math.degrees(angle):.4g} deg, "
+        f"{case.operation.rotating_ring} ring rotating)",
+        title_justify="left",
+        header_style="bold",
+    )
+    table.add_column("frequency")
+    table.add_column("Hz", justify="right")
+    table.add_column("order (per rev)", justify="right")
+    orders = freqs.orders() if freqs.rotation > 0 else None
+    labels = {
+        "rotation": "rotating ring",
+        "cage": "cage (f_c)",
+        "ball_spin": f"{element} spin about its axis, rel. cage (f_b)",
+        "ball_pass_inner": f"{element} pass, inner raceway (BPFI)",
+        "ball_pass_outer": f"{element} pass, outer raceway (BPFO)",
+    }
+    for key, value in freqs.to_dict().items():
+        order = "-" if orders is None else f"{orders[key]:.6g}"
+        table.add_row(labels[key], f"{value:.6g}", order)
+    return table
+
+
+@app.command()
+@_guard
+def run(
+    case_file: CaseArg,
+    as_json: JsonOpt = False,
+    out: Annotated[
+        str | None,
+        typer.Option(
+            "--out",
+            help="Directory for plots and data files, with a copy of the case (case.toml).",
+        ),
+    ] = None,
+    report: Annotated[
+        bool,
+        typer.Option(
+            "--report", help="Also write a self-contained report.html (default --out out/<case>)."
+        ),
+    ] = False,
+    force: Annotated[
+        bool,
+        typer.Option(
+            "--force", help="Replace the results of another case in --out (its case.toml differs)."
+        ),
+    ] = False,
+    model: ModelOpt = None,
+    sets: SetOpt = None,
+    history_revolutions: Annotated[
+        float,
+        typer.Option(
+            "--history-revolutions",
+            min=0.01,
+            max=1e6,
+            help="Revolutions of the rotating ring the time-history figure shows (the last ones).",
+        ),
+    ] = 3.0,
+) -> None:
+    r"""Run the model named in the case's \[analysis] table (or --model).
+
+    \[analysis] bands adds band values, \[analysis] limit a PASS/FAIL verdict (docs/concepts.md).
+
+    --model NAME runs another model on the same case; --set KEY=VALUE changes one case key
+    (validated like the file). With either, --out's case.toml is the case as run.
+
+    --out DIR refuses a DIR whose case.toml is another case, unless --force.
+
+    Example: runout run examples/seed000_tada_fig7.toml --out out/tada --report
+    """
+    from runout.models import run_model
+    from runout.report.summary import bearing_summary
+
+    case = _load(case_file, model, sets)
+    if report and out is None:
+        out = str(Path("out") / case_file.stem)
+    case_text = _case_text(case_file, case, model, sets)
+    # checked before the model runs: a refused directory costs nothing and is left untouched
+    directory = None if out is None else _run_directory(out, case_file, force, case_text)
+    result = run_model(case)  # with the case's [analysis] outputs (bands, verdict)
+    if as_json:
+        _print_json(result.to_json())
+    else:
+        _print_sections(result.summary_sections())
+    if directory is not None:
+        try:
+            written = result.write(directory, history_revolutions=history_revolutions)
+            # The inputs travel with the results, so a report can be rebuilt from the directory.
+            summary = bearing_summary(case.bearing, case.operation)
+            (directory / "summary.json").write_text(
+                json.dumps({"title": case.title, **summary.to_json()}, indent=2, allow_nan=False)
+                + "\n"
+            )
+            (directory / "case.toml").write_text(case_text, encoding="utf-8")
+            written += [directory / "summary.json", directory / "case.toml"]
+            written += _copy_profiles(case_file, case, directory)
+            if report:
+                from runout.report.page import build_report
+
+                written.append(build_report(directory))
+        except OSError as exc:  # read-only directory, disk full: one line, not a traceback
+            _fail(f"{exc.filename or directory}: cannot write ({exc.strerror or exc})")
+        if not as_json:
+            for path in written:
+                _out.print(f"wrote {escape(str(path))}")
+
+
+def _copy_profiles(case_file: Path, case: Any, directory: Path) -> list[Path]:
+    """Copy the profile CSVs the case names by a relative path into ``--out``.
+
+    DIR/case.toml names them relative to itself, as the case file did: without the copies
+    ``runout run DIR/case.toml`` and ``runout report DIR`` could not read the case. A profile
+    must lie inside the case file's directory (or a ``RUNOUT_PROFILE_DIRS`` directory, named
+    by an absolute path, which the copy of the case reaches as it is).
+    """
+    copied: list[Path] = []
+    for entry in case.spec.profile:
+        name = Path(entry.file)
+        if name.is_absolute() or ".." in name.parts:
+            continue  # read from where it is, by the same absolute name
+        source, target = case_file.parent / name, directory / name
+        if target.exists() and target.samefile(source):
+            continue
+        target.parent.mkdir(parents=True, exist_ok=True)
+        shutil.copyfile(source, target)
+        copied.append(target)
+    return copied
+
+
+def _case_text(case_file: Path, case: Any, model: str | None, sets: list[str] | None) -> str:
+    """Text of the case as run: the file itself, or with --model/--set the case rewritten."""
+    if model is None and not sets:
+        return case_file.read_text(encoding="utf-8")
+    given = [f"--model {model}"] if model is not None else []
+    given += [f"--set {text}" for text in sets or ()]
+    header = f"# {case_file} run with {' '.join(given)}\n"
+    return _one_line(header.rstrip("\n")) + "\n" + case.to_toml()
+
+
+def _run_directory(out: str, case_file: Path, force: bool, case_text: str) -> Path:
+    """The ``run --out`` directory, created; refused when its case.toml is another case.
+
+    ``runout report DIR`` rebuilds the report from DIR/case.toml and the results next to it:
+    results of one case beside the case file of another would make a wrong report, and the
+    user's case.toml would be lost. Writing under another name would keep the file but still
+    mix the two, so another case is refused (``--force`` replaces it). The same text again is
+    a rerun of the same case and is rewritten in place.
+    """
+    from runout.study.run import OutputError, output_directory
+
+    directory = output_directory(out)
+    target = directory / "case.toml"
+    if force or not (target.exists() or target.is_symlink()):
+        return directory
+    try:
+        same = target.read_text(encoding="utf-8") == case_text
+    except (OSError, ValueError):
+        same = False
+    if not same:
+        raise OutputError(
+            f"{target}: holds another case (the results in {directory} are not of "
+            f"{case_file}); choose another --out or pass --force to replace them"
+        )
+    return directory
+
+
+@app.command("report")
+@_guard
+def report_command(
+    directory: Annotated[
+        Path, typer.Argument(help="Directory written by `runout run CASE --out DIR`.")
+    ],
+) -> None:
+    """Write DIR/report.html: one self-contained page with inputs, results and figures.
+
+    Example: runout report out/tada
+    """
+    from runout.report.page import build_report
+
+    path = build_report(directory)
+    _out.print(f"wrote {escape(str(path))}")
+
+
+def _number_list(text: str | None, kind: type, name: str) -> list[Any]:
+    if text is None or not text.strip():
+        return []
+    try:
+        return [kind(part) for part in text.split(",") if part.strip()]
+    except ValueError:
+        raise typer.BadParameter(f"{name}: expected a comma-separated list, got {text!r}") from None
+
+
+@app.command("sweep-dynamic")
+@_guard
+def sweep_dynamic(
+    case_file: CaseArg,
+    elements: Annotated[
+        str | None, typer.Option("--elements", help="Numbers of balls, e.g. 5,7,8,10,12,15.")
+    ] = None,
+    preload: Annotated[
+        str | None, typer.Option("--preload", help="Axial preloads [N], e.g. 10,30,50,100.")
+    ] = None,
+    out: Annotated[
+        str, typer.Option("--out", help="Directory for the panels, sweep.csv and points/.")
+    ] = "out/sweep-dynamic",
+    as_json: JsonOpt = False,
+    force: Annotated[
+        bool,
+        typer.Option("--force", help="Write into a non-empty --out that is not a sweep's."),
+    ] = False,
+) -> None:
+    """Dynamic model (seed 003) over numbers of balls x preloads: Fig. 3/4-style spectra.
+
+    Finished points are kept in OUT/points/ and reused by a rerun of the same case.
+
+    OUT is locked while the sweep writes; a non-empty OUT that is not a sweep's needs --force.
+
+    Example: runout sweep-dynamic examples/seed003_purohit.toml --elements 5,7,8,10,12,15
+    --preload 10,30,50,100 --out out/purohit
+    """
+    from rich.progress import Progress
+
+    from runout.case.model import load_case
+    from runout.models.dynamic import exact_number, sweep
+
+    case = load_case(case_file)
+    zs = _number_list(elements, int, "--elements")
+    ps = _number_list(preload, float, "--preload")
+    # no bar off a terminal: a refused --out stays one line on stderr
+    disable = as_json or not _err.is_terminal
+    with Progress(console=_err, transient=True, disable=disable) as bar:
+        task = bar.add_task("sweep", total=max(1, len(zs or [0]) * len(ps or [0])))
+
+        def tick(done: int, total: int, name: str) -> None:
+            bar.update(task, completed=done, total=total, description=name)
+
+        points = sweep(case, zs, ps, out, progress=tick, force=force, notify=_note)
+    if as_json:
+        _print_json({"points": [p.to_json() for p in points]})
+        return
+    table = Table(title=f"{case.title or case_file}: dynamic sweep", header_style="bold")
+    for col in ("balls", "preload [N]", "α_p [deg]", "BPF [Hz]", "f_n [Hz]", "BP line p-p [nm]"):
+        table.add_column(escape(col), justify="right")
+    for p in points:
+        table.add_row(
+            str(p.elements),
+            exact_number(p.preload_n),
+            f"{p.contact_angle_deg:.4g}",
+            f"{p.ball_passage_hz:.5g}",
+            "/".join(f"{f:.5g}" for f in p.natural_frequencies_hz),
+            f"{p.ball_passage_pp_m * 1e9:.4g}",
+        )
+    _out.print(table)
+    _out.print(f"wrote {escape(out)}/ (sweep.csv, trend.png, spectra_*.png, points/)")
+
+
+def _note(message: str) -> None:
+    """A one-line note on stderr: something the user should know that is not an error."""
+    _err.print(f"note: {escape(message)}", highlight=False, soft_wrap=True)
+
+
+@app.command("study")
+@_guard
+def study_command(
+    case_file: CaseArg,
+    as_json: JsonOpt = False,
+    out: Annotated[
+        str | None,
+        typer.Option(
+            "--out",
+            help="Directory for chunk files, manifest, summary, CSV and plots (new, empty or a "
+            "study's; locked while the study writes).",
+        ),
+    ] = None,
+    workers: Annotated[
+        int, typer.Option("--workers", min=1, help="Local worker processes (1: in-process).")
+    ] = 1,
+    scheduler: Annotated[
+        str | None,
+        typer.Option(
+            "--scheduler", help="Dask scheduler tcp://HOST:PORT (or 'local' for a local cluster)."
+        ),
+    ] = None,
+    resume: Annotated[
+        bool, typer.Option("--resume", help="Continue an interrupted run recorded in --out.")
+    ] = False,
+    chunk_size: Annotated[
+        int | None, typer.Option("--chunk-size", min=1, help="Samples per task and result file.")
+    ] = None,
+    force: Annotated[
+        bool,
+        typer.Option(
+            "--force",
+            help="Write into a non-empty --out that is not a study's; start afresh over a "
+            "corrupted manifest or a different study.",
+        ),
+    ] = False,
+    model: ModelOpt = None,
+    sets: SetOpt = None,
+) -> None:
+    r"""Run the case's \[study]: Monte Carlo over drawn quantities or a sweep (docs/studies.md).
+
+    A sample whose model fails is recorded with its error; the study goes on.
+
+    Exit status: 0 if any sample succeeded (failures noted), 1 if all failed, 2 for bad input.
+
+    Example: runout study examples/seed001_kim_table9.toml --json --workers 2
+    """
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TimeRemainingColumn
+
+    from runout.study.run import dask_executor, run_study
+
+    if resume and out is None:
+        _fail("--resume needs --out DIR (the directory of the interrupted run)")
+    case = _load(case_file, model, sets)
+    if case.study is None:
+        _fail(f"{case_file}: study: the case has no [study] table (see docs/studies.md)")
+    executor = None
+    if scheduler is not None:
+        executor = dask_executor(None if scheduler == "local" else scheduler)
+    columns = (
+        "[progress.description]{task.description}",
+        BarColumn(),
+        MofNCompleteColumn(),
+        TimeRemainingColumn(),
+    )
+    with Progress(*columns, console=_err, transient=True, disable=not _err.is_terminal) as bar:
+        task = bar.add_task("samples", total=None)
+
+        def tick(done: int, total: int) -> None:
+            bar.update(task, completed=done, total=total)
+
+        result = run_study(
+            case,
+            executor=executor,
+            workers=workers,
+            out=out,
+            resume=resume,
+            progress=tick,
+            chunk_size=chunk_size,
+            force=force,
+            notify=_note,
+        )
+    summary = result.to_json()
+    if as_json:
+        _print_json(summary)
+    else:
+        _print_study(summary, str(case.title or case_file), out)
+    _study_failures(summary)
+
+
+def _study_failures(summary: dict[str, Any]) -> None:
+    """Say how many samples failed; exit 1 when all did (the statistics are empty)."""
+    failed, total = summary["failed"], summary["samples"]
+    if not failed:
+        return
+    word = "samples" if summary["kind"] == "montecarlo" else "points"
+    first = summary["errors"][0]
+    example = f"{word[:-1]} {first['sample']}: {first['error']}"
+    if failed == total:
+        _err.print(
+            f"[bold red]error:[/] all {total} {word} failed ({escape(example)})",
+            highlight=False,
+            soft_wrap=True,
+        )
+        raise typer.Exit(1)
+    _note(
+        f"{failed} of {total} {word} failed and are left out of the statistics (first: {example})"
+    )
+
+
+def _print_study(summary: dict[str, Any], title: str, out: str | None) -> None:
+    """The study's statistics in one length unit chosen over the figures shown."""
+    from runout.base.display import format_length, length_unit
+
+    comps = summary["components"][:20]
+    stat_keys = ("mean", "std", "p5", "p50", "p95")
+    shown = [stats[k] for stats in summary["runout"].values() for k in stat_keys]
+    shown += [comp["pp_m"][k] for comp in comps for k in stat_keys]
+    unit = length_unit(v for v in shown if v is not None)
+    table = Table(
+        title=f"{title}: {summary['kind']} of {summary['samples']} samples"
+        f" ({summary['failed']} failed)",
+        title_justify="left",
+        header_style="bold",
+    )
+    columns = ("quantity", "Hz", *(f"{k} [{unit[0]}]" for k in stat_keys))
+    for col in columns:
+        table.add_column(escape(col), justify="left" if col == "quantity" else "right")
+
+    def fmt(value: float | None) -> str:
+        return "-" if value is None else format_length(value, unit).rsplit(" ", 1)[0]
+
+    for name, stats in summary["runout"].items():
+        table.add_row(escape(name), "", *(fmt(stats[k]) for k in stat_keys))
+    for comp in comps:
+        table.add_row(
+            escape(f"{comp['direction']} {comp['label']}"[:70]),
+            f"{comp['frequency_hz']:.5g}",
+            *(fmt(comp["pp_m"][k]) for k in stat_keys),
+        )
+    _out.print(table)
+    lot = summary.get("yield")
+    if lot is not None:
+        limit = format_length(lot["limit_m"], length_unit([lot["limit_m"]]))
+        if lot["fraction"] is None:
+            _out.print(f"yield: no sample succeeded (limit {limit} on {lot['quantity']})")
+        else:
+            _out.print(
+                f"yield: {lot['passed']} of {lot['samples']} bearings within {limit} on "
+                f"{lot['quantity']} ({100 * lot['fraction']:.1f} %; "
+                f"{100 * lot['confidence']:.0f} % interval {100 * lot['ci_low']:.1f}-"
+                f"{100 * lot['ci_high']:.1f} %, {lot['method']})",
+                soft_wrap=True,
+                highlight=False,
+            )
+    if out is not None:
+        files = "manifest.json, chunks/, summary.json, samples.csv"
+        if (Path(out) / "stiffness.csv").is_file():  # equilibrium: the stiffness of every point
+            files += ", stiffness.csv"
+        _out.print(f"wrote {escape(out)}/ ({files})")
+
+
+@app.command("reproduce")
+@_guard
+def reproduce_command(
+    only: Annotated[
+        str | None,
+        typer.Option(
+            "--only",
+            help="Comma-separated sections (kinematics, contact, spectrum, linear, roller, "
+            "dynamic, quasi_static, studies); default all.",
+        ),
+    ] = None,
+    out: Annotated[Path, typer.Option("--out", help="Where to write the document.")] = Path(
+        "VALIDATION.md"
+    ),
+    check_only: Annotated[
+        bool,
+        typer.Option(
+            "--check", help="Compare with the existing file instead of writing; exit 1 if stale."
+        ),
+    ] = False,
+) -> None:
+    """Run every reproducible table and figure of the seed papers and write VALIDATION.md.
+
+    Example: runout reproduce --only kinematics,contact --check
+    """
+    from rich.progress import Progress
+
+    from runout.validation import reproduce as rp
+
+    sections = None if only is None else [s.strip() for s in only.split(",") if s.strip()]
+    with Progress(console=_err, transient=True) as bar:
+        task = bar.add_task("reproduce", total=len(sections or rp.section_keys()))
+
+        def tick(title: str, done: int, total: int) -> None:
+            bar.update(task, completed=done, total=total, description=title[:50])
+
+        doc = rp.build(sections, progress=tick)
+    if check_only:
+        if not out.exists():
+            _fail(f"{out} does not exist")
+        existing = out.read_text(encoding="utf-8")
+        if sections is not None:
+            blocks = rp.split_sections(existing)
+            fresh_blocks = rp.split_sections(doc.text)
+            existing = "\n".join(blocks.get(t, "").rstrip() for t in fresh_blocks if t)
+            fresh = "\n".join(b.rstrip() for t, b in fresh_blocks.items() if t)
+        else:
+            fresh = doc.text
+        problems = rp.compare(fresh, existing)
+        _out.print(doc.summary())
+        if problems:
+            _err.print(f"{escape(str(out))} is stale: {len(problems)} difference(s)")
+            for p in problems[:20]:
+                _err.print(escape(p), soft_wrap=True)
+            raise typer.Exit(1)
+        _out.print(f"{escape(str(out))} is up to date")
+        return
+    out.write_text(doc.text, encoding="utf-8")
+    _out.print(doc.summary())
+    _out.print(f"wrote {escape(str(out))}")
+
+
+@app.command("warm")
+@_guard
+def warm_command() -> None:
+    """Compile every model's kernels for this machine now, so that no later command waits.
+
+    Each model's first command after an installation compiles its kernels (a few seconds,
+    said on stderr); this runs one example of every model, and a study, to do it ahead.
+    `make install` runs it. Example: runout warm
+    """
+    from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
+
+    from runout.cli.warm import WARM_CASES, WarmError, warm
+
+    with Progress(
+        TextColumn("{task.description}"), BarColumn(), TimeElapsedColumn(), console=_err
+    ) as bar:
+        task = bar.add_task("compiling", total=len(WARM_CASES))
+
+        def on_case(model: str, name: str, seconds: float | None) -> None:
+            if seconds is None:
+                bar.update(task, description=f"compiling the {model} kernels ({name})")
+            else:
+                bar.advance(task)
+
+        try:
+            times = warm(on_case=on_case)
+        except WarmError as exc:
+            bar.stop()
+            _fail(str(exc), 1)
+            return
+        bar.update(task, description="compiled")
+    for model, seconds in times:
+        _out.print(f"compiled the {escape(model)} kernels ({seconds:.1f} s)", highlight=False)
+
+
+# `runout diagnose` lives in its own module (the inverse of the linear model)
+from runout.cli.diagnose import register as _register_diagnose  # noqa: E402
+
+_register_diagnose(app)
+
+
+def main() -> None:
+    """Console-script entry point.
+
+    The command's exit status is final once it returns: the streams are flushed and the
+    ``atexit`` handlers run (logging, Dask, temporary files), then the process ends without
+    the interpreter's teardown of every module, which frees Numba's and LLVM's compiled code
+    object by object (about 0.2 s of every command). Should a non-daemon thread still run, the
+    interpreter exits the usual way and waits for it; ``python -m runout.cli`` (under a
+    profiler, say) always does.
+    """
+    try:
+        app()
+        code: object = 0
+    except SystemExit as exc:
+        code = exc.code
+    _exit(code)
+
+
+def _output_lost(exc: Exception) -> bool:
+    """Whether ``exc`` is the standard output failing (closed, or its disk full)."""
+    if sys.stdout is None or getattr(sys.stdout, "closed", False):
+        return True
+    return isinstance(exc, OSError) and exc.errno in (errno.ENOSPC, errno.EPIPE, errno.EBADF)
+
+
+def _exit(code: object) -> NoReturn:
+    """End the process with ``code`` as ``SystemExit`` would, without the interpreter's teardown."""
+    import atexit
+    import threading
+
+    main = threading.main_thread()
+    if any(t is not main and t.is_alive() and not t.daemon for t in threading.enumerate()):
+        raise SystemExit(code)
+    if code is None:
+        status = 0
+    elif isinstance(code, int):
+        status = code
+    else:  # SystemExit("message"): printed to stderr, status 1
+        print(code, file=sys.stderr)
+        status = 1
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            if stream is not None:  # None: started with the stream closed
+                stream.flush()
+        except (OSError, ValueError):  # a closed pipe or a full disk: the output is gone
+            status = status or 1
+    atexit._run_exitfuncs()
+    os._exit(status)

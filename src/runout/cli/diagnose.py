@@ -1,0 +1,194 @@
+"""The ``runout diagnose`` command (registered on the app by :func:`register`)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated, Any
+
+import typer
+from rich.markup import escape
+from rich.table import Table
+
+__all__ = ["register"]
+
+# the same annotations as the other commands' (runout.cli.app), at module level so that typer can
+# resolve them from this module's names
+CaseArg = Annotated[
+    Path, typer.Argument(help="TOML case file (see docs/case-file.md).", show_default=False)
+]
+JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON object on stdout.")]
+
+
+def _table(diagnosis: Any) -> list[Any]:
+    """Readable tables of a diagnosis (estimates, unattributed lines, what is not seen)."""
+    from runout.base.display import format_length
+
+    unit = "m" if diagnosis.quantity == "displacement" else "m/s"
+    out: list[Any] = []
+    est = Table(
+        title=f"Estimated deviations (linear model, {diagnosis.variant}); explained fraction "
+        f"{diagnosis.explained_fraction:.4f}",
+        title_justify="left",
+        header_style="bold",
+    )
+    for name in ("part", "lobes", "amplitude", "± 1σ", "phase [deg]", "line [Hz]", "whirl"):
+        est.add_column(escape(name), justify="right" if name not in ("part", "whirl") else "left")
+    est.add_column("share", justify="right")
+    for e in diagnosis.estimates:
+        who = e.part if e.element is None else f"{e.part} {e.element}"
+        if e.note.startswith(("ball set", "roller set")):
+            who += " set"
+        est.add_row(
+            escape(who),
+            escape(" | ".join(str(k) for k in e.lobes)),
+            escape(format_length(e.amplitude_m)),
+            escape(format_length(e.uncertainty_m)),
+            # a phase a hair below 2 pi is 0: print 0.0, not 360.0
+            f"{round(e.phase_rad * 57.29577951308232, 1) % 360.0:.1f}",
+            f"{e.frequency_hz:.6g}",
+            e.whirl,
+            f"{e.share:.3f}",
+        )
+    if not diagnosis.estimates:
+        est.add_row("none detected", "", "", "", "", "", "", "")
+    out.append(est)
+    if diagnosis.unattributed:
+        un = Table(
+            title="Unattributed lines (no bearing deviation of the model explains them)",
+            title_justify="left",
+            header_style="bold",
+        )
+        for name in ("frequency [Hz]", "order", f"p-p [{unit}]", "channel", "kinematic match"):
+            un.add_column(escape(name))
+        for u in diagnosis.unattributed:
+            un.add_row(
+                f"{u.frequency_hz:.6g}",
+                f"{u.order:.5g}",
+                f"{u.pp:.4g}",
+                u.channel,
+                escape(u.kinematic_match or "none"),
+            )
+        out.append(un)
+    return out
+
+
+def register(app: typer.Typer) -> None:
+    """Add ``diagnose`` to ``app`` (the ``runout`` command line)."""
+    from runout.cli.app import _fail, _guard, _out, _print_json
+
+    @app.command("diagnose")
+    @_guard
+    def diagnose_command(
+        case_file: CaseArg,
+        record: Annotated[
+            Path,
+            typer.Option(
+                "--record",
+                help="CSV record: time_s and x_m and/or y_m (units in brackets: 'x \\[um]'), "
+                "optional tachometer column rev.",
+                show_default=False,
+            ),
+        ],
+        quantity: Annotated[
+            str,
+            typer.Option(
+                "--quantity",
+                help="What x/y hold: displacement or velocity (Anderon-meter records).",
+            ),
+        ] = "displacement",
+        variant: Annotated[
+            str | None,
+            typer.Option(
+                "--variant",
+                help="Linear-model variant to invert: radial_spring or force_balance "
+                "(default: the case's \\[analysis] linear_variant).",
+                show_default=False,
+            ),
+        ] = None,
+        max_lobes: Annotated[
+            int | None,
+            typer.Option(
+                "--max-lobes",
+                min=1,
+                help="Largest lobe count searched (default: every line below the Nyquist "
+                "frequency, at most 240 lines).",
+                show_default=False,
+            ),
+        ] = None,
+        as_json: JsonOpt = False,
+        out: Annotated[
+            str | None,
+            typer.Option(
+                "--out",
+                help="Directory for report.html, diagnosis.json, the estimated case file "
+                "(estimated.toml, runs with `runout run`) and the figures.",
+                show_default=False,
+            ),
+        ] = None,
+    ) -> None:
+        r"""Estimate which part deviations produced a measured runout or vibration record.
+
+        CASE gives the bearing and the operation; its imperfection tables are ignored. The
+        record is fitted on the lines of the bearing's kinematics and the linear model is
+        inverted; what the record cannot tell apart is reported, not guessed
+        (docs/models/diagnosis.md).
+
+        Example: runout diagnose examples/seed002_608.toml --record run.csv --out out/diag
+        """
+        from runout.base.errors import CaseError
+        from runout.diagnose.fit import diagnose
+
+        if quantity not in ("displacement", "velocity"):
+            _fail(f'--quantity must be "displacement" or "velocity", got {quantity!r}')
+        if variant is not None and variant not in ("radial_spring", "force_balance"):
+            raise CaseError(
+                str(case_file),
+                "analysis.linear_variant",
+                f'--variant must be "radial_spring" or "force_balance", got {variant!r}',
+            )
+        from runout.cli.app import _load
+
+        case = _load(case_file)
+        directory = None
+        if out is not None:
+            from runout.study.run import output_directory
+
+            directory = output_directory(out)
+        result = diagnose(
+            case,
+            record,
+            quantity=quantity,  # type: ignore[arg-type]
+            variant=variant,
+            max_lobes=max_lobes,
+        )
+        if as_json:
+            _print_json(result.to_json())
+        else:
+            for table in _table(result):
+                _out.print(table)
+            remarks = [
+                f"{e.part} {' | '.join(map(str, e.lobes))} lobes at {e.frequency_hz:.6g} Hz: "
+                f"{e.note}"
+                for e in result.estimates
+                if e.note
+            ]
+            for title, items in (
+                ("About the estimates", tuple(remarks)),
+                ("Not observable with this record", result.not_observable),
+                ("Notes", result.notes),
+            ):
+                if not items:
+                    continue
+                _out.print(f"[bold]{escape(title)}[/]", soft_wrap=True)
+                for text in items:
+                    _out.print(f"- {escape(text)}", highlight=False, soft_wrap=True, emoji=False)
+        if directory is not None:
+            from runout.report.diagnosis import write_diagnosis
+
+            try:
+                written = write_diagnosis(result, directory)
+            except OSError as exc:
+                _fail(f"{exc.filename or directory}: cannot write ({exc.strerror or exc})")
+            if not as_json:
+                for path in written:
+                    _out.print(f"wrote {escape(str(path))}")

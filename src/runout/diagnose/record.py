@@ -1,0 +1,532 @@
+"""Reading a measured runout or vibration record for :func:`runout.diagnose.fit`.
+
+A record is a CSV file with a header row: a time column (``time_s``, or ``t [ms]``), one or both
+of ``x_m`` and ``y_m`` (radial displacement of the measured ring along x and y, see the
+conventions page; ``x [um]`` gives the unit in brackets) and optionally a tachometer column
+``rev`` (a revolution count, or one pulse per revolution at two levels). Every failure is a
+:class:`RecordError` naming the file and the row (the file's line number, the header being
+line 1) or the column.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Literal
+
+import numpy as np
+from numpy.typing import NDArray
+
+from runout.base.errors import RunoutError
+from runout.case.limits import RECORD_BYTES_PER_FILE_BYTE, Budget, format_bytes, max_record_bytes
+
+__all__ = [
+    "ARRAYS",
+    "MIN_SAMPLES",
+    "RECORD_BYTES_PER_FILE_BYTE",
+    "Record",
+    "RecordError",
+    "file_line",
+    "read_record",
+    "record_from_arrays",
+]
+
+FloatArray = NDArray[np.float64]
+Quantity = Literal["displacement", "velocity"]
+
+#: Fewest samples a record may have (a line fit needs several per unknown).
+MIN_SAMPLES = 64
+#: Relative scatter of the time step accepted as uniform sampling (clock jitter).
+STEP_RTOL = 1e-3
+#: Largest relative variation of the speed a tachometer may show over the record: the fit
+#: assumes a constant speed (lines smear by the variation times their order).
+TACHO_SPEED_RTOL = 0.01
+#: Largest radial displacement [m] and velocity [m/s] a record may hold: anything larger is
+#: a column in the wrong unit (micrometres in an ``x_m`` column), not a bearing's runout.
+MAX_VALUE = {"displacement": 1.0, "velocity": 1.0e3}
+
+_HEADER = re.compile(r"^\s*([A-Za-z][A-Za-z0-9_]*?)\s*(?:\[\s*([^\]]*?)\s*\])?\s*$")
+_DISPLACEMENT_SUFFIX = {"_m": "m"}
+_VELOCITY_SUFFIX = {"_m_per_s": "m/s", "_mps": "m/s"}
+
+
+class RecordError(RunoutError, ValueError):
+    """A record file that cannot be diagnosed; the message names the file and row or column.
+
+    Parameters
+    ----------
+    file : str
+        The record file as given.
+    where : str
+        ``"row 12, column x_m"``, ``"column time_s"`` or ``""`` for the whole file.
+    message : str
+        What is wrong and how to fix it.
+    """
+
+    def __init__(self, file: str, where: str, message: str) -> None:
+        self.file = file
+        self.where = where
+        self.message = message
+        prefix = f"{file}: {where}: " if where else f"{file}: "
+        super().__init__(prefix + message)
+
+
+@dataclass(frozen=True, eq=False)
+class Record:
+    """A measured record, SI units, uniform time steps.
+
+    Attributes
+    ----------
+    file : str
+        Where it was read from (``"<arrays>"`` for arrays).
+    time : ndarray, shape (n,)
+        Instants [s].
+    channels : dict of str to ndarray
+        ``"x"`` and/or ``"y"``: displacement [m] or velocity [m/s] (see ``quantity``).
+    quantity : {"displacement", "velocity"}
+    tachometer_hz : float or None
+        Speed of the rotating ring from the tachometer column [Hz], if any: the least-squares
+        rate of the instants each revolution starts.
+    columns : dict of str to str
+        The header's name of the time column and of each channel (``"x"`` -> ``"x [um]"``),
+        for messages.
+    """
+
+    file: str
+    time: FloatArray
+    channels: dict[str, FloatArray]
+    quantity: Quantity
+    tachometer_hz: float | None = None
+    columns: dict[str, str] = field(default_factory=dict)
+
+    def column(self, channel: str) -> str:
+        """The header's name of ``channel`` (``"time"``, ``"x"`` or ``"y"``)."""
+        return self.columns.get(channel, channel)
+
+    @property
+    def samples(self) -> int:
+        """Number of instants."""
+        return int(self.time.size)
+
+    @property
+    def step(self) -> float:
+        """Mean time step [s]."""
+        return float((self.time[-1] - self.time[0]) / (self.time.size - 1))
+
+    @property
+    def duration(self) -> float:
+        """n × step: the span the fit resolves lines over [s]."""
+        return self.samples * self.step
+
+    def tachometer_speed(self) -> float | None:
+        """Mean speed of the rotating ring from the tachometer [Hz] (None without one)."""
+        return self.tachometer_hz
+
+
+def _unit_scale(file: str, column: str, unit: str, kind: str) -> float:
+    from runout.base.units import UnitError, to_si
+
+    try:
+        return to_si(f"1 {unit}", kind)
+    except (UnitError, ValueError):
+        word = {"length": "a length (m, mm, um, nm, in)", "time": "a time (s, ms, us)"}.get(
+            kind, "a velocity (m/s, mm/s, um/s)"
+        )
+        raise RecordError(
+            file, f"column {column!r}", f"unknown unit {unit!r}: expected {word}"
+        ) from None
+
+
+def _columns(
+    file: str, header: list[str], quantity: Quantity
+) -> tuple[dict[str, tuple[int, float]], list[str]]:
+    """Column roles (time, x, y, rev) -> (index, SI scale) from the header names."""
+    kind = "length" if quantity == "displacement" else "velocity"
+    roles: dict[str, tuple[int, float]] = {}
+    ignored: list[str] = []
+    for i, raw in enumerate(header):
+        name = raw.strip().strip('"').strip()
+        m = _HEADER.match(name)
+        if m is None:
+            ignored.append(name)
+            continue
+        base, unit = m.group(1).lower(), m.group(2)
+        role = None
+        scale = 1.0
+        if unit is not None:
+            role = {"t": "time", "time": "time", "x": "x", "y": "y", "rev": "rev"}.get(base)
+            if role == "time":
+                scale = _unit_scale(file, name, unit, "time")
+            elif role in ("x", "y"):
+                scale = _unit_scale(file, name, unit, kind)
+            elif role == "rev" and unit not in ("", "rev", "1", "-"):
+                raise RecordError(
+                    file, f"column {name!r}", f"unknown unit {unit!r}: rev counts revolutions"
+                )
+        elif base in ("time_s", "t_s"):
+            role = "time"
+        elif base == "rev":
+            role = "rev"
+        elif base in ("x_m", "y_m"):
+            if quantity == "velocity":
+                raise RecordError(
+                    file,
+                    f"column {name!r}",
+                    "is a displacement but --quantity velocity was given: name the column "
+                    "x_m_per_s (or x [mm/s]), or drop --quantity velocity",
+                )
+            role = base[0]
+        elif base in ("x_m_per_s", "y_m_per_s"):
+            if quantity == "displacement":
+                raise RecordError(
+                    file,
+                    f"column {name!r}",
+                    "is a velocity: pass --quantity velocity (Anderon-meter records)",
+                )
+            role = base[0]
+        if role is None:
+            ignored.append(name)
+            continue
+        if role in roles:
+            raise RecordError(file, f"column {name!r}", f"a second {role} column")
+        roles[role] = (i, scale)
+    if "time" not in roles:
+        only = header[0] if len(header) == 1 else ""
+        for sep, word in ((";", "semicolons"), ("\t", "tabs")):
+            if sep in only:
+                raise RecordError(
+                    file,
+                    "header",
+                    f"the fields are separated by {word}: a record is comma-separated (save "
+                    "it as CSV with commas, and decimal points)",
+                )
+        raise RecordError(
+            file,
+            "header",
+            "no time column: name one time_s (or t [ms], time [s]); found "
+            + ", ".join(repr(h.strip()) for h in header),
+        )
+    if "x" not in roles and "y" not in roles:
+        unit = "x_m, y_m (or x [um])" if quantity == "displacement" else "x_m_per_s (or x [mm/s])"
+        raise RecordError(
+            file,
+            "header",
+            f"no displacement column: expected one or both of {unit}; found "
+            + ", ".join(repr(h.strip()) for h in header),
+        )
+    return roles, ignored
+
+
+#: The file name of a record built from arrays (:func:`record_from_arrays`).
+ARRAYS = "<arrays>"
+
+
+def file_line(file: str, index: int) -> int:
+    """The line number in ``file`` (the header is line 1) of data row ``index`` (0-based).
+
+    The reader skips blank lines, so a blank line inside the data moves every later row; the
+    file is read again to count them (only to name the row of an error). A record built from
+    arrays counts its rows from 2, as a file without blank lines would.
+    """
+    if file == ARRAYS:
+        return index + 2
+    try:
+        with open(file, encoding="utf-8-sig", newline="") as fh:
+            fh.readline()
+            seen = -1
+            for number, line in enumerate(fh, start=2):
+                if line.strip():
+                    seen += 1
+                    if seen == index:
+                        return number
+    except (OSError, UnicodeDecodeError):
+        pass
+    return index + 2
+
+
+def _parse_error(file: str, exc: ValueError, header: list[str]) -> RecordError:
+    """numpy's loadtxt message turned into the file's line and the column's name."""
+    text = str(exc)
+    m = re.search(r"could not convert string '([^']*)' to \w+ at row (\d+), column (\d+)", text)
+    if m:
+        value, row, col = m.group(1), int(m.group(2)), int(m.group(3))
+        name = header[col - 1].strip() if 0 < col <= len(header) else str(col)
+        return RecordError(
+            file, f"row {file_line(file, row)}, column {name!r}", f"{value!r} is not a number"
+        )
+    m = re.search(r"number of columns changed from (\d+) to (\d+) at row (\d+)", text)
+    if m:
+        return RecordError(
+            file,
+            f"row {file_line(file, int(m.group(3)) - 1)}",  # loadtxt counts these from 1
+            f"has {m.group(2)} fields where the header has {m.group(1)}",
+        )
+    return RecordError(file, "", f"cannot be read as CSV ({text})")
+
+
+def read_record(
+    path: str | Path,
+    quantity: Quantity = "displacement",
+    *,
+    limits: Budget | None = None,
+) -> Record:
+    """Read and check a record CSV file.
+
+    Parameters
+    ----------
+    path : str or Path
+        The CSV file (comma-separated, one header row).
+    quantity : {"displacement", "velocity"}
+        What the x/y columns hold; bare names are ``x_m`` [m] or ``x_m_per_s`` [m/s].
+    limits : Budget, optional
+        Memory budget; the file's size is checked against it before anything is read.
+
+    Returns
+    -------
+    Record
+
+    Raises
+    ------
+    RecordError
+        Missing file or columns, unknown unit, a value that is not a number or not finite,
+        time not increasing, not uniform or with a gap, too few samples, a bad tachometer.
+    """
+    file = str(path)
+    p = Path(path)
+    if quantity not in ("displacement", "velocity"):
+        raise RecordError(
+            file, "", f'quantity must be "displacement" or "velocity", got {quantity!r}'
+        )
+    try:
+        size = p.stat().st_size
+        if not p.is_file():
+            raise RecordError(file, "", "is not a regular file")
+    except OSError as exc:
+        raise RecordError(file, "", f"cannot be read ({exc.strerror or exc})") from None
+    budget = limits if limits is not None else Budget()
+    if size > max_record_bytes(budget):
+        need = size * RECORD_BYTES_PER_FILE_BYTE
+        raise RecordError(
+            file,
+            "",
+            f"a record of {format_bytes(size)} would need about {format_bytes(need)} of memory; "
+            f"shorten or decimate it {budget.raise_hint('memory')}",
+        )
+    import warnings
+
+    try:
+        # utf-8-sig: a spreadsheet's "CSV UTF-8" starts with a byte-order mark
+        with p.open("r", encoding="utf-8-sig", newline="") as fh:
+            first = fh.readline()
+            if not first.strip():
+                raise RecordError(file, "row 1", "no header row (expected e.g. time_s,x_m,y_m)")
+            header = first.rstrip("\r\n").split(",")
+            roles, _ = _columns(file, header, quantity)
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")  # an empty body: our own error below
+                # the open file is parsed from its second line, without a copy of the text
+                # quotechar: exports that quote every field ("0.5") are read as numbers
+                data = np.loadtxt(
+                    fh, delimiter=",", dtype=np.float64, ndmin=2, comments=None, quotechar='"'
+                )
+    except RecordError:
+        raise
+    except UnicodeDecodeError as exc:
+        raise RecordError(file, "", f"is not UTF-8 text ({exc.reason})") from None
+    except ValueError as exc:
+        raise _parse_error(file, exc, header) from None
+    except OSError as exc:
+        raise RecordError(file, "", f"cannot be read as text ({exc})") from None
+    if data.size == 0:
+        raise RecordError(file, "", "has a header but no data rows")
+    if data.shape[1] != len(header):
+        raise RecordError(
+            file,
+            f"row {file_line(file, 0)}",
+            f"has {data.shape[1]} fields where the header has {len(header)}",
+        )
+    cols = {role: np.ascontiguousarray(data[:, i]) * scale for role, (i, scale) in roles.items()}
+    del data
+    return _checked(file, cols, header, roles, quantity)
+
+
+def record_from_arrays(
+    time: FloatArray,
+    x: FloatArray | None = None,
+    y: FloatArray | None = None,
+    *,
+    quantity: Quantity = "displacement",
+    rev: FloatArray | None = None,
+) -> Record:
+    """A :class:`Record` from arrays (SI units), checked like a file (rows count from 2)."""
+    cols: dict[str, FloatArray] = {"time": np.asarray(time, dtype=np.float64).ravel()}
+    names = ["time_s"]
+    suffix = "_m" if quantity == "displacement" else "_m_per_s"
+    for role, arr in (("x", x), ("y", y), ("rev", rev)):
+        if arr is not None:
+            cols[role] = np.asarray(arr, dtype=np.float64).ravel()
+            names.append(role + suffix if role != "rev" else "rev")
+    roles = {role: (i, 1.0) for i, role in enumerate(cols)}
+    if "x" not in cols and "y" not in cols:
+        raise RecordError(ARRAYS, "", "give x or y (or both)")
+    sizes = {a.size for a in cols.values()}
+    if len(sizes) != 1:
+        raise RecordError(ARRAYS, "", "time, x, y and rev must have the same length")
+    return _checked(ARRAYS, cols, names, roles, quantity)
+
+
+def _checked(
+    file: str,
+    cols: dict[str, FloatArray],
+    header: list[str],
+    roles: dict[str, tuple[int, float]],
+    quantity: Quantity,
+) -> Record:
+    def name(role: str) -> str:
+        return header[roles[role][0]].strip()
+
+    for role, values in cols.items():
+        bad = np.flatnonzero(~np.isfinite(values))
+        if bad.size:
+            raise RecordError(
+                file,
+                f"row {file_line(file, int(bad[0]))}, column {name(role)!r}",
+                f"{float(values[bad[0]])!r} is not a finite number ({bad.size} such value(s); fill "
+                "or cut the gaps, the fit needs every instant)",
+            )
+    limit = MAX_VALUE[quantity]
+    unit = "m" if quantity == "displacement" else "m/s"
+    for role in ("x", "y"):
+        column = cols.get(role)
+        if column is None or column.size == 0:
+            continue
+        worst = int(np.argmax(np.abs(column)))
+        if abs(column[worst]) > limit:
+            raise RecordError(
+                file,
+                f"row {file_line(file, worst)}, column {name(role)!r}",
+                f"{float(column[worst]):.6g} {unit} is no bearing's radial motion: check the "
+                f"column's unit (a bare {role}_{'m' if unit == 'm' else 'm_per_s'} is in {unit}; "
+                f"give it in brackets, e.g. '{role} [um]')",
+            )
+    t = cols["time"]
+    n = t.size
+    if n < MIN_SAMPLES:
+        raise RecordError(file, "", f"too short: {n} samples, at least {MIN_SAMPLES} needed")
+    dt = np.diff(t)
+    back = np.flatnonzero(dt <= 0.0)
+    if back.size:
+        i = int(back[0])
+        raise RecordError(
+            file,
+            f"row {file_line(file, i + 1)}, column {name('time')!r}",
+            f"time does not increase ({float(t[i])!r} then {float(t[i + 1])!r} s)",
+        )
+    step = float(np.median(dt))  # a gap must not move the reference step
+    dev = np.abs(dt - step)
+    worst = int(np.argmax(dev))
+    if dev[worst] > STEP_RTOL * step:
+        ratio = dt[worst] / step
+        what = (
+            f"a gap of {ratio:.3g} time steps"
+            if ratio > 1.5
+            else f"a step of {dt[worst]:.6g} s where the mean step is {step:.6g} s"
+        )
+        last = float(np.max(np.abs(t)))
+        if float(np.spacing(last)) > 0.25 * STEP_RTOL * step:
+            # a double holds 16 digits: time stamps from an epoch lose the step's precision
+            fix = (
+                f"time stamps near {last:.4g} s are stored to {float(np.spacing(last)):.2g} s "
+                "only: give the time from the start of the record"
+            )
+        else:
+            fix = "resample the record on a uniform grid"
+        raise RecordError(
+            file,
+            f"row {file_line(file, worst + 1)}, column {name('time')!r}",
+            f"time is not uniformly sampled: {what}; {fix}",
+        )
+    rev = cols.get("rev")
+    tacho = None if rev is None else _tachometer(file, name("rev"), t, rev)
+    channels: dict[str, FloatArray] = {role: cols[role] for role in ("x", "y") if role in cols}
+    for role, values in channels.items():
+        if float(np.ptp(values)) == 0.0:
+            raise RecordError(
+                file,
+                f"column {name(role)!r}",
+                f"is constant ({float(values[0])!r} {unit} throughout): a dead channel would be "
+                "read as a motion of zero; drop the column to diagnose the other alone",
+            )
+    names = {role: name(role) for role in ("time", *channels)}
+    return Record(file, t, channels, quantity, tacho, names)
+
+
+def _tachometer(file: str, column: str, t: FloatArray, rev: FloatArray) -> float:
+    """Speed [Hz] from a revolution count or a once-per-revolution pulse train.
+
+    A column of two levels (0/1, or a TTL 0/5 V) is a pulse train: a revolution starts at each
+    rising edge. Otherwise it is a cumulative count (with or without its fraction, as an
+    encoder gives it): revolution L starts where the count reaches L, interpolated between
+    the samples. The speed is the least-squares slope of those instants over every revolution,
+    not the first and last alone (each instant is only known to a time step).
+    """
+    values = np.unique(rev)
+    if values.size == 2 or (values.size == 1 and values[0] in (0.0, 1.0)):
+        high = rev > 0.5 * (values[0] + values[-1])
+        rising = np.flatnonzero(high[1:] & ~high[:-1]) + 1
+        if rising.size < 3:
+            raise RecordError(
+                file,
+                f"column {column!r}",
+                f"a pulse tachometer needs at least 3 pulses (2 revolutions), found {rising.size}",
+            )
+        starts = t[rising]
+        _steady(file, column, np.diff(starts), "pulse periods")
+        return _rate(starts)
+    drop = np.flatnonzero(np.diff(rev) < 0.0)
+    if drop.size:
+        i = int(drop[0])
+        raise RecordError(
+            file,
+            f"row {file_line(file, i + 1)}, column {column!r}",
+            f"the revolution count decreases ({float(rev[i])!r} then {float(rev[i + 1])!r}); "
+            "give a cumulative count or a pulse per revolution",
+        )
+    # the instants the count reaches each whole revolution after its first value
+    levels = math.floor(rev[0]) + 1.0 + np.arange(max(0, math.floor(rev[-1]) - math.floor(rev[0])))
+    if levels.size < 3:
+        raise RecordError(
+            file,
+            f"column {column!r}",
+            f"the revolution count completes {max(levels.size - 1, 0)} revolution(s); at least "
+            "2 are needed",
+        )
+    after = np.searchsorted(rev, levels)  # first sample at or past the level (never 0)
+    before = after - 1
+    frac = (levels - rev[before]) / (rev[after] - rev[before])
+    starts = t[before] + frac * (t[after] - t[before])
+    _steady(file, column, np.diff(starts), "revolution times")
+    return _rate(starts)
+
+
+def _rate(starts: FloatArray) -> float:
+    """Revolutions per second from the instants successive revolutions start [Hz]."""
+    k = np.arange(starts.size, dtype=np.float64)
+    k -= k.mean()
+    period = float(np.dot(k, starts - starts.mean()) / np.dot(k, k))
+    return 1.0 / period
+
+
+def _steady(file: str, column: str, periods: FloatArray, what: str) -> None:
+    mean = float(periods.mean())
+    spread = float(np.max(np.abs(periods - mean))) / mean
+    if spread > TACHO_SPEED_RTOL:
+        raise RecordError(
+            file,
+            f"column {column!r}",
+            f"the speed varies by {100 * spread:.3g} % over the record ({what}); the diagnosis "
+            f"assumes a constant speed (within {100 * TACHO_SPEED_RTOL:g} %): resample the "
+            "record to the shaft angle or cut a steady part",
+        )

@@ -1,0 +1,123 @@
+"""One look for every runout figure: rcParams, colours, font sizes and axis labels.
+
+Only :mod:`runout.report.plotting` imports this module; nothing here imports matplotlib at import
+time (the CLI's start-up cost), :func:`styled` imports it when a plotting function runs.
+"""
+
+from __future__ import annotations
+
+import functools
+from collections.abc import Callable, Iterable
+from typing import Any, TypeVar
+
+import numpy as np
+
+__all__ = [
+    "ANNOTATION_SIZE",
+    "DIRECTION_COLOURS",
+    "FIT_COLOUR",
+    "HIST_COLOUR",
+    "LIMIT_COLOUR",
+    "NOTE_COLOUR",
+    "RC",
+    "axis_label",
+    "length_scale",
+    "styled",
+]
+
+#: Font sizes [pt]: titles, axis labels, tick labels, legends and line labels.
+TITLE_SIZE = 9.0
+LABEL_SIZE = 9.0
+TICK_SIZE = 8.0
+LEGEND_SIZE = 7.5
+ANNOTATION_SIZE = 7.0
+
+#: One colour per measuring direction, the same in every figure.
+DIRECTION_COLOURS = {"x": "#1f77b4", "y": "#ff7f0e", "z": "#2ca02c"}
+#: Histogram bars, fitted laws, spec limits and notes.
+HIST_COLOUR = "#4c72b0"
+FIT_COLOUR = "#222222"
+LIMIT_COLOUR = "#c0392b"
+NOTE_COLOUR = "0.35"
+
+#: matplotlib rcParams applied (through :func:`styled`) while a runout figure is built and saved.
+RC: dict[str, Any] = {
+    "figure.dpi": 100,
+    "savefig.dpi": 120,
+    "figure.facecolor": "white",
+    "savefig.facecolor": "white",
+    "font.size": LABEL_SIZE,
+    "axes.titlesize": TITLE_SIZE,
+    "axes.labelsize": LABEL_SIZE,
+    "xtick.labelsize": TICK_SIZE,
+    "ytick.labelsize": TICK_SIZE,
+    "legend.fontsize": LEGEND_SIZE,
+    "legend.framealpha": 0.85,
+    "figure.titlesize": 10.0,
+    "axes.grid": True,
+    "grid.alpha": 0.3,
+    "axes.spines.top": False,
+    "axes.spines.right": False,
+    "lines.linewidth": 1.0,
+    # a plain minus keeps tick labels ASCII-measurable and readable in every font
+    "axes.unicode_minus": False,
+}
+
+F = TypeVar("F", bound=Callable[..., Any])
+
+
+def styled(fn: F) -> F:
+    """Run ``fn`` with :data:`RC` in force (matplotlib's own settings are restored after).
+
+    The style is applied per call, not globally, so a program that imports runout and draws
+    its own figures keeps its matplotlib defaults.
+    """
+
+    @functools.wraps(fn)
+    def wrapper(*args: Any, **kwargs: Any) -> Any:
+        import matplotlib
+
+        matplotlib.use("Agg", force=False)
+        rc: Any = RC  # matplotlib types the keys as a Literal union
+        with matplotlib.rc_context(rc):
+            return fn(*args, **kwargs)
+
+    return wrapper  # type: ignore[return-value]
+
+
+def axis_label(quantity: str, unit: str) -> str:
+    """``"quantity [unit]"``: every axis of a runout figure names its quantity and unit.
+
+    Parameters
+    ----------
+    quantity : str
+        What is plotted, in words (``"peak-to-peak"``).
+    unit : str
+        Its unit as shown (``"nm"``, ``"rpm"``, ``"-"`` for a pure number).
+
+    Returns
+    -------
+    str
+    """
+    return f"{quantity} [{unit}]"
+
+
+def length_scale(values_m: Iterable[float]) -> tuple[str, float]:
+    """Unit and factor showing lengths ``values_m`` [m] at their own scale (nm, um, mm, m).
+
+    :func:`runout.base.display.length_unit` decides; the chosen unit makes the largest finite
+    magnitude read between 0.1 and 1000.
+
+    Parameters
+    ----------
+    values_m : array_like of float
+        Lengths [m] (NaN and inf are ignored), read in one vectorised pass.
+
+    Returns
+    -------
+    (str, float)
+        Unit name and the factor from metres to it.
+    """
+    from runout.base.display import length_unit
+
+    return length_unit(np.asarray(values_m, dtype=np.float64))

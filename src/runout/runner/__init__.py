@@ -1,0 +1,3 @@
+"""Running a case: dispatch to the model (run_model), the model-level input checks, and the
+[analysis] outputs added to a result (bands, verdict). Imports the layers below.
+"""

@@ -1,0 +1,432 @@
+"""A study's output directory: atomic files, one writer, only runout's own directories.
+
+Part of :mod:`runout.study.run` (its module docstring describes studies).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import json
+import math
+import os
+import re
+import secrets
+import sys
+from collections.abc import Callable, Iterator
+from pathlib import Path
+from typing import Any, TextIO
+
+from runout.study.chunks import ChunkTask
+from runout.study.plan import FORMAT, RUNOUT_KEYS, StudyError
+
+try:
+    import fcntl
+except ImportError:  # pragma: no cover - Windows: O_EXCL lock files instead of flock
+    fcntl = None  # type: ignore[assignment]
+
+
+# --------------------------------------------------------------------------------------------
+# output directories: atomic files, one writer, only runout's own directories
+# --------------------------------------------------------------------------------------------
+#: The lock file of an output directory (holds the writer's PID; removed when it ends).
+LOCK_NAME = ".lock"
+#: Temporary files of :func:`write_atomic`: ``.<name>.<12 hex digits>.tmp``.
+_TEMP = re.compile(r"^\..+\.[0-9a-f]{12}\.tmp$")
+#: What ``runout sweep-dynamic`` writes into its ``--out`` (legacy directories have no marker).
+_SWEEP_DYNAMIC = re.compile(r"^(points|sweep\.csv|trend\.png|spectra_.+\.png)$")
+
+
+class OutputError(StudyError):
+    """An output directory that cannot be used: not a directory, unwritable, foreign, locked."""
+
+
+def write_atomic(path: Path, write: Callable[[TextIO], Any]) -> Path:
+    """Write ``path`` through a uniquely named temporary file in the same directory.
+
+    ``os.replace`` within one directory is atomic: a reader, or a study resumed after a kill,
+    sees the old file or the new one, never half of one. The temporary name is unique
+    (``.<name>.<random>.tmp``, created with O_EXCL), so two writers can never truncate or
+    rename each other's temporary file, and a leftover of a killed run is recognised and
+    removed by the next run (:func:`_remove_leftovers`). Created with mode 0o666 minus the
+    umask, like any file the user writes (``mkstemp`` would make it private).
+
+    Raises
+    ------
+    OutputError
+        Naming ``path`` when the file system refuses (read-only, full, permissions).
+    """
+    try:
+        for _ in range(100):
+            tmp = path.with_name(f".{path.name}.{secrets.token_hex(6)}.tmp")
+            try:
+                fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
+            except FileExistsError:
+                continue
+            break
+        else:  # pragma: no cover - 100 collisions of 48 random bits
+            raise FileExistsError(f"no free temporary name next to {path}")
+        try:
+            with os.fdopen(fd, "w", encoding="utf-8", newline="") as fh:
+                write(fh)
+            os.replace(tmp, path)
+        except BaseException:
+            tmp.unlink(missing_ok=True)
+            raise
+    except OSError as exc:
+        raise OutputError(f"{path}: cannot write ({exc.strerror or exc})") from None
+    return path
+
+
+def output_directory(out: Path | str, option: str = "--out") -> Path:
+    """Check ``out`` can be an output directory and create it (with its parents).
+
+    Parameters
+    ----------
+    out : path or str
+        As the user gave it. An empty string is refused: ``Path("")`` is the current
+        directory, and writing a study there by accident would replace its files.
+    option : str
+        Name of the option in messages.
+
+    Raises
+    ------
+    OutputError
+        One line naming the path: empty, an existing file (``/dev/null`` too), or a directory
+        that cannot be created.
+    """
+    if isinstance(out, str) and not out.strip():
+        raise OutputError(f"{option}: empty path; give a directory (use {option} . for this one)")
+    path = Path(out)
+    if path.exists() and not path.is_dir():
+        raise OutputError(f"{option} {path}: exists and is not a directory")
+    try:
+        path.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise OutputError(
+            f"{option} {path}: cannot create the directory ({exc.strerror or exc})"
+        ) from None
+    return path
+
+
+def _own_lock_file(path: Path) -> bool:
+    """Whether ``path`` looks like a lock file of ours: empty or one PID."""
+    try:
+        text = path.read_text(encoding="ascii").strip()
+    except (OSError, ValueError):
+        return False
+    return text == "" or text.isdigit()
+
+
+def _entries(directory: Path) -> list[Path]:
+    """What ``directory`` holds besides our lock file and leftover temporary files."""
+    return sorted(
+        p
+        for p in directory.iterdir()
+        if not (p.name == LOCK_NAME and _own_lock_file(p)) and not _TEMP.match(p.name)
+    )
+
+
+def refuse_foreign(directory: Path, kind: str, force: bool, option: str = "--out") -> None:
+    """Refuse a non-empty ``directory`` that is not a runout output of ``kind``.
+
+    A study replaces its own files (chunks, manifest, summary, CSV, plots) in its output
+    directory; pointed by mistake at a directory of the user's (or of another command) it
+    would overwrite files that happen to share those names and mix its files with others.
+
+    Parameters
+    ----------
+    directory : Path
+        An existing directory.
+    kind : {"study", "sweep-dynamic"}
+        A study directory holds a ``manifest.json`` of format FORMAT; a sweep-dynamic
+        directory holds only ``points/``, ``sweep.csv``, ``trend.png`` and ``spectra_*.png``.
+    force : bool
+        Write into the directory anyway (only the files runout writes are replaced).
+
+    Raises
+    ------
+    OutputError
+        Naming the directory and the first entry that is not runout's.
+    StudyError
+        A study directory whose manifest is corrupted (naming the file).
+    """
+    if force:
+        return
+    try:
+        entries = _entries(directory)
+    except OSError as exc:
+        raise OutputError(f"{option} {directory}: cannot list ({exc.strerror or exc})") from None
+    if not entries:
+        return
+    if kind == "study":
+        manifest = directory / "manifest.json"
+        if manifest.is_file():
+            _read_manifest(manifest)  # a corrupted manifest is an error of its own
+            return
+        foreign: Path | None = entries[0]
+    else:
+        foreign = next((p for p in entries if not _SWEEP_DYNAMIC.match(p.name)), None)
+    if foreign is None:
+        return
+    raise OutputError(
+        f"{option} {directory}: not empty and not a runout {kind} output (it holds "
+        f"{foreign.name!r}); choose an empty directory or pass --force to write into it"
+    )
+
+
+def _remove_leftovers(directory: Path) -> None:
+    """Delete temporary files left by a killed writer (only names write_atomic makes)."""
+    for folder in (directory, directory / "chunks", directory / "points"):
+        if folder.is_dir():
+            for p in folder.iterdir():
+                if _TEMP.match(p.name):
+                    p.unlink(missing_ok=True)
+
+
+def _lock_holder(fd: int) -> str:
+    try:
+        text = os.pread(fd, 32, 0).decode("ascii", "replace").strip()
+    except OSError:
+        text = ""
+    return text if text.isdigit() else "unknown"
+
+
+def _pid_alive(pid: int) -> bool:  # pragma: no cover - only without fcntl (Windows)
+    if pid <= 0:
+        return False
+    if sys.platform == "win32":
+        import ctypes
+
+        handle = ctypes.windll.kernel32.OpenProcess(0x1000, False, pid)  # type: ignore[attr-defined]
+        if not handle:
+            return False
+        ctypes.windll.kernel32.CloseHandle(handle)  # type: ignore[attr-defined]
+        return True
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True
+    return True
+
+
+@contextlib.contextmanager
+def output_lock(directory: Path) -> Iterator[Path]:
+    """Hold the exclusive writer lock of ``directory`` (``directory/.lock``) while in the block.
+
+    POSIX: ``flock`` on the lock file. The kernel releases it when the holder ends, even by
+    SIGKILL, so a lock is never stale; the file holds the holder's PID for the message.
+    Without ``fcntl`` (Windows) the file is created with O_EXCL and a lock whose PID is no
+    longer running is taken over. The file is removed on the way out; a writer that opened
+    it just before must then lock the file now at the path (checked with ``samestat``),
+    otherwise two writers could hold locks on two different files.
+
+    Raises
+    ------
+    OutputError
+        ``"<dir>/.lock: another runout study is writing to <dir> (pid N)"``, or naming the
+        lock file when it cannot be created (unwritable directory).
+    """
+    path = directory / LOCK_NAME
+    busy = f"{path}: another runout study is writing to {directory} (pid {{}})"
+    try:
+        fd = _acquire(path, busy)
+    except OSError as exc:
+        raise OutputError(f"{path}: cannot create the lock file ({exc.strerror or exc})") from None
+    try:
+        os.ftruncate(fd, 0)
+        os.pwrite(fd, f"{os.getpid()}\n".encode(), 0)
+        yield path
+    finally:
+        with contextlib.suppress(OSError):
+            path.unlink()
+        os.close(fd)
+
+
+def _acquire(path: Path, busy: str) -> int:
+    if fcntl is None:  # pragma: no cover - Windows
+        while True:
+            try:
+                return os.open(path, os.O_RDWR | os.O_CREAT | os.O_EXCL, 0o666)
+            except FileExistsError:
+                holder = path.read_text(encoding="ascii", errors="replace").strip()
+                if holder.isdigit() and _pid_alive(int(holder)):
+                    raise OutputError(busy.format(holder)) from None
+                path.unlink(missing_ok=True)  # stale: its writer is gone
+    while True:
+        fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o666)
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            holder = _lock_holder(fd)
+            os.close(fd)
+            raise OutputError(busy.format(holder)) from None
+        except BaseException:
+            os.close(fd)
+            raise
+        try:
+            if os.path.samestat(os.fstat(fd), os.stat(path)):
+                return fd
+        except FileNotFoundError:
+            pass
+        os.close(fd)  # the holder removed that file on its way out: lock the new one
+
+
+# ---------------------------------------------------------------- manifest and chunk checks
+_RESUME_KEYS = ("format", "digest", "samples", "chunk_size", "chunks")
+
+
+def _is_int(value: Any) -> bool:
+    return isinstance(value, int) and not isinstance(value, bool)
+
+
+def _is_number(value: Any) -> bool:
+    return isinstance(value, int | float) and not isinstance(value, bool) and math.isfinite(value)
+
+
+def _manifest_problem(doc: Any) -> str | None:
+    """What makes ``doc`` not a manifest.json of this version, or None."""
+    if not isinstance(doc, dict):
+        return f"a JSON {type(doc).__name__}, not an object"
+    if doc.get("format") != FORMAT:
+        return f"format is {doc.get('format')!r}, not {FORMAT!r}"
+    if not isinstance(doc.get("digest"), str):
+        return "no study digest"
+    if doc.get("kind") not in ("montecarlo", "sweep"):
+        return f"kind is {doc.get('kind')!r}"
+    for key in ("samples", "chunk_size", "chunks"):
+        if not _is_int(doc.get(key)) or doc[key] < 1:
+            return f"{key} is {doc.get(key)!r}, not a positive integer"
+    done = doc.get("done")
+    if not isinstance(done, list) or not all(_is_int(k) and 0 <= k < doc["chunks"] for k in done):
+        return f"done is not a list of chunk numbers below {doc['chunks']}"
+    if len(set(done)) != len(done):
+        return "done lists a chunk twice"
+    if not isinstance(doc.get("complete"), bool):
+        return "complete is not true or false"
+    return None
+
+
+def _read_manifest(path: Path) -> dict[str, Any]:
+    """``path`` (a manifest.json) checked field by field.
+
+    Raises
+    ------
+    StudyError
+        Naming the file when it cannot be read or is not a manifest of this version: a
+        truncated or hand-edited manifest must not become a traceback, nor a resume that
+        trusts whatever it lists.
+    """
+    try:
+        doc = json.loads(path.read_text(encoding="utf-8"))
+    except OSError as exc:
+        problem = f"cannot read: {exc.strerror or exc}"
+    except ValueError as exc:  # JSONDecodeError, UnicodeDecodeError
+        problem = f"not valid JSON: {exc}"
+    else:
+        found = _manifest_problem(doc)
+        if found is None:
+            return dict(doc)
+        problem = found
+    raise StudyError(
+        f"{path}: corrupted study manifest ({problem}); pass --force to start the study afresh "
+        f"in {path.parent}"
+    )
+
+
+def _chunk_problem(chunk: Any, task: ChunkTask, digest: str) -> str | None:
+    """What makes ``chunk`` not the result of ``task`` in the study ``digest``, or None.
+
+    The digest comes first: a chunk swapped in from another study (or another version of
+    this case) is well formed and would silently replace this study's samples. The rest is
+    the structure _assemble and StudyResult rely on, so that a damaged file is recomputed
+    instead of raising KeyError / TypeError half-way through the statistics.
+    """
+    if not isinstance(chunk, dict):
+        return f"a JSON {type(chunk).__name__}, not an object"
+    if chunk.get("digest") != digest:
+        return "written by another study" if "digest" in chunk else "no study digest"
+    for key, want in (("chunk", task.index), ("start", task.start), ("stop", task.stop)):
+        if not _is_int(chunk.get(key)) or chunk[key] != want:
+            return f"{key} is {chunk.get(key)!r}, expected {want}"
+    n = task.stop - task.start
+    model, values, runout = chunk.get("model"), chunk.get("values"), chunk.get("runout")
+    if not isinstance(model, list) or len(model) != n or not all(isinstance(m, str) for m in model):
+        return f"model is not a list of {n} names"
+    if not isinstance(values, dict) or set(values) != {q.key for q in task.quantities}:
+        return "values do not hold the study's quantities"
+    for q in task.quantities:
+        column = values[q.key]
+        if not isinstance(column, list) or len(column) != n:
+            return f"values of {q.key} are not a list of {n}"
+        for v in column:
+            ok = (
+                isinstance(v, list) and len(v) == q.size and all(_is_number(x) for x in v)
+                if q.size > 1
+                else _is_number(v) or isinstance(v, str)
+            )
+            if not ok:
+                return f"a value of {q.key} is {v!r}"
+    if not isinstance(runout, dict) or not all(
+        isinstance(runout.get(k), list)
+        and len(runout[k]) == n
+        and all(v is None or _is_number(v) for v in runout[k])
+        for k in RUNOUT_KEYS
+    ):
+        return "runout is not a list of numbers per figure"
+    lines = chunk.get("lines")
+    if not isinstance(lines, dict):
+        return "lines is not an object"
+    for key, entry in lines.items():
+        if (
+            "|" not in key
+            or not isinstance(entry, dict)
+            or not _is_number(entry.get("frequency_hz"))
+            or not isinstance(entry.get("pp_m"), list)
+            or len(entry["pp_m"]) != n
+            or not all(_is_number(v) for v in entry["pp_m"])
+        ):
+            return f"line {key!r} is damaged"
+    errors = chunk.get("errors")
+    if not isinstance(errors, dict) or not all(
+        k.isdigit() and task.start <= int(k) < task.stop and isinstance(v, str)
+        for k, v in errors.items()
+    ):
+        return "errors is not an object of sample numbers and messages"
+    return _stiffness_problem(chunk, task)
+
+
+#: The model whose points carry a stiffness (``runout.models.equilibrium.MODEL``; not imported:
+#: checking a chunk must not load the model).
+_EQUILIBRIUM = "equilibrium"
+#: Keys of a point's ``radial_stiffness`` (:func:`runout.models.equilibrium.radial_stiffness`).
+_RADIAL_KEYS = ("kxx_n_per_m", "kxy_n_per_m", "kyx_n_per_m", "kyy_n_per_m", "speed_rpm")
+
+
+def _stiffness_problem(chunk: dict[str, Any], task: ChunkTask) -> str | None:
+    """What is wrong with the chunk's ``stiffness`` entries, or None.
+
+    Every equilibrium point that ran must have one: a chunk written before studies kept the
+    stiffness (no ``stiffness`` object) is recomputed rather than giving a stiffness.csv with
+    points missing.
+    """
+    stiffness = chunk.get("stiffness", {})
+    if not isinstance(stiffness, dict):
+        return "stiffness is not an object"
+    for k, entry in stiffness.items():
+        radial = entry.get("radial_stiffness") if isinstance(entry, dict) else None
+        if (
+            not k.isdigit()
+            or not task.start <= int(k) < task.stop
+            or not isinstance(radial, dict)
+            or set(radial) != set(_RADIAL_KEYS)
+            or not all(_is_number(v) for v in radial.values())
+            or not _is_number(entry.get("axial_stiffness_n_per_m"))
+        ):
+            return f"stiffness of sample {k!r} is damaged"
+    for row, model in enumerate(chunk["model"]):
+        i = str(task.start + row)
+        if model == _EQUILIBRIUM and i not in chunk["errors"] and i not in stiffness:
+            return f"sample {i} has no stiffness (written by an earlier version)"
+    return None

@@ -1,0 +1,339 @@
+"""Plan of a study: the varied quantities of ``[study.vary]`` in SI and the seeded draws.
+
+Part of :mod:`runout.study.run` (its module docstring describes studies).
+"""
+
+from __future__ import annotations
+
+import copy
+import math
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from runout.base.errors import CaseError, RunoutError
+from runout.base.units import to_si
+from runout.case.model import Case, CaseSpec, StudySpec, VarySpec, parse_vary_key
+from runout.case.schema import split_shorthand
+
+#: Runout figures kept per sample, in this order (the keys of :class:`runout.analysis.results.Runout`).
+RUNOUT_KEYS = ("radial_pp_m", "axial_pp_m", "rro_pp_m", "nrro_pp_m")
+FORMAT = "runout-study/1"
+_DIAMETER_KEY = "elements.diameter_errors"
+
+
+class StudyError(RunoutError):
+    """A study that cannot run as asked (output directory, resume mismatch, bad quantity)."""
+
+
+def sample_rng(seed: int, index: int) -> np.random.Generator:
+    """Generator of sample ``index``: the ``index``-th child of ``SeedSequence(seed)``.
+
+    Identical to ``SeedSequence(seed).spawn(index + 1)[index]``, without spawning the others.
+    """
+    return np.random.default_rng(np.random.SeedSequence(seed, spawn_key=(index,)))
+
+
+# --------------------------------------------------------------------------------------------
+# quantities
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class Quantity:
+    """One varied case quantity, every parameter in SI.
+
+    Attributes
+    ----------
+    key : str
+        The ``[study.vary]`` key (``"operation.axial_load"``, ``"element_diameter_sigma"``).
+    path : tuple
+        ``(table, index or None, name)`` of the case key it replaces.
+    size : int
+        1 for a scalar key, Z for a per-element array (every element drawn independently).
+    distribution : str
+        ``"normal"``, ``"uniform"``, ``"sample"`` (Monte Carlo) or ``"sweep"``.
+    mean : ndarray, shape (size,)
+        Normal: mean per entry [SI].
+    spread : tuple of float
+        Normal: (std,); uniform: (low, high) [SI].
+    values : tuple
+        ``"sample"``: the measured values; ``"sweep"``: the swept values (SI floats or the
+        literal strings of a text key).
+    """
+
+    key: str
+    path: tuple[str, int | None, str]
+    size: int
+    distribution: str
+    mean: NDArray[np.float64] = field(default_factory=lambda: np.zeros(0))
+    spread: tuple[float, ...] = ()
+    values: tuple[Any, ...] = ()
+
+    def draw(self, rng: np.random.Generator) -> NDArray[np.float64]:
+        """Draw the ``size`` values of one sample [SI]."""
+        if self.distribution == "normal":
+            return self.mean + self.spread[0] * rng.standard_normal(self.size)
+        if self.distribution == "uniform":
+            return rng.uniform(self.spread[0], self.spread[1], self.size)
+        if self.distribution == "sample":
+            pool = np.asarray(self.values, dtype=np.float64)
+            return pool[rng.integers(0, pool.size, self.size)]
+        raise StudyError(f"study.vary.{self.key}: a sweep quantity is not drawn")
+
+
+def _set_at(data: dict[str, Any], path: tuple[str, int | None, str], value: Any) -> None:
+    table, index, name = path
+    table, _, bearing = table.partition(".")
+    if bearing:  # a spindle bearing's [elements.<name>]
+        data.setdefault(table, {}).setdefault(bearing, {})[name] = value
+    elif index is None:
+        data.setdefault(table, {})[name] = value
+    else:
+        data[table][index - 1][name] = value
+
+
+def _get_at(spec: CaseSpec, path: tuple[str, int | None, str]) -> Any:
+    table, index, name = path
+    table, _, bearing = table.partition(".")
+    node = getattr(spec, table)
+    if bearing:
+        node = node.get(bearing) if isinstance(node, dict) else None
+    if index is not None:
+        node = node[index - 1]
+    return None if node is None else getattr(node, name)
+
+
+def _element_count(case: Case, path: tuple[str, int | None, str]) -> int:
+    """Z of the bearing whose per-element key ``path`` is (``[elements]`` or
+    ``[elements.<name>]``), 0 for any other key."""
+    table, _, name = path
+    if name not in ("diameter_errors", "pitch_errors"):
+        return 0
+    if table == "elements":
+        return case.bearing.elements
+    if table.startswith("elements.") and case.spindle is not None:
+        for b in case.spindle.bearings:
+            if f"elements.{b.name}" == table:
+                return b.bearing.elements
+    return 0
+
+
+def _convert(
+    case: Case, data: dict[str, Any], path: tuple[str, int | None, str], raw: Any, where: str
+) -> Any:
+    """SI value of ``raw`` placed at ``path``: validated as the case key itself would be."""
+    trial = copy.deepcopy(data)
+    size = _element_count(case, path)
+    _set_at(trial, path, [raw] * size if size else raw)
+    try:
+        spec = CaseSpec.model_validate(trial)
+    except Exception as exc:  # pydantic ValidationError: report it on the study key
+        from pydantic import ValidationError
+
+        from runout.case.model import first_validation_error
+
+        if isinstance(exc, ValidationError):
+            _, message = first_validation_error(exc)
+            raise CaseError(case.path, where, message) from None
+        raise
+    value = _get_at(spec, path)
+    return value[0] if size else value
+
+
+def plan_quantities(case: Case, data: dict[str, Any] | None = None) -> list[Quantity]:
+    """Resolve the ``[study.vary]`` table of ``case`` into :class:`Quantity` objects (SI).
+
+    Parameters
+    ----------
+    case : Case
+        A case with a ``[study]`` table.
+    data : dict, optional
+        The case document (default: rebuilt from the validated case).
+
+    Raises
+    ------
+    CaseError
+        Naming ``study.vary.<key>`` when a value is not valid where it goes.
+    """
+    study = _study_of(case)
+    data = _case_data(case) if data is None else data
+    out: list[Quantity] = []
+    for key in sorted(study.vary):
+        entry = study.vary[key]
+        where = f"study.vary.{key}"
+        shorthand = split_shorthand(key)
+        if shorthand is not None:
+            assert not isinstance(entry, VarySpec)
+            imperfections, z = _bearing_of(case, key, where, shorthand[1])
+            sigma = to_si(entry, "length")
+            base = np.asarray(imperfections.diameter_errors, dtype=np.float64)
+            table = "elements" if shorthand[1] is None else f"elements.{shorthand[1]}"
+            out.append(Quantity(key, (table, None, "diameter_errors"), z, "normal", base, (sigma,)))
+            continue
+        assert isinstance(entry, VarySpec)
+        path = parse_vary_key(key)
+        if path[0] == "elements" or path[0].startswith("elements."):
+            _bearing_of(case, key, where, path[0].partition(".")[2] or None)
+        table, index, _name = path
+        if index is not None and index > len(data.get(table, [])):
+            raise CaseError(
+                case.path, where, f"the case has {len(data.get(table, []))} [[{table}]] entries"
+            )
+        size = _element_count(case, path) or 1
+
+        def conv(
+            raw: Any, what: str, path: tuple[str, int | None, str] = path, where: str = where
+        ) -> Any:
+            return _convert(case, data, path, raw, f"{where}.{what}")
+
+        if entry.distribution is None:  # sweep
+            values = _sweep_values(entry, conv, where, case.path)
+            out.append(Quantity(key, path, size, "sweep", values=tuple(values)))
+            continue
+        if entry.distribution == "normal":
+            std = _numeric(conv(entry.std, "std"), case.path, f"{where}.std")
+            if std < 0.0:
+                raise CaseError(case.path, f"{where}.std", "must be >= 0")
+            if entry.mean is not None:
+                mean = np.full(size, _numeric(conv(entry.mean, "mean"), case.path, where))
+            else:
+                current = _get_at(case.spec, path)
+                if current is None:
+                    mean = np.zeros(size)
+                elif size > 1:
+                    mean = np.asarray(current, dtype=np.float64)
+                else:
+                    mean = np.full(size, _numeric(current, case.path, where))
+            out.append(Quantity(key, path, size, "normal", mean, (std,)))
+        elif entry.distribution == "uniform":
+            low = _numeric(conv(entry.low, "low"), case.path, f"{where}.low")
+            high = _numeric(conv(entry.high, "high"), case.path, f"{where}.high")
+            if high < low:
+                raise CaseError(case.path, f"{where}.high", "must be >= low")
+            out.append(Quantity(key, path, size, "uniform", spread=(low, high)))
+        else:
+            assert entry.values is not None
+            values = [
+                _numeric(conv(v, f"values[{i + 1}]"), case.path, f"{where}.values[{i + 1}]")
+                for i, v in enumerate(entry.values)
+            ]
+            out.append(Quantity(key, path, size, "sample", values=tuple(values)))
+    # two keys on one case quantity (element_diameter_sigma and elements.diameter_errors):
+    # the later draw would silently replace the other's
+    drawn_by: dict[tuple[str, int | None, str], str] = {}
+    for q in out:
+        if q.path in drawn_by:
+            raise CaseError(
+                case.path,
+                f"study.vary.{q.key}",
+                f"varies the same quantity as study.vary.{drawn_by[q.path]}; keep one",
+            )
+        drawn_by[q.path] = q.key
+    return out
+
+
+def _bearing_of(case: Case, key: str, where: str, name: str | None) -> tuple[Any, int]:
+    """Imperfections and Z of the bearing a per-element key draws for: the case's bearing
+    (``name`` None) or the spindle's bearing ``name``.
+
+    Raises
+    ------
+    CaseError
+        A spindle key without a bearing (which bearing's balls would it be?), a bearing name
+        on a single-bearing case, or a name that is not one of the case's ``[[bearings]]``.
+    """
+    if case.spindle is None:
+        if name is not None:
+            plain = key.replace(f".{name}", "", 1)
+            raise CaseError(
+                case.path,
+                where,
+                f"names a spindle bearing ('{name}') but the case has one bearing ([bearing]); "
+                f"write '{plain}'",
+            )
+        return case.imperfections, case.bearing.elements
+    names = [b.name for b in case.spindle.bearings]
+    if name is None:
+        # a spindle's element errors are per bearing ([elements.<name>]): a draw without a
+        # name would not say which bearing's balls it stands for
+        base, _, rest = key.partition(".")
+        example = f"{base}.{names[0]}" + (f".{rest}" if rest else "")
+        raise CaseError(
+            case.path,
+            where,
+            "a spindle's element errors are per bearing ([elements.<name>]): name the bearing, "
+            f"e.g. '{example}' (bearings: {', '.join(names)})",
+        )
+    for b in case.spindle.bearings:
+        if b.name == name:
+            return b.imperfections, b.bearing.elements
+    raise CaseError(case.path, where, f"'{name}' is not a [[bearings]] name ({', '.join(names)})")
+
+
+def _numeric(value: Any, file: str, where: str) -> float:
+    if isinstance(value, bool) or not isinstance(value, int | float):
+        raise CaseError(
+            file,
+            where,
+            f'is not a number ({value!r}); draw it from distribution = "sample" or sweep it',
+        )
+    if isinstance(value, int):
+        raise CaseError(
+            file, where, 'is an integer key: use distribution = "sample" with integer values'
+        )
+    return float(value)
+
+
+def _sweep_values(
+    entry: VarySpec, conv: Callable[[Any, str], Any], where: str, file: str
+) -> list[Any]:
+    if entry.values is not None:
+        return [conv(v, f"values[{i + 1}]") for i, v in enumerate(entry.values)]
+    start = _range_end(conv(entry.start, "start"), file, f"{where}.start")
+    stop = _range_end(conv(entry.stop, "stop"), file, f"{where}.stop")
+    integer = isinstance(start, int) and isinstance(stop, int)
+    if entry.num is not None:
+        grid: list[float | int] = [float(v) for v in np.linspace(start, stop, entry.num)]
+        if integer:
+            if any(v != round(v) for v in grid):
+                raise CaseError(file, f"{where}.num", "an integer key needs integer steps")
+            grid = [round(v) for v in grid]
+    else:
+        step = _range_end(
+            to_si(entry.step, "dimensionless")
+            if not isinstance(entry.step, str)
+            else conv(entry.step, "step"),
+            file,
+            f"{where}.step",
+        )
+        if step == 0 or (stop - start) * step < 0:
+            raise CaseError(file, f"{where}.step", "must be nonzero and point from start to stop")
+        count = math.floor((stop - start) / step + 1e-9) + 1
+        grid = [start + step * k for k in range(count)]
+        if integer and isinstance(step, int | float) and float(step).is_integer():
+            grid = [round(v) for v in grid]
+    return [conv(v, f"values[{i + 1}]") for i, v in enumerate(grid)]
+
+
+def _range_end(value: Any, file: str, where: str) -> float | int:
+    if isinstance(value, bool) or not isinstance(value, int | float):
+        raise CaseError(file, where, f"a range needs numbers, got {value!r}; use values = [...]")
+    return value
+
+
+def _study_of(case: Case) -> StudySpec:
+    if case.study is None:
+        raise CaseError(case.path, "study", "the case has no [study] table (see docs/studies.md)")
+    return case.study
+
+
+def _case_data(case: Case) -> dict[str, Any]:
+    """The case document in SI numbers, without ``[study]`` (re-validates to the same case)."""
+    return case.spec.model_dump(mode="python", exclude_none=True, exclude={"study"})
+
+
+def _models(case: Case) -> list[str]:
+    study = _study_of(case)
+    return list(study.models) if study.models else [case.analysis.model]

@@ -1,0 +1,494 @@
+"""A study's results: statistics, yield and the column-wise :class:`StudyResult`.
+
+Part of :mod:`runout.study.run` (its module docstring describes studies).
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, TextIO
+
+import numpy as np
+from numpy.typing import NDArray
+
+from runout.study.chunks import ERRORS_SHOWN
+from runout.study.files import write_atomic
+from runout.study.plan import RUNOUT_KEYS, Quantity
+
+
+# --------------------------------------------------------------------------------------------
+# statistics
+# --------------------------------------------------------------------------------------------
+def statistics(values: ArrayLikeF, bins: int = 20) -> dict[str, Any]:
+    """Mean, std (ddof 1), 2σ, 5/50/95 % percentiles, min, max and histogram of ``values``.
+
+    Non-finite entries (failed samples) are left out.
+    """
+    v = np.asarray(values, dtype=np.float64)
+    v = v[np.isfinite(v)]
+    if v.size == 0:
+        nan = float("nan")
+        return {
+            "mean": nan,
+            "std": nan,
+            "two_sigma": nan,
+            "p5": nan,
+            "p50": nan,
+            "p95": nan,
+            "min": nan,
+            "max": nan,
+            "histogram": {"edges": [], "counts": []},
+        }
+    std = float(np.std(v, ddof=1)) if v.size > 1 else 0.0
+    p5, p50, p95 = (float(x) for x in np.percentile(v, [5.0, 50.0, 95.0]))
+    # values equal to round-off (a line no swept quantity changes, e.g. a spindle's in-phase
+    # translation) cannot be cut into finite-size bins: one bin holds them
+    spread = float(v.max() - v.min())
+    equal = 0.0 < spread <= 1e-10 * float(np.abs(v).max())  # (all equal: numpy widens)
+    counts, edges = np.histogram(v, bins=1 if equal else bins)
+    return {
+        "mean": float(np.mean(v)),
+        "std": std,
+        "two_sigma": 2.0 * std,
+        "p5": p5,
+        "p50": p50,
+        "p95": p95,
+        "min": float(v.min()),
+        "max": float(v.max()),
+        "histogram": {"edges": [float(e) for e in edges], "counts": [int(c) for c in counts]},
+    }
+
+
+ArrayLikeF = Sequence[float] | NDArray[np.float64]
+_CONTRACT = ("mean", "std", "p5", "p50", "p95")
+#: Stiffness columns of stiffness.csv and :meth:`StudyResult.to_dataframe` [N/m].
+_STIFFNESS_COLUMNS = ("kxx_n_per_m", "kxy_n_per_m", "kyx_n_per_m", "kyy_n_per_m", "kzz_n_per_m")
+#: Runout columns of :meth:`StudyResult.to_dataframe`, in this order.
+_FRAME_RUNOUT = ("radial_pp_m", "rro_pp_m", "nrro_pp_m", "axial_pp_m")
+#: Confidence of the interval of a lot's yield [-].
+YIELD_CONFIDENCE = 0.95
+
+
+# --------------------------------------------------------------------------------------------
+# result
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class StudyResult:
+    """All samples (or points) of a study, column-wise.
+
+    Attributes
+    ----------
+    kind : {"montecarlo", "sweep"}
+    title : str
+    seed : int
+    quantities : tuple of Quantity
+    model : list of str, length N
+        Model of each sample.
+    values : dict
+        Quantity key -> list of N values (lists for per-element keys).
+    runout : dict
+        RUNOUT_KEYS -> ndarray (N,) [m]; NaN for failed samples.
+    lines : dict
+        ``"direction|label"`` -> (frequency [Hz], ndarray (N,) of p-p [m]).
+    errors : dict
+        Sample index -> message, for samples whose model failed.
+    bins : int
+        Histogram bins.
+    limit : (str, float) or None
+        ``[analysis] limit_on`` and ``limit`` [m] when the case gives a spec limit: the
+        Monte Carlo JSON gets ``yield``, a sweep's points get ``pass``.
+    stiffness : dict
+        Sample index -> ``{"radial_stiffness": {...}, "axial_stiffness_n_per_m": K_aa}`` for
+        every equilibrium sample that ran (the run JSON's ``radial_stiffness`` [N/m, rpm] and
+        the axial diagonal of its ``stiffness_matrix`` [N/m]); written as ``stiffness.csv``.
+    """
+
+    kind: str
+    title: str
+    seed: int
+    quantities: tuple[Quantity, ...]
+    model: list[str]
+    values: dict[str, list[Any]]
+    runout: dict[str, NDArray[np.float64]]
+    lines: dict[str, tuple[float, NDArray[np.float64]]]
+    errors: dict[int, str]
+    bins: int = 20
+    limit: tuple[str, float] | None = None
+    stiffness: dict[int, dict[str, Any]] = field(default_factory=dict)
+
+    @property
+    def samples(self) -> int:
+        """Number of samples (or sweep points × models)."""
+        return len(self.model)
+
+    def line_table(self) -> list[tuple[str, float, str, NDArray[np.float64]]]:
+        """(direction, frequency [Hz], label, p-p per sample [m]), largest mean first."""
+        rows = [
+            (key.split("|", 1)[0], f, key.split("|", 1)[1], pp)
+            for key, (f, pp) in self.lines.items()
+        ]
+        ok = np.isfinite(self.runout["radial_pp_m"])
+        rows.sort(key=lambda r: (-float(np.mean(r[3][ok])) if ok.any() else 0.0, r[0], r[1]))
+        return rows
+
+    def summary(self) -> dict[str, Any]:
+        """Full statistics (JSON-ready): runout and lines with histograms (Monte Carlo)."""
+        ok = np.isfinite(self.runout["radial_pp_m"])
+        runout = {k: statistics(self.runout[k], self.bins) for k in RUNOUT_KEYS}
+        comps = [
+            {
+                "direction": d,
+                "frequency_hz": f,
+                "label": label,
+                "pp_m": statistics(pp[ok], self.bins),
+            }
+            for d, f, label, pp in self.line_table()
+        ]
+        return {
+            "title": self.title,
+            "kind": self.kind,
+            "seed": self.seed,
+            "models": sorted(set(self.model)),
+            "samples": self.samples,
+            "failed": len(self.errors),
+            "errors": self.error_list(),
+            "quantities": [q.key for q in self.quantities],
+            "runout": runout,
+            "components": comps,
+        }
+
+    def error_list(self, limit: int = ERRORS_SHOWN) -> list[dict[str, Any]]:
+        """The first ``limit`` failed samples as ``{"sample": i, "error": "Type: message"}``.
+
+        Bounded: a study where every one of 10^5 samples fails must not write 10^5 messages
+        into summary.json; ``failed`` gives the count, ``points`` (sweeps) every error.
+        """
+        return [{"sample": i, "error": self.errors[i]} for i in sorted(self.errors)[:limit]]
+
+    def to_json(self) -> dict[str, Any]:
+        """The ``runout study --json`` object (the documented JSON contract, docs/studies.md).
+
+        Monte Carlo: ``samples``, ``failed``, ``errors`` (the first ERRORS_SHOWN failed samples
+        with their error), ``runout`` and ``components`` with each p-p as {mean, std, p5, p50,
+        p95}. Sweep: the same statistics over the points, plus ``points`` (values, model,
+        runout and components of each point).
+        """
+        full = self.summary()
+
+        def trim(stats: dict[str, Any]) -> dict[str, float | None]:
+            return {k: _finite(stats[k]) for k in _CONTRACT}
+
+        out: dict[str, Any] = {
+            "title": self.title,
+            "kind": self.kind,
+            "models": full["models"],
+            "seed": self.seed,
+            "samples": self.samples,
+            "failed": len(self.errors),
+            "errors": full["errors"],
+            "runout": {k: trim(v) for k, v in full["runout"].items()},
+            "components": [
+                {
+                    **{k: c[k] for k in ("direction", "frequency_hz", "label")},
+                    "pp_m": trim(c["pp_m"]),
+                }
+                for c in full["components"]
+            ],
+        }
+        if self.kind == "sweep":
+            out["points"] = self.points()
+        elif self.limit is not None:
+            out["yield"] = self.lot_yield()
+        return out
+
+    def lot_yield(self, confidence: float = YIELD_CONFIDENCE) -> dict[str, Any]:
+        """The ``yield`` JSON object: fraction of the lot within the limit, with its interval.
+
+        Over the samples whose model succeeded (failed samples are neither passes nor
+        failures). A sample passes when its figure is at most the limit. The interval is the
+        exact binomial (Clopper-Pearson) one: ``ci_low`` = B(α/2; k, n-k+1) and ``ci_high`` =
+        B(1-α/2; k+1, n-k) with B the beta quantile, α = 1 - ``confidence``; 0 when no sample
+        passed and 1 when all did. ``fraction`` and the interval are null with no sample.
+        """
+        if self.limit is None:
+            raise ValueError("the study has no spec limit")
+        quantity, limit = self.limit
+        values = self.runout[f"{quantity}_m"]
+        ok = values[np.isfinite(values)]
+        n = int(ok.size)
+        k = int(np.sum(ok <= limit))
+        low: float | None = None
+        high: float | None = None
+        if n:
+            from scipy.stats import beta
+
+            alpha = 1.0 - confidence
+            low = 0.0 if k == 0 else float(beta.ppf(alpha / 2.0, k, n - k + 1))
+            high = 1.0 if k == n else float(beta.ppf(1.0 - alpha / 2.0, k + 1, n - k))
+        return {
+            "quantity": quantity,
+            "limit_m": limit,
+            "passed": k,
+            "samples": n,
+            "fraction": k / n if n else None,
+            "ci_low": low,
+            "ci_high": high,
+            "confidence": confidence,
+            "method": "Clopper-Pearson",
+        }
+
+    def points(self) -> list[dict[str, Any]]:
+        """Per-sample records: values, model, runout and non-zero lines."""
+        rows = []
+        table = self.line_table()
+        for i in range(self.samples):
+            rows.append(
+                {
+                    "sample": i,
+                    "model": self.model[i],
+                    "values": {k: v[i] for k, v in self.values.items()},
+                    "runout": {k: _finite(float(self.runout[k][i])) for k in RUNOUT_KEYS},
+                    "components": [
+                        {"direction": d, "frequency_hz": f, "label": label, "pp_m": float(pp[i])}
+                        for d, f, label, pp in table
+                        if pp[i] > 0.0
+                    ],
+                    "error": self.errors.get(i),
+                }
+            )
+            if i in self.stiffness:
+                rows[-1]["radial_stiffness"] = dict(self.stiffness[i]["radial_stiffness"])
+                rows[-1]["axial_stiffness_n_per_m"] = self.stiffness[i]["axial_stiffness_n_per_m"]
+            if self.limit is not None:
+                value = float(self.runout[f"{self.limit[0]}_m"][i])
+                rows[-1]["pass"] = bool(value <= self.limit[1]) if math.isfinite(value) else None
+        return rows
+
+    # ------------------------------------------------------------ data
+    def to_dataframe(self) -> Any:
+        """One row per sample (Monte Carlo) or point (sweep) as a :class:`pandas.DataFrame`.
+
+        Columns: ``sample`` (index), ``model``, one column per varied quantity named by its
+        ``[study.vary]`` key (the case key, e.g. ``operation.speed``; SI values, a list per
+        row for a per-element key), the runout figures ``radial_pp_m``, ``rro_pp_m``,
+        ``nrro_pp_m``, ``axial_pp_m`` [m] (NaN for a failed sample), one p-p column [m] per
+        line (``"<direction> <frequency> Hz <label> pp_m"``, as in ``samples.csv``; 0 where the
+        line is below the model's reporting floor), ``pass`` when the case gives a spec limit,
+        for a study of the equilibrium model ``kxx_n_per_m``, ``kxy_n_per_m``,
+        ``kyx_n_per_m``, ``kyy_n_per_m`` and ``kzz_n_per_m`` [N/m] (as in ``stiffness.csv``;
+        NaN for a point of another model or a failed one), and ``error`` (the failure's
+        ``"Type: message"``, empty when the sample ran).
+        ``df.attrs`` holds ``units``, ``kind``, ``title`` and ``seed``.
+
+        Returns
+        -------
+        pandas.DataFrame
+
+        Raises
+        ------
+        ImportError
+            pandas is not installed (``pip install "runout[data]"``).
+        """
+        from runout.analysis.results import _optional
+
+        pd = _optional("pandas")
+        n = self.samples
+        data: dict[str, Any] = {"sample": np.arange(n), "model": list(self.model)}
+        units: dict[str, str] = {"sample": "-", "model": "-"}
+        for q in self.quantities:
+            values = self.values[q.key]
+            data[q.key] = [list(v) for v in values] if q.size > 1 else list(values)
+            units[q.key] = _si_unit(q)
+        for k in _FRAME_RUNOUT:
+            data[k] = np.asarray(self.runout[k], dtype=np.float64)
+            units[k] = "m"
+        for d, f, label, pp in self.line_table():
+            name = f"{d} {f:.6g} Hz {label} pp_m"  # unique: lines are keyed by direction|label
+            data[name] = np.asarray(pp, dtype=np.float64)
+            units[name] = "m"
+        if self.limit is not None:
+            figure = np.asarray(self.runout[f"{self.limit[0]}_m"], dtype=np.float64)
+            data["pass"] = [bool(v <= self.limit[1]) if math.isfinite(v) else None for v in figure]
+            units["pass"] = "-"
+        if self.stiffness:  # equilibrium points: the columns of stiffness.csv, NaN elsewhere
+            table = dict(self.stiffness_columns())
+            for name in _STIFFNESS_COLUMNS:
+                values = table[name]
+                column = np.full(n, np.nan)
+                column[sorted(self.stiffness)] = values
+                data[name] = column
+                units[name] = "N/m"
+        data["error"] = [self.errors.get(i, "") for i in range(n)]
+        units["error"] = "-"
+        df = pd.DataFrame(data)
+        df.attrs.update({"units": units, "kind": self.kind, "title": self.title, "seed": self.seed})
+        if self.limit is not None:
+            df.attrs["limit"] = {"quantity": self.limit[0], "limit_m": self.limit[1]}
+        return df
+
+    def plot(self, kind: str | None = None, quantity: str | None = None, top: int = 4) -> Any:
+        """One figure of the study (matplotlib, through :mod:`runout.report.plotting`).
+
+        Parameters
+        ----------
+        kind : {"histograms", "sweep"}, optional
+            ``"histograms"`` (Monte Carlo) or ``"sweep"``; by default the study's own kind.
+        quantity : str, optional
+            Sweep: the swept key on the horizontal axis (needed when several are swept).
+        top : int
+            Number of lines drawn.
+
+        Returns
+        -------
+        matplotlib.figure.Figure
+        """
+        from runout.report.plotting import plot_study_kind
+
+        if kind is None:
+            kind = "histograms" if self.kind == "montecarlo" else "sweep"
+        return plot_study_kind(self, kind, quantity=quantity, top=top)
+
+    # ------------------------------------------------------------ files
+    def write(self, directory: Path, plots: bool = True) -> list[Path]:
+        """Write ``summary.json``, ``samples.csv`` and plots into ``directory``."""
+        directory.mkdir(parents=True, exist_ok=True)
+        summary = _nan_to_none(self.summary())  # every sample failed: no statistics, null
+        if self.limit is not None and self.kind == "montecarlo":
+            summary["yield"] = self.lot_yield()
+        written = [_write_text(directory / "summary.json", _dumps(summary, indent=2))]
+        written.append(self._write_csv(directory / "samples.csv"))
+        if self.stiffness:
+            written.append(self._write_stiffness(directory / "stiffness.csv"))
+        if plots:
+            from runout.report.plotting import plot_study
+
+            if self.limit is None:
+                written += plot_study(self, directory)
+            else:
+                # the spec limit as a line on the histogram of its quantity
+                written += plot_study(
+                    self, directory, limit_quantity=f"{self.limit[0]}_m", limit_m=self.limit[1]
+                )
+        return written
+
+    def columns(self) -> list[tuple[str, NDArray[Any]]]:
+        """Flat table: (column name, values per sample)."""
+        cols: list[tuple[str, NDArray[Any]]] = [
+            ("sample", np.arange(self.samples)),
+            ("model", np.array(self.model, dtype=object)),
+        ]
+        for q in self.quantities:
+            vals = self.values[q.key]
+            if q.size > 1:
+                arr = np.array(vals, dtype=np.float64).reshape(self.samples, q.size)
+                cols += [(f"{q.key}[{j + 1}]", arr[:, j]) for j in range(q.size)]
+            else:
+                cols.append((q.key, np.array(vals, dtype=object)))
+        cols += [(k, self.runout[k]) for k in RUNOUT_KEYS]
+        for d, f, label, pp in self.line_table():
+            cols.append((f"{d} {f:.6g} Hz {label} pp_m", pp))
+        return cols
+
+    def stiffness_columns(self) -> list[tuple[str, list[Any]]]:
+        """The table of ``stiffness.csv``: one row per equilibrium point that ran.
+
+        Columns: ``sample``, the varied values by case key [SI] (``key[j]`` per element of a
+        per-element key), ``speed_rpm`` [rev/min], ``frequency_rad_per_s`` (the speed as the
+        rotor's angular frequency [rad/s], what rotordynamics codes index bearing
+        coefficients by), ``kxx_n_per_m``, ``kxy_n_per_m``, ``kyx_n_per_m``, ``kyy_n_per_m``
+        (the radial block, tilts held) and ``kzz_n_per_m`` (the axial stiffness K_aa) [N/m].
+        A point whose model failed has no row (its error is in the points and summary).
+        """
+        rows = sorted(self.stiffness)
+        cols: list[tuple[str, list[Any]]] = [("sample", rows)]
+        for q in self.quantities:
+            vals = self.values[q.key]
+            if q.size > 1:
+                cols += [(f"{q.key}[{j + 1}]", [vals[i][j] for i in rows]) for j in range(q.size)]
+            else:
+                cols.append((q.key, [vals[i] for i in rows]))
+        radial = [self.stiffness[i]["radial_stiffness"] for i in rows]
+        cols.append(("speed_rpm", [r["speed_rpm"] for r in radial]))
+        cols.append(
+            ("frequency_rad_per_s", [r["speed_rpm"] * 2.0 * math.pi / 60.0 for r in radial])
+        )
+        for k in _STIFFNESS_COLUMNS[:4]:
+            cols.append((k, [r[k] for r in radial]))
+        cols.append(("kzz_n_per_m", [self.stiffness[i]["axial_stiffness_n_per_m"] for i in rows]))
+        return cols
+
+    def _write_stiffness(self, path: Path) -> Path:
+        cols = self.stiffness_columns()
+
+        def rows(fh: TextIO) -> None:
+            writer = csv.writer(fh, lineterminator="\n")
+            writer.writerow([name for name, _ in cols])
+            writer.writerows(zip(*([_cell(v) for v in col] for _, col in cols), strict=True))
+
+        return write_atomic(path, rows)
+
+    def _write_csv(self, path: Path) -> Path:
+        cols = self.columns()
+
+        cells = [_cells(col) for _, col in cols]  # column by column: no per-cell dispatch
+
+        def rows(fh: TextIO) -> None:
+            writer = csv.writer(fh, lineterminator="\n")
+            writer.writerow([name for name, _ in cols])
+            writer.writerows(zip(*cells, strict=True))
+
+        return write_atomic(path, rows)
+
+
+def _si_unit(q: Quantity) -> str:
+    """SI unit of a varied quantity's values (``"-"`` for a count, a ratio or a text)."""
+    from runout.base.units import KINDS
+    from runout.report.plotting import _key_unit_kind  # the case schema's kind of the key
+
+    table, index, name = q.path
+    # a spindle bearing's [elements.<name>] has the [elements] table's keys
+    kind = _key_unit_kind((table.partition(".")[0], index, name))
+    return (KINDS[kind][1] if kind is not None else "") or "-"
+
+
+def _cell(value: Any) -> str:
+    if isinstance(value, float | np.floating):
+        return repr(float(value)) if math.isfinite(value) else ""
+    return str(value)
+
+
+def _cells(column: NDArray[Any]) -> list[str]:
+    """:func:`_cell` of every entry of ``column``, the same text."""
+    if column.dtype.kind == "f":
+        return [repr(v) if math.isfinite(v) else "" for v in column.tolist()]
+    if column.dtype.kind in "iu":
+        return [str(v) for v in column.tolist()]
+    return [_cell(v) for v in column]
+
+
+def _finite(value: float) -> float | None:
+    return float(value) if math.isfinite(value) else None
+
+
+def _nan_to_none(obj: Any) -> Any:
+    """``obj`` with every non-finite float replaced by None (JSON has no NaN)."""
+    if isinstance(obj, float):
+        return _finite(obj)
+    if isinstance(obj, dict):
+        return {k: _nan_to_none(v) for k, v in obj.items()}
+    if isinstance(obj, list):
+        return [_nan_to_none(v) for v in obj]
+    return obj
+
+
+def _dumps(obj: Any, indent: int | None = None) -> str:
+    return json.dumps(obj, indent=indent, sort_keys=True, allow_nan=False) + "\n"
+
+
+def _write_text(path: Path, text: str) -> Path:
+    return write_atomic(path, lambda fh: fh.write(text))

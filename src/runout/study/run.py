@@ -1,0 +1,696 @@
+r"""Studies at scale: Monte Carlo over drawn case quantities and sweeps over listed ones.
+
+A study takes a validated :class:`runout.case.model.Case` with a ``[study]`` table and evaluates many
+variants of it: *samples* (Monte Carlo bearings) or *points* (sweep values × models). Each
+variant is the case with some quantities replaced, validated like a case file and run by the
+model named in ``[analysis]`` (or ``[study] models``); from each run we keep the runout figures
+and every labelled line (:class:`runout.analysis.results.Component`, p-p [m]).
+
+Randomness
+----------
+Sample ``i`` draws its values from ``numpy.random.default_rng(SeedSequence(seed,
+spawn_key=(i,)))``: the i-th child of the root seed. The numbers of a sample therefore depend
+only on ``(seed, i)``, never on the chunking, the number of workers or the order in which
+chunks finish; runs are reproducible bit for bit.
+
+Execution
+---------
+Samples are grouped in chunks of ``chunk_size``; a chunk is one task. Tasks run in the calling
+process, in a local process pool (``workers``), or on any :class:`concurrent.futures.Executor`
+(a Dask ``Client.get_executor()``, see :func:`dask_executor`). A ball-size Monte Carlo of the
+2-D model is batched: the parent computes what every bearing shares once
+(:class:`runout.study.pool.BatchArrays`) and ships it with every chunk, and a chunk is one
+call of the batched Numba kernel :func:`runout.study.kernels.solve_batch` (threads over
+bearings in the calling process) plus a vectorised line fit and RRO/NRRO split
+(:func:`runout.study.pool.evaluate_rows`). The pool is one for the whole study: its workers
+start and load the kernels while the parent plans, and serve every chunk.
+
+With an output directory each finished chunk is written as one JSON file
+and recorded in ``manifest.json``; :func:`run_study` with ``resume=True`` skips the chunks
+already written, so an interrupted run ends with the same files, byte for byte, as an
+uninterrupted one.
+
+Safety
+------
+An output directory has one writer at a time (:func:`output_lock`), holds only runout's
+files unless forced (:func:`refuse_foreign`), and every file in it is replaced atomically
+through a uniquely named temporary (:func:`write_atomic`). Every chunk carries the digest of
+the case and study that wrote it; a resume recomputes a chunk that is unreadable, damaged or
+another study's. A sample whose model raises is recorded with its error (:func:`error_text`)
+and the study goes on. Pool workers end with their parent, even a SIGKILLed one
+(:func:`die_with_parent`). docs/studies.md, "Safety", lists the behaviour and the messages.
+
+Statistics
+----------
+Every runout figure and line is summarised by its mean, sample standard deviation (ddof = 1),
+2σ, 5/50/95 % percentiles (linear interpolation), min, max and a histogram. A line missing from
+a sample's output (below the model's reporting floor) counts as 0 in that sample.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import hashlib
+import itertools
+import json
+import logging
+import math
+import os
+import re
+import threading
+from collections.abc import Callable, Iterable, Iterator
+from concurrent.futures import (
+    FIRST_COMPLETED,
+    Executor,
+    Future,
+    ProcessPoolExecutor,
+    ThreadPoolExecutor,
+    wait,
+)
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from runout.base.errors import CaseError
+from runout.case import limits
+from runout.case.model import Case, StudySpec
+from runout.study.chunks import ERROR_CHARS as ERROR_CHARS
+from runout.study.chunks import ERRORS_SHOWN as ERRORS_SHOWN
+from runout.study.chunks import (
+    ChunkTask,
+    _threads,
+    _with_batch,
+    error_text,
+    evaluate_chunk,
+    line_label,
+)
+from runout.study.files import (
+    _RESUME_KEYS,
+    OutputError,
+    _chunk_problem,
+    _read_manifest,
+    output_directory,
+    output_lock,
+    refuse_foreign,
+    write_atomic,
+)
+from runout.study.files import LOCK_NAME as LOCK_NAME
+from runout.study.files import (
+    _remove_leftovers as _remove_leftovers,  # runout.models.dynamic's sweep
+)
+from runout.study.plan import (
+    FORMAT,
+    RUNOUT_KEYS,
+    Quantity,
+    StudyError,
+    _case_data,
+    _models,
+    _study_of,
+    plan_quantities,
+    sample_rng,
+)
+from runout.study.pool import die_with_parent, init_worker, spawn_context
+from runout.study.result import YIELD_CONFIDENCE as YIELD_CONFIDENCE
+from runout.study.result import StudyResult, _write_text, statistics
+from runout.study.result import (
+    _dumps as _dumps,  # runout.models.dynamic's sweep
+)
+
+__all__ = [
+    "RUNOUT_KEYS",
+    "ChunkTask",
+    "OutputError",
+    "Quantity",
+    "StudyError",
+    "StudyResult",
+    "dask_executor",
+    "die_with_parent",
+    "error_text",
+    "evaluate_chunk",
+    "line_label",
+    "load_study",
+    "output_directory",
+    "output_lock",
+    "plan_quantities",
+    "refuse_foreign",
+    "run_study",
+    "sample_rng",
+    "statistics",
+    "write_atomic",
+]
+
+
+# --------------------------------------------------------------------------------------------
+# running
+# --------------------------------------------------------------------------------------------
+#: The pool workers' set-up (kept under its former name for callers).
+_init_worker = init_worker
+#: The start method of pool workers (kept under its former name for callers).
+_context = spawn_context
+
+
+def dask_executor(address: str | None = None, **cluster: Any) -> Executor:
+    """A :class:`concurrent.futures.Executor` on Dask distributed.
+
+    Parameters
+    ----------
+    address : str, optional
+        Scheduler address ``tcp://HOST:PORT``; None starts a local cluster.
+    **cluster
+        Keyword arguments of :class:`distributed.LocalCluster` when ``address`` is None.
+
+    Raises
+    ------
+    StudyError
+        When Dask is not installed (``pip install 'runout[dask]'``) or the scheduler does not
+        answer.
+    """
+    try:
+        import dask
+        from distributed import Client, LocalCluster
+    except ImportError:  # pragma: no cover - depends on the installation
+        raise StudyError("--scheduler needs Dask distributed: pip install 'runout[dask]'") from None
+    try:
+        if address is None:
+            cluster.setdefault("dashboard_address", None)
+            # Dask's nannies trim malloc at 64 KiB by default (MALLOC_TRIM_THRESHOLD_), which
+            # returns every NumPy temporary of a chunk to the system and costs the workers
+            # much of their time; a local cluster of ours keeps glibc's usual behaviour.
+            trim = {"distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_": 2**28}
+            with dask.config.set(trim):
+                client = Client(LocalCluster(**cluster))
+        else:
+            client = Client(address, timeout=cluster.get("timeout", 10))
+    except (OSError, TimeoutError) as exc:
+        raise StudyError(f"cannot reach the Dask scheduler {address}: {exc}") from None
+    return client.get_executor()
+
+
+def _digest(data: dict[str, Any], study: StudySpec, base_dir: str) -> str:
+    """SHA-256 of what decides a study's numbers: the case (SI), ``[study]``, profile files.
+
+    A ``[[profile]]`` names a CSV file; its bytes are part of the case, so a remeasured
+    profile makes another study (its chunks are recomputed on resume) even when the case file
+    itself did not change.
+    """
+    files: dict[str, str] = {}
+    for entry in data.get("profile", []):
+        name = str(entry.get("file", ""))
+        try:
+            files[name] = hashlib.sha256((Path(base_dir) / name).read_bytes()).hexdigest()
+        except OSError:
+            files[name] = "unreadable"  # parse_case reports it when the study runs
+    doc = {"case": data, "study": study.model_dump(mode="json")}
+    if files:  # studies without profiles keep the digest of earlier versions
+        doc["profile_files"] = files
+    text = json.dumps(doc, sort_keys=True, default=str)
+    return hashlib.sha256(text.encode()).hexdigest()
+
+
+def _chunk_path(directory: Path, index: int) -> Path:
+    return directory / "chunks" / f"chunk_{index:05d}.json"
+
+
+@dataclass(frozen=True)
+class _Plan:
+    """A study cut into chunks: what run_study and load_study both need."""
+
+    study: StudySpec
+    quantities: tuple[Quantity, ...]
+    models: tuple[str, ...]
+    total: int
+    size: int
+    tasks: list[ChunkTask]
+    digest: str
+
+    def manifest(self) -> dict[str, Any]:
+        """A fresh manifest.json document of this plan (no chunk done)."""
+        return {
+            "format": FORMAT,
+            "digest": self.digest,
+            "kind": self.study.kind,
+            "samples": self.total,
+            "chunk_size": self.size,
+            "chunks": len(self.tasks),
+            "done": [],
+            "complete": False,
+        }
+
+
+def _plan(case: Case, chunk_size: int | None, parallel: bool = False) -> _Plan:
+    study = _study_of(case)
+    data = _case_data(case)
+    quantities = tuple(plan_quantities(case, data))
+    models = tuple(_models(case))
+    if study.kind == "montecarlo":
+        total = study.samples
+    else:
+        total = len(models) * math.prod(len(q.values) for q in quantities)
+    size = chunk_size or study.chunk_size
+    n_chunks = max(1, math.ceil(total / size))
+    base_dir = str(Path(case.path).resolve().parent) if case.path != "<case>" else os.getcwd()
+    tasks = [
+        ChunkTask(
+            index=k,
+            start=k * size,
+            stop=min(total, (k + 1) * size),
+            data=data,
+            path=case.path,
+            base_dir=base_dir,
+            quantities=quantities,
+            kind=study.kind,
+            seed=study.seed,
+            models=models,
+            parallel=parallel,
+        )
+        for k in range(n_chunks)
+    ]
+    return _Plan(study, quantities, models, total, size, tasks, _digest(data, study, base_dir))
+
+
+_log = logging.getLogger(__name__)
+
+
+def run_study(
+    case: Case,
+    *,
+    executor: Executor | None = None,
+    workers: int = 1,
+    out: Path | str | None = None,
+    resume: bool = False,
+    progress: Callable[[int, int], None] | None = None,
+    chunk_size: int | None = None,
+    plots: bool = True,
+    force: bool = False,
+    notify: Callable[[str], None] | None = None,
+) -> StudyResult:
+    """Run the study described by ``case.study``.
+
+    Parameters
+    ----------
+    case : Case
+        A validated case with a ``[study]`` table.
+    executor : concurrent.futures.Executor, optional
+        Where chunks run (e.g. :func:`dask_executor`); overrides ``workers``.
+    workers : int
+        Local worker processes when no executor is given (1: in this process, where the
+        chunks of a batched Monte Carlo run on Numba's number of threads). The workers end
+        with this process, even when it is killed (:func:`die_with_parent`).
+    out : path, optional
+        Directory for the chunk files, ``manifest.json``, ``summary.json``, ``samples.csv`` and
+        plots. It must be empty, new, or the output of a study (see ``force``); it is locked
+        for the whole run (:func:`output_lock`).
+    resume : bool
+        Continue the run recorded in ``out/manifest.json`` (same case and study required).
+        Every chunk is checked (readable, complete, written by this study: its ``digest``);
+        one that is not is recomputed and said through ``notify``.
+    progress : callable, optional
+        Called as ``progress(samples_done, samples_total)`` after every chunk.
+    chunk_size : int, optional
+        Overrides ``[study] chunk_size``.
+    plots : bool
+        Write plots into ``out``.
+    force : bool
+        Write into a non-empty directory that is not a study output, start afresh over a
+        corrupted manifest or over a different study instead of refusing.
+    notify : callable, optional
+        Called with a one-line note (chunks recomputed on resume, a manifest replaced under
+        ``force``); default: a warning on the ``runout.study.run`` logger.
+
+    Returns
+    -------
+    StudyResult
+        Failed samples are in ``errors``; the study never stops on one.
+
+    Raises
+    ------
+    StudyError
+        Bad output directory (:class:`OutputError`: empty path, a file, unwritable, foreign,
+        locked by another writer), a corrupted manifest, a resume that does not match the
+        case, or a worker process that died.
+    """
+    in_process = executor is None and workers <= 1
+    plan = _plan(
+        case, chunk_size, in_process and threading.current_thread() is threading.main_thread()
+    )
+    from runout.case.conventions import enforce
+
+    for model in plan.models:  # a key a model refuses ends the study before any work
+        enforce(case, model)
+    _check_analysis_outputs(case, notify or _log.warning)
+    if executor is None and workers > 1 and limits.batched_study(case):
+        # the case's estimate assumed this process; worker processes each hold the shared
+        # arrays too (and the chunks in flight): check the budget for them before starting
+        needed = limits.batched_memory(case, workers) + limits.study_points(case) * (
+            limits.STUDY_BYTES_PER_RUN
+        )
+        budget = limits.case_budget(case)
+        if needed > budget.memory:
+            raise limits.LimitError(
+                "study.samples",
+                f"{workers} worker processes would need about {limits.format_bytes(needed)} "
+                f"of memory (each holds the study's shared arrays); use fewer --workers, "
+                f"lower analysis.samples or raise the limit ({limits.format_bytes(budget.memory)})"
+                f" with [analysis] max_memory or {limits.ENV_MAX_MEMORY}",
+            )
+    notify = notify or _log.warning
+    if out is None:
+        return _run(None, case, plan, executor, workers, False, False, progress, plots, notify)
+    directory = output_directory(out)
+    refuse_foreign(directory, "study", force)
+    with output_lock(directory):
+        return _run(
+            directory, case, plan, executor, workers, resume, force, progress, plots, notify
+        )
+
+
+def _check_analysis_outputs(case: Case, notify: Callable[[str], None]) -> None:
+    """Refuse a band limit and say that bands are not computed: a study keeps the runout
+    figures and line p-p of each sample, not the phases a band value needs."""
+    analysis = case.analysis
+    if getattr(analysis, "limit", None) is not None and analysis.limit_on.startswith("iso15242"):
+        raise CaseError(
+            case.path,
+            "analysis.limit_on",
+            f'"{analysis.limit_on}": a study\'s yield is over the runout p-p of each sample '
+            '("radial_pp", "rro_pp", "nrro_pp", "axial_pp"); band limits apply to runout run',
+        )
+    if getattr(analysis, "bands", None) is not None:
+        notify(
+            f"{case.path}: analysis.bands: not applied by runout study (band values are "
+            "computed by runout run)"
+        )
+
+
+def _run(
+    directory: Path | None,
+    case: Case,
+    plan: _Plan,
+    executor: Executor | None,
+    workers: int,
+    resume: bool,
+    force: bool,
+    progress: Callable[[int, int], None] | None,
+    plots: bool,
+    notify: Callable[[str], None],
+) -> StudyResult:
+    """run_study once ``directory`` (if any) is checked and locked."""
+    manifest = plan.manifest()
+    results: dict[int, dict[str, Any]] = {}
+    if directory is not None:
+        results = _prepare_directory(directory, manifest, plan, resume, force, notify)
+    tasks = plan.tasks
+    done_samples = sum(tasks[k].stop - tasks[k].start for k in results)
+    if progress is not None:
+        progress(done_samples, plan.total)
+    pending = [t for t in tasks if t.index not in results]
+
+    def finished(index: int, chunk: dict[str, Any]) -> None:
+        nonlocal done_samples
+        # the chunk names the case + study that wrote it: a resume accepts only its own
+        chunk["digest"] = plan.digest
+        results[index] = chunk
+        if directory is not None:
+            _write_text(_chunk_path(directory, index), _dumps(chunk))
+            manifest["done"] = sorted(results)
+            _write_text(directory / "manifest.json", _dumps(manifest, indent=2))
+        done_samples += tasks[index].stop - tasks[index].start
+        if progress is not None:
+            progress(done_samples, plan.total)
+
+    _execute(pending, executor, workers, finished)
+    result = _assemble(case, plan.study, plan.quantities, [results[k] for k in range(len(tasks))])
+    if directory is not None:
+        manifest["complete"] = True
+        _write_text(directory / "manifest.json", _dumps(manifest, indent=2))
+        try:
+            result.write(directory, plots=plots)
+        except OSError as exc:  # a plot or the directory (summary and CSV name their file)
+            raise OutputError(f"{directory}: cannot write ({exc.strerror or exc})") from None
+    return result
+
+
+#: Chunks submitted ahead per worker of the process pool (the others wait in the parent, so
+#: that the pool's queue holds a few chunks' arrays, not the whole study's).
+AHEAD_PER_WORKER = 2
+#: Chunks in flight on an external executor (Dask): enough to keep a cluster busy.
+AHEAD_EXTERNAL = 64
+
+
+def _execute(
+    tasks: list[ChunkTask],
+    executor: Executor | None,
+    workers: int,
+    finished: Callable[[int, dict[str, Any]], None],
+) -> None:
+    """Evaluate ``tasks`` in this process, in a pool of ``workers`` processes or on
+    ``executor``, and hand every chunk to ``finished`` (in this thread) as it ends.
+
+    In this process, the chunks of a batched Monte Carlo run side by side on Numba's number of
+    threads, each chunk on one (the kernels release the GIL): one chunk per thread keeps every
+    thread busy whatever else the machine runs, where threads inside each chunk's kernel wait
+    for the slowest at the end of every chunk. A single chunk uses the kernel's threads.
+    One pool serves the whole study: its workers start (and load the kernels,
+    :func:`runout.study.pool.init_worker`) while this process computes the shared arrays.
+    """
+    if not tasks:
+        return
+    if executor is None and workers <= 1:
+        batch = _with_batch(tasks)
+        threads = _threads(batch)
+        if threads <= 1:
+            for task in batch:
+                finished(task.index, evaluate_chunk(task))
+            return
+        serial = [dataclasses.replace(t, parallel=False) for t in batch]
+        team = ThreadPoolExecutor(threads, thread_name_prefix="runout-study")
+        try:
+            _drain(team, iter(serial), len(serial), AHEAD_PER_WORKER * threads, finished)
+        finally:  # an interrupt drops the queued chunks and waits for the running ones
+            team.shutdown(wait=True, cancel_futures=True)
+        return
+    own = executor is None
+    pool: Executor = (
+        ProcessPoolExecutor(
+            max_workers=workers,
+            initializer=_init_worker,
+            initargs=(os.getpid(),),
+            mp_context=_context(),
+        )
+        if executor is None
+        else executor
+    )
+    ok = False
+    try:
+        if own:  # start every worker now: their start-up overlaps the set-up below
+            for _ in range(workers):
+                pool.submit(int)
+        ahead = AHEAD_PER_WORKER * workers if own else AHEAD_EXTERNAL
+        _drain(pool, iter(_with_batch(tasks)), len(tasks), ahead, finished)
+        ok = True
+    finally:
+        if own:
+            # every chunk is in: the idle workers exit on their own (they end with this
+            # process in any case); after a failure, cancel and wait for them
+            pool.shutdown(wait=not ok, cancel_futures=True)
+
+
+def _drain(
+    pool: Executor,
+    queue: Iterator[ChunkTask],
+    count: int,
+    ahead: int,
+    finished: Callable[[int, dict[str, Any]], None],
+) -> None:
+    """Run the ``count`` tasks of ``queue`` on ``pool``, at most ``ahead`` at a time."""
+    running: dict[Future[dict[str, Any]], int] = {}
+    for _ in range(count + 1):  # one submission round per finished chunk, at most
+        for task in itertools.islice(queue, max(0, ahead - len(running))):
+            running[pool.submit(evaluate_chunk, task)] = task.index
+        if not running:
+            break
+        done, _pending = wait(running, return_when=FIRST_COMPLETED)
+        for fut in sorted(done, key=running.__getitem__):
+            index = running.pop(fut)
+            try:
+                chunk = fut.result()
+            except Exception as exc:  # a dead worker, an executor's failure
+                # evaluate_chunk records every sample's failure itself: what lands here lost
+                # the whole chunk (a worker killed, out of memory, a scheduler gone)
+                raise StudyError(
+                    f"chunk {index}: the worker evaluating it failed ({error_text(exc)}); "
+                    "the chunks already written to --out are kept (rerun with --resume)"
+                ) from None
+            finished(index, chunk)
+
+
+def _load_chunks(
+    directory: Path, indices: Iterable[int], plan: _Plan
+) -> tuple[dict[int, dict[str, Any]], list[str]]:
+    """The recorded chunks that pass :func:`_chunk_problem`, and ``"name: problem"`` of others."""
+    done: dict[int, dict[str, Any]] = {}
+    bad: list[str] = []
+    for index in indices:
+        path = _chunk_path(directory, index)
+        try:
+            chunk = json.loads(path.read_text(encoding="utf-8"))
+        except FileNotFoundError:
+            problem: str | None = "missing"
+        except OSError as exc:
+            problem = f"cannot read: {exc.strerror or exc}"
+        except ValueError:
+            problem = "not valid JSON"
+        else:
+            problem = _chunk_problem(chunk, plan.tasks[index], plan.digest)
+        if problem is None:
+            done[index] = chunk
+        else:
+            bad.append(f"{path.name}: {problem}")
+    return done, bad
+
+
+#: Files a study writes at the top of its output directory (replaced by a fresh run).
+_STUDY_FILES = re.compile(
+    r"^(manifest\.json|summary\.json|samples\.csv|stiffness\.csv|histograms\.png|sweep_.+\.png)$"
+)
+
+
+def _prepare_directory(
+    directory: Path,
+    manifest: dict[str, Any],
+    plan: _Plan,
+    resume: bool,
+    force: bool,
+    notify: Callable[[str], None],
+) -> dict[int, dict[str, Any]]:
+    """Check ``directory`` (locked by us); return the chunks already done (resume).
+
+    Without ``resume`` (or when ``force`` overrides a corrupted manifest or a different
+    study) the chunk files and study outputs of an earlier run are deleted, so that nothing
+    of it can mix with this one; other files are left alone.
+    """
+    _remove_leftovers(directory)
+    path = directory / "manifest.json"
+    old: dict[str, Any] | None = None
+    if path.exists():
+        try:
+            old = _read_manifest(path)
+        except StudyError as exc:
+            if not force:
+                raise
+            notify(f"{exc}".split("; pass --force")[0] + ": --force, started afresh")
+    elif resume and not force:
+        raise StudyError(
+            f"--resume: {path}: no such file (no run to continue); run without --resume"
+        )
+    done: dict[int, dict[str, Any]] = {}
+    fresh = not resume or old is None
+    if not fresh:
+        assert old is not None
+        differs = next((key for key in _RESUME_KEYS if old[key] != manifest[key]), None)
+        if differs is not None and not force:
+            raise StudyError(
+                f"--resume: {directory} holds a run of a different case or study ({differs} "
+                "differs); run without --resume to start afresh"
+            )
+        if differs is not None:
+            notify(
+                f"{path}: a different case or study ({differs} differs): --force, started afresh"
+            )
+            fresh = True
+        else:
+            done, bad = _load_chunks(directory, old["done"], plan)
+            if bad:
+                n = len(bad)
+                shown = "; ".join(bad[:3]) + ("; ..." if n > 3 else "")
+                notify(
+                    f"{directory / 'chunks'}: recomputing {n} chunk{'s' if n > 1 else ''} that "
+                    f"{'were' if n > 1 else 'was'} unreadable or not written by this study "
+                    f"({shown})"
+                )
+    try:
+        if fresh:
+            for p in directory.iterdir():
+                if p.is_file() and _STUDY_FILES.match(p.name):
+                    p.unlink()
+            if (directory / "chunks").is_dir():
+                for p in (directory / "chunks").glob("chunk_*.json"):
+                    p.unlink()
+        manifest["done"] = sorted(done)
+        _write_text(path, _dumps(manifest, indent=2))
+        (directory / "chunks").mkdir(exist_ok=True)
+    except OSError as exc:
+        raise OutputError(f"{directory}: cannot write ({exc.strerror or exc})") from None
+    return done
+
+
+def _assemble(
+    case: Case, study: StudySpec, quantities: tuple[Quantity, ...], chunks: list[dict[str, Any]]
+) -> StudyResult:
+    total = sum(c["stop"] - c["start"] for c in chunks)
+    model: list[str] = []
+    values: dict[str, list[Any]] = {q.key: [] for q in quantities}
+    runout = {k: np.full(total, np.nan) for k in RUNOUT_KEYS}
+    lines: dict[str, tuple[float, NDArray[np.float64]]] = {}
+    errors: dict[int, str] = {}
+    stiffness: dict[int, dict[str, Any]] = {}
+    for c in chunks:
+        s, e = c["start"], c["stop"]
+        model += c["model"]
+        for key in values:
+            values[key] += c["values"][key]
+        for k in RUNOUT_KEYS:
+            runout[k][s:e] = [np.nan if v is None else v for v in c["runout"][k]]
+        for key, entry in c["lines"].items():
+            if key not in lines:
+                lines[key] = (entry["frequency_hz"], np.zeros(total))
+            lines[key][1][s:e] = entry["pp_m"]
+        errors.update({int(k): v for k, v in c["errors"].items()})
+        stiffness.update({int(k): v for k, v in c.get("stiffness", {}).items()})
+    return StudyResult(
+        kind=study.kind,
+        title=case.title,
+        seed=study.seed,
+        quantities=quantities,
+        model=model,
+        values=values,
+        runout=runout,
+        lines=lines,
+        errors=errors,
+        bins=study.bins,
+        limit=study_limit(case),
+        stiffness=stiffness,
+    )
+
+
+def study_limit(case: Case) -> tuple[str, float] | None:
+    """``(limit_on, limit [m])`` of the case's spec limit on a runout figure, or None."""
+    analysis = case.analysis
+    limit = getattr(analysis, "limit", None)
+    if limit is None:
+        return None
+    return str(analysis.limit_on), float(limit)
+
+
+def load_study(directory: Path | str, case: Case) -> StudyResult:
+    """Read a finished study from its output directory.
+
+    Raises
+    ------
+    StudyError
+        Naming the file: no or a corrupted manifest, a manifest of another case or study, a
+        missing chunk (a partial run) or a chunk that is damaged or not this study's.
+    """
+    d = Path(directory)
+    manifest = _read_manifest(d / "manifest.json")
+    plan = _plan(case, manifest["chunk_size"])
+    differs = next((k for k in _RESUME_KEYS if manifest[k] != plan.manifest()[k]), None)
+    if differs is not None:
+        raise StudyError(f"{d / 'manifest.json'}: a run of a different case or study ({differs})")
+    chunks, bad = _load_chunks(d, range(len(plan.tasks)), plan)
+    if bad:
+        raise StudyError(f"{d / 'chunks'}: not a complete study of this case ({bad[0]})")
+    return _assemble(case, plan.study, plan.quantities, [chunks[k] for k in range(len(plan.tasks))])
