@@ -142,50 +142,58 @@ def _guard(fn: F) -> F:
         file = kwargs.get("case_file")
         # a first run after installation compiles kernels for a few seconds: say so
         _compile_notice.watch(sys.stderr)
-        with warnings.catch_warnings(record=True) as caught:
-            try:
-                result = fn(*args, **kwargs)
-            except RunoutError as exc:
-                message = str(exc)
-                if isinstance(exc, GeometryError | NumericalError):
-                    message = _named(message, file)
-                _fail(message)
-            except KeyboardInterrupt:
-                _err.print("interrupted")
-                raise typer.Exit(130) from None
-            except _CLI_EXITS:
-                raise
-            except MemoryError:
-                _fail(
-                    _named(
-                        "ran out of memory; lower analysis.samples or the orders, or raise "
-                        "[analysis] max_memory only if the machine has the memory",
-                        file,
-                    )
-                )
-            except Exception as exc:
-                if os.environ.get("RUNOUT_DEBUG"):
-                    raise
-                if _output_lost(exc):  # stdout closed or its disk full: not runout's bug
-                    _fail(_named(f"cannot write the output ({exc})", file), 1)
-                _fail(
-                    _named(
-                        f"internal error ({type(exc).__name__}: {exc}); this is a bug in "
-                        "runout, please report it with the case file (RUNOUT_DEBUG=1 shows "
-                        "the traceback)",
-                        file,
-                    ),
-                    EXIT_INTERNAL,
-                )
-        # what concerns the case (a profile, a line too close to another, an overflow), not
-        # the deprecations and compiler notes of the libraries underneath
-        _warn(file, [str(w.message) for w in caught if issubclass(w.category, _CASE_WARNINGS)])
-        compiled = _compile_notice.finish()
-        if compiled is not None:
-            print(compiled, file=sys.stderr, flush=True)
-        return result
+        try:
+            return _guarded(fn, file, *args, **kwargs)
+        finally:
+            _compile_notice.stop()
 
     return wrapper  # type: ignore[return-value]
+
+
+def _guarded(fn: Callable[..., Any], file: object, *args: Any, **kwargs: Any) -> Any:
+    """The body of :func:`_guard`'s wrapper: ``fn`` run, its failures and warnings reported."""
+    with warnings.catch_warnings(record=True) as caught:
+        try:
+            result = fn(*args, **kwargs)
+        except RunoutError as exc:
+            message = str(exc)
+            if isinstance(exc, GeometryError | NumericalError):
+                message = _named(message, file)
+            _fail(message)
+        except KeyboardInterrupt:
+            _err.print("interrupted")
+            raise typer.Exit(130) from None
+        except _CLI_EXITS:
+            raise
+        except MemoryError:
+            _fail(
+                _named(
+                    "ran out of memory; lower analysis.samples or the orders, or raise "
+                    "[analysis] max_memory only if the machine has the memory",
+                    file,
+                )
+            )
+        except Exception as exc:
+            if os.environ.get("RUNOUT_DEBUG"):
+                raise
+            if _output_lost(exc):  # stdout closed or its disk full: not runout's bug
+                _fail(_named(f"cannot write the output ({exc})", file), 1)
+            _fail(
+                _named(
+                    f"internal error ({type(exc).__name__}: {exc}); this is a bug in "
+                    "runout, please report it with the case file (RUNOUT_DEBUG=1 shows "
+                    "the traceback)",
+                    file,
+                ),
+                EXIT_INTERNAL,
+            )
+    # what concerns the case (a profile, a line too close to another, an overflow), not
+    # the deprecations and compiler notes of the libraries underneath
+    _warn(file, [str(w.message) for w in caught if issubclass(w.category, _CASE_WARNINGS)])
+    compiled = _compile_notice.finish()
+    if compiled is not None:
+        print(compiled, file=sys.stderr, flush=True)
+    return result
 
 
 def _load(case_file: Path, model: str | None = None, sets: list[str] | None = None) -> Any:

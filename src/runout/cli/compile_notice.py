@@ -22,7 +22,7 @@ from collections.abc import Callable, Sequence
 from types import ModuleType
 from typing import Any, TextIO
 
-__all__ = ["finish", "topic_of", "watch"]
+__all__ = ["finish", "stop", "topic_of", "watch"]
 
 #: The first message, printed once per process when a kernel starts compiling.
 STARTING = (
@@ -78,7 +78,10 @@ def _on_start(data: Any) -> None:
     _State.topics.setdefault(topic, None)
     if _State.stream is not None and not _State.announced:
         _State.announced = True
-        print(STARTING.format(what=topic), file=_State.stream, flush=True)
+        try:
+            print(STARTING.format(what=topic), file=_State.stream, flush=True)
+        except (OSError, ValueError):  # the command's stderr is gone: nothing to tell
+            pass
 
 
 def _on_end() -> None:
@@ -169,3 +172,10 @@ def finish() -> str | None:
     _State.topics = {}
     _State.seconds = 0.0
     return line
+
+
+def stop() -> None:
+    """The command has ended: print nothing more (its stream may be closed by now)."""
+    _State.stream = None
+    _State.topics = {}
+    _State.seconds = 0.0
