@@ -39,10 +39,11 @@ _TOPICS: tuple[tuple[str, str], ...] = (
     ("quasi_static_2d", "quasi_static_2d model"),
     ("quasi_static_3d", "quasi_static_3d model"),
     ("_quasi_static", "quasi-static contacts"),
-    ("_study", "study"),
-    ("_line_kernels", "spectral lines"),
-    ("_elliptic", "Hertz contact"),
-    ("_csvfmt", "output files"),
+    ("runout.study.", "study"),
+    ("line_kernels", "spectral lines"),
+    ("elliptic", "Hertz contact"),
+    ("csvfmt", "output files"),
+    ("geometry.kernels", "imperfections"),
 )
 
 
