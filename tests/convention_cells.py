@@ -16,7 +16,7 @@ import pytest
 from runout.base.errors import CaseError
 from runout.case.conventions import KeyConvention, honouring_models
 from runout.case.model import parse_case
-from runout.models import run_model
+from runout.runner import run_model
 
 Data = dict[str, Any]
 

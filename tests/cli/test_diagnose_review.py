@@ -12,7 +12,7 @@ import pytest
 from typer.testing import CliRunner
 
 from runout.case.model import load_case
-from runout.cli.app import app
+from runout.cli.commands import app
 from runout.validation.diagnosis_checks import Truth, done_when_truth, synthetic_record
 
 ROOT = Path(__file__).resolve().parents[2]

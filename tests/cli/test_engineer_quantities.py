@@ -14,7 +14,7 @@ import pytest
 from scipy.stats import beta
 from typer.testing import CliRunner
 
-from runout.cli.app import app
+from runout.cli.commands import app
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 TADA = EXAMPLES / "seed000_tada_fig6.toml"  # quasi_static_3d, ~10 nm radial p-p

@@ -38,13 +38,13 @@ def test_a_refused_case_exits_2_with_its_message(tmp_path: Path) -> None:
 
 def test_the_fast_exit_keeps_a_message_exit_and_a_status() -> None:
     code = (
-        "import runout.cli.app as c, sys\n"
+        "import runout.cli.commands as c, sys\n"
         "c.app = lambda: (_ for _ in ()).throw(SystemExit('stopped: reason'))\n"
         "c.main()\n"
     )
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert done.returncode == 1
     assert "stopped: reason" in done.stderr
-    code = "import runout.cli.app as c\nc.app = lambda: print('out') or exit(3)\nc.main()\n"
+    code = "import runout.cli.commands as c\nc.app = lambda: print('out') or exit(3)\nc.main()\n"
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert (done.returncode, done.stdout) == (3, "out\n")

@@ -16,7 +16,7 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
-from runout.cli.app import app
+from runout.cli.commands import app
 
 runner = CliRunner()
 

@@ -11,7 +11,7 @@ import re
 import pytest
 from typer.testing import CliRunner
 
-from runout.cli.app import app
+from runout.cli.commands import app
 
 COMMANDS = [c for c in app.registered_commands if c.callback is not None]
 

@@ -276,7 +276,7 @@ def test_tables_read_by_tests_do_not_depend_on_columns_in_process(tmp_path: Path
     # terminal on stdin: the same command gave other text in another terminal.
     from typer.testing import CliRunner
 
-    from runout.cli.app import app
+    from runout.cli.commands import app
 
     runner = CliRunner()
     examples = Path(__file__).resolve().parents[2] / "examples"

@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
-from runout.cli.app import app
+from runout.cli.commands import app
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 TADA = EXAMPLES / "seed000_tada_fig7.toml"

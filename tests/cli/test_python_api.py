@@ -18,8 +18,8 @@ from typer.testing import CliRunner
 
 import runout
 from runout.base.errors import CaseError
-from runout.cli.app import app
-from runout.models import run_model
+from runout.cli.commands import app
+from runout.runner import run_model
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 runner = CliRunner()

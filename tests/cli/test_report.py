@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
-from runout.cli.app import app
+from runout.cli.commands import app
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "docs_hooks"))
 import screenshots

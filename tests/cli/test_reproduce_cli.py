@@ -6,7 +6,7 @@ from pathlib import Path
 
 from typer.testing import CliRunner
 
-from runout.cli.app import app
+from runout.cli.commands import app
 
 runner = CliRunner()
 

@@ -201,7 +201,7 @@ def test_installed_wheel_reproduces_validation_md(installed: Path, tmp_path: Pat
         [
             str(installed),
             "-m",
-            "runout.cli.app",
+            "runout.cli.commands",
             "reproduce",
             "--check",
             "--out",

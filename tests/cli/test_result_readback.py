@@ -12,10 +12,10 @@ from typer.testing import CliRunner
 
 from runout.base.errors import RunoutError
 from runout.case.model import load_case
-from runout.cli.app import app
+from runout.cli.commands import app
 from runout.io.result_files import read_result
-from runout.models import run_model
 from runout.report import plotting
+from runout.runner import run_model
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = ROOT / "examples"

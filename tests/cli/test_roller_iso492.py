@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
-from runout.cli.app import app
+from runout.cli.commands import app
 
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "seed004_nu209.toml"
 

@@ -9,7 +9,7 @@ import pytest
 from typer.testing import CliRunner
 
 from runout.case.model import load_case
-from runout.cli.app import app
+from runout.cli.commands import app
 from runout.models import linear as lin
 
 CASE = Path(__file__).resolve().parents[2] / "examples" / "seed002_608.toml"

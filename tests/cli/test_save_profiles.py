@@ -10,7 +10,7 @@ import numpy as np
 from typer.testing import CliRunner
 
 import runout
-from runout.cli.app import app
+from runout.cli.commands import app
 
 
 def test_two_cases_saved_in_one_directory_keep_their_own_profiles(tmp_path: Path) -> None:

@@ -20,7 +20,7 @@ EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 _PROBE = """
 import json, sys
 sys.argv = ["runout", *json.loads(sys.argv[1])]
-from runout.cli.app import app  # main() would end the process before the probe prints
+from runout.cli.commands import app  # main() would end the process before the probe prints
 try:
     app()
 except SystemExit as exc:

@@ -7,7 +7,7 @@ from pathlib import Path
 
 from typer.testing import CliRunner
 
-from runout.cli.app import app
+from runout.cli.commands import app
 
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "seed000_tada_fig7.toml"
 

@@ -12,7 +12,7 @@ import pytest
 from typer.testing import CliRunner
 
 from runout.analysis.results import RunResult
-from runout.cli.app import app
+from runout.cli.commands import app
 
 ROOT = Path(__file__).resolve().parents[2]
 HDD = (ROOT / "examples" / "spindle_hdd.toml").read_text(encoding="utf-8")

@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 from typer.testing import CliRunner
 
-from runout.cli.app import app
+from runout.cli.commands import app
 from runout.study.run import sample_rng
 
 ROOT = Path(__file__).resolve().parents[2]

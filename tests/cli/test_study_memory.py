@@ -12,7 +12,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-from runout.case.limits import estimate_run, estimate_study
+from runout.case.estimates import estimate_run, estimate_study
 from runout.case.model import load_case
 
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "seed001_kim_table9.toml"
@@ -56,8 +56,8 @@ def test_worker_processes_are_checked_against_the_budget(tmp_path: Path) -> None
     not in two workers refuses ``--workers 2`` before any work, naming the remedy."""
     from typer.testing import CliRunner
 
-    from runout.case.limits import STUDY_BYTES_PER_RUN, batched_memory, study_points
-    from runout.cli.app import app
+    from runout.case.estimates import STUDY_BYTES_PER_RUN, batched_memory, study_points
+    from runout.cli.commands import app
 
     text = EXAMPLE.read_text().replace("samples = 1024", "samples = 131072", 1)
     case_path = tmp_path / "lot.toml"

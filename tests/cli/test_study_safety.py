@@ -5,7 +5,7 @@ study digest checked on resume, corrupted manifests and chunks, what ``--out`` m
 ``run --out`` and an existing ``case.toml``, failed samples, workers outliving a killed parent
 and sweep-dynamic point names. Concurrency and SIGKILL go through subprocesses (each bounded by
 a timeout, every process started here is reaped or killed by its id); the rest goes through
-typer's CliRunner on ``runout.cli.app:app``.
+typer's CliRunner on ``runout.cli.commands:app``.
 """
 
 from __future__ import annotations
@@ -25,7 +25,7 @@ import pytest
 from typer.testing import CliRunner
 
 from cases import KIM_TOML
-from runout.cli.app import app
+from runout.cli.commands import app
 
 ROOT = Path(__file__).resolve().parents[2]
 CASE = (
@@ -377,16 +377,16 @@ def test_run_never_overwrites_another_case_toml(tmp_path: Path) -> None:
 
 # ------------------------------------------------------------------ failures
 def _failing_run_model(monkeypatch: pytest.MonkeyPatch, fails: Any) -> None:
-    import runout.models
+    import runout.runner
 
-    real = runout.models.run_model
+    real = runout.runner.run_model
 
     def run_model(case: Any) -> Any:
         if fails(case):
             raise ValueError("bad point, on purpose")
         return real(case)
 
-    monkeypatch.setattr(runout.models, "run_model", run_model)
+    monkeypatch.setattr(runout.runner, "run_model", run_model)
 
 
 def test_one_failed_sample_is_recorded_and_the_study_continues(
@@ -440,12 +440,12 @@ def test_files_are_identical_for_any_worker_count(tmp_path: Path) -> None:
 
 
 def test_keyboard_interrupt_still_stops(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    import runout.models
+    import runout.runner
 
     def interrupted(case: Any) -> Any:
         raise KeyboardInterrupt
 
-    monkeypatch.setattr(runout.models, "run_model", interrupted)
+    monkeypatch.setattr(runout.runner, "run_model", interrupted)
     result = invoke("study", str(write_case(tmp_path)), "--out", str(tmp_path / "out"))
     assert result.exit_code == 130 and "interrupted" in result.stderr
     assert not (tmp_path / "out" / ".lock").exists()  # released on the way out

@@ -21,7 +21,7 @@ import pytest
 from typer.testing import CliRunner
 
 import runout
-from runout.cli.app import app
+from runout.cli.commands import app
 
 ROOT = Path(__file__).resolve().parents[2]
 GUIDE = ROOT / "docs" / "python.md"

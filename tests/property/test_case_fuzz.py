@@ -20,7 +20,7 @@ from typer.testing import CliRunner
 
 from runout.base.errors import CaseError
 from runout.case.model import CaseSpec, parse_case
-from runout.cli.app import app
+from runout.cli.commands import app
 
 BASE = tomllib.loads(
     """

@@ -21,7 +21,7 @@ from runout.base.errors import RunoutError
 from runout.case.model import Case
 from runout.examples import tada_bearing
 from runout.geometry.bearing import Operation
-from runout.models import run_model
+from runout.runner import run_model
 
 STATIONARY = {"inner": "outer", "outer": "inner"}
 

@@ -27,7 +27,7 @@ from runout.base.errors import (
 )
 from runout.case.model import Case
 from runout.geometry.bearing import BallBearing, Operation
-from runout.models import run_model
+from runout.runner import run_model
 
 # Random short records put lines closer than 1/record length: the warning is right, and expected.
 pytestmark = pytest.mark.filterwarnings("ignore::runout.analysis.spectrum.LineResolutionWarning")

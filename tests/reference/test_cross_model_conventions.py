@@ -31,7 +31,7 @@ import pytest
 from cases import TADA_BEARING
 from runout.analysis.results import RunResult
 from runout.case.model import parse_case
-from runout.models import run_model
+from runout.runner import run_model
 
 WAVINESS = [
     {"part": "inner", "order": 9, "amplitude": 1e-9, "phase": 0.3},

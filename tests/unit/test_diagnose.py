@@ -11,8 +11,8 @@ import pytest
 import runout
 from runout.case.model import load_case
 from runout.diagnose.fit import diagnose
+from runout.geometry.loading import operating_contact_angle
 from runout.models.linear import closed_form_terms, rates, spectral_lines
-from runout.report.summary import operating_contact_angle
 from runout.validation.diagnosis_checks import (
     MAINS_HZ,
     Truth,

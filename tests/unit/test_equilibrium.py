@@ -16,7 +16,7 @@ from runout.case.model import parse_case
 from runout.geometry.bearing import BallBearing, Operation
 from runout.geometry.loading import axial_loading
 from runout.models import equilibrium as eq
-from runout.models import run_model
+from runout.runner import run_model
 
 
 def bearing(z: int = 10) -> BallBearing:

@@ -22,10 +22,10 @@ from typer.testing import CliRunner
 from cases import KIM_BEARING, KIM_OPERATION, dynamic_case
 from runout.base.display import format_length
 from runout.case.model import parse_case
-from runout.cli.app import app
-from runout.models import run_model
+from runout.cli.commands import app
 from runout.models.linear import ANDERON_BANDS
 from runout.report import plotting
+from runout.runner import run_model
 from runout.study.run import Quantity, run_study
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"

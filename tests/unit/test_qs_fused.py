@@ -14,14 +14,14 @@ from hypothesis import strategies as st
 
 from runout.api import Imperfections as Builder
 from runout.base.errors import CaseError
-from runout.case.limits import BYTES_QUASI_STATIC, estimate_run
+from runout.case.estimates import estimate_run
+from runout.case.limits import BYTES_QUASI_STATIC
 from runout.case.model import Case
 from runout.examples import tada_bearing
 from runout.geometry.bearing import Operation
 from runout.geometry.imperfections import Harmonics, Imperfections
 from runout.models import quasi_static_2d as qs2
 from runout.models import quasi_static_3d as qs3
-from runout.models import run_model
 from runout.models._quasi_static import (
     ANCHOR,
     Kinematics,
@@ -30,6 +30,7 @@ from runout.models._quasi_static import (
     contact_sources,
     time_grid,
 )
+from runout.runner import run_model
 
 KIN = Kinematics(inner=0.0, outer=90.0, cage=50.6, spin=310.1, rotating_ring="outer", n_elements=7)
 

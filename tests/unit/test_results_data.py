@@ -12,7 +12,7 @@ from cases import KIM_TOML
 from runout import examples
 from runout.analysis.results import RunResult
 from runout.case.model import load_case, parse_case
-from runout.models import run_model
+from runout.runner import run_model
 from runout.study.run import Quantity, StudyResult, run_study
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"

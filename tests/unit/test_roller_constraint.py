@@ -313,7 +313,7 @@ def test_run_case_gives_a_complete_result_and_files(tmp_path, ring: str) -> None
     import json
 
     from runout.case.model import load_case
-    from runout.models import run_model
+    from runout.runner import run_model
 
     path = tmp_path / "case.toml"
     path.write_text(CASE.format(ring=ring))
@@ -343,7 +343,7 @@ def test_summary_shows_the_motion_across_the_load() -> None:
     # readable table says so, next to the measuring-direction figure
     from runout import examples
     from runout.base.display import LENGTH_UNITS
-    from runout.models import run_model
+    from runout.runner import run_model
 
     result = run_model(examples.nu209().case())
     rows = {name: (value, unit) for name, value, unit in result.summary_sections()[0][1]}

@@ -24,10 +24,10 @@ from runout.analysis.spectrum import extract_lines
 from runout.base.errors import CaseError
 from runout.case.model import Case
 from runout.models import quasi_static_2d as qs2
-from runout.models.dynamic import exact_number, point_name
 from runout.study import chunks as chunks_mod
 from runout.study import files as files_mod
 from runout.study import run as st_mod
+from runout.study.dynamic_sweep import exact_number, point_name
 from runout.study.kernels import project_rows, solve_batch, solve_batch_reference
 from runout.study.run import (
     OutputError,
@@ -503,12 +503,12 @@ def test_error_text_is_one_bounded_line() -> None:
 
 
 def test_failed_samples_are_listed_bounded(monkeypatch: pytest.MonkeyPatch) -> None:
-    import runout.models
+    import runout.runner
 
     def fail(case: Any) -> Any:
         raise ZeroDivisionError("no")
 
-    monkeypatch.setattr(runout.models, "run_model", fail)
+    monkeypatch.setattr(runout.runner, "run_model", fail)
     monkeypatch.setattr(chunks_mod, "_batched", lambda task: False)
     res = run_study(chunked(samples=25, chunk=10))
     assert len(res.errors) == 25

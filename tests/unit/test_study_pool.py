@@ -17,6 +17,7 @@ from runout.case.model import Case
 from runout.models import quasi_static_2d as qs2
 from runout.study import chunks as chunks_mod
 from runout.study import pool as pool_mod
+from runout.study import workers as workers_mod
 from runout.study import result as result_mod
 from runout.study import run as st_mod
 from runout.study.kernels import _contacts, solve_batch, solve_batch_reference
@@ -191,8 +192,11 @@ def test_column_fill_equals_the_row_by_row_records(
 
 
 def test_warm_kernels_loads_without_error() -> None:
-    pool_mod.warm_kernels()
-    assert st_mod._init_worker is pool_mod.init_worker and st_mod._context is pool_mod.spawn_context
+    workers_mod.warm_kernels()
+    assert (
+        st_mod._init_worker is workers_mod.init_worker
+        and st_mod._context is workers_mod.spawn_context
+    )
 
 
 # ------------------------------------------------------------------ RRO/NRRO split

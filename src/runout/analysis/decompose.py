@@ -43,7 +43,7 @@ from typing import Any, Literal
 import numpy as np
 from numpy.typing import NDArray
 
-from runout.analysis.results import Component, Runout, Source
+from runout.analysis.lines import Component, Runout, Source
 from runout.base.threads import halves, in_spans
 
 __all__ = [

@@ -15,11 +15,45 @@ comparison and JSON, and are None in a result read back from a file.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any, Literal, TypeAlias
+from typing import TYPE_CHECKING, Any, Literal, Protocol, TypeAlias
+
+import numpy as np
+from numpy.typing import NDArray
 
 if TYPE_CHECKING:
-    from runout.analysis.results import Runout
-    from runout.models.roller_constraint import Solution
+    from runout.analysis.lines import Runout
+
+
+class RollerSolution(Protocol):
+    """What a result carries of the rigid model's contact solution (the model's ``Solution``,
+    :mod:`runout.models.roller_constraint`, defined above this layer): the stable position at
+    every rotation angle, which the run's files and figures read."""
+
+    @property
+    def alpha(self) -> NDArray[np.float64]:
+        """Rotation angles of the turning ring [rad], shape (n,)."""
+        ...
+
+    @property
+    def centre(self) -> NDArray[np.float64]:
+        """Centre of the loaded ring relative to the fixed ring's [m], shape (n, 2)."""
+        ...
+
+    @property
+    def pair(self) -> NDArray[np.int64]:
+        """The two rollers (0-based) whose contacts hold the ring, shape (n, 2)."""
+        ...
+
+    @property
+    def multipliers(self) -> NDArray[np.float64]:
+        """Their contact forces per unit measuring load [-], shape (n, 2)."""
+        ...
+
+    @property
+    def gaps(self) -> NDArray[np.float64]:
+        """Gap of every roller at the stable position [m], shape (n, Z)."""
+        ...
+
 
 __all__ = [
     "DETAILS_BY_MODEL",
@@ -492,7 +526,7 @@ class RollerDetails:
         Diametral clearance [m].
     iso492 : Iso492
         ISO 492 name and value of the radial runout.
-    solution : Solution or None
+    solution : RollerSolution or None
         The contact solution at every angle (not in the JSON: it writes ``contacts.csv``,
         ``order_sweep.csv`` and the model's figures); None when read back.
     """
@@ -503,7 +537,7 @@ class RollerDetails:
     rotating_ring: str
     radial_clearance_m: float
     iso492: Iso492
-    solution: Solution | None = field(default=None, compare=False, repr=False)
+    solution: RollerSolution | None = field(default=None, compare=False, repr=False)
 
     def to_json(self) -> dict[str, Any]:
         """The rigid model's JSON entries."""
@@ -585,7 +619,7 @@ class SpindleBearingResult:
     @classmethod
     def from_json(cls, doc: dict[str, Any]) -> SpindleBearingResult:
         """Read :meth:`to_json` back."""
-        from runout.analysis.results import Runout
+        from runout.analysis.lines import Runout
 
         x, y, z = (float(v) for v in doc["mean_displacement_m"])
         return cls(

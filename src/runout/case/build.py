@@ -8,8 +8,9 @@ from __future__ import annotations
 
 import math
 import stat
+from collections.abc import Mapping
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 
@@ -22,8 +23,6 @@ from runout.case.limits import (
     Estimate,
     LimitError,
     case_budget,
-    estimate_run,
-    estimate_study,
     format_bytes,
     harmonics_memory,
     max_profile_bytes,
@@ -50,8 +49,9 @@ from runout.geometry.imperfections import (
     spectral_law,
 )
 
-if TYPE_CHECKING:
-    from runout.case.model import Case, ProfileData
+#: Measured profiles held in memory: file name in ``[[profile]] file`` -> (angles [rad],
+#: deviations [m]), read instead of a file (profiles given to the Python API as arrays).
+ProfileData = Mapping[str, tuple[np.ndarray, np.ndarray]]
 
 _GEOMETRY_KEYS = {
     "elements": "bearing.elements",
@@ -459,14 +459,3 @@ class _CaseKeyError(Exception):
         self.key = key
         self.message = message
         super().__init__(f"{key}: {message}")
-
-
-def _check_limits(case: Case) -> None:
-    """Refuse a case whose run (or study) would exceed the budget, before any work."""
-    limits = case_budget(case)
-    per_run = estimate_run(case, case.analysis.model)
-    if case.study is not None:
-        models = list(case.study.models) if case.study.models else [case.analysis.model]
-        per_run = max((estimate_run(case, m) for m in models), key=lambda e: (e.seconds, e.memory))
-        check_estimate(estimate_study(case, per_run), limits)
-    check_estimate(per_run, limits)

@@ -11,10 +11,11 @@ wrong. Unknown keys are errors with a did-you-mean hint.
 
 from __future__ import annotations
 
+import numbers
 import re
 import stat
 import tomllib
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -25,12 +26,13 @@ from pydantic import ValidationError
 from runout.base.errors import CaseError, GeometryError
 from runout.case.build import (
     _GEOMETRY_KEYS,
+    ProfileData,
     _build_bearing,
     _build_imperfections,
     _CaseKeyError,
-    _check_limits,
     harmonic_counts,
 )
+from runout.case.estimates import check_limits
 from runout.case.limits import MAX_CASE_FILE_BYTES, MAX_TOML_DEPTH, case_budget, format_bytes
 from runout.case.schema import (
     MAX_CONFORMITY,
@@ -59,9 +61,9 @@ from runout.case.schema import (
     sweep_count,
 )
 from runout.case.schema import _table_type as _table_type  # runout.api, runout.report.plotting
-from runout.geometry.bearing import Bearing, Operation
+from runout.geometry.bearing import BallBearing, Bearing, Material, Operation, RollerBearing
 from runout.geometry.imperfections import Imperfections
-from runout.geometry.spindle_layout import SpindleLayout
+from runout.geometry.spindle_layout import SpindleBearing, SpindleLayout
 
 __all__ = [
     "MAX_CONFORMITY",
@@ -99,6 +101,86 @@ __all__ = [
 ]
 
 
+#: The "file" named in the errors of a case built in code.
+PYTHON_PATH = "<python>"
+
+
+def _plain(value: Any) -> Any:
+    """A case-file value: numpy numbers as Python numbers, sequences as lists."""
+    if isinstance(value, bool | str) or value is None:
+        return value
+    if isinstance(value, numbers.Integral):
+        return int(value)
+    if isinstance(value, numbers.Real):
+        return float(value)
+    if isinstance(value, np.ndarray | list | tuple):
+        return [_plain(v) for v in value]
+    return value
+
+
+# --------------------------------------------------------------------------------------------
+# from objects to the case-file document
+# --------------------------------------------------------------------------------------------
+def _changed(obj: Any, names: Sequence[str], defaults: Any) -> dict[str, Any]:
+    """The attributes of ``obj`` that differ from those of ``defaults`` (a case leaves them out)."""
+    return {
+        name: _plain(getattr(obj, name))
+        for name in names
+        if getattr(obj, name) is not None and getattr(obj, name) != getattr(defaults, name)
+    }
+
+
+def _bearing_tables(bearing: Any) -> dict[str, Any]:
+    if isinstance(bearing, BallBearing):
+        table: dict[str, Any] = {"type": "ball"}
+        names: tuple[str, ...] = (
+            "elements",
+            "element_diameter",
+            "pitch_diameter",
+            "inner_conformity",
+            "outer_conformity",
+            "radial_clearance",
+            "contact_angle",
+        )
+    elif isinstance(bearing, RollerBearing):
+        table = {"type": "cylindrical_roller"}
+        names = (
+            "elements",
+            "element_diameter",
+            "inner_raceway_diameter",
+            "outer_raceway_diameter",
+            "roller_length",
+        )
+    else:
+        raise TypeError(
+            f"bearing must be a runout.BallBearing or runout.RollerBearing, got "
+            f"{type(bearing).__name__}"
+        )
+    for name in names:
+        value = getattr(bearing, name)
+        if value is not None and not (name == "radial_clearance" and value == 0.0):
+            table[name] = _plain(value)
+    out: dict[str, Any] = {"bearing": table}
+    material = _changed(
+        bearing.material, ("youngs_modulus", "poisson_ratio", "density"), Material()
+    )
+    if material:
+        out["material"] = material
+    return out
+
+
+_OPERATION_KEYS = (
+    "rotating_ring",
+    "speed",
+    "other_ring_speed",
+    "axial_load",
+    "radial_load",
+    "radial_load_direction",
+    "moment_load",
+    "moment_load_direction",
+)
+
+
 # --------------------------------------------------------------------------------------------
 # the validated case
 # --------------------------------------------------------------------------------------------
@@ -114,11 +196,6 @@ class Analysis:
     bands: str | None = None
     limit: float | None = None
     limit_on: str = "radial_pp"
-
-
-#: Measured profiles held in memory: file name in ``[[profile]] file`` -> (angles [rad],
-#: deviations [m]), read instead of a file (profiles given to the Python API as arrays).
-ProfileData = Mapping[str, tuple[np.ndarray, np.ndarray]]
 
 
 @dataclass(frozen=True)
@@ -206,18 +283,47 @@ class Case:
         CaseError
             Naming ``<python>`` and the case key, with the message a case file would give.
         """
-        from runout.api import build_case
-
-        return build_case(
-            bearing,
-            operation,
-            imperfections,
-            title=title,
-            analysis=analysis,
-            dynamics=dynamics,
-            study=study,
-            base_dir=base_dir,
-        )
+        if operation is not None and not isinstance(operation, Operation):
+            raise TypeError(f"operation must be a runout.Operation, got {type(operation).__name__}")
+        if imperfections is not None and not hasattr(imperfections, "tables"):
+            raise TypeError(
+                "imperfections must be a runout.Imperfections builder (e.g. "
+                "runout.Imperfections(elements=8).waviness('inner', order=9, amplitude=10e-9)), "
+                f"got {type(imperfections).__name__}"
+            )
+        data: dict[str, Any] = {}
+        if title:
+            data["title"] = title
+        data.update(_bearing_tables(bearing))
+        if operation is not None:
+            changed = _changed(operation, _OPERATION_KEYS, Operation())
+            if changed:
+                data["operation"] = changed
+        if imperfections is not None:
+            if imperfections.elements is not None and imperfections.elements != bearing.elements:
+                raise CaseError(
+                    PYTHON_PATH,
+                    "bearing.elements",
+                    f"the imperfections were built for elements={imperfections.elements}, the "
+                    f"bearing has {bearing.elements}",
+                )
+            data.update(imperfections.tables())
+        for name, table in (("analysis", analysis), ("dynamics", dynamics), ("study", study)):
+            if table is not None:
+                data[name] = {key: _plain(value) for key, value in table.items()}
+        base = Path.cwd() if base_dir is None else Path(base_dir)
+        profiles = imperfections.profile_data if imperfections is not None else {}
+        if study is not None and profiles:
+            # every sample of a study re-reads the case's profiles from their files
+            first = next(iter(profiles))
+            index = [p["file"] for p in data.get("profile", [])].index(first) + 1
+            raise CaseError(
+                PYTHON_PATH,
+                f"profile[{index}].file",
+                "a study reads its profiles from files: write this one as CSV (Case.save writes "
+                "it) and give .profile(..., file=...)",
+            )
+        return parse_case(data, PYTHON_PATH, base, profile_data=profiles)
 
     def to_document(self) -> dict[str, Any]:
         """The case-file document (tables of SI numbers) that gives this case again."""
@@ -356,7 +462,6 @@ def parse_case(
     if spec.bearings:
         # a spindle: each bearing read as its own single-bearing case (the lead one stands
         # for the case's bearing in summaries; the model reads case.spindle)
-        from runout.geometry.spindle_layout import build_layout
 
         spindle, own_cases = build_layout(spec, path, base_dir, profile_data)
         bearing = own_cases[0].bearing
@@ -416,7 +521,7 @@ def parse_case(
         spindle=spindle,
     )
     try:
-        _check_limits(case)
+        check_limits(case)
     except GeometryError as exc:
         raise CaseError(path, exc.key, exc.message) from None
     return case
@@ -615,3 +720,89 @@ def apply_overrides(data: dict[str, Any], overrides: Mapping[str, Any], path: st
 
 def _one_line(text: str) -> str:
     return "".join(ch if ch.isprintable() else repr(ch)[1:-1] for ch in text)
+
+
+# --------------------------------------------------------------------------------------------
+# spindle cases: one single-bearing case per bearing (parse_case calls build_layout and back)
+# --------------------------------------------------------------------------------------------
+_TABLES = ("waviness", "waviness_spectrum", "profile")
+
+
+def _remap(key: str, name: str, index: int, entries: dict[str, list[int]]) -> str:
+    """A key of a bearing's own case as the spindle case's key."""
+    if key.startswith("bearing."):
+        return f"bearings[{index}]." + key[len("bearing.") :]
+    if key.startswith("elements"):
+        return f"elements.{name}" + key[len("elements") :]
+    match = re.match(r"(waviness_spectrum|waviness|profile)\[(\d+)\](.*)", key)
+    if match:
+        table, k, rest = match.group(1), int(match.group(2)), match.group(3)
+        own = entries[table]
+        if 1 <= k <= len(own):
+            return f"{table}[{own[k - 1]}]{rest}"
+    return key
+
+
+def bearing_document(document: dict[str, Any], name: str) -> tuple[dict[str, Any], dict[str, Any]]:
+    """A bearing's single-bearing case document, and the indices of its entries per table."""
+    entry = next(b for b in document["bearings"] if b["name"] == name)
+    own: dict[str, Any] = {
+        "title": document.get("title", ""),
+        "bearing": {k: v for k, v in entry.items() if k not in ("name", "position")},
+    }
+    for table in ("material", "operation"):
+        if table in document:
+            own[table] = document[table]
+    entries: dict[str, list[int]] = {}
+    for table in _TABLES:
+        rows = document.get(table, [])
+        entries[table] = [i for i, row in enumerate(rows, start=1) if row.get("bearing") == name]
+        picked = [{k: v for k, v in row.items() if k != "bearing"} for row in rows]
+        chosen = [picked[i - 1] for i in entries[table]]
+        if chosen:
+            own[table] = chosen
+    elements = document.get("elements") or {}
+    if name in elements:
+        own["elements"] = elements[name]
+    analysis = {
+        k: v
+        for k, v in document.get("analysis", {}).items()
+        if k in ("revolutions", "samples", "max_memory", "max_time")
+    }
+    own["analysis"] = {**analysis, "model": "quasi_static_3d"}
+    return own, entries
+
+
+def build_layout(
+    spec: CaseSpec,
+    path: str,
+    base_dir: Path | None,
+    profile_data: ProfileData | None,
+) -> tuple[SpindleLayout, list[Case]]:
+    """The spindle of a validated spindle case, and each bearing's own case.
+
+    Raises
+    ------
+    CaseError
+        Naming the spindle case's key (``bearings[2].pitch_diameter``, ``waviness[3].order``).
+    """
+    document = spec.model_dump(mode="python", exclude_unset=True, exclude_none=True)
+    assert spec.spindle is not None  # checked by the schema
+    bearings: list[SpindleBearing] = []
+    cases: list[Case] = []
+    for index, b in enumerate(spec.bearings, start=1):
+        own, entries = bearing_document(document, b.name)
+        try:
+            case = parse_case(own, path, base_dir, profile_data=profile_data)
+        except CaseError as exc:
+            raise CaseError(path, _remap(exc.key, b.name, index, entries), exc.message) from None
+        bearings.append(SpindleBearing(b.name, b.position, case.bearing, case.imperfections))
+        cases.append(case)
+    layout = SpindleLayout(
+        bearings=tuple(bearings),
+        arrangement=spec.spindle.arrangement,
+        preload=spec.spindle.preload,
+        preload_displacement=spec.spindle.preload_displacement,
+        nose_position=spec.spindle.nose_position,
+    )
+    return layout, cases

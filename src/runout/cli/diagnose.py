@@ -11,7 +11,7 @@ from rich.table import Table
 
 __all__ = ["register"]
 
-# the same annotations as the other commands' (runout.cli.app), at module level so that typer can
+# the same annotations as the other commands' (runout.cli.commands), at module level so that typer can
 # resolve them from this module's names
 CaseArg = Annotated[
     Path, typer.Argument(help="TOML case file (see docs/case-file.md).", show_default=False)
@@ -74,7 +74,7 @@ def _table(diagnosis: Any) -> list[Any]:
 
 def register(app: typer.Typer) -> None:
     """Add ``diagnose`` to ``app`` (the ``runout`` command line)."""
-    from runout.cli.app import _fail, _guard, _out, _print_json
+    from runout.cli.common import _fail, _guard, _out, _print_json
 
     @app.command("diagnose")
     @_guard
@@ -146,7 +146,7 @@ def register(app: typer.Typer) -> None:
                 "analysis.linear_variant",
                 f'--variant must be "radial_spring" or "force_balance", got {variant!r}',
             )
-        from runout.cli.app import _load
+        from runout.cli.common import _load
 
         case = _load(case_file)
         directory = None

@@ -351,10 +351,10 @@ def diagnose(
         A record that cannot be read or fitted (named by file, row and column).
     """
     from runout.analysis.decompose import Candidate, Kinematic, attribute_frequency, fit_lines
-    from runout.analysis.results import Source
+    from runout.analysis.lines import Source
     from runout.case.limits import case_budget
+    from runout.geometry.loading import operating_contact_angle
     from runout.models.linear import rates, variant_gains
-    from runout.report.summary import operating_contact_angle
 
     c = _load(case)
     if getattr(c, "spindle", None) is not None:

@@ -39,7 +39,7 @@ from dataclasses import dataclass
 from typing import Literal
 
 from runout.base.errors import ConvergenceError, GeometryError
-from runout.geometry.bearing import BallBearing
+from runout.geometry.bearing import BallBearing, Bearing, Operation, RollerBearing
 from runout.geometry.contact import BallContacts, ball_race_contacts
 
 __all__ = [
@@ -47,6 +47,7 @@ __all__ = [
     "axial_load_for_contact_angle",
     "axial_loading",
     "axial_loading_fixed_angle",
+    "operating_contact_angle",
 ]
 
 StiffnessMode = Literal["at_angle", "free"]
@@ -318,3 +319,39 @@ def axial_loading_fixed_angle(
     d_o = (q / contacts.outer.stiffness) ** (2.0 / 3.0)
     d_n = d_i + d_o
     return AxialLoading(fa, alpha, alpha, q, d_i, d_o, d_n, d_n / math.sin(alpha), contacts)
+
+
+def operating_contact_angle(
+    bearing: Bearing, operation: Operation
+) -> tuple[float, AxialLoading | None]:
+    """Contact angle the bearing runs at, and the axial-load solution behind it.
+
+    Parameters
+    ----------
+    bearing : BallBearing or RollerBearing
+        The bearing.
+    operation : Operation
+        Its operating condition (``axial_load`` [N]).
+
+    A fixed ``contact_angle`` in the bearing description wins; otherwise a ball bearing under an
+    axial load runs at the loaded contact angle (Harris's load-angle relation,
+    :func:`runout.geometry.loading.axial_loading`), and without axial load at the free contact angle.
+    Roller bearings run at 0.
+
+    Returns
+    -------
+    contact_angle : float
+        [rad]
+    loading : AxialLoading or None
+        The static axial-load solution when one was computed.
+    """
+    if isinstance(bearing, RollerBearing):
+        return 0.0, None
+    if operation.axial_load > 0.0:
+        if bearing.contact_angle is not None:
+            # A fixed angle (seed 000's model) carries the load at that angle.
+            fixed = axial_loading_fixed_angle(bearing, operation.axial_load)
+            return bearing.contact_angle, fixed
+        loading = axial_loading(bearing, operation.axial_load)
+        return loading.contact_angle, loading
+    return bearing.unloaded_contact_angle, None

@@ -1,4 +1,5 @@
-"""One module per model id; :func:`run_model` dispatches a validated case to it.
+"""One module per model id (the physics); :func:`runout.runner.run_model` dispatches a validated
+case to it.
 
 Each model lives in ``runout/models/<id>.py`` and exposes ``run(case) -> RunResult``. A case
 that names a model this version does not provide gets a
@@ -7,7 +8,6 @@ that names a model this version does not provide gets a
 
 from __future__ import annotations
 
-import dataclasses
 import importlib
 import importlib.util
 import math
@@ -16,9 +16,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from runout.base.errors import ModelNotAvailableError
-
-__all__ = ["MODEL_MODULES", "available_models", "measuring_direction", "run_model"]
+__all__ = ["MODEL_MODULES", "available_models", "measuring_direction"]
 
 #: model id -> module that implements it (``run(case) -> RunResult``)
 MODEL_MODULES: dict[str, str] = {
@@ -64,45 +62,16 @@ def measuring_direction(case: Any, model: str | None = None) -> NDArray[np.float
     return np.array([1.0, 0.0])
 
 
-def run_model(case: Any) -> Any:
-    """Run the model named in ``case.analysis.model``.
+def __getattr__(name: str) -> Any:
+    """``runout.models.run_model`` (moved to :func:`runout.runner.run_model`), for one release."""
+    if name == "run_model":
+        import warnings
 
-    The case is first checked against :mod:`runout.case.conventions`: a key the model refuses ends
-    the run with a :class:`runout.base.errors.CaseError`; the keys it does not apply are added to
-    the result's notes.
-
-    Raises
-    ------
-    ModelNotAvailableError
-        If that model is not part of this version.
-    CaseError
-        If the case sets a key the model refuses, fails the model's input checks, exceeds the
-        budget of :mod:`runout.case.limits` or loads a contact beyond Hertz theory
-        (:func:`runout.runner.checks.validate`); its warnings join the result's notes.
-    """
-    model = case.analysis.model
-    if model not in available_models():
-        available = ", ".join(available_models()) or "none yet"
-        raise ModelNotAvailableError(
-            f"{case.path}: analysis.model: model '{model}' is not available in this version "
-            f"(available: {available}); `runout check` and `runout frequencies` work for any case"
+        warnings.warn(
+            "runout.models.run_model is deprecated; import it from runout.runner",
+            DeprecationWarning,
+            stacklevel=2,
         )
-    from runout.base.errors import GeometryError
-    from runout.case.conventions import enforce
-    from runout.runner.checks import as_case_error, validate
-
-    # One meaning per key: refuse what this model cannot honour, note what it does not apply.
-    notes = enforce(case, model)
-    # the model's set-up, the budget and the physics, as `runout check` runs them
-    warnings = validate(case, model)
-    module = importlib.import_module(MODEL_MODULES[model])
-    try:
-        result = module.run(case)
-    except GeometryError as exc:  # an input check inside the model: name the file and key
-        raise as_case_error(case, exc) from None
-    if notes or warnings:
-        result = dataclasses.replace(result, notes=(*result.notes, *warnings, *notes))
-    # the case's [analysis] outputs beyond the model: bands, verdict, passage names
-    from runout.analysis.results import apply_analysis
-
-    return apply_analysis(result, case)
+        # the orchestration is a layer above the models: found by name, once, for the old path
+        return importlib.import_module("runout.runner").run_model
+    raise AttributeError(f"module 'runout.models' has no attribute {name!r}")

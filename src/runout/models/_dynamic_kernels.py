@@ -26,6 +26,7 @@ import numba
 import numpy as np
 from numpy.typing import NDArray
 
+from runout.analysis.results import SOLVER_RTOL
 from runout.base.linalg import solve_spd3
 
 FloatArray = NDArray[np.float64]
@@ -38,7 +39,7 @@ Harmonics = tuple[
 ]  # fmt: skip
 
 #: Newton step tolerance relative to the reference approach.
-NEWTON_RTOL = 1e-12
+NEWTON_RTOL = SOLVER_RTOL["dynamic"]
 #: A quasi-static force balance holding to this fraction of (Σ ball loads + |load|) has
 #: converged (the round-off floor of the sum over balls is ~Z × 1e-16 of it).
 FORCE_RTOL = 1e-13

@@ -35,8 +35,9 @@ from runout.analysis.decompose import (
     fit_lines,
     split_runout,
 )
+from runout.analysis.lines import Source
 from runout.analysis.result_details import QuasiStaticDetails
-from runout.analysis.results import RunResult, Source
+from runout.analysis.results import RunResult
 from runout.base.errors import GeometryError
 from runout.base.threads import halves, in_spans
 from runout.geometry.imperfections import Harmonics, Imperfections

@@ -119,13 +119,14 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import NDArray
 
+from runout.analysis.lines import Runout
 from runout.analysis.result_details import (
     EquilibriumDetails,
     RadialStiffness,
     RingDisplacement,
     StiffnessMatrix,
 )
-from runout.analysis.results import Runout, RunResult
+from runout.analysis.results import RunResult
 from runout.base.errors import ConvergenceError, GeometryError, NumericalError
 from runout.geometry.bearing import BallBearing, Operation
 from runout.geometry.contact import ball_race_curvature, combined_stiffness, hertz_point_stiffness

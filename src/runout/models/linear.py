@@ -64,8 +64,9 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from runout.analysis.decompose import exact_shares, split_runout
+from runout.analysis.lines import Component, Source
 from runout.analysis.result_details import LinearDetails
-from runout.analysis.results import Component, RunResult, Source
+from runout.analysis.results import RunResult
 from runout.analysis.spectrum import (
     ANDERON_BANDS,
     MICROINCH,
@@ -1010,7 +1011,7 @@ def run(case: Any) -> LinearResult:
         NRRO = the rest, p-p along the measuring direction over the window), Anderon bands from
         the exact lines, and the attribution table (JSON key ``attribution``).
     """
-    from runout.report.summary import operating_contact_angle
+    from runout.geometry.loading import operating_contact_angle
 
     bearing, operation, imp = case.bearing, case.operation, case.imperfections
     variant = getattr(case.analysis, "linear_variant", "radial_spring")

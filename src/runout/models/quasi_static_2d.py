@@ -55,12 +55,12 @@ import numba
 import numpy as np
 from numpy.typing import NDArray
 
-from runout.analysis.results import RunResult
+from runout.analysis.results import SOLVER_RTOL, RunResult
 from runout.base.errors import ContactLossError, ConvergenceError, GeometryError, NumericalError
 from runout.geometry.bearing import BallBearing
 from runout.geometry.contact import ball_race_contacts
 from runout.geometry.kinematics import ball_spin_frequency, cage_frequency
-from runout.geometry.loading import axial_loading
+from runout.geometry.loading import axial_loading, operating_contact_angle
 from runout.models._quasi_static import (
     Kinematics,
     contact_advance,
@@ -76,7 +76,6 @@ from runout.models._quasi_static import (
     solve_in_halves,
     time_step,
 )
-from runout.report.summary import operating_contact_angle
 
 if TYPE_CHECKING:
     from runout.case.model import Case
@@ -104,7 +103,7 @@ CAUSES = {
     ),
     NOT_CONVERGED: "Newton iteration did not converge",
 }
-RTOL = 1e-11
+RTOL = SOLVER_RTOL["quasi_static_2d"]
 MAX_ITER = 60
 #: Residual round-off floor relative to the sum of the load magnitudes (64 ulp).
 FLOOR = 64.0 * 2.0**-52

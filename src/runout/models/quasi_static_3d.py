@@ -71,12 +71,13 @@ import numba
 import numpy as np
 from numpy.typing import NDArray
 
-from runout.analysis.results import RunResult
+from runout.analysis.results import SOLVER_RTOL, RunResult
 from runout.base.errors import ContactLossError, ConvergenceError, GeometryError, NumericalError
 from runout.base.linalg import solve_spd3
 from runout.geometry.bearing import BallBearing
 from runout.geometry.contact import ball_race_contacts
 from runout.geometry.kinematics import ball_spin_frequency, cage_frequency
+from runout.geometry.loading import operating_contact_angle
 from runout.models._quasi_static import (
     Kinematics,
     contact_advance,
@@ -93,7 +94,6 @@ from runout.models._quasi_static import (
     time_grid,
     time_step,
 )
-from runout.report.summary import operating_contact_angle
 
 if TYPE_CHECKING:
     from runout.case.model import Case
@@ -121,7 +121,7 @@ CAUSES = {
     NOT_CONVERGED: "Newton iteration did not converge",
 }
 #: Step tolerance of Newton's method relative to the preload approach δ_pl.
-RTOL = 1e-11
+RTOL = SOLVER_RTOL["quasi_static_3d"]
 MAX_ITER = 60
 #: Residual round-off floor relative to the sum of the load magnitudes (64 ulp).
 _FLOOR = 64.0 * 2.0**-52

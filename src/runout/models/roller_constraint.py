@@ -102,8 +102,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 from runout.analysis.decompose import Candidate, Kinematic, fit_lines, split_runout
+from runout.analysis.lines import Component, Runout, Source
 from runout.analysis.result_details import Iso492, RollerContacts, RollerDetails
-from runout.analysis.results import Component, Runout, RunResult, Source
+from runout.analysis.results import RunResult
 from runout.geometry.bearing import BallBearing, Operation
 from runout.geometry.imperfections import Harmonics
 from runout.geometry.kinematics import bearing_frequencies

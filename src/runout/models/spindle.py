@@ -82,6 +82,7 @@ from runout.geometry.bearing import BallBearing
 from runout.geometry.contact import ball_race_contacts
 from runout.geometry.imperfections import Imperfections
 from runout.geometry.kinematics import ball_spin_frequency, bearing_frequencies, cage_frequency
+from runout.geometry.loading import operating_contact_angle
 from runout.geometry.spindle_layout import SpindleLayout
 from runout.models._quasi_static import (
     Kinematics,
@@ -100,7 +101,6 @@ from runout.models._spindle_kernels import (
     solve_chunk,
 )
 from runout.models.quasi_static_3d import check_axial_room, preload_approach
-from runout.report.summary import operating_contact_angle
 
 if TYPE_CHECKING:
     from runout.case.model import Case

@@ -15,7 +15,7 @@ from typing import Any
 import numpy as np
 
 from runout.report import plot_style as style
-from runout.report.plotting import (
+from runout.report.plot_style import (
     MAX_CURVE_POINTS,
     _finish,
     _fmt,

@@ -8,9 +8,12 @@ from __future__ import annotations
 
 import functools
 from collections.abc import Callable, Iterable
+from pathlib import Path
 from typing import Any, TypeVar
 
 import numpy as np
+
+from runout.base.display import format_length
 
 __all__ = [
     "ANNOTATION_SIZE",
@@ -121,3 +124,92 @@ def length_scale(values_m: Iterable[float]) -> tuple[str, float]:
     from runout.base.display import length_unit
 
     return length_unit(np.asarray(values_m, dtype=np.float64))
+
+
+# --------------------------------------------------------------------------------------------
+# helpers every figure module shares (run figures, study figures)
+# --------------------------------------------------------------------------------------------
+#: Most points handed to matplotlib for one curve (a pixel column pair of a wide figure).
+MAX_CURVE_POINTS = 2_000
+#: Most points one curve of a time history is drawn with: a min/max pair per pixel column of a
+#: figure 8 in wide at 120 dpi is 1,920 points; a longer record is decimated to that envelope.
+ENVELOPE_COLUMNS = 1000
+
+
+def envelope_indices(values: np.ndarray, columns: int = ENVELOPE_COLUMNS) -> np.ndarray:
+    """Indices of the smallest and largest value of each of ``columns`` equal runs of samples.
+
+    Drawing only these points (in time order) gives the same picture as drawing every sample
+    at a width of ``columns`` pixel columns: every peak and trough stays visible. A record of
+    at most ``2 * columns`` samples is returned whole.
+
+    Parameters
+    ----------
+    values : ndarray, shape (n,)
+        The curve.
+    columns : int
+        Number of runs (pixel columns).
+
+    Returns
+    -------
+    ndarray of int
+        Sorted unique indices, the first and last sample included (at most ``2 * columns + 2``).
+    """
+    n = values.size
+    if n <= 2 * columns:
+        return np.arange(n)
+    run = -(-n // columns)  # ceil: every sample in one run
+    padded = np.concatenate([values, np.full(run * columns - n, values[-1])])
+    blocks = padded.reshape(columns, run)
+    base = np.arange(columns) * run
+    idx = np.concatenate([base + blocks.argmin(axis=1), base + blocks.argmax(axis=1), [0, n - 1]])
+    return np.unique(np.minimum(idx, n - 1))
+
+
+def pyplot() -> Any:
+    """matplotlib.pyplot with the non-interactive Agg backend."""
+    import matplotlib
+
+    matplotlib.use("Agg", force=False)
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def _fix_layout(fig: Any) -> None:
+    """Lay ``fig`` out now (tight layout) and mark it so :func:`_save` keeps that layout.
+
+    Labels placed by :func:`place_labels` are checked against the layout of the moment; a
+    later re-layout would move the axes under them.
+    """
+    fig.tight_layout()
+    fig._runout_fixed_layout = True
+
+
+def _finish(fig: Any) -> Any:
+    """Lay ``fig`` out (tight layout) unless its layout is already fixed; return it."""
+    if not getattr(fig, "_runout_fixed_layout", False):
+        _fix_layout(fig)
+    return fig
+
+
+def _save(fig: Any, path: Path, dpi: int = 100) -> Path:
+    """Save ``fig`` (laid out unless its layout is fixed) to ``path`` and close it.
+
+    100 dpi: a 9 in figure is 900 pixels, the width the report shows it at.
+    """
+    plt = pyplot()
+    # zlib level 1: a third of the encoding time for files about 5 % larger
+    _finish(fig).savefig(path, dpi=dpi, pil_kwargs={"compress_level": 1})
+    plt.close(fig)
+    return path
+
+
+def _shorten(text: str, limit: int) -> str:
+    """``text`` cut to ``limit`` characters, an ellipsis marking the cut."""
+    return text if len(text) <= limit else text[: limit - 3].rstrip() + "..."
+
+
+def _fmt(value_m: float, unit: str, scale: float) -> str:
+    """A length at the unit of the panel it is drawn on (``"0.5 um"``)."""
+    return format_length(value_m, (unit, scale))

@@ -17,6 +17,16 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from runout.report import plot_style as style
+from runout.report.plot_style import (
+    MAX_CURVE_POINTS,
+    _finish,
+    _fix_layout,
+    _fmt,
+    _save,
+    _shorten,
+    envelope_indices,
+    pyplot,
+)
 
 if TYPE_CHECKING:
     from runout.analysis.results import RunResult
@@ -57,44 +67,11 @@ def _top_source(component: Any) -> str:
     return str(component.label.split(":")[0].split(";")[0].strip())
 
 
-#: Most points one curve of a time history is drawn with: a min/max pair per pixel column of a
-#: figure 8 in wide at 120 dpi is 1,920 points; a longer record is decimated to that envelope.
-ENVELOPE_COLUMNS = 1000
 #: The animation's orbit panel draws records of at most this many instants whole.
 DRAW_WHOLE = 10_000
 #: Grid cells across an orbit plot's larger span (its axes are about 400 pixels wide): an
 #: orbit is drawn through the instants at which its path enters another cell.
 ORBIT_CELLS = 500
-
-
-def envelope_indices(values: np.ndarray, columns: int = ENVELOPE_COLUMNS) -> np.ndarray:
-    """Indices of the smallest and largest value of each of ``columns`` equal runs of samples.
-
-    Drawing only these points (in time order) gives the same picture as drawing every sample
-    at a width of ``columns`` pixel columns: every peak and trough stays visible. A record of
-    at most ``2 * columns`` samples is returned whole.
-
-    Parameters
-    ----------
-    values : ndarray, shape (n,)
-        The curve.
-    columns : int
-        Number of runs (pixel columns).
-
-    Returns
-    -------
-    ndarray of int
-        Sorted unique indices, the first and last sample included (at most ``2 * columns + 2``).
-    """
-    n = values.size
-    if n <= 2 * columns:
-        return np.arange(n)
-    run = -(-n // columns)  # ceil: every sample in one run
-    padded = np.concatenate([values, np.full(run * columns - n, values[-1])])
-    blocks = padded.reshape(columns, run)
-    base = np.arange(columns) * run
-    idx = np.concatenate([base + blocks.argmin(axis=1), base + blocks.argmax(axis=1), [0, n - 1]])
-    return np.unique(np.minimum(idx, n - 1))
 
 
 def orbit_indices(x: np.ndarray, y: np.ndarray, cells: int = ORBIT_CELLS) -> np.ndarray:
@@ -140,8 +117,6 @@ def _decimated(n_drawn: int, n: int, how: str) -> str:
     )
 
 
-#: Most points handed to matplotlib for one curve (a pixel column pair of a wide figure).
-MAX_CURVE_POINTS = 2_000
 #: Offsets [pt] and alignments tried, in this order, for a line label (first free one wins).
 _LABEL_OFFSETS = (
     (3, 3, "left"),
@@ -157,16 +132,6 @@ _LABEL_OFFSETS = (
     (6, -22, "left"),
     (-6, -22, "right"),
 )
-
-
-def pyplot() -> Any:
-    """matplotlib.pyplot with the non-interactive Agg backend."""
-    import matplotlib
-
-    matplotlib.use("Agg", force=False)
-    import matplotlib.pyplot as plt
-
-    return plt
 
 
 def _overlap(a: Any, b: Any, tolerance: float = 0.5) -> bool:
@@ -251,35 +216,6 @@ def place_labels(
         else:
             dropped += 1
     return dropped
-
-
-def _fix_layout(fig: Any) -> None:
-    """Lay ``fig`` out now (tight layout) and mark it so :func:`_save` keeps that layout.
-
-    Labels placed by :func:`place_labels` are checked against the layout of the moment; a
-    later re-layout would move the axes under them.
-    """
-    fig.tight_layout()
-    fig._runout_fixed_layout = True
-
-
-def _finish(fig: Any) -> Any:
-    """Lay ``fig`` out (tight layout) unless its layout is already fixed; return it."""
-    if not getattr(fig, "_runout_fixed_layout", False):
-        _fix_layout(fig)
-    return fig
-
-
-def _save(fig: Any, path: Path, dpi: int = 100) -> Path:
-    """Save ``fig`` (laid out unless its layout is fixed) to ``path`` and close it.
-
-    100 dpi: a 9 in figure is 900 pixels, the width the report shows it at.
-    """
-    plt = pyplot()
-    # zlib level 1: a third of the encoding time for files about 5 % larger
-    _finish(fig).savefig(path, dpi=dpi, pil_kwargs={"compress_level": 1})
-    plt.close(fig)
-    return path
 
 
 def _window(result: RunResult, revolutions: float | None) -> tuple[np.ndarray, float, str]:
@@ -1171,11 +1107,6 @@ def plot_dynamic_figures(result: RunResult, directory: Path) -> list[Path]:
     return [_save(plot_dynamic_spectrum(result).figure, directory / "spectrum.png")]
 
 
-def _shorten(text: str, limit: int) -> str:
-    """``text`` cut to ``limit`` characters, an ellipsis marking the cut."""
-    return text if len(text) <= limit else text[: limit - 3].rstrip() + "..."
-
-
 # -------------------------------------------------------------------------------------------
 # result.plot(kind=...): one figure of a result or study, from Python
 # -------------------------------------------------------------------------------------------
@@ -1256,15 +1187,8 @@ def _num(value: float) -> str:
     return f"{float(f'{value:.3g}'):g}"
 
 
-def _fmt(value_m: float, unit: str, scale: float) -> str:
-    """A length at the unit of the panel it is drawn on (``"0.5 um"``)."""
-    from runout.base.display import format_length
-
-    return format_length(value_m, (unit, scale))
-
-
-# the figures of studies and sweeps live in runout.report.plot_study (imported last: it takes the
-# helpers above from this module); their names stay importable from here
+# the figures of studies and sweeps live in runout.report.plot_study; their names stay
+# importable from here
 from runout.report.plot_study import (  # noqa: E402
     _RUNOUT_NAMES,  # noqa: F401 - part of the figures' vocabulary (tests)
     STUDY_KINDS,  # noqa: F401 - the kinds of StudyResult.plot

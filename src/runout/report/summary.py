@@ -28,7 +28,7 @@ from runout.geometry.contact import (
     roller_race_contacts,
 )
 from runout.geometry.kinematics import Frequencies, bearing_frequencies
-from runout.geometry.loading import AxialLoading, axial_loading, axial_loading_fixed_angle
+from runout.geometry.loading import AxialLoading, operating_contact_angle
 
 __all__ = [
     "BearingSummary",
@@ -41,35 +41,6 @@ __all__ = [
 ]
 
 Rows = list[tuple[str, str, str]]
-
-
-def operating_contact_angle(
-    bearing: Bearing, operation: Operation
-) -> tuple[float, AxialLoading | None]:
-    """Contact angle the bearing runs at, and the axial-load solution behind it.
-
-    A fixed ``contact_angle`` in the bearing description wins; otherwise a ball bearing under an
-    axial load runs at the loaded contact angle (Harris's load-angle relation,
-    :func:`runout.geometry.loading.axial_loading`), and without axial load at the free contact angle.
-    Roller bearings run at 0.
-
-    Returns
-    -------
-    contact_angle : float
-        [rad]
-    loading : AxialLoading or None
-        The static axial-load solution when one was computed.
-    """
-    if isinstance(bearing, RollerBearing):
-        return 0.0, None
-    if operation.axial_load > 0.0:
-        if bearing.contact_angle is not None:
-            # A fixed angle (seed 000's model) carries the load at that angle.
-            fixed = axial_loading_fixed_angle(bearing, operation.axial_load)
-            return bearing.contact_angle, fixed
-        loading = axial_loading(bearing, operation.axial_load)
-        return loading.contact_angle, loading
-    return bearing.unloaded_contact_angle, None
 
 
 @dataclass(frozen=True)

@@ -13,7 +13,7 @@ depends on the model and on the physics of the loaded bearing:
 Errors are :class:`runout.base.errors.CaseError` naming the file and the key; warnings are returned
 as one-line notes (``"operation.axial_load: ..."``) for the result's notes or ``runout check``'s
 single ``warning:`` line. ``runout check`` calls it, and so does
-:func:`runout.models.run_model`, so a case ``check`` calls valid does not fail later on input.
+:func:`runout.runner.run_model`, so a case ``check`` calls valid does not fail later on input.
 """
 
 from __future__ import annotations
@@ -83,7 +83,7 @@ def _element_loads(case: Any, model: str) -> list[tuple[str, float, str]]:
     axial load, Stribeck's 5 F_r / (Z cos α) for the radial load (with the unbalance force of
     the dynamic model), 4 M / (Z d_m sin α) for a moment.
     """
-    from runout.report.summary import operating_contact_angle
+    from runout.geometry.loading import operating_contact_angle
 
     bearing, op = case.bearing, case.operation
     z = bearing.elements
@@ -143,7 +143,7 @@ def _interference_loads(case: Any) -> list[tuple[str, float, str]]:
 def hertz_findings(case: Any, model: str) -> list[Any]:
     """Hertz validity findings of the most loaded element (and of oversized balls)."""
     from runout.geometry.contact import ball_load_validity, roller_load_validity
-    from runout.report.summary import operating_contact_angle
+    from runout.geometry.loading import operating_contact_angle
 
     bearing = case.bearing
     found: list[Any] = []
@@ -201,8 +201,8 @@ def _model_setup(case: Any, model: str) -> None:
     """Run the model's own input checks (its set-up), without solving anything."""
     an, op = case.analysis, case.operation
     if model == "linear":
+        from runout.geometry.loading import operating_contact_angle
         from runout.models import linear
-        from runout.report.summary import operating_contact_angle
 
         alpha, _ = operating_contact_angle(case.bearing, op)
         linear.rates(case.bearing, op, alpha)

@@ -176,7 +176,7 @@ def evaluate_chunk(task: ChunkTask) -> dict[str, Any]:
             pass
         else:
             return batch
-    from runout.models import run_model
+    from runout.runner import run_model
 
     for row, (model, values) in enumerate(points):
         try:

@@ -75,7 +75,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from runout.base.errors import CaseError
-from runout.case import limits
+from runout.case import estimates, limits
 from runout.case.model import Case, StudySpec
 from runout.study.chunks import ERROR_CHARS as ERROR_CHARS
 from runout.study.chunks import ERRORS_SHOWN as ERRORS_SHOWN
@@ -112,12 +112,12 @@ from runout.study.plan import (
     plan_quantities,
     sample_rng,
 )
-from runout.study.pool import die_with_parent, init_worker, spawn_context
 from runout.study.result import YIELD_CONFIDENCE as YIELD_CONFIDENCE
 from runout.study.result import StudyResult, _write_text, statistics
 from runout.study.result import (
     _dumps as _dumps,  # runout.models.dynamic's sweep
 )
+from runout.study.workers import die_with_parent, init_worker, spawn_context
 
 __all__ = [
     "RUNOUT_KEYS",
@@ -341,11 +341,11 @@ def run_study(
     for model in plan.models:  # a key a model refuses ends the study before any work
         enforce(case, model)
     _check_analysis_outputs(case, notify or _log.warning)
-    if executor is None and workers > 1 and limits.batched_study(case):
+    if executor is None and workers > 1 and estimates.batched_study(case):
         # the case's estimate assumed this process; worker processes each hold the shared
         # arrays too (and the chunks in flight): check the budget for them before starting
-        needed = limits.batched_memory(case, workers) + limits.study_points(case) * (
-            limits.STUDY_BYTES_PER_RUN
+        needed = estimates.batched_memory(case, workers) + estimates.study_points(case) * (
+            estimates.STUDY_BYTES_PER_RUN
         )
         budget = limits.case_budget(case)
         if needed > budget.memory:

@@ -62,7 +62,7 @@ def _seed002_ours(i: int) -> float:
 @functools.cache
 def _bias_contact_angle() -> float:
     """Operating contact angle of the bias record's bearing at its preload [rad]."""
-    from runout.report.summary import operating_contact_angle
+    from runout.geometry.loading import operating_contact_angle
 
     case = load("seed000_tada_table2.toml")
     return operating_contact_angle(case.bearing, case.operation)[0]

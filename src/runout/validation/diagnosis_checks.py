@@ -90,8 +90,8 @@ def synthetic_record(
     ``noise`` and ``mains`` are fractions of the clean signal's rms (noise rms, mains
     amplitude). Returns the record and the clean x and y waveforms [m].
     """
+    from runout.geometry.loading import operating_contact_angle
     from runout.models.linear import closed_form_terms, rates, spectral_lines
-    from runout.report.summary import operating_contact_angle
 
     b, op = case.bearing, case.operation
     alpha, _ = operating_contact_angle(b, op)
@@ -211,8 +211,8 @@ def seed002_rows(case_path: str | None = None) -> list[Row]:
     """
     from runout.case.model import load_case
     from runout.diagnose.fit import diagnose
+    from runout.geometry.loading import operating_contact_angle
     from runout.models.linear import closed_form_terms, rates, run, spectral_lines
-    from runout.report.summary import operating_contact_angle
     from runout.validation.cases import example_path
 
     case = load_case(case_path or example_path("seed002_608.toml"))

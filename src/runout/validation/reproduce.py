@@ -2,7 +2,7 @@
 
 The registry, the published numbers and the functions that compute ours live in
 :mod:`runout.validation` (one module per source); this module keeps the names that
-``runout reproduce`` (:func:`runout.cli.app.reproduce_command`) and older imports use.
+``runout reproduce`` (:func:`runout.cli.commands.reproduce_command`) and older imports use.
 ``runout reproduce`` runs every check and writes VALIDATION.md; ``runout reproduce --check``
 compares a fresh document with the file on disk (numbers within :data:`CHECK_RTOL` or one unit
 of their last printed digit).

@@ -14,7 +14,7 @@ from runout.validation.cases import load, uses
 from runout.validation.core import NM, Check, bind
 
 if TYPE_CHECKING:
-    from runout.models.dynamic import SweepPoint
+    from runout.study.dynamic_sweep import SweepPoint
 
 __all__ = [
     "DYN_BPF",
@@ -37,12 +37,12 @@ DYN_NATURAL_HZ = {(5, 10.0): 90.0, (8, 10.0): 135.0, (8, 50.0): 100.0}
 @functools.cache
 def dynamic_points() -> dict[tuple[int, float], SweepPoint]:
     """Sweep points of examples/seed003_purohit.toml: Z × preload (the runout sweep-dynamic)."""
-    from runout.models import dynamic as dy
+    from runout.study.dynamic_sweep import sweep
 
     case = load("seed003_purohit.toml")
-    points = dy.sweep(case, elements=DYN_ELEMENTS, preloads=(0.0, 10.0))
-    points += dy.sweep(case, elements=(5,), preloads=(30.0, 50.0))
-    points += dy.sweep(case, elements=(8,), preloads=(50.0, 100.0))
+    points = sweep(case, elements=DYN_ELEMENTS, preloads=(0.0, 10.0))
+    points += sweep(case, elements=(5,), preloads=(30.0, 50.0))
+    points += sweep(case, elements=(8,), preloads=(50.0, 100.0))
     return {(p.elements, p.preload_n): p for p in points}
 
 
