@@ -22,7 +22,7 @@ from runout.analysis.results import RunResult
 from runout.analysis.spectrum import amplitude_spectrum, extract_lines
 from runout.base.errors import GeometryError, RunoutError
 from runout.case.model import parse_case
-from runout.models.dynamic import MODEL, run
+from runout.models import dynamic
 from runout.report import plotting
 from runout.study.run import (
     OutputError,
@@ -50,7 +50,7 @@ def _variant(case: Any, elements: int | None, preload: float | None) -> Any:
         data["bearing"]["elements"] = int(elements)
     if preload is not None:
         data.setdefault("operation", {})["axial_load"] = float(preload)
-    data["analysis"]["model"] = MODEL
+    data["analysis"]["model"] = dynamic.MODEL
     base = Path(case.path).parent if case.path and not case.path.startswith("<") else None
     return parse_case(data, f"{case.path} (elements={elements}, preload={preload} N)", base)
 
@@ -262,7 +262,7 @@ def _sweep_points(
             if point is None:
                 variant = _variant(case, z, p)
                 try:
-                    point = _point(variant, run(variant))
+                    point = _point(variant, dynamic.run(variant))
                 except RunoutError:
                     raise  # names the case and the point already
                 except Exception as exc:
