@@ -16,9 +16,9 @@ import numpy as np
 
 from _harness import BenchResult, best_time
 from runout.case.model import load_case
+from runout.diagnose._record import read_record
 from runout.diagnose.fit import diagnose
-from runout.diagnose.record import read_record
-from runout.validation.diagnosis_checks import done_when_truth, recovery_errors, synthetic_record
+from runout.validation._diagnosis_checks import done_when_truth, recovery_errors, synthetic_record
 
 ROOT = Path(__file__).resolve().parents[1]
 SAMPLES = 1_000_000

@@ -1,4 +1,4 @@
-"""Harmonic-sum kernel (runout.geometry.kernels.harmonic_sum) against straightforward NumPy.
+"""Harmonic-sum kernel (runout.geometry._kernels.harmonic_sum) against straightforward NumPy.
 
 Workload: 2,400 harmonics (a 0.1 µm / k^1.5 spectrum, random phases) at 65,536 angles
 spanning 1,600 turns (k θ up to ~2.4e7 rad), i.e. 157 million cosine terms. That is the size of
@@ -28,7 +28,7 @@ from pathlib import Path
 import numpy as np
 
 from _harness import BenchResult, best_time
-from runout.geometry.kernels import harmonic_sum, harmonic_sum_reference
+from runout.geometry._kernels import harmonic_sum, harmonic_sum_reference
 
 N_HARMONICS = 2_400
 N_ANGLES = 65_536

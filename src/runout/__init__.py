@@ -13,7 +13,7 @@ stays light.
 
 from typing import TYPE_CHECKING, Any
 
-from runout.base.numba_cache import ensure_numba_cache
+from runout.base._numba_cache import ensure_numba_cache
 
 ensure_numba_cache()  # before any kernel is compiled: a read-only install must still run
 

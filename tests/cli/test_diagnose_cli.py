@@ -16,7 +16,7 @@ from typer.testing import CliRunner
 
 from runout.case.model import load_case
 from runout.cli.commands import app
-from runout.validation.diagnosis_checks import done_when_truth, synthetic_record
+from runout.validation._diagnosis_checks import done_when_truth, synthetic_record
 
 ROOT = Path(__file__).resolve().parents[2]
 CASE = ROOT / "examples" / "seed002_608.toml"

@@ -79,4 +79,4 @@ def test_frequencies_compile_nothing(case: str) -> None:
     """``frequencies`` solves the loaded contact angle (Hertz, elliptic integrals) in NumPy:
     numba (~0.2 s to import, and it pulls scipy.linalg) is for the models."""
     loaded = _modules("frequencies", str(EXAMPLES / case))
-    assert "numba" not in loaded and "runout.geometry.elliptic_kernel" not in loaded
+    assert "numba" not in loaded and "runout.geometry._elliptic_kernel" not in loaded

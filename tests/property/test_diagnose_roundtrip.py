@@ -14,8 +14,8 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from runout.case.model import Case
+from runout.diagnose._record import record_from_arrays
 from runout.diagnose.fit import diagnose
-from runout.diagnose.record import record_from_arrays
 from runout.geometry.bearing import BallBearing, Operation
 from runout.geometry.imperfections import Harmonics, Imperfections
 from runout.models.linear import closed_form_terms, rates, spectral_lines

@@ -10,13 +10,13 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from hypothesis.extra import numpy as hnp
 
+from runout.geometry._kernels import harmonic_sum, harmonic_sum_reference
 from runout.geometry.imperfections import (
     Harmonics,
     ProfileWarning,
     from_profile,
     single_harmonic,
 )
-from runout.geometry.kernels import harmonic_sum, harmonic_sum_reference
 
 TWO_PI = 2.0 * math.pi
 SETTINGS = settings(max_examples=60, deadline=None)

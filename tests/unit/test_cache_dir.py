@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from runout.base.numba_cache import _writable
+from runout.base._numba_cache import _writable
 
 
 def test_writable_directory_is_created_and_left_clean(tmp_path: Path) -> None:

@@ -28,7 +28,7 @@ def test_one_line_at_the_first_kernel_and_what_was_compiled() -> None:
     notice._on_start(_event("numba.np.arrayobj"))  # a library overload inside it: no topic
     notice._on_end()
     notice._on_end()
-    notice._on_start(_event("runout.analysis.line_kernels"))
+    notice._on_start(_event("runout.analysis._line_kernels"))
     notice._on_end()
     lines = stream.getvalue().splitlines()
     assert len(lines) == 1 and "(roller_constraint model)" in lines[0]

@@ -7,7 +7,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
 
-from runout.base.csvfmt import format_rows
+from runout.base._csvfmt import format_rows
 
 
 def _python(block: np.ndarray) -> bytes:

@@ -13,7 +13,7 @@ from runout.case.model import load_case
 from runout.diagnose.fit import diagnose
 from runout.geometry.loading import operating_contact_angle
 from runout.models.linear import closed_form_terms, rates, spectral_lines
-from runout.validation.diagnosis_checks import (
+from runout.validation._diagnosis_checks import (
     MAINS_HZ,
     Truth,
     done_when_truth,
@@ -169,7 +169,7 @@ def test_velocity_record_gives_the_same_deviation(case):
     dt = record.step
     vx = np.gradient(x, dt)
     vy = np.gradient(y, dt)
-    from runout.diagnose.record import record_from_arrays
+    from runout.diagnose._record import record_from_arrays
 
     vel = record_from_arrays(record.time, vx, vy, quantity="velocity")
     (e,) = diagnose(case, vel).estimates[:1]
@@ -215,7 +215,7 @@ def test_velocity_phase(case):
     z = int(case.bearing.elements)
     truth = Truth({("inner", z - 1, None): (0.2e-6, 2.5)})
     record, x, _ = synthetic_record(case, truth, noise=0.0, mains=0.0, channels="x")
-    from runout.diagnose.record import record_from_arrays
+    from runout.diagnose._record import record_from_arrays
 
     vel = record_from_arrays(record.time, np.gradient(x, record.step), quantity="velocity")
     (e,) = diagnose(case, vel).estimates
@@ -265,7 +265,7 @@ def test_two_balls_are_not_taken_for_one(case):
 
 @pytest.mark.parametrize("seed", [1, 2, 3])
 def test_pure_noise_gives_no_deviation(case, seed):
-    from runout.diagnose.record import record_from_arrays
+    from runout.diagnose._record import record_from_arrays
 
     t = np.arange(50_000) / 20000.0
     rng = np.random.default_rng(seed)

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from runout.validation.diagnosis_checks import nonlinear_bias_rows, recovery_markdown, seed002_rows
+from runout.validation._diagnosis_checks import nonlinear_bias_rows, recovery_markdown, seed002_rows
 
 ROOT = Path(__file__).resolve().parents[2]
 

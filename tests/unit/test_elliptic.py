@@ -1,4 +1,4 @@
-"""Unit tests of runout.geometry.elliptic: K(m) and E(m) by the AGM against scipy.special."""
+"""Unit tests of runout.geometry._elliptic: K(m) and E(m) by the AGM against scipy.special."""
 
 from __future__ import annotations
 
@@ -10,7 +10,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.special import ellipe, ellipkm1
 
-from runout.geometry.elliptic import complete_elliptic
+from runout.geometry._elliptic import complete_elliptic
 
 EPS = np.finfo(np.float64).eps  # 2.2e-16
 # Measured against a 60-digit AGM (decimal): K within 4 ulp (relative 6.7e-16, the rounding
@@ -106,8 +106,8 @@ def test_monotone_in_m(m1: float, m2: float) -> None:
 
 
 def test_compiled_loop_is_the_numpy_loop_bit_for_bit() -> None:
-    """Large arrays take the compiled AGM (runout.geometry.elliptic_kernel): same bits as NumPy's."""
-    from runout.geometry import elliptic as _elliptic
+    """Large arrays take the compiled AGM (runout.geometry._elliptic_kernel): same bits as NumPy's."""
+    from runout.geometry import _elliptic as _elliptic
 
     rng = np.random.default_rng(5)
     p = np.concatenate(

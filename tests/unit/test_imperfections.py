@@ -1,4 +1,4 @@
-"""Unit tests of runout.geometry.imperfections and runout.geometry.kernels."""
+"""Unit tests of runout.geometry.imperfections and runout.geometry._kernels."""
 
 from __future__ import annotations
 
@@ -11,6 +11,17 @@ import numpy as np
 import pytest
 
 from runout.base.errors import GeometryError, RunoutError
+from runout.geometry._kernels import (
+    _PIO2_1,
+    _PIO2_2,
+    _PIO2_3,
+    _PIO2_4,
+    _TWO_OVER_PI,
+    fast_cos,
+    harmonic_sum,
+    harmonic_sum_reference,
+    harmonic_sum_rows,
+)
 from runout.geometry.bearing import BallBearing
 from runout.geometry.imperfections import (
     Harmonics,
@@ -27,17 +38,6 @@ from runout.geometry.imperfections import (
     slant_amplitude,
     slant_angle,
     spectral_law,
-)
-from runout.geometry.kernels import (
-    _PIO2_1,
-    _PIO2_2,
-    _PIO2_3,
-    _PIO2_4,
-    _TWO_OVER_PI,
-    fast_cos,
-    harmonic_sum,
-    harmonic_sum_reference,
-    harmonic_sum_rows,
 )
 
 UM = 1e-6

@@ -14,13 +14,13 @@ from hypothesis import strategies as st
 from cases import typed_case
 from runout import BallBearing, Operation
 from runout.analysis.spectrum import extract_lines
+from runout.base._linalg import solve_spd3
 from runout.base.errors import ContactLossError, NumericalError
-from runout.base.linalg import solve_spd3
 from runout.case.model import Case, parse_case
 from runout.models import quasi_static_2d as qs2
 from runout.models import quasi_static_3d as qs3
 from runout.models._quasi_static import predicted_lines
-from runout.study.kernels import solve_batch
+from runout.study._kernels import solve_batch
 
 
 def tada(

@@ -1,4 +1,4 @@
-"""runout.base.roots.brentq runs SciPy's Brent iterations exactly: same root to the bit."""
+"""runout.base._roots.brentq runs SciPy's Brent iterations exactly: same root to the bit."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ import scipy.optimize
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from runout.base.roots import brentq
+from runout.base._roots import brentq
 from runout.geometry import loading
 from runout.geometry.bearing import BallBearing
 
@@ -63,7 +63,7 @@ def test_axial_loading_contact_angle_unchanged(load: float) -> None:
     ours = loading.axial_loading(b, load).contact_angle
     original = loading.brentq if hasattr(loading, "brentq") else None
     assert original is None  # imported lazily inside axial_loading
-    import runout.base.roots as roots
+    import runout.base._roots as roots
 
     saved = roots.brentq
     roots.brentq = scipy.optimize.brentq  # type: ignore[assignment]

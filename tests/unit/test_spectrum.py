@@ -8,7 +8,7 @@ import warnings
 import numpy as np
 import pytest
 
-from runout.analysis import line_kernels
+from runout.analysis import _line_kernels as line_kernels
 from runout.analysis.spectrum import (
     ANDERON_BANDS,
     ISO15242_BANDS,

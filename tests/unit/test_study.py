@@ -24,11 +24,11 @@ from runout.analysis.spectrum import extract_lines
 from runout.base.errors import CaseError
 from runout.case.model import Case
 from runout.models import quasi_static_2d as qs2
-from runout.study import chunks as chunks_mod
-from runout.study import files as files_mod
+from runout.study import _chunks as chunks_mod
+from runout.study import _files as files_mod
 from runout.study import run as st_mod
+from runout.study._kernels import project_rows, solve_batch, solve_batch_reference
 from runout.study.dynamic_sweep import exact_number, point_name
-from runout.study.kernels import project_rows, solve_batch, solve_batch_reference
 from runout.study.run import (
     OutputError,
     StudyError,

@@ -1,4 +1,4 @@
-"""Studies on workers (runout.study.pool): arrays shipped to workers, fused kernel, chunk fill."""
+"""Studies on workers (runout.study._pool): arrays shipped to workers, fused kernel, chunk fill."""
 
 from __future__ import annotations
 
@@ -15,12 +15,12 @@ from cases import kim_case
 from runout.analysis.decompose import RESIDUAL_REL
 from runout.case.model import Case
 from runout.models import quasi_static_2d as qs2
-from runout.study import chunks as chunks_mod
-from runout.study import pool as pool_mod
-from runout.study import workers as workers_mod
-from runout.study import result as result_mod
+from runout.study import _chunks as chunks_mod
+from runout.study import _pool as pool_mod
+from runout.study import _result as result_mod
+from runout.study import _workers as workers_mod
 from runout.study import run as st_mod
-from runout.study.kernels import _contacts, solve_batch, solve_batch_reference
+from runout.study._kernels import _contacts, solve_batch, solve_batch_reference
 from runout.study.run import run_study
 
 

@@ -12,8 +12,8 @@ import numpy as np
 import pytest
 
 from runout import examples
-from runout.analysis import line_kernels
-from runout.base import threads as _threads
+from runout.analysis import _line_kernels as line_kernels
+from runout.base import _threads as _threads
 from runout.geometry import loading
 from runout.models import _quasi_static as qsm
 from runout.models import quasi_static_2d as qs2

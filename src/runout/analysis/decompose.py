@@ -44,7 +44,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from runout.analysis.lines import Component, Runout, Source
-from runout.base.threads import halves, in_spans
+from runout.base._threads import halves, in_spans
 
 __all__ = [
     "JOINT_FIT",

@@ -43,7 +43,7 @@ import numpy as np
 import numpy.typing as npt
 from numpy.typing import ArrayLike
 
-from runout.analysis.bands import (
+from runout.analysis._bands import (
     ANDERON_BANDS,
     ANDERON_BANDS_PRINTED,
     ISO15242_BANDS,
@@ -56,17 +56,17 @@ from runout.analysis.bands import (
     iso15242_bands_from_lines,
     iso15242_bands_from_waveform,
 )
-from runout.analysis.line_kernels import (
+from runout.analysis._line_kernels import (
     _gram_numpy,
     _gram_uniform,
     _project_numpy,
     _project_uniform_kernel,
     _synthesize_numpy,
 )
-from runout.analysis.line_kernels import (
+from runout.analysis._line_kernels import (
     _synthesize_uniform_kernel as _synthesize_uniform_kernel,  # runout.analysis.decompose's synthesis
 )
-from runout.analysis.signal import (
+from runout.analysis._signal import (
     MICROINCH,
     _as_signal,
     _as_time,
@@ -77,7 +77,7 @@ from runout.analysis.signal import (
     to_peak_to_peak,
     to_zero_to_peak,
 )
-from runout.analysis.signal import _window as _window
+from runout.analysis._signal import _window as _window
 
 __all__ = [
     "ANDERON_BANDS",

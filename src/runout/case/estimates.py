@@ -13,7 +13,8 @@ import os
 from dataclasses import dataclass
 from typing import Any
 
-from runout.case.build import harmonic_counts
+from runout.case._build import harmonic_counts
+from runout.case._schema import VarySpec, sweep_count
 from runout.case.limits import (
     BYTES_LINE_INSTANT,
     BYTES_QUASI_STATIC,
@@ -31,7 +32,6 @@ from runout.case.limits import (
     check,
     format_seconds,
 )
-from runout.case.schema import VarySpec, sweep_count
 
 __all__ = [
     "BYTES_PER_ROW_INSTANT",
@@ -303,11 +303,11 @@ def batched_study(case: Any) -> bool:
     )
 
 
-#: Bytes one pass of :func:`runout.study.pool.evaluate_rows` holds per bearing and instant: the records (16), their
+#: Bytes one pass of :func:`runout.study._pool.evaluate_rows` holds per bearing and instant: the records (16), their
 #: transposed copy for the line fit (16), the RRO waveform or the residual of the split (8) and
 #: a margin (measured ~40 B).
 BYTES_PER_ROW_INSTANT = 48
-#: Most memory one pass of :func:`runout.study.pool.evaluate_rows` holds [B]: a chunk with more bearings than fit
+#: Most memory one pass of :func:`runout.study._pool.evaluate_rows` holds [B]: a chunk with more bearings than fit
 #: is evaluated in passes of rows (each row's numbers depend on that row only, so the passes
 #: change nothing but the memory).
 PASS_BYTES = 64 * 2**20
@@ -317,7 +317,7 @@ def batched_memory(case: Any, workers: int = 1) -> float:
     """Memory of a batched ball-size Monte Carlo's arrays [B], summaries apart.
 
     The shared arrays (time, the balls' approaches and angles, the line projector:
-    :class:`runout.study.pool.BatchArrays`) exist once in this process, and with worker
+    :class:`runout.study._pool.BatchArrays`) exist once in this process, and with worker
     processes once more in every worker and in the pickles of its chunks in flight (two per
     worker); each concurrent evaluation (a Numba thread in this process, or a worker) holds one
     pass of rows (:data:`PASS_BYTES` at most).

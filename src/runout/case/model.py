@@ -24,7 +24,7 @@ import numpy as np
 from pydantic import ValidationError
 
 from runout.base.errors import CaseError, GeometryError
-from runout.case.build import (
+from runout.case._build import (
     _GEOMETRY_KEYS,
     ProfileData,
     _build_bearing,
@@ -32,9 +32,7 @@ from runout.case.build import (
     _CaseKeyError,
     harmonic_counts,
 )
-from runout.case.estimates import check_limits
-from runout.case.limits import MAX_CASE_FILE_BYTES, MAX_TOML_DEPTH, case_budget, format_bytes
-from runout.case.schema import (
+from runout.case._schema import (
     MAX_CONFORMITY,
     MODEL_IDS,
     STUDY_SHORTHANDS,
@@ -60,7 +58,9 @@ from runout.case.schema import (
     study_paths,
     sweep_count,
 )
-from runout.case.schema import _table_type as _table_type  # runout.api, runout.report.plotting
+from runout.case._schema import _table_type as _table_type  # runout.api, runout.report.plotting
+from runout.case.estimates import check_limits
+from runout.case.limits import MAX_CASE_FILE_BYTES, MAX_TOML_DEPTH, case_budget, format_bytes
 from runout.geometry.bearing import BallBearing, Bearing, Material, Operation, RollerBearing
 from runout.geometry.imperfections import Imperfections
 from runout.geometry.spindle_layout import SpindleBearing, SpindleLayout
@@ -371,7 +371,7 @@ class Case:
         return "\n".join(chunk.strip("\n") + "\n" for chunk in chunks)
 
     def save(self, path: str | Path) -> Path:
-        """Write :meth:`to_toml` to ``path``, and profiles given as arrays as CSV beside it.
+        """Write :meth:`to_toml` to ``path``, and profiles given as CSV beside it.
 
         Each profile's CSV is named after the case file (``<stem>.<part>_profile_<k>.csv``), so
         that cases saved into one directory do not share a profile file.

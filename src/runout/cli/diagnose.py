@@ -183,7 +183,7 @@ def register(app: typer.Typer) -> None:
                 for text in items:
                     _out.print(f"- {escape(text)}", highlight=False, soft_wrap=True, emoji=False)
         if directory is not None:
-            from runout.report.diagnosis import write_diagnosis
+            from runout.report._diagnosis import write_diagnosis
 
             try:
                 written = write_diagnosis(result, directory)

@@ -48,7 +48,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from runout.analysis.decompose import JOINT_FIT
-from runout.diagnose.model import (
+from runout.diagnose._model import (
     PART_NAMES,
     Equation,
     Unknown,
@@ -57,7 +57,7 @@ from runout.diagnose.model import (
     static_unknowns,
     unknown_gains,
 )
-from runout.diagnose.record import Quantity, Record, RecordError, file_line, read_record
+from runout.diagnose._record import Quantity, Record, RecordError, file_line, read_record
 
 __all__ = [
     "DETECTION",

@@ -56,8 +56,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from runout.base.errors import ConvergenceError, GeometryError
+from runout.geometry._elliptic import complete_elliptic
 from runout.geometry.bearing import BallBearing, Material, RollerBearing
-from runout.geometry.elliptic import complete_elliptic
 
 __all__ = [
     "HARRIS_DELTA_STAR_TABLE",
@@ -381,7 +381,7 @@ def ellipticity(
     \ln(1-F)]`; Newton is kept inside the bracket (bisection otherwise). The first guess
     is interpolated in a small table of exact solutions, so two or three steps reach
     round-off. :math:`\mathcal{K}` and :math:`\mathcal{E}` come from
-    :func:`runout.geometry.elliptic.complete_elliptic` (arithmetic-geometric mean, within a few ulp
+    :func:`runout.geometry._elliptic.complete_elliptic` (arithmetic-geometric mean, within a few ulp
     of SciPy's ``ellipkm1(1 - m)`` and ``ellipe(m)``), given 1 - m so that it keeps its
     digits near m = 1; below m = 1e-3 short Maclaurin series replace the closed forms,
     which lose digits to cancellation there.
@@ -1144,7 +1144,7 @@ class HertzFinding:
     Attributes
     ----------
     severity : {"warning", "error"}
-        ``"error"``: the contact cannot be elastic (ellipse as long as the element, mean
+        ``"error"``: the contact cannot be elastic (ellipse as the element, mean
         pressure above the steel's hardness); ``"warning"``: beyond the ISO 76 static limit,
         permanent dents, the elastic results are optimistic.
     key : str
@@ -1177,7 +1177,7 @@ def _judge(
             HertzFinding(
                 "error",
                 key,
-                f"{stated}: the contact would be as large as the element itself, far outside "
+                f"{stated}: the contact would be as the element itself, far outside "
                 "Hertz theory (no such elastic contact exists)",
             )
         ]

@@ -80,7 +80,7 @@ from typing import TYPE_CHECKING, Any, Literal
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from runout.geometry.harmonics import (
+from runout.geometry._harmonics import (
     TWO_PI,
     Harmonics,
     ImperfectionError,
@@ -93,10 +93,10 @@ from runout.geometry.harmonics import (
     single_harmonic,
     spectral_law,
 )
-from runout.geometry.harmonics import ProfileError as ProfileError
-from runout.geometry.harmonics import ProfileWarning as ProfileWarning
-from runout.geometry.profiles import from_profile as from_profile
-from runout.geometry.profiles import read_profile_csv as read_profile_csv
+from runout.geometry._harmonics import ProfileError as ProfileError
+from runout.geometry._harmonics import ProfileWarning as ProfileWarning
+from runout.geometry._profiles import from_profile as from_profile
+from runout.geometry._profiles import read_profile_csv as read_profile_csv
 
 if TYPE_CHECKING:
     from runout.geometry.bearing import Bearing
@@ -425,7 +425,7 @@ class Imperfections:
         theta : array_like, shape (Z, N) or (N,)
             Contact-point angle in each element's frame [rad]; a 1-D array is used for all.
         """
-        from runout.geometry.kernels import harmonic_sum_rows
+        from runout.geometry._kernels import harmonic_sum_rows
 
         t = np.asarray(theta, dtype=np.float64)
         if t.ndim == 1:

@@ -255,7 +255,7 @@ def _axial_loading(
             "crushed long before)",
         )
     try:
-        from runout.base.roots import brentq  # SciPy's Brent steps without scipy.optimize's import
+        from runout.base._roots import brentq  # SciPy's Brent steps without scipy.optimize's import
 
         alpha, info = brentq(
             residual, alpha0, _ALPHA_MAX, xtol=xtol, rtol=8.9e-16, full_output=True

@@ -36,7 +36,7 @@ def write_columns(path: Path, header: list[str], columns: list[NDArray[np.float6
 
     The same text as a ``csv.writer`` writing ``f"{v:.12g}"`` for every value (comma
     separated, CRLF line ends, header first), formatted by compiled kernels
-    (:func:`runout.base.csvfmt.format_rows`, about ten times faster than Python's formatting,
+    (:func:`runout.base._csvfmt.format_rows`, about ten times faster than Python's formatting,
     which it falls back on for the rare values it cannot prove it rounds the same way).
     Rows are formatted in chunks, so the text in memory stays small.
 
@@ -53,7 +53,7 @@ def write_columns(path: Path, header: list[str], columns: list[NDArray[np.float6
     -------
     Path
     """
-    from runout.base.csvfmt import format_rows
+    from runout.base._csvfmt import format_rows
 
     data = [np.asarray(c, dtype=np.float64).ravel() for c in columns]
     n = data[0].size if data else 0

@@ -27,7 +27,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from runout.analysis.results import SOLVER_RTOL
-from runout.base.linalg import solve_spd3
+from runout.base._linalg import solve_spd3
 
 FloatArray = NDArray[np.float64]
 IntArray = NDArray[np.int64]

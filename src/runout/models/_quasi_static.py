@@ -38,8 +38,8 @@ from runout.analysis.decompose import (
 from runout.analysis.lines import Source
 from runout.analysis.result_details import QuasiStaticDetails
 from runout.analysis.results import RunResult
+from runout.base._threads import halves, in_spans
 from runout.base.errors import GeometryError
-from runout.base.threads import halves, in_spans
 from runout.geometry.imperfections import Harmonics, Imperfections
 from runout.geometry.kinematics import bearing_frequencies
 

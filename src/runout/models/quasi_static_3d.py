@@ -72,8 +72,8 @@ import numpy as np
 from numpy.typing import NDArray
 
 from runout.analysis.results import SOLVER_RTOL, RunResult
+from runout.base._linalg import solve_spd3
 from runout.base.errors import ContactLossError, ConvergenceError, GeometryError, NumericalError
-from runout.base.linalg import solve_spd3
 from runout.geometry.bearing import BallBearing
 from runout.geometry.contact import ball_race_contacts
 from runout.geometry.kinematics import ball_spin_frequency, cage_frequency

@@ -22,7 +22,7 @@ from typing import Any
 from runout.base.display import resolution_note
 from runout.base.errors import RunoutError
 from runout.io.result_files import read_result_json
-from runout.report.html import (
+from runout.report._html import (
     QUANTITY_NAMES,
     RUNOUT_KEYS,
     STYLE,
@@ -38,8 +38,8 @@ from runout.report.html import (
     quantity_name,
     table,
 )
-from runout.report.inputs import inputs_section, speed_words, unused_keys
-from runout.report.study import study_first_screen, study_statistics
+from runout.report._inputs import inputs_section, speed_words, unused_keys
+from runout.report._study import study_first_screen, study_statistics
 
 __all__ = ["build_combined_report", "build_report"]
 

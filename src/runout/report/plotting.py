@@ -3,7 +3,7 @@
 Every function takes result data and a directory or an Axes and returns what it drew; no
 numerics happen here beyond decimation (at most :data:`MAX_CURVE_POINTS` points a curve, every
 peak kept), label placement and drawing a fitted law over a histogram. Every figure is built
-in one style (:mod:`runout.report.plot_style`), every axis names its quantity and unit, lengths are
+in one style (:mod:`runout.report._plot_style`), every axis names its quantity and unit, lengths are
 shown at their own scale (nm, um, mm: :func:`runout.base.display.length_unit`).
 """
 
@@ -16,8 +16,8 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from runout.report import plot_style as style
-from runout.report.plot_style import (
+from runout.report import _plot_style as style
+from runout.report._plot_style import (
     MAX_CURVE_POINTS,
     _finish,
     _fix_layout,
@@ -170,7 +170,7 @@ def place_labels(
     items : list of (x, y, text)
         Points and their labels, most important first.
     fontsize : float, optional
-        Label font size [pt]; default :data:`runout.report.plot_style.ANNOTATION_SIZE`.
+        Label font size [pt]; default :data:`runout.report._plot_style.ANNOTATION_SIZE`.
 
     Returns
     -------
@@ -1187,9 +1187,9 @@ def _num(value: float) -> str:
     return f"{float(f'{value:.3g}'):g}"
 
 
-# the figures of studies and sweeps live in runout.report.plot_study; their names stay
+# the figures of studies and sweeps live in runout.report._plot_study; their names stay
 # importable from here
-from runout.report.plot_study import (  # noqa: E402
+from runout.report._plot_study import (  # noqa: E402
     _RUNOUT_NAMES,  # noqa: F401 - part of the figures' vocabulary (tests)
     STUDY_KINDS,  # noqa: F401 - the kinds of StudyResult.plot
     _key_unit_kind,  # noqa: F401 - used by runout.study.run

@@ -19,10 +19,10 @@ Samples are grouped in chunks of ``chunk_size``; a chunk is one task. Tasks run 
 process, in a local process pool (``workers``), or on any :class:`concurrent.futures.Executor`
 (a Dask ``Client.get_executor()``, see :func:`dask_executor`). A ball-size Monte Carlo of the
 2-D model is batched: the parent computes what every bearing shares once
-(:class:`runout.study.pool.BatchArrays`) and ships it with every chunk, and a chunk is one
-call of the batched Numba kernel :func:`runout.study.kernels.solve_batch` (threads over
+(:class:`runout.study._pool.BatchArrays`) and ships it with every chunk, and a chunk is one
+call of the batched Numba kernel :func:`runout.study._kernels.solve_batch` (threads over
 bearings in the calling process) plus a vectorised line fit and RRO/NRRO split
-(:func:`runout.study.pool.evaluate_rows`). The pool is one for the whole study: its workers
+(:func:`runout.study._pool.evaluate_rows`). The pool is one for the whole study: its workers
 start and load the kernels while the parent plans, and serve every chunk.
 
 With an output directory each finished chunk is written as one JSON file
@@ -77,9 +77,9 @@ from numpy.typing import NDArray
 from runout.base.errors import CaseError
 from runout.case import estimates, limits
 from runout.case.model import Case, StudySpec
-from runout.study.chunks import ERROR_CHARS as ERROR_CHARS
-from runout.study.chunks import ERRORS_SHOWN as ERRORS_SHOWN
-from runout.study.chunks import (
+from runout.study._chunks import ERROR_CHARS as ERROR_CHARS
+from runout.study._chunks import ERRORS_SHOWN as ERRORS_SHOWN
+from runout.study._chunks import (
     ChunkTask,
     _threads,
     _with_batch,
@@ -87,7 +87,7 @@ from runout.study.chunks import (
     evaluate_chunk,
     line_label,
 )
-from runout.study.files import (
+from runout.study._files import (
     _RESUME_KEYS,
     OutputError,
     _chunk_problem,
@@ -97,11 +97,11 @@ from runout.study.files import (
     refuse_foreign,
     write_atomic,
 )
-from runout.study.files import LOCK_NAME as LOCK_NAME
-from runout.study.files import (
+from runout.study._files import LOCK_NAME as LOCK_NAME
+from runout.study._files import (
     _remove_leftovers as _remove_leftovers,  # runout.models.dynamic's sweep
 )
-from runout.study.plan import (
+from runout.study._plan import (
     FORMAT,
     RUNOUT_KEYS,
     Quantity,
@@ -112,12 +112,12 @@ from runout.study.plan import (
     plan_quantities,
     sample_rng,
 )
-from runout.study.result import YIELD_CONFIDENCE as YIELD_CONFIDENCE
-from runout.study.result import StudyResult, _write_text, statistics
-from runout.study.result import (
+from runout.study._result import YIELD_CONFIDENCE as YIELD_CONFIDENCE
+from runout.study._result import StudyResult, _write_text, statistics
+from runout.study._result import (
     _dumps as _dumps,  # runout.models.dynamic's sweep
 )
-from runout.study.workers import die_with_parent, init_worker, spawn_context
+from runout.study._workers import die_with_parent, init_worker, spawn_context
 
 __all__ = [
     "RUNOUT_KEYS",
@@ -454,7 +454,7 @@ def _execute(
     thread busy whatever else the machine runs, where threads inside each chunk's kernel wait
     for the slowest at the end of every chunk. A single chunk uses the kernel's threads.
     One pool serves the whole study: its workers start (and load the kernels,
-    :func:`runout.study.pool.init_worker`) while this process computes the shared arrays.
+    :func:`runout.study._pool.init_worker`) while this process computes the shared arrays.
     """
     if not tasks:
         return

@@ -42,15 +42,15 @@ unbiased to the linearisation error and the radial-spring variant reads the ring
 
 @functools.cache
 def _seed002() -> list[tuple[str, float, float, float, str]]:
-    # imported here: runout.validation.diagnosis_checks imports this package's published numbers
-    from runout.validation.diagnosis_checks import seed002_rows
+    # imported here: runout.validation._diagnosis_checks imports this package's published numbers
+    from runout.validation._diagnosis_checks import seed002_rows
 
     return seed002_rows()
 
 
 @functools.cache
 def _bias() -> list[tuple[str, float, float, float, str]]:
-    from runout.validation.diagnosis_checks import nonlinear_bias_rows
+    from runout.validation._diagnosis_checks import nonlinear_bias_rows
 
     return nonlinear_bias_rows(BIAS_AMPLITUDE)
 

@@ -16,8 +16,8 @@ from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any, TextIO
 
-from runout.study.chunks import ChunkTask
-from runout.study.plan import FORMAT, RUNOUT_KEYS, StudyError
+from runout.study._chunks import ChunkTask
+from runout.study._plan import FORMAT, RUNOUT_KEYS, StudyError
 
 try:
     import fcntl

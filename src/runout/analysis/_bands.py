@@ -13,7 +13,7 @@ import numpy as np
 import numpy.typing as npt
 from numpy.typing import ArrayLike
 
-from runout.analysis.signal import (
+from runout.analysis._signal import (
     _EDGE_RTOL,
     MICROINCH,
     _as_signal,

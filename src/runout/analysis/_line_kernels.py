@@ -9,7 +9,7 @@ import numba
 import numpy as np
 import numpy.typing as npt
 
-from runout.base.threads import halves, in_spans
+from runout.base._threads import halves, in_spans
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -71,7 +71,7 @@ def _project_uniform_kernel(
     over lines vectorises). Each block of ``_ANCHOR`` samples restarts the phasors from an
     exact cos/sin so that rounding drift stays at the 1e-14 level, and keeps its own partial
     sums (pairwise-like summation), added in block order at the end. The blocks are
-    independent: a long record's halves run on two threads (:mod:`runout.base.threads`) with the
+    independent: a long record's halves run on two threads (:mod:`runout.base._threads`) with the
     same result to the bit. :func:`_project_numpy` is the reference it is tested against.
     """
     nc, n = x.shape

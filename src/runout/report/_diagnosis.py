@@ -8,7 +8,7 @@ import re
 from pathlib import Path
 from typing import Any
 
-from runout.report.html import (
+from runout.report._html import (
     STYLE,
     card,
     common_unit,

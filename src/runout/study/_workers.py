@@ -1,7 +1,7 @@
 """The study's worker processes: started once per study, kept for every chunk of it.
 
 :func:`init_worker` sets Numba single-threaded, loads the study code (what unpickling a chunk
-needs: :mod:`runout.study.chunks`) and the kernels from their cache before the first chunk
+needs: :mod:`runout.study._chunks`) and the kernels from their cache before the first chunk
 arrives, and ties the worker to the life of its parent (:func:`die_with_parent`).
 """
 
@@ -18,8 +18,8 @@ from typing import Any
 
 import numpy as np
 
-import runout.study.chunks  # noqa: F401 - what unpickling a chunk needs, loaded before the first
-from runout.study.kernels import project_rows, solve_batch
+import runout.study._chunks  # noqa: F401 - what unpickling a chunk needs, loaded before the first
+from runout.study._kernels import project_rows, solve_batch
 
 __all__ = ["die_with_parent", "init_worker", "spawn_context", "warm_kernels"]
 
@@ -46,7 +46,7 @@ def init_worker(parent: int | None = None) -> None:  # pragma: no cover - runs i
     """
     import numba
 
-    from runout.base.threads import use_threads
+    from runout.base._threads import use_threads
 
     numba.set_num_threads(1)
     use_threads(False)  # nor two threads per long record: the workers are the parallelism
@@ -78,7 +78,7 @@ PR_SET_PDEATHSIG = 1
 
 
 def die_with_parent(parent: int, kernel: bool = True) -> None:  # pragma: no cover - workers
-    """End this process as soon as process ``parent`` ends, however it ends.
+    """End this process as process ``parent`` ends, however it ends.
 
     A pool worker waits on its task queue, whose write end it holds itself, so it never sees
     its parent go: a SIGKILLed ``runout study --workers N`` would leave N orphans finishing

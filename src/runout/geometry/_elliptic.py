@@ -25,7 +25,7 @@ _MAX_STEPS = 16
 #: (an eighth of an ulp), and the terms of the sum still to come are below 2⁻¹⁰⁰ relative.
 _TOLERANCE = 2.0**-27
 
-#: Arrays from this size on use the compiled loop (:mod:`runout.geometry.elliptic_kernel`), and so do
+#: Arrays from this size on use the compiled loop (:mod:`runout.geometry._elliptic_kernel`), and so do
 #: smaller ones once numba is loaded anyway (a model is running); the light commands
 #: (``frequencies``, ``check``: the ellipticity's starting table has 406 entries) stay in NumPy
 #: and never import numba. Every path gives the same bits.
@@ -53,7 +53,7 @@ def complete_elliptic(p: ArrayLike, m: ArrayLike) -> tuple[FloatArray, FloatArra
     Parameters
     ----------
     p : array_like
-        Complementary parameter :math:`p = 1 - m`, in [0, 1] [-]; may be as small as the
+        Complementary parameter :math:`p = 1 - m`, in [0, 1] [-]; may be as the
         smallest positive double.
     m : array_like
         Parameter :math:`m` in [0, 1] [-], consistent with ``p``.
@@ -113,7 +113,7 @@ def complete_elliptic(p: ArrayLike, m: ArrayLike) -> tuple[FloatArray, FloatArra
     compiled = p_arr.size >= _COMPILED_SIZE or "numba" in sys.modules
     if compiled and np.all((p_arr >= 0.0) & (p_arr <= 1.0)):
         # many contacts at once: the float loop compiled, entry by entry (bit for bit)
-        from runout.geometry.elliptic_kernel import complete_elliptic_all
+        from runout.geometry._elliptic_kernel import complete_elliptic_all
 
         k_all, e_all, converged = complete_elliptic_all(
             np.ascontiguousarray(p_arr).ravel(),
@@ -166,7 +166,7 @@ def _agm(b: _T, c_sq: _T, sqrt: Callable[[_T], _T], any_: Callable[[Any], bool])
 
     Every entry stops at its own convergence (arrays keep a converged entry as it is), so an
     entry's value never depends on the other entries of the array: floats, arrays and the
-    compiled loop (:func:`runout.geometry.elliptic_kernel.complete_elliptic_all`) agree bit for bit.
+    compiled loop (:func:`runout.geometry._elliptic_kernel.complete_elliptic_all`) agree bit for bit.
     """
     if isinstance(b, float):
         a, total, weight = 1.0, 0.5 * c_sq, 1.0

@@ -16,6 +16,14 @@ import numpy as np
 
 from runout.base.errors import GeometryError
 from runout.base.units import to_si
+from runout.case._schema import (
+    MAX_CONFORMITY,
+    TWO_PI,
+    BearingSpec,
+    CaseSpec,
+    ElementsSpec,
+    ProfileSpec,
+)
 from runout.case.limits import (
     BYTES_PER_PROFILE_BYTE,
     ENV_PROFILE_DIRS,
@@ -29,14 +37,6 @@ from runout.case.limits import (
     profile_allowed,
 )
 from runout.case.limits import check as check_estimate
-from runout.case.schema import (
-    MAX_CONFORMITY,
-    TWO_PI,
-    BearingSpec,
-    CaseSpec,
-    ElementsSpec,
-    ProfileSpec,
-)
 from runout.geometry.bearing import BallBearing, Bearing, Material, RollerBearing
 from runout.geometry.imperfections import (
     Harmonics,

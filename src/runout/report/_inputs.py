@@ -13,7 +13,7 @@ import re
 from typing import Any
 
 from runout.base.errors import RunoutError
-from runout.report.html import (
+from runout.report._html import (
     common_unit,
     details,
     esc,

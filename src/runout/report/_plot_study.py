@@ -2,7 +2,7 @@
 
 Split out of :mod:`runout.report.plotting`, which re-exports every name (import them from there: this
 module takes the shared drawing helpers from it). The rules are :mod:`runout.report.plotting`'s: one
-style (:mod:`runout.report.plot_style`), every axis names its quantity and unit, lengths at their
+style (:mod:`runout.report._plot_style`), every axis names its quantity and unit, lengths at their
 own scale.
 """
 
@@ -14,8 +14,8 @@ from typing import Any
 
 import numpy as np
 
-from runout.report import plot_style as style
-from runout.report.plot_style import (
+from runout.report import _plot_style as style
+from runout.report._plot_style import (
     MAX_CURVE_POINTS,
     _finish,
     _fmt,

@@ -16,9 +16,9 @@ from typing import Any, TextIO
 import numpy as np
 from numpy.typing import NDArray
 
-from runout.study.chunks import ERRORS_SHOWN
-from runout.study.files import write_atomic
-from runout.study.plan import RUNOUT_KEYS, Quantity
+from runout.study._chunks import ERRORS_SHOWN
+from runout.study._files import write_atomic
+from runout.study._plan import RUNOUT_KEYS, Quantity
 
 
 # --------------------------------------------------------------------------------------------

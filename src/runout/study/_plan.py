@@ -16,8 +16,8 @@ from numpy.typing import NDArray
 
 from runout.base.errors import CaseError, RunoutError
 from runout.base.units import to_si
+from runout.case._schema import split_shorthand
 from runout.case.model import Case, CaseSpec, StudySpec, VarySpec, parse_vary_key
-from runout.case.schema import split_shorthand
 
 #: Runout figures kept per sample, in this order (the keys of :class:`runout.analysis.results.Runout`).
 RUNOUT_KEYS = ("radial_pp_m", "axial_pp_m", "rro_pp_m", "nrro_pp_m")

@@ -22,8 +22,8 @@ from runout.analysis.decompose import study_key
 from runout.base.errors import ContactLossError, ConvergenceError, NumericalError
 from runout.base.units import to_si
 from runout.case.model import Case, parse_case
-from runout.study.plan import RUNOUT_KEYS, Quantity, _set_at, sample_rng
-from runout.study.pool import BatchArrays, evaluate_rows, line_projector
+from runout.study._plan import RUNOUT_KEYS, Quantity, _set_at, sample_rng
+from runout.study._pool import BatchArrays, evaluate_rows, line_projector
 
 # --------------------------------------------------------------------------------------------
 # labels of lines

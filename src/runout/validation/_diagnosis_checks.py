@@ -14,7 +14,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from runout.diagnose.record import Record, record_from_arrays
+from runout.diagnose._record import Record, record_from_arrays
 from runout.validation.seed002_anderon import FIG12, FIG20, W_I1, W_S, waviness
 
 __all__ = [
@@ -185,7 +185,7 @@ def recovery_markdown(case_path: str | None = None) -> str:
     return "\n".join(out)
 
 
-if __name__ == "__main__":  # python -m runout.validation.diagnosis_checks
+if __name__ == "__main__":  # python -m runout.validation._diagnosis_checks
     print(recovery_markdown())
 
 
@@ -196,7 +196,7 @@ Row = tuple[str, float, float, float, str]
 
 
 def seed002_rows(case_path: str | None = None) -> list[Row]:
-    """Seed 002's reading of Fig. 20 against Fig. 12, as far as the paper allows.
+    """Seed 002's reading of Fig. 20 against Fig. 12, as the paper allows.
 
     1. The diagnosis of the record Fig. 12 is computed from (eq. 43-47 through the linear
        model, a one-channel velocity record as the Anderon meter's) gives back the deviations
@@ -301,8 +301,8 @@ def nonlinear_bias_rows(amplitude: float = 20e-9) -> list[Row]:
     list of (quantity, set value [nm], diagnosed [nm], relative bias, variant)
     """
     from runout.case.model import load_case, parse_case
+    from runout.diagnose._record import record_from_arrays as rec_from
     from runout.diagnose.fit import diagnose
-    from runout.diagnose.record import record_from_arrays as rec_from
     from runout.models import quasi_static_3d
     from runout.validation.cases import example_path
 

@@ -17,7 +17,7 @@ from typing import Literal
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from runout.geometry.harmonics import (
+from runout.geometry._harmonics import (
     TWO_PI,
     Harmonics,
     ImperfectionError,

@@ -13,7 +13,7 @@ import math
 from pathlib import Path
 from typing import Any
 
-from runout.report.html import (
+from runout.report._html import (
     QUANTITY_NAMES,
     RUNOUT_KEYS,
     card,

@@ -267,7 +267,7 @@ class Harmonics:
     def evaluate(self, theta: ArrayLike) -> NDArray[np.float64]:
         """r(θ) [m] at angles θ [rad] (any shape; the result has the same shape).
 
-        Uses the Numba kernel :func:`runout.geometry.kernels.harmonic_sum` for large inputs and the
+        Uses the Numba kernel :func:`runout.geometry._kernels.harmonic_sum` for large inputs and the
         NumPy expression otherwise; both agree to about 1e-16 Σ a_k.
         """
         t = np.asarray(theta, dtype=np.float64)
@@ -276,7 +276,7 @@ class Harmonics:
         if self.orders.size == 0:
             out = np.zeros(flat.size)
         elif flat.size * self.orders.size >= KERNEL_THRESHOLD:
-            from runout.geometry.kernels import harmonic_sum
+            from runout.geometry._kernels import harmonic_sum
 
             out = harmonic_sum(
                 flat,
@@ -371,7 +371,7 @@ def _normalise(
 def pack_harmonics(
     parts: Sequence[Harmonics],
 ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64], NDArray[np.int64]]:
-    """Pack several profiles for :func:`runout.geometry.kernels.harmonic_sum_rows`.
+    """Pack several profiles for :func:`runout.geometry._kernels.harmonic_sum_rows`.
 
     Returns
     -------

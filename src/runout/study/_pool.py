@@ -4,10 +4,10 @@ What a chunk of the batched ball-size Monte Carlo needs is computed once by the 
 (:class:`BatchArrays`: time grid, approaches and angles of the unperturbed bearing, the lines
 and their least-squares projector) and shipped with every chunk as plain arrays; a worker then
 runs no case validation and no model setup, only :func:`evaluate_rows`: the batched Newton
-kernel (:func:`runout.study.kernels.solve_batch`, seed 001 eq. 16-18), the line fit of every
+kernel (:func:`runout.study._kernels.solve_batch`, seed 001 eq. 16-18), the line fit of every
 record by one fixed-order product and the RRO/NRRO split, vectorised over the chunk's bearings.
 
-The pool's worker processes are :mod:`runout.study.workers`.
+The pool's worker processes are :mod:`runout.study._workers`.
 """
 
 from __future__ import annotations
@@ -87,7 +87,7 @@ class RowResults:
     pp : ndarray, shape (B, 2, m)
         p-p of every line in x and y [m].
     status : ndarray of int, shape (B,)
-        0 ok, else the code of :func:`runout.study.kernels.solve_batch`.
+        0 ok, else the code of :func:`runout.study._kernels.solve_batch`.
     instant : ndarray of int, shape (B,)
         Instant of a failure (-1 when ok).
     """
@@ -200,7 +200,7 @@ def evaluate_rows(b: BatchArrays, errors: NDArray[np.float64], parallel: bool) -
         Ball diameter errors [m] (the approach of a ball grows by half its error).
     parallel : bool
         Numba threads over bearings (only in the main thread of a process that runs nothing
-        else compiled at the same time; see :func:`runout.study.kernels.solve_batch`).
+        else compiled at the same time; see :func:`runout.study._kernels.solve_batch`).
 
     Returns
     -------
@@ -221,7 +221,7 @@ def evaluate_rows(b: BatchArrays, errors: NDArray[np.float64], parallel: bool) -
 
 def _evaluate_pass(b: BatchArrays, errors: NDArray[np.float64], parallel: bool) -> RowResults:
     """:func:`evaluate_rows` of one pass of rows, all at once."""
-    from runout.study.kernels import project_rows, solve_batch
+    from runout.study._kernels import project_rows, solve_batch
 
     n_b = errors.shape[0]
     q, _unloaded, status, instant = solve_batch(
