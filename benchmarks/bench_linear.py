@@ -15,8 +15,8 @@ import numpy as np
 from _harness import BenchResult, best_time
 from runout.geometry.bearing import BallBearing, Operation
 from runout.geometry.imperfections import (
+    BearingImperfections,
     Harmonics,
-    Imperfections,
     Slant,
     single_harmonic,
     spectral_law,
@@ -29,12 +29,12 @@ ALPHA = math.radians(10.0)
 UM = 1e-6
 
 
-def _case() -> tuple[Imperfections, lin.Rates]:
+def _case() -> tuple[BearingImperfections, lin.Rates]:
     rng = np.random.default_rng(7)
     inner = single_harmonic(1, 2.5 * UM) + spectral_law((2, 799), 0.1 * UM, -1.5, rng=rng)
     outer = spectral_law((2, 1359), 0.1 * UM, -1.5, rng=rng)
     ball = spectral_law((2, 286), 0.1 * UM, -1.5, rng=rng)
-    imp = Imperfections(
+    imp = BearingImperfections(
         inner=inner, outer=outer, elements=[ball] + [Harmonics.empty()] * 6, slant=Slant(0.05 * UM)
     )
     bearing = BallBearing(
@@ -48,7 +48,7 @@ def _case() -> tuple[Imperfections, lin.Rates]:
     return imp, lin.rates(bearing, Operation("inner", 30.0), ALPHA)
 
 
-def _ours(imp: Imperfections, r: lin.Rates) -> tuple[np.ndarray, np.ndarray]:
+def _ours(imp: BearingImperfections, r: lin.Rates) -> tuple[np.ndarray, np.ndarray]:
     lines = lin.spectral_lines(lin.closed_form_terms(imp, r, ALPHA), r.rotation_hz, 7, True)
     _, x, y = lin.synthesize(lines, REVOLUTIONS, N_SAMPLES)
     return x, y
@@ -65,7 +65,7 @@ def _series(h: Harmonics, angle: np.ndarray, chunk: int = 64) -> np.ndarray:
     return out
 
 
-def _naive(imp: Imperfections, r: lin.Rates) -> tuple[np.ndarray, np.ndarray]:
+def _naive(imp: BearingImperfections, r: lin.Rates) -> tuple[np.ndarray, np.ndarray]:
     """Eq. 28 ball by ball: x = (2 cos α / Z) Σ_z w_z cos θ_z, w_z from each part's series."""
     theta = 2 * math.pi * REVOLUTIONS * np.arange(N_SAMPLES) / N_SAMPLES
     z = imp.n_elements

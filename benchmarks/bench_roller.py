@@ -19,7 +19,7 @@ import numpy as np
 
 from _harness import BenchResult, best_time
 from runout import RollerBearing
-from runout.geometry.imperfections import Harmonics, Imperfections, single_harmonic
+from runout.geometry.imperfections import BearingImperfections, Harmonics, single_harmonic
 from runout.models import roller_constraint as rc
 
 Z = 14
@@ -30,7 +30,7 @@ def _geometry() -> rc.ConstraintGeometry:
     rng = np.random.default_rng(2017)
     um = 1e-6
     imp = (
-        Imperfections.perfect(Z)
+        BearingImperfections.perfect(Z)
         .add("inner", single_harmonic(8, 1 * um, 0.7) + single_harmonic(23, 0.2 * um, 2.0))
         .add("outer", single_harmonic(18, 1 * um, 1.1) + single_harmonic(5, 0.3 * um, 0.2))
     )

@@ -17,7 +17,7 @@ from runout.case.model import Case
 from runout.diagnose._record import record_from_arrays
 from runout.diagnose.fit import diagnose
 from runout.geometry.bearing import BallBearing, Operation
-from runout.geometry.imperfections import Harmonics, Imperfections
+from runout.geometry.imperfections import BearingImperfections, Harmonics
 from runout.models.linear import closed_form_terms, rates, spectral_lines
 
 UM = 1e-6
@@ -52,7 +52,7 @@ def problems(draw: st.DrawFn):
         j = draw(st.integers(0, z - 1))
         m = 2 * draw(st.integers(1, 3))
         balls[j] = Harmonics([m], [draw(st.floats(0.05, 0.5)) * UM], [draw(st.floats(0, 6.28))])
-    imp = Imperfections(
+    imp = BearingImperfections(
         inner=_harm(draw, 2 * z + 2, 2),
         outer=_harm(draw, 2 * z + 2, 2),
         elements=balls,

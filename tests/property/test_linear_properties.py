@@ -9,7 +9,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from runout.geometry.bearing import BallBearing, Operation
-from runout.geometry.imperfections import Harmonics, Imperfections, Slant
+from runout.geometry.imperfections import BearingImperfections, Harmonics, Slant
 from runout.models import linear as lin
 
 UM = 1e-6
@@ -24,7 +24,7 @@ def _harmonics(draw: st.DrawFn, kmax: int, kmin: int = 1) -> Harmonics:
 
 
 @st.composite
-def cases(draw: st.DrawFn) -> tuple[BallBearing, Operation, float, Imperfections, str]:
+def cases(draw: st.DrawFn) -> tuple[BallBearing, Operation, float, BearingImperfections, str]:
     z = draw(st.integers(3, 16))
     dm = 20e-3
     d = draw(st.floats(1e-3, 0.9 * dm * math.sin(math.pi / z)))
@@ -41,7 +41,7 @@ def cases(draw: st.DrawFn) -> tuple[BallBearing, Operation, float, Imperfections
     other = draw(st.sampled_from([0.0, 0.0, -3.0, 11.0]))
     op = Operation(ring, draw(st.floats(1.0, 200.0)), other_ring_speed=other)
     balls = [_harmonics(draw, 12, 0) for _ in range(z)]
-    imp = Imperfections(
+    imp = BearingImperfections(
         inner=_harmonics(draw, 3 * z + 2),
         outer=_harmonics(draw, 3 * z + 2),
         elements=balls,
@@ -82,7 +82,7 @@ def test_closed_form_equals_direct_sum(case: tuple) -> None:
 def test_scaling_the_deviations_scales_the_lines(case: tuple) -> None:
     bearing, op, alpha, imp, variant = case
     r = lin.rates(bearing, op, alpha)
-    twice = Imperfections(
+    twice = BearingImperfections(
         inner=imp.inner.scaled(2.0),
         outer=imp.outer.scaled(2.0),
         elements=[h.scaled(2.0) for h in imp.elements],

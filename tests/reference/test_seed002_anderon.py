@@ -20,8 +20,8 @@ import pytest
 from runout.geometry.attribution import attribution_rows
 from runout.geometry.bearing import BallBearing, Operation
 from runout.geometry.imperfections import (
+    BearingImperfections,
     Harmonics,
-    Imperfections,
     Slant,
     single_harmonic,
     spectral_law,
@@ -51,11 +51,11 @@ RATES = lin.rates(BEARING, Operation("inner", 30.0), ALPHA)
 BANDS = "URLMHEA"
 
 
-def _imperfections(rng: np.random.Generator, parts: str = "iob") -> Imperfections:
+def _imperfections(rng: np.random.Generator, parts: str = "iob") -> BearingImperfections:
     inner = single_harmonic(1, 2.5 * UM) + spectral_law((2, 799), 0.1 * UM, -1.5, rng=rng)
     outer = spectral_law((2, 1359), 0.1 * UM, -1.5, rng=rng)
     ball = spectral_law((2, 286), 0.1 * UM, -1.5, rng=rng) + Harmonics([0], [0.1 * UM])
-    return Imperfections(
+    return BearingImperfections(
         inner=inner if "i" in parts else None,
         outer=outer if "o" in parts else None,
         elements=[ball if "b" in parts else Harmonics.empty()] + [Harmonics.empty()] * (Z - 1),
@@ -63,7 +63,7 @@ def _imperfections(rng: np.random.Generator, parts: str = "iob") -> Imperfection
     )
 
 
-def _bands(imp: Imperfections) -> tuple[dict[str, float], dict[str, float]]:
+def _bands(imp: BearingImperfections) -> tuple[dict[str, float], dict[str, float]]:
     """(exact-line values, six-revolution DFT values) of x."""
     return anderon_band_values(BEARING, Operation("inner", 30.0), imp)
 

@@ -7,7 +7,7 @@ the figures. See VALIDATION.md.
 Roller waviness: the paper's eq. 7 gives every roller's profile in a frame parallel to the
 bearing's (the "fixed" frame), the product reads the cage frame (phase 0 at the roller's outer
 contact at t = 0). The figures are the paper's, so their roller phases go through
-``Imperfections.element_phases_from_fixed_frame()`` (the examples set
+``BearingImperfections.element_phases_from_fixed_frame()`` (the examples set
 ``[elements] phase_frame = "fixed"``); the cage-frame reading of Fig. 11 is pinned too.
 """
 
@@ -18,7 +18,7 @@ import pytest
 
 from runout import RollerBearing
 from runout.examples import nu209_bearing
-from runout.geometry.imperfections import Imperfections, single_harmonic
+from runout.geometry.imperfections import BearingImperfections, single_harmonic
 from runout.models import roller_constraint as rc
 from runout.validation.seed004_yu import (
     ELLIPSE_SEMI_MINORS,
@@ -39,7 +39,7 @@ D_I, D_E, D_W, Z = (
 ALPHA_540 = rc.rotation_angles(1.5, 2161)  # 540 deg at 0.25 deg steps
 
 
-def _run(imp: Imperfections, bearing: RollerBearing = NU209) -> rc.Solution:
+def _run(imp: BearingImperfections, bearing: RollerBearing = NU209) -> rc.Solution:
     return rc.solve(rc.geometry_from(bearing, imp), ALPHA_540)
 
 
@@ -61,14 +61,14 @@ def test_yu2017_eq18_21_elliptic_inner_raceway(semi_minor: float) -> None:
 
 
 def test_yu2017_fig9_inner_order10() -> None:
-    sol = _run(Imperfections.perfect(Z).add("inner", single_harmonic(10, 1 * UM)))
+    sol = _run(BearingImperfections.perfect(Z).add("inner", single_harmonic(10, 1 * UM)))
     assert sol.runout == pytest.approx(FIGURE_RUNOUT_UM["Fig. 9"] * UM, rel=0.03)
     assert sol.radial.max() == pytest.approx(0.0217e-3, rel=0.03)
     assert sol.radial.min() == pytest.approx(0.01956e-3, rel=0.03)
 
 
 def test_yu2017_fig10_outer_order12() -> None:
-    sol = _run(Imperfections.perfect(Z).add("outer", single_harmonic(12, 1 * UM)))
+    sol = _run(BearingImperfections.perfect(Z).add("outer", single_harmonic(12, 1 * UM)))
     assert sol.runout == pytest.approx(FIGURE_RUNOUT_UM["Fig. 10"] * UM, rel=0.03)
     # the text prints max and min the other way round: 0.02013 / 0.02157 mm
     assert sol.radial.max() == pytest.approx(0.02157e-3, rel=0.03)
@@ -76,7 +76,7 @@ def test_yu2017_fig10_outer_order12() -> None:
 
 
 def test_yu2017_fig11_all_rollers_order8() -> None:
-    imp = Imperfections.perfect(Z).add("roller", single_harmonic(8, 0.5 * UM))
+    imp = BearingImperfections.perfect(Z).add("roller", single_harmonic(8, 0.5 * UM))
     sol = _run(imp.element_phases_from_fixed_frame())  # eq. 7: alike in the fixed frame
     assert sol.runout == pytest.approx(FIGURE_RUNOUT_UM["Fig. 11"] * UM, rel=0.03)
     assert sol.radial.max() == pytest.approx(0.02153e-3, rel=0.03)
@@ -96,14 +96,14 @@ def test_yu2017_fig12_combined_is_not_reachable_with_the_stated_amplitudes() -> 
         ("outer", single_harmonic(18, 1 * UM)),
     ]
     bound = sum(
-        _run(Imperfections.perfect(Z).add(p, h).element_phases_from_fixed_frame()).runout
+        _run(BearingImperfections.perfect(Z).add(p, h).element_phases_from_fixed_frame()).runout
         for p, h in parts
     )
     assert bound < FIGURE_RUNOUT_UM["Fig. 12"] * UM
     # and the size-error convention does not explain the gap (all four readings within 5 %)
     values = []
     for dd in (1 * UM, -1 * UM, 2 * UM, -2 * UM):  # diameter or radius error, either sign
-        imp = Imperfections.perfect(Z).with_diameter_errors(np.full(Z, dd))
+        imp = BearingImperfections.perfect(Z).with_diameter_errors(np.full(Z, dd))
         for p, h in parts:
             imp = imp.add(p, h)
         imp = imp.element_phases_from_fixed_frame()

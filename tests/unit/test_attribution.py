@@ -9,7 +9,7 @@ import pytest
 
 from runout.geometry.attribution import attribution_rows, attribution_table_rows
 from runout.geometry.bearing import BallBearing, Operation
-from runout.geometry.imperfections import Harmonics, Imperfections
+from runout.geometry.imperfections import BearingImperfections, Harmonics
 from runout.geometry.kinematics import bearing_frequencies
 from runout.models import linear as lin
 
@@ -48,7 +48,7 @@ def test_every_waviness_row_is_a_line_of_the_model(ring: str) -> None:
             continue
         k = int(row["lobes"].split("=")[1].split()[0])
         h = Harmonics([k], [1e-6])
-        imp = Imperfections(
+        imp = BearingImperfections(
             inner=h if row["part"] == "inner" else None,
             outer=h if row["part"] == "outer" else None,
             elements=[Harmonics.empty()] * Z,
@@ -56,7 +56,7 @@ def test_every_waviness_row_is_a_line_of_the_model(ring: str) -> None:
         lines = lin.spectral_lines(lin.closed_form_terms(imp, r, ALPHA), 30.0, Z, False)
         assert np.min(np.abs(lines.order - row["order"])) < 1e-12, row
     for n in (1, 2):
-        imp = Imperfections(elements=[Harmonics([2 * n], [1e-6])] + [Harmonics.empty()] * 6)
+        imp = BearingImperfections(elements=[Harmonics([2 * n], [1e-6])] + [Harmonics.empty()] * 6)
         lines = lin.spectral_lines(lin.closed_form_terms(imp, r, ALPHA), 30.0, Z, False)
         want = sorted(row["order"] for row in rows if row["lobes"].startswith(f"2n = {2 * n}"))
         np.testing.assert_allclose(sorted(lines.order), want, rtol=1e-12)

@@ -24,9 +24,9 @@ from runout.geometry._kernels import (
 )
 from runout.geometry.bearing import BallBearing
 from runout.geometry.imperfections import (
+    BearingImperfections,
     Harmonics,
     ImperfectionError,
-    Imperfections,
     ProfileError,
     ProfileWarning,
     Slant,
@@ -610,24 +610,24 @@ class TestSlant:
 
 
 # ------------------------------------------------------------------------------------------
-# Imperfections
+# BearingImperfections
 # ------------------------------------------------------------------------------------------
 class TestImperfections:
     def test_perfect(self) -> None:
-        imp = Imperfections.perfect(7)
+        imp = BearingImperfections.perfect(7)
         assert imp.n_elements == 7
         assert imp.is_perfect
         assert imp.diameter_errors.tolist() == [0.0] * 7
         assert imp.summary() == []
         for bad in (0, True, 2.5):
             with pytest.raises(ImperfectionError):
-                Imperfections.perfect(bad)  # type: ignore[arg-type]
+                BearingImperfections.perfect(bad)  # type: ignore[arg-type]
 
     def test_infer_z(self) -> None:
-        assert Imperfections(diameter_errors=[0.0, 1e-7, 0.0]).n_elements == 3
-        assert Imperfections(pitch_errors=np.zeros(5)).n_elements == 5
+        assert BearingImperfections(diameter_errors=[0.0, 1e-7, 0.0]).n_elements == 3
+        assert BearingImperfections(pitch_errors=np.zeros(5)).n_elements == 5
         with pytest.raises(ImperfectionError, match="perfect"):
-            Imperfections()
+            BearingImperfections()
 
     @pytest.mark.parametrize(
         ("kwargs", "match"),
@@ -642,10 +642,10 @@ class TestImperfections:
     def test_validation(self, kwargs, match) -> None:  # type: ignore[no-untyped-def]
         base = {"elements": (Harmonics.empty(),) * 3}
         with pytest.raises(ImperfectionError, match=match):
-            Imperfections(**{**base, **kwargs})
+            BearingImperfections(**{**base, **kwargs})
 
     def test_frozen(self) -> None:
-        imp = Imperfections.perfect(3)
+        imp = BearingImperfections.perfect(3)
         with pytest.raises(dataclasses.FrozenInstanceError):
             imp.slant = None  # type: ignore[misc]
         with pytest.raises(ValueError):
@@ -653,7 +653,7 @@ class TestImperfections:
 
     def test_add_parts(self) -> None:
         h = single_harmonic(4, 0.1 * UM)
-        imp = Imperfections.perfect(5)
+        imp = BearingImperfections.perfect(5)
         assert imp.add("inner", h).inner == h
         assert imp.add("outer", h).outer == h
         assert imp.add("outer", h).add("outer", h).outer == h.scaled(2.0)
@@ -679,12 +679,12 @@ class TestImperfections:
     )
     def test_add_errors(self, part, element, match) -> None:  # type: ignore[no-untyped-def]
         with pytest.raises(ImperfectionError, match=match):
-            Imperfections.perfect(5).add(part, single_harmonic(2, UM), element=element)
+            BearingImperfections.perfect(5).add(part, single_harmonic(2, UM), element=element)
         with pytest.raises(ImperfectionError, match="Harmonics"):
-            Imperfections.perfect(5).add("inner", 3.0)  # type: ignore[arg-type]
+            BearingImperfections.perfect(5).add("inner", 3.0)  # type: ignore[arg-type]
 
     def test_with_methods(self) -> None:
-        imp = Imperfections.perfect(3)
+        imp = BearingImperfections.perfect(3)
         h = single_harmonic(3, UM)
         assert imp.with_inner(h).inner == h
         assert imp.with_outer(h).outer == h
@@ -702,7 +702,7 @@ class TestImperfections:
 
     def test_element_diameter_deviation(self) -> None:
         ball = Harmonics([0, 1, 2, 3, 4], [0.01, 0.1, 0.2, 0.3, 0.4], [0, 1, 2, 3, 4]).scaled(UM)
-        imp = Imperfections.perfect(3).add("ball", ball, element=2)
+        imp = BearingImperfections.perfect(3).add("ball", ball, element=2)
         imp = imp.with_diameter_errors([0.0, 0.05 * UM, 0.0])
         d = imp.element_diameter_deviation(1)
         assert d.orders.tolist() == [0, 2, 4]
@@ -715,7 +715,7 @@ class TestImperfections:
 
     def test_evaluate_element_diameters(self) -> None:
         imp = (
-            Imperfections.perfect(4)
+            BearingImperfections.perfect(4)
             .add("ball", spectral_law((2, 30), UM, -1.0, seed=1), element=1)
             .add("ball", single_harmonic(2, 0.5 * UM, 1.0), element=3)
             .with_diameter_errors([0.0, 1e-7, 0.0, -2e-7])
@@ -734,7 +734,7 @@ class TestImperfections:
 
     def test_summary(self) -> None:
         imp = (
-            Imperfections.perfect(3)
+            BearingImperfections.perfect(3)
             .add("inner", single_harmonic(8, 10e-9, 0.5))
             .add("ball", single_harmonic(2, 5e-9), element=3)
             .with_element_errors(diameter_errors=[0, -1e-7, 0], pitch_errors=[1e-4, 0, 0])

@@ -11,8 +11,8 @@ import pytest
 import runout
 from runout.base.errors import CaseError
 from runout.case.model import parse_case
+from runout.geometry.imperfections import BearingImperfections as Resolved
 from runout.geometry.imperfections import ImperfectionError, single_harmonic
-from runout.geometry.imperfections import Imperfections as Resolved
 
 BEARING = runout.BallBearing(
     elements=8, element_diameter=1e-3, pitch_diameter=7e-3, radial_clearance=10e-6

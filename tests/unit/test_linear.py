@@ -10,8 +10,8 @@ import pytest
 from runout.base.errors import GeometryError
 from runout.geometry.bearing import BallBearing, Operation
 from runout.geometry.imperfections import (
+    BearingImperfections,
     Harmonics,
-    Imperfections,
     Slant,
     single_harmonic,
     spectral_law,
@@ -37,17 +37,19 @@ def _rates(ring: str = "inner", z: int = 7, other: float = 0.0) -> lin.Rates:
     return lin.rates(_bearing(z), Operation(ring, 30.0, other_ring_speed=other), ALPHA)
 
 
-def _lines(imp: Imperfections, r: lin.Rates, variant: str = "radial_spring") -> lin.SpectralLines:
+def _lines(
+    imp: BearingImperfections, r: lin.Rates, variant: str = "radial_spring"
+) -> lin.SpectralLines:
     terms = lin.closed_form_terms(imp, r, ALPHA, variant)
     return lin.spectral_lines(terms, r.rotation_hz, imp.n_elements, True)
 
 
-def _rich(z: int = 7, seed: int = 3) -> Imperfections:
+def _rich(z: int = 7, seed: int = 3) -> BearingImperfections:
     rng = np.random.default_rng(seed)
     inner = single_harmonic(1, 2.0 * UM, 0.3) + spectral_law((2, 60), 0.1 * UM, -1.5, rng=rng)
     outer = spectral_law((2, 80), 0.1 * UM, -1.5, rng=rng)
     balls = [spectral_law((1, 30), 0.05 * UM, -1.0, rng=rng) for _ in range(z)]
-    return Imperfections(
+    return BearingImperfections(
         inner=inner,
         outer=outer,
         elements=balls,
@@ -105,7 +107,7 @@ def test_inner_lines_reproduce_eq33() -> None:
     z, gamma = 7, 3.9688 / 15 * math.cos(ALPHA)
     for n, sign in ((1, -1), (2, 1), (3, -1)):
         k = n * z + sign
-        imp = Imperfections(
+        imp = BearingImperfections(
             inner=Harmonics([k], [0.2 * UM], [0.4]), elements=[Harmonics.empty()] * z
         )
         lines = _lines(imp, _rates())
@@ -121,13 +123,13 @@ def test_inner_lines_reproduce_eq33() -> None:
 
 def test_inner_harmonics_not_nz_pm_1_vanish() -> None:
     for k in (2, 3, 4, 5, 7, 9, 14):
-        imp = Imperfections(inner=Harmonics([k], [UM]), elements=[Harmonics.empty()] * 7)
+        imp = BearingImperfections(inner=Harmonics([k], [UM]), elements=[Harmonics.empty()] * 7)
         assert len(_lines(imp, _rates())) == 0
 
 
 def test_outer_lines_reproduce_eq37_both_lobes_share_o_nz() -> None:
     z, gamma = 7, 3.9688 / 15 * math.cos(ALPHA)
-    imp = Imperfections(
+    imp = BearingImperfections(
         outer=Harmonics([13, 15], [0.3 * UM, 0.1 * UM], [0.2, 1.1]),
         elements=[Harmonics.empty()] * z,
     )
@@ -154,7 +156,7 @@ def test_ball_lines_reproduce_eq39_40() -> None:
     nb = 15 / (2 * 3.9688) * (1 - gamma**2)
     nc = (1 - gamma) / 2
     ball = Harmonics([0, 4], [0.1 * UM, 0.05 * UM], [0.0, 0.9])
-    imp = Imperfections(elements=[Harmonics.empty()] * 2 + [ball] + [Harmonics.empty()] * 4)
+    imp = BearingImperfections(elements=[Harmonics.empty()] * 2 + [ball] + [Harmonics.empty()] * 4)
     lines = _lines(imp, _rates())
     np.testing.assert_allclose(lines.order, [nc, 4 * nb - nc, 4 * nb + nc], rtol=1e-13)
     beta = 2 * math.pi * 2 / z
@@ -177,7 +179,7 @@ def test_ball_lines_reproduce_eq39_40() -> None:
 
 def test_odd_ball_orders_do_nothing_and_equal_sizes_cancel() -> None:
     z = 7
-    imp = Imperfections(
+    imp = BearingImperfections(
         elements=[Harmonics([3, 5], [UM, UM])] * z, diameter_errors=np.full(z, 0.3 * UM)
     )
     lines = _lines(imp, _rates())
@@ -185,7 +187,7 @@ def test_odd_ball_orders_do_nothing_and_equal_sizes_cancel() -> None:
 
 
 def test_slant_x_is_eq35_and_y_is_the_quarter_turn_probe() -> None:
-    imp = Imperfections(elements=[Harmonics.empty()] * 7, slant=Slant(0.05 * UM, 0.6))
+    imp = BearingImperfections(elements=[Harmonics.empty()] * 7, slant=Slant(0.05 * UM, 0.6))
     lines = _lines(imp, _rates())
     theta = np.linspace(0, 6, 40)
     x, y = lines.evaluate(theta)
@@ -198,7 +200,7 @@ def test_slant_x_is_eq35_and_y_is_the_quarter_turn_probe() -> None:
 def test_outer_rotating_frequencies() -> None:
     z = 7
     gamma = 3.9688 / 15 * math.cos(ALPHA)
-    imp = Imperfections(
+    imp = BearingImperfections(
         inner=Harmonics([1, 6, 8], [UM, UM, UM]),
         outer=Harmonics([1, 13], [UM, UM]),
         elements=[Harmonics.empty()] * z,
@@ -233,7 +235,7 @@ def test_force_balance_gains() -> None:
 def test_pitch_errors_direct_sum_solves_full_balance() -> None:
     # With unequal spacing the direct sum must satisfy eq. 14-18 without eq. 19-20.
     z = 5
-    imp = Imperfections(
+    imp = BearingImperfections(
         inner=Harmonics([1, 4, 6], [UM, 0.2 * UM, 0.1 * UM]),
         elements=[Harmonics.empty()] * z,
         pitch_errors=[0.0, 0.05, -0.03, 0.02, 0.0],
@@ -259,13 +261,13 @@ def test_pitch_errors_direct_sum_solves_full_balance() -> None:
 
 def test_too_few_elements_and_zero_speed_are_errors() -> None:
     with pytest.raises(GeometryError, match="at least 3 elements"):
-        lin.closed_form_terms(Imperfections.perfect(2), _rates(), ALPHA)
+        lin.closed_form_terms(BearingImperfections.perfect(2), _rates(), ALPHA)
     with pytest.raises(GeometryError, match="speed"):
         lin.rates(_bearing(), Operation("inner", 0.0), ALPHA)
 
 
 def test_perfect_bearing_gives_no_lines_and_zero_runout() -> None:
-    lines = _lines(Imperfections.perfect(7), _rates())
+    lines = _lines(BearingImperfections.perfect(7), _rates())
     assert len(lines) == 0
     _, x, y = lin.synthesize(lines, 2, 64)
     assert not x.any() and not y.any()

@@ -19,7 +19,7 @@ from runout.case.limits import BYTES_QUASI_STATIC
 from runout.case.model import Case
 from runout.examples import tada_bearing
 from runout.geometry.bearing import Operation
-from runout.geometry.imperfections import Harmonics, Imperfections
+from runout.geometry.imperfections import BearingImperfections, Harmonics
 from runout.models import quasi_static_2d as qs2
 from runout.models import quasi_static_3d as qs3
 from runout.models._quasi_static import (
@@ -35,13 +35,13 @@ from runout.runner import run_model
 KIN = Kinematics(inner=0.0, outer=90.0, cage=50.6, spin=310.1, rotating_ring="outer", n_elements=7)
 
 
-def _imperfections(rng: np.random.Generator, z: int, balls: bool = True) -> Imperfections:
+def _imperfections(rng: np.random.Generator, z: int, balls: bool = True) -> BearingImperfections:
     def harmonics(count: int, kmax: int) -> Harmonics:
         k = rng.choice(np.arange(0 if balls else 1, kmax + 1), size=count, replace=False)
         return Harmonics(k, rng.uniform(1e-9, 3e-8, count), rng.uniform(0, 2 * math.pi, count))
 
     elements = [harmonics(int(rng.integers(0, 4)), 12) for _ in range(z)] if balls else []
-    return Imperfections(
+    return BearingImperfections(
         inner=harmonics(4, 30),
         outer=harmonics(3, 30),
         elements=elements or [Harmonics.empty()] * z,
@@ -51,7 +51,7 @@ def _imperfections(rng: np.random.Generator, z: int, balls: bool = True) -> Impe
 
 
 def numpy_contacts(
-    imp: Imperfections,
+    imp: BearingImperfections,
     kin: Kinematics,
     t: np.ndarray,
     *,
@@ -88,7 +88,7 @@ def numpy_contacts(
     return c, np.cos(theta), np.sin(theta)
 
 
-def _amplitude(imp: Imperfections) -> float:
+def _amplitude(imp: BearingImperfections) -> float:
     elements = sum(float(np.sum(h.amplitudes)) for h in imp.element_diameter_deviations())
     return float(np.sum(imp.inner.amplitudes) + np.sum(imp.outer.amplitudes)) + elements
 
@@ -125,11 +125,16 @@ def test_fused_evaluation_matches_the_model_deviations() -> None:
 
 def test_empty_parts_cost_nothing() -> None:
     """No element harmonics: nothing packed for the elements (no work per instant)."""
-    imp = Imperfections(inner=Harmonics([5], [1e-8]), elements=[Harmonics.empty()] * 7)
+    imp = BearingImperfections(inner=Harmonics([5], [1e-8]), elements=[Harmonics.empty()] * 7)
     src = contact_sources(imp, KIN, ring_gain=1.0, element_gain=1.0, offset=0.0, planar=False)
     assert src.ball.shape == (3, 0) and src.ring.shape == (3, 1) and src.n_inner == 1
     perfect = contact_sources(
-        Imperfections.perfect(7), KIN, ring_gain=1.0, element_gain=1.0, offset=2e-6, planar=False
+        BearingImperfections.perfect(7),
+        KIN,
+        ring_gain=1.0,
+        element_gain=1.0,
+        offset=2e-6,
+        planar=False,
     )
     c, _, _ = contact_series(time_grid(90.0, 2.0, 64), *perfect.args())
     assert np.all(c == 2e-6)

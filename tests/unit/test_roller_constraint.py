@@ -10,7 +10,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from runout import BallBearing, GeometryError, NumericalError, Operation, RollerBearing
-from runout.geometry.imperfections import Harmonics, Imperfections, single_harmonic
+from runout.geometry.imperfections import BearingImperfections, Harmonics, single_harmonic
 from runout.geometry.kinematics import ball_spin_frequency, cage_frequency
 from runout.models import roller_constraint as rc
 
@@ -101,7 +101,7 @@ def test_support_function_of_a_wavy_profile_matches_dense_maximum() -> None:
 
 def test_circular_parts_match_eq17_over_a_revolution() -> None:
     alpha = rc.rotation_angles(1.0, 1441)
-    sol = rc.solve(rc.geometry_from(NU209, Imperfections.perfect(14)), alpha)
+    sol = rc.solve(rc.geometry_from(NU209, BearingImperfections.perfect(14)), alpha)
     ref = rc.analytic_circular(54.991e-3, 75.032e-3, 10e-3, 14, alpha)
     err = np.max(np.linalg.norm(sol.centre - ref, axis=1))
     assert err / np.max(np.abs(ref[:, 1])) < 1e-10
@@ -110,8 +110,8 @@ def test_circular_parts_match_eq17_over_a_revolution() -> None:
     assert np.max(sol.centre[:, 1]) <= -NU209.radial_clearance / 2 + 1e-15
 
 
-def _random_imperfections(rng: np.random.Generator, z: int, amp: float) -> Imperfections:
-    imp = Imperfections.perfect(z)
+def _random_imperfections(rng: np.random.Generator, z: int, amp: float) -> BearingImperfections:
+    imp = BearingImperfections.perfect(z)
     for part in ("inner", "outer"):
         k = rng.integers(2, 30, 3)
         imp = imp.add(part, Harmonics(k, rng.uniform(0, amp, 3), rng.uniform(0, 6.3, 3)))
@@ -185,7 +185,7 @@ def _paper_distance(ring_r, ring_h, ring_turn, centres, roller_p, roller_r, roll
 def test_paper_criteria_5_3_pick_our_position(angle_deg: float) -> None:
     # Oracle: the paper's stepped search (§5.2-5.3) on a grid around our answer.
     imp = (
-        Imperfections.perfect(14)
+        BearingImperfections.perfect(14)
         .add("inner", single_harmonic(10, 1 * UM))
         .add("roller", single_harmonic(8, 0.5 * UM))
     )
@@ -227,7 +227,7 @@ def test_paper_criteria_5_3_pick_our_position(angle_deg: float) -> None:
 
 def test_kinematics_agree_with_runout_kinematics() -> None:
     for ring in ("inner", "outer"):
-        geo = rc.geometry_from(NU209, Imperfections.perfect(14), Operation(ring))
+        geo = rc.geometry_from(NU209, BearingImperfections.perfect(14), Operation(ring))
         fi, fo = (1.0, 0.0) if ring == "inner" else (0.0, 1.0)
         cage = cage_frequency(fi, fo, 10e-3, NU209.pitch_diameter)
         spin = ball_spin_frequency(fi, fo, 10e-3, NU209.pitch_diameter)
@@ -236,7 +236,7 @@ def test_kinematics_agree_with_runout_kinematics() -> None:
 
 
 def test_outer_ring_turning_matches_the_circle_construction() -> None:
-    geo = rc.geometry_from(NU209, Imperfections.perfect(14), Operation("outer"))
+    geo = rc.geometry_from(NU209, BearingImperfections.perfect(14), Operation("outer"))
     alpha = rc.rotation_angles(0.3, 121)
     sol = rc.solve(geo, alpha)
     s = geo.inner_radius + 5e-3
@@ -255,7 +255,7 @@ def test_outer_ring_turning_matches_the_circle_construction() -> None:
 
 def test_ball_bearing_is_solved_in_its_radial_plane() -> None:
     ball = BallBearing(9, 7.9375e-3, 39e-3, radial_clearance=12e-6)
-    imp = Imperfections.perfect(9).add("inner", single_harmonic(5, 0.5 * UM))
+    imp = BearingImperfections.perfect(9).add("inner", single_harmonic(5, 0.5 * UM))
     sol = rc.solve(rc.geometry_from(ball, imp), rc.rotation_angles(1, 721))
     assert sol.radial.mean() == pytest.approx(6e-6, rel=0.1)
     assert 0.0 < sol.runout < 3 * UM
@@ -263,19 +263,19 @@ def test_ball_bearing_is_solved_in_its_radial_plane() -> None:
 
 def test_jammed_rollers_raise_naming_the_angle() -> None:
     tight = RollerBearing(14, 10e-3, 55.0e-3, 75.0001e-3)  # 0.1 um clearance
-    imp = Imperfections.perfect(14).with_diameter_errors([2 * UM] + [0.0] * 13)
+    imp = BearingImperfections.perfect(14).with_diameter_errors([2 * UM] + [0.0] * 13)
     with pytest.raises(NumericalError, match="rotation angle"):
         rc.solve(rc.geometry_from(tight, imp), rc.rotation_angles(1, 361))
 
 
 def test_non_convex_profile_is_rejected() -> None:
-    imp = Imperfections.perfect(14).add("inner", single_harmonic(200, 1e-3))
+    imp = BearingImperfections.perfect(14).add("inner", single_harmonic(200, 1e-3))
     with pytest.raises(GeometryError, match="not convex"):
         rc.geometry_from(NU209, imp)
 
 
 def test_order_sweep_shows_the_roller_number_relation() -> None:
-    geo = rc.geometry_from(NU209, Imperfections.perfect(14))
+    geo = rc.geometry_from(NU209, BearingImperfections.perfect(14))
     sweep = rc.order_sweep(geo, rc.rotation_angles(1, 361), orders=[13, 14, 15], parts=["outer"])
     out = sweep.runout[0]
     assert out[1] > out[0] and out[1] > out[2]  # Z lobes on the outer raceway stand out

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from runout import RollerBearing
-from runout.geometry.imperfections import Harmonics, Imperfections, single_harmonic
+from runout.geometry.imperfections import BearingImperfections, Harmonics, single_harmonic
 from runout.models import _roller_kernels as rk
 from runout.models import roller_constraint as rc
 
@@ -19,7 +19,7 @@ UM = 1e-6
 def _geometry(seed: int) -> rc.ConstraintGeometry:
     rng = np.random.default_rng(seed)
     imp = (
-        Imperfections.perfect(14)
+        BearingImperfections.perfect(14)
         .add("inner", single_harmonic(8, 1 * UM, 0.7) + single_harmonic(23, 0.2 * UM, 2.0))
         .add("outer", single_harmonic(18, 1 * UM, 1.1))
     )

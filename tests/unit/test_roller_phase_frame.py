@@ -5,7 +5,7 @@ product's frame is the **cage** frame: ψ = 0 along the outward radius through t
 centre (its outer contact) at t = 0, as the linear and quasi-static models read it (seed 001
 eq. 13, seed 002 eq. 25-26). Seed 004 (Yu et al. 2017) eq. 7 uses the **fixed** frame: ψ = 0
 along +x of the bearing for every roller. ``[elements] phase_frame = "fixed"`` converts with
-:meth:`Imperfections.element_phases_from_fixed_frame`; ``roller_constraint`` reads the cage
+:meth:`BearingImperfections.element_phases_from_fixed_frame`; ``roller_constraint`` reads the cage
 frame and converts back to the fixed frame its kernel uses.
 """
 
@@ -20,7 +20,7 @@ import pytest
 
 from runout import BallBearing, Operation, RollerBearing
 from runout.case.model import load_case
-from runout.geometry.imperfections import Harmonics, Imperfections, single_harmonic
+from runout.geometry.imperfections import BearingImperfections, Harmonics, single_harmonic
 from runout.geometry.kinematics import bearing_frequencies
 from runout.models import roller_constraint as rc
 
@@ -61,10 +61,10 @@ OLD_BALL = 1.6145868543602733e-06
 OLD_FIG11 = 2.003083150967185e-06  # seed 004 Fig. 11 (1.98 µm published), VALIDATION.md
 
 
-def _random_imperfections(seed: int, z: int, amp: float) -> Imperfections:
+def _random_imperfections(seed: int, z: int, amp: float) -> BearingImperfections:
     """Waviness on every part (odd and even element orders), size and pitch errors."""
     rng = np.random.default_rng(seed)
-    imp = Imperfections.perfect(z)
+    imp = BearingImperfections.perfect(z)
     for part in ("inner", "outer"):
         k = rng.integers(2, 30, 3)
         imp = imp.add(part, Harmonics(k, rng.uniform(0, amp, 3), rng.uniform(0, 6.3, 3)))
@@ -77,14 +77,14 @@ def _random_imperfections(seed: int, z: int, amp: float) -> Imperfections:
     )
 
 
-def _beta(imp: Imperfections) -> np.ndarray:
+def _beta(imp: BearingImperfections) -> np.ndarray:
     """Element centres at t = 0 [rad]: 2πj/Z + pitch error (j 0-based)."""
     z = imp.n_elements
     return 2 * np.pi * np.arange(z) / z + imp.pitch_errors
 
 
 # --------------------------------------------------------------------------------------------
-# Imperfections.element_phases_from_fixed_frame
+# BearingImperfections.element_phases_from_fixed_frame
 # --------------------------------------------------------------------------------------------
 def test_fixed_to_cage_frame_turns_each_element_by_its_position() -> None:
     imp = _random_imperfections(7, Z, 1.5 * UM)
@@ -105,7 +105,7 @@ def test_fixed_frame_peak_along_x_sits_at_minus_beta_in_the_cage_frame() -> None
     # sign check: a fixed-frame lobe pointing along +x of the bearing is seen from the element's
     # outward radius (at β_j) at ψ_c = -β_j; phase φ_c = φ_f + k β_j
     k, a = 8, 0.5 * UM
-    imp = Imperfections.perfect(Z).add("roller", single_harmonic(k, a))
+    imp = BearingImperfections.perfect(Z).add("roller", single_harmonic(k, a))
     cage = imp.element_phases_from_fixed_frame()
     for j, b in enumerate(_beta(imp)):
         assert cage.elements[j].evaluate(np.array([-b]))[0] == pytest.approx(a, rel=1e-12)
@@ -113,7 +113,7 @@ def test_fixed_frame_peak_along_x_sits_at_minus_beta_in_the_cage_frame() -> None
 
 
 def test_size_errors_and_perfect_elements_have_no_phase_to_change() -> None:
-    imp = Imperfections.perfect(5).add("ball", Harmonics([0], [1 * UM]), element=2)
+    imp = BearingImperfections.perfect(5).add("ball", Harmonics([0], [1 * UM]), element=2)
     imp = imp.with_pitch_errors([0.01, -0.02, 0.0, 0.03, 0.0])
     cage = imp.element_phases_from_fixed_frame()
     assert cage.elements == imp.elements
@@ -149,7 +149,7 @@ def test_fixed_frame_input_gives_the_old_model_for_a_ball_bearing() -> None:
 
 
 def test_seed004_fig11_in_the_fixed_frame_keeps_its_value() -> None:
-    imp = Imperfections.perfect(Z).add("roller", single_harmonic(8, 0.5 * UM))
+    imp = BearingImperfections.perfect(Z).add("roller", single_harmonic(8, 0.5 * UM))
     fixed = rc.solve(rc.geometry_from(NU209, imp.element_phases_from_fixed_frame()), ALPHA_540)
     assert fixed.runout == pytest.approx(OLD_FIG11, rel=REL)
 
@@ -172,7 +172,7 @@ def test_cage_frame_every_roller_shows_the_same_deviation_at_its_outer_contact(r
     # spin relative to the cage, +f_b per ring turn for the inner ring turning (the
     # quasi-static models' Kinematics.contact_rate, seed 002 eq. 6), -f_b for the outer
     k, a = 8, 0.5 * UM
-    imp = Imperfections.perfect(Z).add("roller", single_harmonic(k, a))
+    imp = BearingImperfections.perfect(Z).add("roller", single_harmonic(k, a))
     geo = rc.geometry_from(NU209, imp, Operation(ring))
     cage, spin = rc.cage_ratio(geo), rc.absolute_spin_ratio(geo)
     f = bearing_frequencies(NU209, Operation(ring, 1.0))
@@ -190,7 +190,7 @@ def test_cage_frame_every_roller_shows_the_same_deviation_at_its_outer_contact(r
 
 def test_cage_frame_rollers_settle_alike_and_the_fixed_frame_ones_do_not() -> None:
     k, a = 8, 0.5 * UM
-    cage_imp = Imperfections.perfect(Z).add("roller", single_harmonic(k, a))
+    cage_imp = BearingImperfections.perfect(Z).add("roller", single_harmonic(k, a))
     geo = rc.geometry_from(NU209, cage_imp)
     sol = rc.solve(geo, np.zeros(1))
     # rollers in the load zone (below the centre) settle onto the outer raceway at t = 0 on
@@ -221,10 +221,10 @@ def test_geometry_holds_the_kernel_fixed_frame_and_its_cage_view() -> None:
 
 def test_order_sweep_puts_the_roller_harmonic_in_every_roller_cage_frame() -> None:
     alpha = rc.rotation_angles(0.5, 181)
-    geo = rc.geometry_from(NU209, Imperfections.perfect(Z))
+    geo = rc.geometry_from(NU209, BearingImperfections.perfect(Z))
     sweep = rc.order_sweep(geo, alpha, orders=[8, 15], parts=("roller",))
     for i, k in enumerate((8, 15)):
-        imp = Imperfections.perfect(Z).add("roller", single_harmonic(k, 1 * UM))
+        imp = BearingImperfections.perfect(Z).add("roller", single_harmonic(k, 1 * UM))
         direct = rc.solve(rc.geometry_from(NU209, imp), alpha).runout
         assert sweep.runout[0, i] == pytest.approx(direct, rel=1e-12)
         fixed = rc.solve(rc.geometry_from(NU209, imp.element_phases_from_fixed_frame()), alpha)
@@ -232,7 +232,7 @@ def test_order_sweep_puts_the_roller_harmonic_in_every_roller_cage_frame() -> No
 
 
 def test_cage_lines_are_offered_only_for_rollers_that_differ_in_the_cage_frame() -> None:
-    same = Imperfections.perfect(Z).add("roller", single_harmonic(8, 0.5 * UM))
+    same = BearingImperfections.perfect(Z).add("roller", single_harmonic(8, 0.5 * UM))
     labels = [c.source.label() for c in rc._candidate_lines(rc.geometry_from(NU209, same))]
     assert not any(label.startswith("cage") for label in labels)
     # identical in the fixed frame = different relative to the cage: uneven rollers
@@ -240,6 +240,6 @@ def test_cage_lines_are_offered_only_for_rollers_that_differ_in_the_cage_frame()
     labels = [c.source.label() for c in rc._candidate_lines(rc.geometry_from(NU209, turned))]
     assert any(label.startswith("cage") for label in labels)
     # the same judged on the kernel's geometry: identical fixed-frame profiles are uneven
-    geo = rc.geometry_from(NU209, Imperfections.perfect(Z))
+    geo = rc.geometry_from(NU209, BearingImperfections.perfect(Z))
     fixed_same = geo.replace(elements=(single_harmonic(8, 0.5 * UM),) * Z)
     assert any(c.source.part == "cage" for c in rc._candidate_lines(fixed_same))

@@ -59,6 +59,7 @@ __all__ = [
     "DETAILS_BY_MODEL",
     "DynamicDetails",
     "EquilibriumDetails",
+    "HeldRollers",
     "Iso492",
     "Iso15242",
     "Iso15242Band",
@@ -67,7 +68,6 @@ __all__ = [
     "QuasiStaticDetails",
     "RadialStiffness",
     "RingDisplacement",
-    "RollerContacts",
     "RollerDetails",
     "SpindleBearingResult",
     "SpindleDetails",
@@ -443,7 +443,7 @@ class DynamicDetails:
 # rigid constraint model (seed 004)
 # --------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
-class RollerContacts:
+class HeldRollers:
     """Which rollers held the ring over the record.
 
     Attributes
@@ -477,7 +477,7 @@ class RollerContacts:
         }
 
     @classmethod
-    def from_json(cls, doc: dict[str, Any]) -> RollerContacts:
+    def from_json(cls, doc: dict[str, Any]) -> HeldRollers:
         """Read :meth:`to_json` back."""
         return cls(
             rollers_touched=tuple(int(j) for j in doc["rollers_touched"]),
@@ -518,7 +518,7 @@ class RollerDetails:
         Peak-to-peak across the measuring load [m].
     explained_fraction : float
         Share of the record's variance the fitted lines explain [-].
-    contacts : RollerContacts
+    contacts : HeldRollers
         Which rollers held the ring.
     rotating_ring : {"inner", "outer"}
         The turning (and loaded) ring.
@@ -533,7 +533,7 @@ class RollerDetails:
 
     horizontal_pp_m: float
     explained_fraction: float
-    contacts: RollerContacts
+    contacts: HeldRollers
     rotating_ring: str
     radial_clearance_m: float
     iso492: Iso492
@@ -556,7 +556,7 @@ class RollerDetails:
         return cls(
             horizontal_pp_m=float(doc["horizontal_pp_m"]),
             explained_fraction=float(doc["explained_fraction"]),
-            contacts=RollerContacts.from_json(doc["contacts"]),
+            contacts=HeldRollers.from_json(doc["contacts"]),
             rotating_ring=str(doc["rotating_ring"]),
             radial_clearance_m=float(doc["radial_clearance_m"]),
             iso492=Iso492(str(doc["iso492"]["quantity"]), float(doc["iso492"]["radial_runout_m"])),
@@ -876,3 +876,18 @@ class Verdict:
             bool(doc["pass"]),
             "um/s",
         )
+
+
+def __getattr__(name: str) -> object:
+    """``RollerContacts`` (renamed :class:`HeldRollers`: one name, one class), for one release;
+    :class:`runout.geometry.contact.RollerContacts` is the Hertz contacts of a roller bearing."""
+    if name == "RollerContacts":
+        import warnings
+
+        warnings.warn(
+            "runout.analysis.result_details.RollerContacts is deprecated: it is HeldRollers",
+            DeprecationWarning,
+            stacklevel=2,
+        )
+        return HeldRollers
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

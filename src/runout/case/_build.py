@@ -28,8 +28,8 @@ from runout.case.limits import (
     BYTES_PER_PROFILE_BYTE,
     ENV_PROFILE_DIRS,
     Budget,
-    Estimate,
     LimitError,
+    ResourceEstimate,
     case_budget,
     format_bytes,
     harmonics_memory,
@@ -39,8 +39,8 @@ from runout.case.limits import (
 from runout.case.limits import check as check_estimate
 from runout.geometry.bearing import BallBearing, Bearing, Material, RollerBearing
 from runout.geometry.imperfections import (
+    BearingImperfections,
     Harmonics,
-    Imperfections,
     ProfileError,
     Slant,
     from_profile,
@@ -194,7 +194,7 @@ def _check_harmonics_budget(spec: CaseSpec, z: int, limits: Budget) -> None:
     key = max(counts, key=lambda c: c[1])[0]
     memory = harmonics_memory(total)
     check_estimate(
-        Estimate(memory, 0.0, key, key, f"{total} harmonics", f"{total} harmonics"), limits
+        ResourceEstimate(memory, 0.0, key, key, f"{total} harmonics", f"{total} harmonics"), limits
     )
 
 
@@ -219,7 +219,7 @@ def _check_amplitude_exists(key: str, part: str, harmonics: Harmonics, bearing: 
         )
 
 
-def _check_element_errors(bearing: Bearing, imp: Imperfections) -> None:
+def _check_element_errors(bearing: Bearing, imp: BearingImperfections) -> None:
     """Diameter and pitch errors of elements that could not be assembled.
 
     * a diameter D + Δd_j <= 0 is no element;
@@ -352,11 +352,11 @@ def _build_imperfections(
     base_dir: Path,
     limits: Budget | None = None,
     profile_data: ProfileData | None = None,
-) -> Imperfections:
+) -> BearingImperfections:
     z = bearing.elements
     limits = case_budget(spec) if limits is None else limits
     _check_harmonics_budget(spec, z, limits)
-    imp = Imperfections.perfect(z)
+    imp = BearingImperfections.perfect(z)
 
     def target(part: str) -> str:
         return "element" if part in ("ball", "roller") else part

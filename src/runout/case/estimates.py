@@ -26,8 +26,8 @@ from runout.case.limits import (
     COST_ROLLER,
     COST_RUN,
     MAX_PHASE_ANGLE,
-    Estimate,
     LimitError,
+    ResourceEstimate,
     case_budget,
     check,
     format_seconds,
@@ -133,7 +133,7 @@ def _highest_order_key(spec: Any) -> str:
     return key
 
 
-def estimate_run(case: Any, model: str) -> Estimate:
+def estimate_run(case: Any, model: str) -> ResourceEstimate:
     """Memory and time of one run of ``model`` on ``case`` (before any allocation).
 
     The dynamic model's step count needs its natural frequencies;
@@ -196,7 +196,7 @@ def estimate_run(case: Any, model: str) -> Estimate:
         key = "analysis.samples"
         if convexity > 0.5 * seconds:
             what = f"convexity of {z + 2} parts on {grid:.4g} angles x {per} harmonics"
-            return Estimate(
+            return ResourceEstimate(
                 memory, seconds + COST_RUN, key, _highest_order_key(case.spec), what, what
             )
     elif model == "dynamic":
@@ -211,10 +211,10 @@ def estimate_run(case: Any, model: str) -> Estimate:
     if s.ring_harmonics + s.element_harmonics > 64 * z and model != "equilibrium":
         # many harmonics: the orders, not the record, are what to cut
         time_key = harmonics_key
-    return Estimate(memory, seconds, key, time_key, what, what)
+    return ResourceEstimate(memory, seconds, key, time_key, what, what)
 
 
-def _estimate_spindle(case: Any) -> Estimate:
+def _estimate_spindle(case: Any) -> ResourceEstimate:
     """A spindle run: each bearing's contacts as a quasi_static_3d run of it, the line fit
     repeated at the nose and at every bearing's plane, the contact arrays of one chunk of
     instants and the shaft's record. Measured after compilation: examples/spindle_hdd.toml
@@ -248,7 +248,7 @@ def _estimate_spindle(case: Any) -> Estimate:
     what = (
         f"{len(layout.bearings)} bearings, {balls} balls: {worst.time_what} each, {fits} line fits"
     )
-    return Estimate(memory, seconds, worst.memory_key, worst.time_key, what, what)
+    return ResourceEstimate(memory, seconds, worst.memory_key, worst.time_key, what, what)
 
 
 def study_points(case: Any) -> int:
@@ -340,7 +340,7 @@ def batched_memory(case: Any, workers: int = 1) -> float:
     return copies * shared + concurrent * one_pass
 
 
-def estimate_study(case: Any, per_run: Estimate) -> Estimate:
+def estimate_study(case: Any, per_run: ResourceEstimate) -> ResourceEstimate:
     """Memory and time of a case's whole ``[study]`` from the estimate of one run.
 
     The records are not kept (each chunk is summarised as it finishes): memory is one run's
@@ -358,7 +358,7 @@ def estimate_study(case: Any, per_run: Estimate) -> Estimate:
         each = case.analysis.samples * case.bearing.elements * COST_BATCH
     seconds = points * each
     what = f"{points} runs x about {format_seconds(each)} each"
-    return Estimate(memory, seconds, key, key, f"{points} runs", what)
+    return ResourceEstimate(memory, seconds, key, key, f"{points} runs", what)
 
 
 def check_limits(case: Any) -> None:

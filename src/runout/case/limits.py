@@ -51,8 +51,8 @@ __all__ = [
     "MAX_ORDER",
     "MAX_TOML_DEPTH",
     "Budget",
-    "Estimate",
     "LimitError",
+    "ResourceEstimate",
     "budget",
     "check",
     "format_bytes",
@@ -166,7 +166,7 @@ class Budget:
 
 
 @dataclass(frozen=True)
-class Estimate:
+class ResourceEstimate:
     """What one run or study is expected to need.
 
     Attributes
@@ -268,7 +268,7 @@ def case_budget(case_or_spec: Any) -> Budget:
     )
 
 
-def check(estimate: Estimate, limits: Budget) -> None:
+def check(estimate: ResourceEstimate, limits: Budget) -> None:
     """Refuse an estimate beyond the budget, naming the key to change.
 
     Raises
@@ -347,3 +347,18 @@ def profile_allowed(path: Path, base_dir: Path, environ: Mapping[str, str] | Non
     """True when ``path`` (resolved, symbolic links followed) lies under an allowed directory."""
     resolved = path.resolve()
     return any(resolved.is_relative_to(root) for root in profile_roots(base_dir, environ))
+
+
+def __getattr__(name: str) -> object:
+    """``Estimate`` (renamed :class:`ResourceEstimate`: one name, one class; a diagnosis'
+    :class:`runout.diagnose.Estimate` is a part deviation), for one release."""
+    if name == "Estimate":
+        import warnings
+
+        warnings.warn(
+            "runout.case.limits.Estimate is deprecated: it is ResourceEstimate",
+            DeprecationWarning,
+            stacklevel=2,
+        )
+        return ResourceEstimate
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

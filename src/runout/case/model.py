@@ -62,7 +62,7 @@ from runout.case._schema import _table_type as _table_type  # runout.api, runout
 from runout.case.estimates import check_limits
 from runout.case.limits import MAX_CASE_FILE_BYTES, MAX_TOML_DEPTH, case_budget, format_bytes
 from runout.geometry.bearing import BallBearing, Bearing, Material, Operation, RollerBearing
-from runout.geometry.imperfections import Imperfections
+from runout.geometry.imperfections import BearingImperfections
 from runout.geometry.spindle_layout import SpindleBearing, SpindleLayout
 
 __all__ = [
@@ -214,7 +214,7 @@ class Case:
     title : str
     bearing : BallBearing or RollerBearing
     operation : Operation
-    imperfections : runout.geometry.imperfections.Imperfections
+    imperfections : runout.geometry.imperfections.BearingImperfections
         The resolved harmonics of every part (what the models use).
     analysis : Analysis
     spec : CaseSpec
@@ -231,7 +231,7 @@ class Case:
     title: str
     bearing: Bearing
     operation: Operation
-    imperfections: Imperfections
+    imperfections: BearingImperfections
     analysis: Analysis
     spec: CaseSpec = field(repr=False)
     profile_data: ProfileData = field(default_factory=dict, repr=False, compare=False)
@@ -270,7 +270,7 @@ class Case:
             ``[operation]``; default a bearing at rest without load.
         imperfections : runout.Imperfections, optional
             The builder of ``[[waviness]]``, ``[[waviness_spectrum]]``, ``[[profile]]``,
-            ``[slant]`` and ``[elements]`` (:class:`runout.api.Imperfections`); default none.
+            ``[slant]`` and ``[elements]`` (:class:`runout.case.builder.Imperfections`); default none.
         title : str
         analysis, dynamics, study : mapping, optional
             The ``[analysis]``, ``[dynamics]`` and ``[study]`` keys, by their case-file names:

@@ -20,7 +20,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from numpy.typing import NDArray
 
-from runout.geometry.imperfections import Harmonics, Imperfections, Slant
+from runout.geometry.imperfections import BearingImperfections, Harmonics, Slant
 from runout.models.linear import Rates, closed_form_terms
 
 __all__ = ["Contribution", "Equation", "Unknown", "equations", "unknown_gains"]
@@ -104,13 +104,13 @@ def unknown_gains(
     ms = list(range(2, ball_lobes + 1, 2))
     out: list[tuple[float, Contribution]] = []
 
-    def build(phase: float, with_size: bool) -> Imperfections:
+    def build(phase: float, with_size: bool) -> BearingImperfections:
         ring = Harmonics(ks, np.ones(len(ks)), np.full(len(ks), phase))
         if with_size:
             elements = [Harmonics([0], [1.0]) for _ in range(z)]
-            return Imperfections(elements=elements)
+            return BearingImperfections(elements=elements)
         el = [Harmonics(ms, np.ones(len(ms)), np.full(len(ms), phase)) for _ in range(z)]
-        return Imperfections(
+        return BearingImperfections(
             inner=ring,
             outer=ring,
             elements=el,

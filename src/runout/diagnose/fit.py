@@ -204,7 +204,7 @@ class Diagnosis:
         Rms of the residual per channel [m] or [m/s].
     detection_limit_m : float
         Smallest ring deviation a line of this record would show [m] (median over the lines).
-    imperfections : runout.geometry.imperfections.Imperfections
+    imperfections : runout.geometry.imperfections.BearingImperfections
         The minimum-norm deviations of the detected lines (what ``--out``'s case file holds).
     case : runout.case.model.Case
         The case the bearing and operation came from.
@@ -865,8 +865,8 @@ def _has_imperfections(case: Any) -> bool:
 
 
 def _imperfections(solution: dict[Unknown, complex], z: int) -> Any:
-    """Imperfections holding the minimum-norm solution."""
-    from runout.geometry.imperfections import Harmonics, Imperfections, Slant
+    """BearingImperfections holding the minimum-norm solution."""
+    from runout.geometry.imperfections import BearingImperfections, Harmonics, Slant
 
     rings: dict[int, tuple[list[int], list[complex]]] = {0: ([], []), 1: ([], [])}
     balls: list[tuple[list[int], list[complex]]] = [([], []) for _ in range(z)]
@@ -886,7 +886,7 @@ def _imperfections(solution: dict[Unknown, complex], z: int) -> Any:
             return Harmonics.empty()
         return Harmonics.from_complex(k, a)
 
-    return Imperfections(
+    return BearingImperfections(
         inner=harm(*rings[0]),
         outer=harm(*rings[1]),
         elements=[harm(*b) for b in balls],

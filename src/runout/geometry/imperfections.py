@@ -21,7 +21,7 @@ Conventions
   = 2 Σ_{k even} a_k cos(kθ + φ_k)`` (seed 002 eq. 26): odd orders cancel, even orders double
   (:meth:`Harmonics.diameter_deviation`).
 * Rolling elements are numbered 1..Z in user-facing arguments (the ``element`` argument of
-  :meth:`Imperfections.add`, the ``element`` key of case files and of :meth:`summary` rows) and
+  :meth:`BearingImperfections.add`, the ``element`` key of case files and of :meth:`summary` rows) and
   indexed 0..Z-1 everywhere else (tuple positions, ``index`` arguments, arrays).
 * ``pitch_errors[j]`` is the angular position error of element j relative to equal spacing
   [rad], positive counter-clockwise (ahead of its nominal place in the +θ sense).
@@ -31,7 +31,7 @@ Conventions
 How the source papers write the same quantities
 -----------------------------------------------
 ============================  ===============================================================
-paper                         mapping onto :class:`Imperfections`
+paper                         mapping onto :class:`BearingImperfections`
 ============================  ===============================================================
 seed 002 eq. 23-25            ``W_ik, φ_ik`` → ``inner``; ``W_ok, φ_ok`` → ``outer``;
                               ``W_bzk, φ_bzk`` (ball radius) → ``elements[z]`` (z = 0..Z-1).
@@ -102,9 +102,9 @@ if TYPE_CHECKING:
     from runout.geometry.bearing import Bearing
 
 __all__ = [
+    "BearingImperfections",
     "Harmonics",
     "ImperfectionError",
-    "Imperfections",
     "ProfileError",
     "ProfileWarning",
     "Slant",
@@ -255,7 +255,7 @@ class Slant:
 
 
 # --------------------------------------------------------------------------------------------
-# Imperfections of a whole bearing
+# BearingImperfections of a whole bearing
 # --------------------------------------------------------------------------------------------
 def _element_vector(name: str, values: ArrayLike | None, n: int) -> NDArray[np.float64]:
     if values is None:
@@ -269,7 +269,7 @@ def _element_vector(name: str, values: ArrayLike | None, n: int) -> NDArray[np.f
 
 
 @dataclass(frozen=True, init=False, eq=False)
-class Imperfections:
+class BearingImperfections:
     """Every geometric imperfection of one bearing.
 
     Parameters
@@ -290,7 +290,7 @@ class Imperfections:
     Notes
     -----
     Z is taken from ``elements``, else from ``diameter_errors`` or ``pitch_errors``; missing
-    per-element data default to perfect: ``Imperfections(elements=8, outer=...)`` is a bearing
+    per-element data default to perfect: ``BearingImperfections(elements=8, outer=...)`` is a bearing
     of 8 perfect elements with a wavy outer raceway. Without any of them Z is unknown and the
     constructor refuses. :class:`runout.Imperfections` (:mod:`runout.api`) is the builder
     that reads like the case file and takes Z from the bearing.
@@ -374,7 +374,7 @@ class Imperfections:
         object.__setattr__(self, "slant", slant)
 
     @classmethod
-    def perfect(cls, n_elements: int) -> Imperfections:
+    def perfect(cls, n_elements: int) -> BearingImperfections:
         """A bearing of ``n_elements`` perfect parts."""
         if isinstance(n_elements, bool) or not isinstance(n_elements, int | np.integer):
             raise ImperfectionError("n_elements", f"must be an integer, got {n_elements!r}")
@@ -438,7 +438,7 @@ class Imperfections:
         return harmonic_sum_rows(np.ascontiguousarray(t), k, a, p, offsets)
 
     # --- builders -----------------------------------------------------------------------------
-    def _replace(self, **changes: Any) -> Imperfections:
+    def _replace(self, **changes: Any) -> BearingImperfections:
         kwargs: dict[str, Any] = {
             "inner": self.inner,
             "outer": self.outer,
@@ -448,17 +448,17 @@ class Imperfections:
             "slant": self.slant,
         }
         kwargs.update(changes)
-        return Imperfections(**kwargs)
+        return BearingImperfections(**kwargs)
 
-    def with_inner(self, harmonics: Harmonics) -> Imperfections:
+    def with_inner(self, harmonics: Harmonics) -> BearingImperfections:
         """Copy with the inner raceway replaced."""
         return self._replace(inner=harmonics)
 
-    def with_outer(self, harmonics: Harmonics) -> Imperfections:
+    def with_outer(self, harmonics: Harmonics) -> BearingImperfections:
         """Copy with the outer raceway replaced."""
         return self._replace(outer=harmonics)
 
-    def with_elements(self, elements: Sequence[Harmonics]) -> Imperfections:
+    def with_elements(self, elements: Sequence[Harmonics]) -> BearingImperfections:
         """Copy with every element's waviness replaced (length Z)."""
         if len(elements) != self.n_elements:
             raise ImperfectionError(
@@ -467,11 +467,11 @@ class Imperfections:
             )
         return self._replace(elements=tuple(elements))
 
-    def with_diameter_errors(self, values: ArrayLike) -> Imperfections:
+    def with_diameter_errors(self, values: ArrayLike) -> BearingImperfections:
         """Copy with new element diameter errors [m], shape (Z,)."""
         return self._replace(diameter_errors=values)
 
-    def with_pitch_errors(self, values: ArrayLike) -> Imperfections:
+    def with_pitch_errors(self, values: ArrayLike) -> BearingImperfections:
         """Copy with new element pitch errors [rad], shape (Z,)."""
         return self._replace(pitch_errors=values)
 
@@ -479,7 +479,7 @@ class Imperfections:
         self,
         diameter_errors: ArrayLike | None = None,
         pitch_errors: ArrayLike | None = None,
-    ) -> Imperfections:
+    ) -> BearingImperfections:
         """Copy with the given per-element errors replaced (None keeps the current ones)."""
         changes: dict[str, Any] = {}
         if diameter_errors is not None:
@@ -488,11 +488,11 @@ class Imperfections:
             changes["pitch_errors"] = pitch_errors
         return self._replace(**changes)
 
-    def with_slant(self, slant: Slant | None) -> Imperfections:
+    def with_slant(self, slant: Slant | None) -> BearingImperfections:
         """Copy with the slant replaced (None removes it)."""
         return self._replace(slant=slant)
 
-    def element_phases_from_fixed_frame(self) -> Imperfections:
+    def element_phases_from_fixed_frame(self) -> BearingImperfections:
         r"""Copy with every element's waviness re-expressed from the fixed to the cage frame.
 
         Two body frames of rolling element j (0-based) are in use; both turn with the element's
@@ -519,7 +519,7 @@ class Imperfections:
 
         Returns
         -------
-        Imperfections
+        BearingImperfections
             The same imperfections with element phases in the cage frame [rad].
         """
         z = self.n_elements
@@ -533,7 +533,7 @@ class Imperfections:
         part: Part | str,
         harmonics: Harmonics,
         element: int | Sequence[int] | None = None,
-    ) -> Imperfections:
+    ) -> BearingImperfections:
         """Copy with ``harmonics`` added to a part's radius deviation.
 
         Parameters
@@ -645,7 +645,7 @@ class Imperfections:
     def __repr__(self) -> str:
         waved = sum(not h.is_empty for h in self.elements)
         return (
-            f"Imperfections(Z={self.n_elements}, inner={self.inner!r}, outer={self.outer!r}, "
+            f"BearingImperfections(Z={self.n_elements}, inner={self.inner!r}, outer={self.outer!r}, "
             f"elements with waviness={waved}, "
             f"max |diameter error|={np.abs(self.diameter_errors).max():.3g} m, "
             f"max |pitch error|={np.abs(self.pitch_errors).max():.3g} rad, slant={self.slant!r})"
@@ -656,7 +656,7 @@ def anderon_608_example(
     seed: int | None = None,
     rng: np.random.Generator | None = None,
     ball_waviness: Literal["first", "all"] = "first",
-) -> Imperfections:
+) -> BearingImperfections:
     """The deviations of seed 002 §3.1 (eq. 43-47) for the 608 bearing of Tab. 1 (Z = 7).
 
     * eq. 43: inner-ring eccentricity W_i1 = 2.5 µm, phase 0;
@@ -684,4 +684,22 @@ def anderon_608_example(
     n_balls = 1 if ball_waviness == "first" else 7
     balls = [spectral_law((2, 286), 0.1 * um, -1.5, rng=gen) for _ in range(n_balls)]
     balls += [Harmonics.empty()] * (7 - n_balls)
-    return Imperfections(inner=inner, outer=outer, elements=balls, slant=Slant(0.05 * um, 0.0))
+    return BearingImperfections(
+        inner=inner, outer=outer, elements=balls, slant=Slant(0.05 * um, 0.0)
+    )
+
+
+def __getattr__(name: str) -> object:
+    """``Imperfections`` (renamed :class:`BearingImperfections`: one name, one class), for one
+    release; ``runout.Imperfections`` is the builder of the case file's tables."""
+    if name == "Imperfections":
+        import warnings
+
+        warnings.warn(
+            "runout.geometry.imperfections.Imperfections is deprecated: it is "
+            "BearingImperfections (runout.Imperfections is the builder of the case tables)",
+            DeprecationWarning,
+            stacklevel=2,
+        )
+        return BearingImperfections
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

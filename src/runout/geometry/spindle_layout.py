@@ -10,7 +10,7 @@ from dataclasses import dataclass
 from typing import Literal
 
 from runout.geometry.bearing import Bearing
-from runout.geometry.imperfections import Imperfections
+from runout.geometry.imperfections import BearingImperfections
 
 __all__ = ["Arrangement", "SpindleBearing", "SpindleLayout"]
 
@@ -28,14 +28,14 @@ class SpindleBearing:
         Axial coordinate of its ball-set plane along the shaft [m].
     bearing : BallBearing or RollerBearing
         (the spindle model refuses roller bearings: runout.case.conventions)
-    imperfections : Imperfections
+    imperfections : BearingImperfections
         Its waviness, size and pitch errors.
     """
 
     name: str
     position: float
     bearing: Bearing
-    imperfections: Imperfections
+    imperfections: BearingImperfections
 
 
 @dataclass(frozen=True)

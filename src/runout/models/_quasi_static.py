@@ -13,7 +13,7 @@ Conventions (both models)
 * The contact point of ball j in its own frame is at :math:`\pm 2\pi f_b t` (spin relative to
   the cage, seed 000 §2.1, seed 001 eq. 9; the sign is :attr:`Kinematics.contact_rate`'s); the
   diameter deviation along the contact line is
-  :meth:`runout.geometry.imperfections.Imperfections.evaluate_element_diameters` (seed 002 eq. 26).
+  :meth:`runout.geometry.imperfections.BearingImperfections.evaluate_element_diameters` (seed 002 eq. 26).
 """
 
 from __future__ import annotations
@@ -40,7 +40,7 @@ from runout.analysis.result_details import QuasiStaticDetails
 from runout.analysis.results import RunResult
 from runout.base._threads import halves, in_spans
 from runout.base.errors import GeometryError
-from runout.geometry.imperfections import Harmonics, Imperfections
+from runout.geometry.imperfections import BearingImperfections, Harmonics
 from runout.geometry.kinematics import bearing_frequencies
 
 __all__ = [
@@ -151,13 +151,13 @@ class ContactDeviations:
 
 
 def contact_deviations(
-    imperfections: Imperfections, kin: Kinematics, time: NDArray[np.float64]
+    imperfections: BearingImperfections, kin: Kinematics, time: NDArray[np.float64]
 ) -> ContactDeviations:
     """Evaluate the raceway and ball deviations at every ball contact and instant.
 
     Parameters
     ----------
-    imperfections : Imperfections
+    imperfections : BearingImperfections
         Waviness, size and pitch errors (Z elements).
     kin : Kinematics
         Signed ring, cage and spin frequencies [Hz].
@@ -280,7 +280,7 @@ class ContactSources:
 
 
 def contact_sources(
-    imperfections: Imperfections,
+    imperfections: BearingImperfections,
     kin: Kinematics,
     *,
     ring_gain: float,
@@ -292,7 +292,7 @@ def contact_sources(
 
     Parameters
     ----------
-    imperfections : Imperfections
+    imperfections : BearingImperfections
         Waviness, size and pitch errors (Z elements).
     kin : Kinematics
         Signed ring, cage and spin frequencies [Hz].
@@ -696,7 +696,9 @@ def _largest(h: Harmonics, count: int) -> list[int]:
     return sorted(k for _, k in keep[:count])
 
 
-def _pair_lines(imperfections: Imperfections, kin: Kinematics, axial: bool) -> list[Candidate]:
+def _pair_lines(
+    imperfections: BearingImperfections, kin: Kinematics, axial: bool
+) -> list[Candidate]:
     r"""Second-order lines of two ring harmonics (seed 000 §2.2.2, eq. 7).
 
     The product of harmonic :math:`k_1` of part 1 (ring speed :math:`f_1`) and :math:`k_2` of
@@ -768,7 +770,7 @@ class PhasorTable:
 
 
 def linear_phasors(
-    imperfections: Imperfections, kin: Kinematics, contact_angle: float
+    imperfections: BearingImperfections, kin: Kinematics, contact_angle: float
 ) -> PhasorTable:
     """Predicted first-order phasors of each ring harmonic and each element deviation.
 
@@ -802,7 +804,7 @@ def linear_phasors(
 
 
 def _axial_phasors(
-    table: PhasorTable, imperfections: Imperfections, kin: Kinematics, contact_angle: float
+    table: PhasorTable, imperfections: BearingImperfections, kin: Kinematics, contact_angle: float
 ) -> None:
     r"""First-order axial phasors (seed 000 eq. 5 linearised, shaft frame).
 
@@ -839,7 +841,7 @@ def _axial_phasors(
 
 
 def predicted_lines(
-    imperfections: Imperfections,
+    imperfections: BearingImperfections,
     kin: Kinematics,
     *,
     axial: bool = True,
@@ -885,7 +887,7 @@ def predicted_lines(
     return out
 
 
-def _load_zone_lines(imperfections: Imperfections, kin: Kinematics) -> list[Candidate]:
+def _load_zone_lines(imperfections: BearingImperfections, kin: Kinematics) -> list[Candidate]:
     """Lines a radial load adds: the stiffness of the load zone, fixed in space, reads a
     turning ring's k lobes at k f_ring (and its element-passage sidebands |k f_ring ± m Z f_c|),
     and an element's 2n lobes at 2n f_b (all elements swelling together move the shaft along
@@ -922,7 +924,7 @@ def _load_zone_lines(imperfections: Imperfections, kin: Kinematics) -> list[Cand
 
 
 def decomposition_kinematic(
-    kin: Kinematics, imperfections: Imperfections, *, unbalance: bool = False
+    kin: Kinematics, imperfections: BearingImperfections, *, unbalance: bool = False
 ) -> Kinematic:
     """The frequencies residual lines are attributed to (see :class:`Kinematic`)."""
     wavy = any(np.any(h.orders > 0) for h in imperfections.element_diameter_deviations())

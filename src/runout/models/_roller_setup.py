@@ -19,7 +19,7 @@ from numpy.typing import NDArray
 
 from runout.base.errors import GeometryError
 from runout.geometry.bearing import BallBearing, Bearing, Operation, RollerBearing
-from runout.geometry.imperfections import Harmonics, Imperfections
+from runout.geometry.imperfections import BearingImperfections, Harmonics
 from runout.models._roller_kernels import Bodies
 
 FloatArray = NDArray[np.float64]
@@ -129,7 +129,7 @@ def elements_to_fixed_frame(
     differ by the roller's position β_j, so :math:`\psi_f = \psi_c + \beta_j` and
     :math:`\varphi^f_k = \varphi^c_k - k\beta_j` (``shifted(-β_j)``) at every later angle
     too, whatever the spin. Inverse of
-    :meth:`runout.geometry.imperfections.Imperfections.element_phases_from_fixed_frame`.
+    :meth:`runout.geometry.imperfections.BearingImperfections.element_phases_from_fixed_frame`.
 
     Parameters
     ----------
@@ -147,7 +147,7 @@ def elements_to_fixed_frame(
 
 
 def geometry_from(
-    bearing: Bearing, imperfections: Imperfections, operation: Operation | None = None
+    bearing: Bearing, imperfections: BearingImperfections, operation: Operation | None = None
 ) -> ConstraintGeometry:
     """Build the model geometry from a bearing, its imperfections and the operation.
 
@@ -156,7 +156,7 @@ def geometry_from(
     bearing : RollerBearing or BallBearing
         A ball bearing is taken in its radial plane (contact angle 0, balls as circles of their
         diameter, raceways at the groove bottoms); see the module Notes.
-    imperfections : Imperfections
+    imperfections : BearingImperfections
         ``inner``/``outer`` roundness (order 0 = radius error, i.e. Δd/2 of eq. 4),
         ``elements`` roundness in the cage frame (converted to the fixed frame of eq. 7 by
         :func:`elements_to_fixed_frame`), ``diameter_errors`` (ΔD_j of eq. 4) and

@@ -79,7 +79,7 @@ from runout.analysis.spectrum import (
 from runout.base.errors import GeometryError
 from runout.geometry.attribution import attribution_rows
 from runout.geometry.bearing import Bearing, Operation
-from runout.geometry.imperfections import Harmonics, Imperfections
+from runout.geometry.imperfections import BearingImperfections, Harmonics
 from runout.geometry.kinematics import Frequencies, bearing_frequencies, pitch_ratio
 
 __all__ = [
@@ -292,7 +292,7 @@ def _ring_terms(
 
 
 def closed_form_terms(
-    imperfections: Imperfections,
+    imperfections: BearingImperfections,
     r: Rates,
     contact_angle: float,
     variant: str = "radial_spring",
@@ -315,7 +315,7 @@ def closed_form_terms(
 
     Parameters
     ----------
-    imperfections : Imperfections
+    imperfections : BearingImperfections
         Deviations of the parts [m] (Z ≥ 3 elements).
     r : Rates
         From :func:`rates`.
@@ -737,7 +737,7 @@ def solve(r: NDArray[np.complex128], p: NDArray[np.complex128], z: int) -> NDArr
 
 
 def direct_sum(
-    imperfections: Imperfections,
+    imperfections: BearingImperfections,
     r: Rates,
     contact_angle: float,
     theta: ArrayLike,
@@ -751,7 +751,7 @@ def direct_sum(
 
     Parameters
     ----------
-    imperfections : Imperfections
+    imperfections : BearingImperfections
         Deviations [m].
     r : Rates
         From :func:`rates`.

@@ -73,7 +73,7 @@ Notes
   spin relative to the cage, (γ₂ + γ₁)/α = f_b/f_r, in both readings. "Every roller, 8 lobes,
   phase 0" thus shows the lobe's peak at every roller's outer contact at α = 0 (the paper's
   Fig. 11 reading, all rollers alike in the fixed frame, is
-  ``Imperfections.element_phases_from_fixed_frame()``, case key ``[elements] phase_frame =
+  ``BearingImperfections.element_phases_from_fixed_frame()``, case key ``[elements] phase_frame =
   "fixed"``: 2.003 µm over 540°; the cage reading, every roller alike relative to the cage,
   gives 2.551 µm).
 * Seed 004 eq. 15 and 16 write the roundness terms with sin where eq. 5, 7, 10 and 11 use cos;
@@ -103,7 +103,7 @@ from numpy.typing import NDArray
 
 from runout.analysis.decompose import Candidate, Kinematic, fit_lines, split_runout
 from runout.analysis.lines import Component, Runout, Source
-from runout.analysis.result_details import Iso492, RollerContacts, RollerDetails
+from runout.analysis.result_details import HeldRollers, Iso492, RollerDetails
 from runout.analysis.results import RunResult
 from runout.geometry.bearing import BallBearing, Operation
 from runout.geometry.imperfections import Harmonics
@@ -341,7 +341,7 @@ def run(case: Case) -> RunResult:
     details = RollerDetails(
         horizontal_pp_m=float(np.ptp(sol.horizontal)),
         explained_fraction=explained,
-        contacts=RollerContacts(
+        contacts=HeldRollers(
             rollers_touched=tuple(
                 sorted({int(j) + 1 for j in np.flatnonzero(sol.touching.any(0))})
             ),

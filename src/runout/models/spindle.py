@@ -80,7 +80,7 @@ from runout.analysis.results import RunResult
 from runout.base.errors import ContactLossError, ConvergenceError, GeometryError, NumericalError
 from runout.geometry.bearing import BallBearing
 from runout.geometry.contact import ball_race_contacts
-from runout.geometry.imperfections import Imperfections
+from runout.geometry.imperfections import BearingImperfections
 from runout.geometry.kinematics import ball_spin_frequency, bearing_frequencies, cage_frequency
 from runout.geometry.loading import operating_contact_angle
 from runout.geometry.spindle_layout import SpindleLayout
@@ -396,7 +396,7 @@ def _raise(status: int, instant: int, time: NDArray[np.float64]) -> None:
 
 
 def contact_arrays(
-    st: Setup, imperfections: list[Imperfections], t: NDArray[np.float64]
+    st: Setup, imperfections: list[BearingImperfections], t: NDArray[np.float64]
 ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
     """Approach at q = 0 and cos θ_j, sin θ_j of every ball at ``t``, shape (n, N) each."""
     parts = []
@@ -417,7 +417,7 @@ def contact_arrays(
 
 
 def solve(
-    st: Setup, imperfections: list[Imperfections], time: NDArray[np.float64]
+    st: Setup, imperfections: list[BearingImperfections], time: NDArray[np.float64]
 ) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
     """Shaft coordinates q at every instant, shape (n, m), and unloaded-ball counts (n,).
 
@@ -580,7 +580,7 @@ def static_stiffness(st: Setup) -> tuple[NDArray[np.float64], NDArray[np.float64
 
 def _bearing_lines(
     st: Setup,
-    imperfections: list[Imperfections],
+    imperfections: list[BearingImperfections],
     loaded: bool,
     alone: list[list[Any]] | None = None,
 ) -> list[Candidate]:
@@ -649,7 +649,7 @@ def run(case: Case) -> RunResult:
         alone = []
         for index, imp in enumerate(imps):
             own = [
-                imp if i == index else Imperfections.perfect(other.n_elements)
+                imp if i == index else BearingImperfections.perfect(other.n_elements)
                 for i, other in enumerate(imps)
             ]
             q_own, _ = solve(st, own, t)

@@ -333,7 +333,7 @@ def verify(
     """
     from runout.analysis.spectrum import extract_lines
     from runout.case.model import Case
-    from runout.geometry.imperfections import Harmonics, Imperfections
+    from runout.geometry.imperfections import BearingImperfections, Harmonics
     from runout.models import quasi_static_2d as qs2
     from runout.models._quasi_static import time_grid
 
@@ -348,7 +348,7 @@ def verify(
         Harmonics(k, 0.5 * np.abs(f[j]), np.angle(f[j])) if f.shape[1] else Harmonics.empty()
         for j in range(z)
     ]
-    imp = Imperfections(elements=elements, diameter_errors=d)
+    imp = BearingImperfections(elements=elements, diameter_errors=d)
     variant = Case(
         path=case.path,
         title=case.title,

@@ -38,8 +38,8 @@ class Truth:
     deviations: dict[tuple[str, int, int | None], tuple[float, float]]
 
     def imperfections(self, z: int) -> Any:
-        """The :class:`runout.geometry.imperfections.Imperfections` of these deviations."""
-        from runout.geometry.imperfections import Harmonics, Imperfections
+        """The :class:`runout.geometry.imperfections.BearingImperfections` of these deviations."""
+        from runout.geometry.imperfections import BearingImperfections, Harmonics
 
         ring: dict[str, tuple[list[int], list[float], list[float]]] = {
             "inner": ([], [], []),
@@ -51,7 +51,7 @@ class Truth:
             target[0].append(k)
             target[1].append(a)
             target[2].append(p)
-        return Imperfections(
+        return BearingImperfections(
             inner=Harmonics(*ring["inner"]) if ring["inner"][0] else None,
             outer=Harmonics(*ring["outer"]) if ring["outer"][0] else None,
             elements=[Harmonics(*b) if b[0] else Harmonics.empty() for b in balls],

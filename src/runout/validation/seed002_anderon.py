@@ -23,7 +23,7 @@ from runout.validation.core import UM, Check, bind
 if TYPE_CHECKING:
     from runout.case.model import Case
     from runout.geometry.bearing import BallBearing, Operation
-    from runout.geometry.imperfections import Imperfections
+    from runout.geometry.imperfections import BearingImperfections
 
 __all__ = [
     "BANDS",
@@ -345,7 +345,7 @@ DFT_REVOLUTIONS, DFT_SAMPLES_PER_REV = 6, 1024
 
 
 def anderon_band_values(
-    bearing: BallBearing, operation: Operation, imperfections: Imperfections
+    bearing: BallBearing, operation: Operation, imperfections: BearingImperfections
 ) -> tuple[dict[str, float], dict[str, float]]:
     """(exact-line values, six-revolution rectangular DFT values) of x [Anderon].
 

@@ -62,14 +62,14 @@ def eq17_gap(clearance: float) -> float:
         raceway diameter is changed to give it).
     """
     from runout import RollerBearing
-    from runout.geometry.imperfections import Imperfections
+    from runout.geometry.imperfections import BearingImperfections
     from runout.models import roller_constraint as rc
 
     b = nu209_bearing()
     d_i = b.outer_raceway_diameter - 2 * b.element_diameter - clearance
     bearing = RollerBearing(b.elements, b.element_diameter, d_i, b.outer_raceway_diameter)
     alpha = rc.rotation_angles(1.0, 1441)
-    sol = rc.solve(rc.geometry_from(bearing, Imperfections.perfect(b.elements)), alpha)
+    sol = rc.solve(rc.geometry_from(bearing, BearingImperfections.perfect(b.elements)), alpha)
     ref = rc.analytic_circular(d_i, b.outer_raceway_diameter, b.element_diameter, b.elements, alpha)
     return float(np.max(np.abs(sol.centre[:, 1] - ref[:, 1]) / np.abs(ref[:, 1])))
 
@@ -86,7 +86,7 @@ def ellipse_gaps(semi_minor: float) -> tuple[float, float]:
     [m]; "exact" is the closest distance (a parallel curve), eq. 18–21 the paper's.
     """
     from runout import RollerBearing
-    from runout.geometry.imperfections import Imperfections
+    from runout.geometry.imperfections import BearingImperfections
     from runout.models import roller_constraint as rc
 
     b = nu209_bearing()
@@ -94,7 +94,9 @@ def ellipse_gaps(semi_minor: float) -> tuple[float, float]:
     a = ELLIPSE_SEMI_MAJOR
     mean, harm = rc.ellipse_harmonics(a, semi_minor)
     bearing = RollerBearing(z, dw, 2 * a, de)
-    geo = rc.geometry_from(bearing, Imperfections.perfect(z)).replace(inner_radius=mean, inner=harm)
+    geo = rc.geometry_from(bearing, BearingImperfections.perfect(z)).replace(
+        inner_radius=mean, inner=harm
+    )
     alpha = rc.rotation_angles(1.0, 97)
     ours = rc.solve(geo, alpha).centre
     exact = np.array([rc.ellipse_position_exact(a, semi_minor, de, dw, z, x) for x in alpha])
