@@ -20,6 +20,8 @@ install: $(STAMP)
 lint: install
 	$(BIN)/ruff check src tests benchmarks examples docs_hooks
 	$(BIN)/ruff format --check src tests benchmarks examples docs_hooks
+	# the layer contract of the stage packages (pyproject.toml [tool.importlinter])
+	$(BIN)/lint-imports
 
 typecheck: install
 	$(BIN)/mypy
