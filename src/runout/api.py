@@ -4,15 +4,16 @@
 same tables would hold, validates it exactly as :func:`runout.case.model.load_case` validates a file
 (the same keys, units, messages and budget checks) and runs it with
 :func:`runout.runner.run_model`, which is what ``runout run`` does with a file. A case built
-in code is a :class:`runout.case.model.Case` like any other: :meth:`~runout.case.model.Case.to_toml`
-writes it as a case file that ``runout run`` gives the same results for.
+in code is a :class:`runout.case.model.Case` like any other:
+:meth:`~runout.case.model.Case.to_toml` writes it as a case file that ``runout run`` gives the
+same results for.
 
 :class:`Imperfections` here is a *builder* that reads like the case file's imperfection tables
 (``[[waviness]]``, ``[[waviness_spectrum]]``, ``[[profile]]``, ``[slant]``, ``[elements]``):
 the same keys, units and meanings. It records the tables; the bearing turns them into
 harmonics when the case is built. The resolved harmonics the models use are
-:class:`runout.geometry.imperfections.Imperfections` (``case.imperfections``), the physics class: build
-one directly only to work with the harmonics themselves.
+:class:`runout.geometry.imperfections.BearingImperfections` (``case.imperfections``), the
+physics class: build one directly only to work with the harmonics themselves.
 
 Examples
 --------

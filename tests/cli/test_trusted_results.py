@@ -1,6 +1,7 @@
 """Results a user can trust (issue 14): each finding through the real command line.
 
-Every test here failed before the shared decomposition (runout.analysis.decompose): a roller bearing's
+Every test here failed before the shared decomposition (runout.analysis.decompose): a roller
+bearing's
 rotating-ring runout read as zero, RRO that moved five-fold with the record length, missing
 second-order and load-zone lines, short dynamic records that merged lines without a word, and
 labels of thousands of characters.

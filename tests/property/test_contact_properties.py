@@ -1,4 +1,5 @@
-"""Property-based tests of Hertz contact (runout.geometry.contact) and axial loading (runout.geometry.loading)."""
+"""Property-based tests of Hertz contact (runout.geometry.contact) and axial loading
+(runout.geometry.loading)."""
 
 from __future__ import annotations
 

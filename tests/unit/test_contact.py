@@ -1,4 +1,5 @@
-"""Unit tests of runout.geometry.contact (Hertz point and line contact) and runout.geometry.loading."""
+"""Unit tests of runout.geometry.contact (Hertz point and line contact) and
+runout.geometry.loading."""
 
 from __future__ import annotations
 

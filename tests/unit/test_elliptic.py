@@ -106,7 +106,7 @@ def test_monotone_in_m(m1: float, m2: float) -> None:
 
 
 def test_compiled_loop_is_the_numpy_loop_bit_for_bit() -> None:
-    """Large arrays take the compiled AGM (runout.geometry._elliptic_kernel): same bits as NumPy's."""
+    """Large arrays take the compiled AGM (runout.geometry._elliptic_kernel): NumPy's bits."""
     from runout.geometry import _elliptic as _elliptic
 
     rng = np.random.default_rng(5)

@@ -51,7 +51,7 @@ def test_polynomials_and_transcendentals(c, a, b, xtol, rtol) -> None:  # type: 
 
 @pytest.mark.parametrize("load", [0.5, 20.0, 300.0, 5000.0])
 def test_axial_loading_contact_angle_unchanged(load: float) -> None:
-    """The load-angle relation of runout.geometry.loading gives the same angle with SciPy's brentq."""
+    """runout.geometry.loading's load-angle relation gives the same angle with SciPy's brentq."""
     b = BallBearing(
         elements=8,
         element_diameter=1e-3,

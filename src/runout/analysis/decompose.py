@@ -211,6 +211,25 @@ def resolved_lines(
     The grouping and resolution policy of :func:`fit_lines` (same frequency: one line;
     closer than :data:`JOINT_FIT`/T: not resolved, said in the notes; optional lines only where
     resolvable), for callers that fit many records at once (the batched studies).
+
+    Parameters
+    ----------
+    candidates : sequence of Candidate
+        The lines the model predicts, with their sources.
+    direction : {"radial", "axial"}
+        Which candidates to keep.
+    time : ndarray, shape (n,)
+        Instants of the record [s], uniform (its step and length set the resolution 1/T and
+        the Nyquist frequency).
+    rotation_hz : float
+        Speed of the rotating ring [Hz] (the revolutions a note asks for).
+
+    Returns
+    -------
+    lines : list of (float, list of Source)
+        Each resolvable line: its frequency [Hz] and the sources it carries, by frequency.
+    notes : list of str
+        Lines the record cannot fit or separate, and what would resolve them.
     """
     n = time.size
     duration = n * float(time[1] - time[0])
@@ -226,7 +245,18 @@ def resolved_lines(
 
 def study_key(sources: Sequence[Source]) -> str:
     """A line's identity across the bearings of a study: its sources' labels, element numbers
-    removed, sorted (shares differ from bearing to bearing; the sources do not)."""
+    removed, sorted (shares differ from bearing to bearing; the sources do not).
+
+    Parameters
+    ----------
+    sources : sequence of Source
+        The sources of one line.
+
+    Returns
+    -------
+    str
+        Their labels without element numbers, sorted, joined by ``"; "``.
+    """
     import re
 
     labels = {re.sub(r"^(ball|roller) \d+ ", r"\1 ", s.label()) for s in sources}
@@ -333,7 +363,27 @@ def _shares(sources: list[tuple[Source, complex | None]], fitted: complex) -> li
 
 
 def exact_shares(sources: list[tuple[Source, complex]], fitted: complex) -> list[Source]:
-    """Sources whose phasors are known exactly (and add up to ``fitted``), ranked by share."""
+    """Sources whose phasors are known exactly (and add up to ``fitted``), ranked by share.
+
+    Parameters
+    ----------
+    sources : list of (Source, complex)
+        Each source with its complex amplitude c_i in the line's direction [m].
+    fitted : complex
+        Complex amplitude C of the line [m].
+
+    Returns
+    -------
+    list of Source
+        The sources with ``share`` and ``share_basis`` filled in, largest share first
+        (``"single"`` for a lone source).
+
+    Notes
+    -----
+    Each source's share is Re(c_i C̄)/|C|² with C = Σ c_i, so the shares add up to 1; the
+    phasors are those of the linearised model (seed 002, "Anderon vibration", eq. 33-40), as
+    in the module docstring.
+    """
     return _shares([(s, p) for s, p in sources], fitted)
 
 
@@ -349,9 +399,25 @@ def attribute_frequency(
     combination (fewest multiples, n Z f_c counting as n) wins among those within
     ``tolerance`` [Hz].
 
+    Parameters
+    ----------
+    frequency : float
+        Frequency of a residual peak [Hz].
+    kin : Kinematic
+        The frequencies f_r, f_c, f_b [Hz] and what may enter a combination.
+    tolerance : float
+        Largest distance from ``frequency`` of an admissible combination [Hz].
+
     Returns
     -------
-    (exact frequency [Hz], Source) or None when nothing lies within ``tolerance``.
+    (float, Source) or None
+        The combination's exact frequency [Hz] and a ``"combination"`` source whose formula
+        names it; None when nothing lies within ``tolerance``.
+
+    Notes
+    -----
+    Element deviations act along a diameter, so the element spin f_b enters with even
+    multiples only (seed 002, "Anderon vibration", eq. 26).
     """
     m = MAX_COMBINATION
     z = kin.n_elements
@@ -689,12 +755,14 @@ class RunoutSplit:
     Attributes
     ----------
     runout : Runout
+        Radial, axial, RRO and NRRO p-p [m].
     residual_rro_pp : float
         p-p of the synchronous average of the residual added to RRO [m] (0 when it is not
         above its uncertainty, or the record has fewer than 2 whole revolutions).
     residual_rro_uncertainty : float
         Its uncertainty (rms over a revolution of the across-revolution standard error) [m].
     notes : tuple of str
+        How RRO was formed (the residual's synchronous average when it joined it).
     """
 
     runout: Runout
@@ -722,7 +790,7 @@ def split_runout(
     displacement : ndarray, shape (3, n)
         x, y, z [m].
     direction : ndarray, shape (2,)
-        Unit vector of the radial measuring direction.
+        Unit vector of the radial measuring direction [-].
     components : sequence of Component
         The fitted lines.
     rotation_hz : float
@@ -734,6 +802,11 @@ def split_runout(
     synchronous : bool
         Whether anything turns with the rotating ring (:attr:`Kinematic.synchronous_sources`);
         without it RRO is 0 by construction.
+
+    Returns
+    -------
+    RunoutSplit
+        Radial, axial, RRO and NRRO p-p [m], the residual's share of RRO [m] and notes.
     """
     u = np.asarray(direction, dtype=float)
     radial = u[0] * displacement[0] + u[1] * displacement[1]

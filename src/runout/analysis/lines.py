@@ -53,7 +53,14 @@ class Source:
     share_basis: str = "single"
 
     def label(self) -> str:
-        """A short readable name, e.g. ``"inner 9 lobes: nZ+1, n=1"``."""
+        """A short readable name, e.g. ``"inner 9 lobes: nZ+1, n=1"``.
+
+        Returns
+        -------
+        str
+            Part (and element, lobe count) with the term; the formula for a combination or
+            an unattributed line.
+        """
         if self.part in ("inner", "outer", "ball", "roller"):
             who = self.part if self.element is None else f"{self.part} {self.element}"
             if self.lobes == 0:
@@ -70,12 +77,29 @@ class Source:
         return f"{self.part}: {self.term}" if self.term else self.part
 
     def to_json(self) -> dict[str, Any]:
-        """The JSON contract's source object (its fields, in order)."""
+        """The JSON contract's source object (its fields, in order).
+
+        Returns
+        -------
+        dict
+            The fields by name (``share`` [-]).
+        """
         return asdict(self)
 
 
 def short_label(sources: tuple[Source, ...] | list[Source]) -> str:
-    """The top source's label plus ``+N more``, at most :data:`LABEL_MAX` characters."""
+    """The top source's label plus ``+N more``, at most :data:`LABEL_MAX` characters.
+
+    Parameters
+    ----------
+    sources : tuple or list of Source
+        A line's sources, largest share first.
+
+    Returns
+    -------
+    str
+        The label, cut with an ellipsis where too long; ``""`` without sources.
+    """
     if not sources:
         return ""
     more = f" +{len(sources) - 1} more" if len(sources) > 1 else ""
@@ -128,7 +152,27 @@ class Component:
         phase_rad: float,
         sources: list[Source] | tuple[Source, ...],
     ) -> Component:
-        """A fitted line with its ranked sources; the label is the short one."""
+        """A fitted line with its ranked sources; the label is the short one.
+
+        Parameters
+        ----------
+        direction : {"x", "y", "z"}
+            Direction of the displacement.
+        frequency_hz : float
+            Frequency of the line [Hz].
+        rotation_hz : float
+            Speed of the rotating ring [Hz] (the order and repeatability).
+        amplitude : float
+            Zero-to-peak amplitude [m].
+        phase_rad : float
+            Phase of x(t) = amplitude cos(2π f t + φ) [rad].
+        sources : list or tuple of Source
+            What produces the line, largest share first.
+
+        Returns
+        -------
+        Component
+        """
         c = cls.fitted(
             direction, frequency_hz, rotation_hz, amplitude, phase_rad, short_label(sources)
         )
@@ -145,7 +189,28 @@ class Component:
         label: str,
     ) -> Component:
         """A line fitted at ``frequency_hz`` with zero-to-peak ``amplitude`` [m]: p-p is twice
-        it, and it is repeatable (RRO) when its order is an integer (to 1e-9)."""
+        it, and it is repeatable (RRO) when its order is an integer (to 1e-9).
+
+        Parameters
+        ----------
+        direction : {"x", "y", "z"}
+            Direction of the displacement.
+        frequency_hz : float
+            Frequency of the line [Hz].
+        rotation_hz : float
+            Speed of the rotating ring [Hz].
+        amplitude : float
+            Zero-to-peak amplitude [m].
+        phase_rad : float
+            Phase of x(t) = amplitude cos(2π f t + φ) [rad].
+        label : str
+            Which part, lobe count and formula produced it.
+
+        Returns
+        -------
+        Component
+            Without sources.
+        """
         order = frequency_hz / rotation_hz
         return cls(
             direction=direction,
@@ -158,7 +223,14 @@ class Component:
         )
 
     def to_json(self) -> dict[str, Any]:
-        """The JSON contract's component object."""
+        """The JSON contract's component object.
+
+        Returns
+        -------
+        dict
+            The fields by name (``frequency_hz`` [Hz], ``order`` [-], ``pp_m`` [m],
+            ``phase_rad`` [rad]), ``sources`` as a list of source objects.
+        """
         return {
             "direction": self.direction,
             "frequency_hz": self.frequency_hz,
@@ -173,7 +245,19 @@ class Component:
 
 @dataclass(frozen=True)
 class Runout:
-    """Runout figures [m], all peak-to-peak."""
+    """Runout figures [m], all peak-to-peak.
+
+    Attributes
+    ----------
+    radial_pp_m : float
+        Radial runout along the measuring direction [m].
+    axial_pp_m : float
+        Axial runout [m].
+    rro_pp_m : float
+        Repeatable runout (lines at integer orders of the rotating ring) [m].
+    nrro_pp_m : float
+        Non-repeatable runout (the radial record minus its RRO waveform) [m].
+    """
 
     radial_pp_m: float
     axial_pp_m: float
@@ -181,7 +265,13 @@ class Runout:
     nrro_pp_m: float
 
     def to_json(self) -> dict[str, float]:
-        """The JSON contract's ``runout`` object."""
+        """The JSON contract's ``runout`` object.
+
+        Returns
+        -------
+        dict of str to float
+            The four p-p figures by name [m].
+        """
         return {
             "radial_pp_m": self.radial_pp_m,
             "axial_pp_m": self.axial_pp_m,

@@ -103,7 +103,13 @@ class LinearDetails:
     explained_fraction: float
 
     def to_json(self) -> dict[str, Any]:
-        """The linear model's JSON entries."""
+        """The linear model's JSON entries.
+
+        Returns
+        -------
+        dict
+            ``attribution`` (rows), ``linear_variant`` and ``explained_fraction`` [-].
+        """
         return {
             "attribution": [dict(row) for row in self.attribution],
             "linear_variant": self.linear_variant,
@@ -112,7 +118,17 @@ class LinearDetails:
 
     @classmethod
     def from_json(cls, doc: dict[str, Any]) -> LinearDetails:
-        """Read the entries of :meth:`to_json` from a result's JSON object."""
+        """Read the entries of :meth:`to_json` from a result's JSON object.
+
+        Parameters
+        ----------
+        doc : dict
+            A result's JSON object (with the entries of :meth:`to_json`).
+
+        Returns
+        -------
+        LinearDetails
+        """
         return cls(
             attribution=tuple(dict(row) for row in doc["attribution"]),
             linear_variant=str(doc["linear_variant"]),
@@ -155,7 +171,14 @@ class QuasiStaticDetails:
         return "initial_approach_m" if self.planar else "preload_approach_m"
 
     def to_json(self) -> dict[str, Any]:
-        """The quasi-static model's JSON entries."""
+        """The quasi-static model's JSON entries.
+
+        Returns
+        -------
+        dict
+            The approach [m] under :attr:`approach_key`, ``unloaded_balls_max``, ``n_elements``
+            and ``explained_fraction`` [-].
+        """
         return {
             self.approach_key: self.approach_m,
             "unloaded_balls_max": self.unloaded_balls_max,
@@ -165,7 +188,20 @@ class QuasiStaticDetails:
 
     @classmethod
     def from_json(cls, doc: dict[str, Any], *, planar: bool) -> QuasiStaticDetails:
-        """Read the entries of :meth:`to_json` (``planar``: the 2-D model's)."""
+        """Read the entries of :meth:`to_json` (``planar``: the 2-D model's).
+
+        Parameters
+        ----------
+        doc : dict
+            A result's JSON object (with the entries of :meth:`to_json`).
+        planar : bool
+            True for the 2-D model (``initial_approach_m``), False for the 3-D one
+            (``preload_approach_m``).
+
+        Returns
+        -------
+        QuasiStaticDetails
+        """
         key = "initial_approach_m" if planar else "preload_approach_m"
         return cls(
             planar=planar,
@@ -198,7 +234,13 @@ class RingDisplacement:
     tilt_y_rad: float
 
     def to_json(self) -> dict[str, float]:
-        """JSON ``ring_displacement``."""
+        """JSON ``ring_displacement``.
+
+        Returns
+        -------
+        dict of str to float
+            The displacements [m] and tilts [rad] by name.
+        """
         return {
             "axial_m": self.axial_m,
             "x_m": self.x_m,
@@ -208,7 +250,13 @@ class RingDisplacement:
         }
 
     def as_tuple(self) -> tuple[float, float, float, float, float]:
-        """(axial, x, y, tilt_x, tilt_y) [m, m, m, rad, rad]: the solver's order."""
+        """(axial, x, y, tilt_x, tilt_y) [m, m, m, rad, rad]: the solver's order.
+
+        Returns
+        -------
+        tuple of float
+            Axial, x, y displacements [m] and tilts about x, y [rad].
+        """
         return (self.axial_m, self.x_m, self.y_m, self.tilt_x_rad, self.tilt_y_rad)
 
 
@@ -231,7 +279,13 @@ class StiffnessMatrix:
     matrix: tuple[tuple[float, ...], ...]
 
     def to_json(self) -> dict[str, Any]:
-        """JSON ``stiffness_matrix``."""
+        """JSON ``stiffness_matrix``.
+
+        Returns
+        -------
+        dict
+            ``dofs``, ``units`` and ``matrix`` (a list of rows) [N/m, N/rad, N m/m, N m/rad].
+        """
         return {
             "dofs": list(self.dofs),
             "units": self.units,
@@ -240,7 +294,17 @@ class StiffnessMatrix:
 
     @classmethod
     def from_json(cls, doc: dict[str, Any]) -> StiffnessMatrix:
-        """Read :meth:`to_json` back."""
+        """Read :meth:`to_json` back.
+
+        Parameters
+        ----------
+        doc : dict
+            The JSON ``stiffness_matrix`` object.
+
+        Returns
+        -------
+        StiffnessMatrix
+        """
         return cls(
             dofs=tuple(str(d) for d in doc["dofs"]),
             units=str(doc["units"]),
@@ -269,7 +333,13 @@ class RadialStiffness:
     speed_rpm: float
 
     def to_json(self) -> dict[str, float]:
-        """JSON ``radial_stiffness``."""
+        """JSON ``radial_stiffness``.
+
+        Returns
+        -------
+        dict of str to float
+            The four entries [N/m] and ``speed_rpm`` [rev/min].
+        """
         return {
             "kxx_n_per_m": self.kxx_n_per_m,
             "kxy_n_per_m": self.kxy_n_per_m,
@@ -311,7 +381,14 @@ class EquilibriumDetails:
     newton_iterations: int
 
     def to_json(self) -> dict[str, Any]:
-        """The equilibrium model's JSON entries."""
+        """The equilibrium model's JSON entries.
+
+        Returns
+        -------
+        dict
+            Race control, ring displacement [m, rad], stiffness matrices, contact angles [deg],
+            per-ball table and Newton iterations.
+        """
         return {
             "race_control": self.race_control,
             "ring_displacement": self.ring_displacement.to_json(),
@@ -325,7 +402,17 @@ class EquilibriumDetails:
 
     @classmethod
     def from_json(cls, doc: dict[str, Any]) -> EquilibriumDetails:
-        """Read the entries of :meth:`to_json` from a result's JSON object."""
+        """Read the entries of :meth:`to_json` from a result's JSON object.
+
+        Parameters
+        ----------
+        doc : dict
+            A result's JSON object (with the entries of :meth:`to_json`).
+
+        Returns
+        -------
+        EquilibriumDetails
+        """
         return cls(
             race_control=str(doc["race_control"]),
             ring_displacement=RingDisplacement(**doc["ring_displacement"]),
@@ -397,7 +484,14 @@ class DynamicDetails:
     sample_rate_hz: float | None = field(default=None, compare=False, repr=False)
 
     def to_json(self) -> dict[str, Any]:
-        """The dynamic model's JSON entries."""
+        """The dynamic model's JSON entries.
+
+        Returns
+        -------
+        dict
+            The fields by name (SI values, unit in the key); ``mean_axial_displacement_m`` [m]
+            only when set, ``sample_rate_hz`` never.
+        """
         out: dict[str, Any] = {
             "natural_frequencies_hz": list(self.natural_frequencies_hz),
             "ball_passage_hz": self.ball_passage_hz,
@@ -419,7 +513,17 @@ class DynamicDetails:
 
     @classmethod
     def from_json(cls, doc: dict[str, Any]) -> DynamicDetails:
-        """Read the entries of :meth:`to_json` from a result's JSON object."""
+        """Read the entries of :meth:`to_json` from a result's JSON object.
+
+        Parameters
+        ----------
+        doc : dict
+            A result's JSON object (with the entries of :meth:`to_json`).
+
+        Returns
+        -------
+        DynamicDetails
+        """
         mean_axial = doc.get("mean_axial_displacement_m")
         return cls(
             natural_frequencies_hz=tuple(float(v) for v in doc["natural_frequencies_hz"]),
@@ -467,7 +571,13 @@ class HeldRollers:
     fraction_three_or_more: float
 
     def to_json(self) -> dict[str, Any]:
-        """JSON ``contacts``."""
+        """JSON ``contacts``.
+
+        Returns
+        -------
+        dict
+            JSON ``contacts``: the fields by name (lists for the tuples).
+        """
         return {
             "rollers_touched": list(self.rollers_touched),
             "pairs": [list(p) for p in self.pairs],
@@ -478,7 +588,17 @@ class HeldRollers:
 
     @classmethod
     def from_json(cls, doc: dict[str, Any]) -> HeldRollers:
-        """Read :meth:`to_json` back."""
+        """Read :meth:`to_json` back.
+
+        Parameters
+        ----------
+        doc : dict
+            The JSON ``contacts`` object.
+
+        Returns
+        -------
+        HeldRollers
+        """
         return cls(
             rollers_touched=tuple(int(j) for j in doc["rollers_touched"]),
             pairs=tuple((int(a), int(b)) for a, b in doc["pairs"]),
@@ -504,7 +624,13 @@ class Iso492:
     radial_runout_m: float
 
     def to_json(self) -> dict[str, Any]:
-        """JSON ``iso492``."""
+        """JSON ``iso492``.
+
+        Returns
+        -------
+        dict
+            ``quantity`` and ``radial_runout_m`` [m].
+        """
         return {"quantity": self.quantity, "radial_runout_m": self.radial_runout_m}
 
 
@@ -540,7 +666,14 @@ class RollerDetails:
     solution: RollerSolution | None = field(default=None, compare=False, repr=False)
 
     def to_json(self) -> dict[str, Any]:
-        """The rigid model's JSON entries."""
+        """The rigid model's JSON entries.
+
+        Returns
+        -------
+        dict
+            ``horizontal_pp_m`` [m], ``explained_fraction`` [-], ``contacts``, ``rotating_ring``,
+            ``radial_clearance_m`` [m] and ``iso492`` (not the solution).
+        """
         return {
             "horizontal_pp_m": self.horizontal_pp_m,
             "explained_fraction": self.explained_fraction,
@@ -552,7 +685,18 @@ class RollerDetails:
 
     @classmethod
     def from_json(cls, doc: dict[str, Any]) -> RollerDetails:
-        """Read the entries of :meth:`to_json` from a result's JSON object."""
+        """Read the entries of :meth:`to_json` from a result's JSON object.
+
+        Parameters
+        ----------
+        doc : dict
+            A result's JSON object (with the entries of :meth:`to_json`).
+            ``solution`` is None.
+
+        Returns
+        -------
+        RollerDetails
+        """
         return cls(
             horizontal_pp_m=float(doc["horizontal_pp_m"]),
             explained_fraction=float(doc["explained_fraction"]),
@@ -574,6 +718,7 @@ class SpindleBearingResult:
     Attributes
     ----------
     name : str
+        The bearing's name in the case.
     position_m : float
         Axial coordinate of its ball-set plane [m].
     contact_angle_deg : float
@@ -603,7 +748,13 @@ class SpindleBearingResult:
     mean_displacement_m: tuple[float, float, float]
 
     def to_json(self) -> dict[str, Any]:
-        """JSON row of ``bearings``."""
+        """JSON row of ``bearings``.
+
+        Returns
+        -------
+        dict
+            The fields by name (SI values, unit in the key; ``runout`` [m] as an object).
+        """
         return {
             "name": self.name,
             "position_m": self.position_m,
@@ -618,7 +769,17 @@ class SpindleBearingResult:
 
     @classmethod
     def from_json(cls, doc: dict[str, Any]) -> SpindleBearingResult:
-        """Read :meth:`to_json` back."""
+        """Read :meth:`to_json` back.
+
+        Parameters
+        ----------
+        doc : dict
+            One row of the JSON ``bearings``.
+
+        Returns
+        -------
+        SpindleBearingResult
+        """
         from runout.analysis.lines import Runout
 
         x, y, z = (float(v) for v in doc["mean_displacement_m"])
@@ -642,6 +803,7 @@ class SpindleDetails:
     Attributes
     ----------
     arrangement : {"DB", "DF", "DT"}
+        Arrangement of the angular-contact pair (back to back, face to face, tandem).
     nose_position_m : float
         Axial coordinate of the reported runout [m].
     tilt_pp_rad : tuple of float
@@ -650,8 +812,10 @@ class SpindleDetails:
         The shaft's position without imperfections (x, y, z [m], θx, θy [rad]) at the axial
         origin, from its preload reference.
     bearings : tuple of SpindleBearingResult
+        Each bearing's figures at its own plane.
     stiffness_matrix : StiffnessMatrix
-        5×5 stiffness of the shaft at the nose (x, y, z, tilt_x, tilt_y).
+        5×5 stiffness of the shaft at the nose (x, y, z, tilt_x, tilt_y) [N/m, N/rad, N m/m,
+        N m/rad].
     unloaded_balls_max : int
         Largest number of balls (all bearings) out of contact at one instant.
     n_elements : int
@@ -671,7 +835,14 @@ class SpindleDetails:
     explained_fraction: float
 
     def to_json(self) -> dict[str, Any]:
-        """The spindle model's JSON entries."""
+        """The spindle model's JSON entries.
+
+        Returns
+        -------
+        dict
+            The fields by name (SI values, unit in the key); ``tilt_pp_rad`` [rad] as an ``x``,
+            ``y`` object, ``bearings`` as rows.
+        """
         return {
             "arrangement": self.arrangement,
             "nose_position_m": self.nose_position_m,
@@ -686,7 +857,17 @@ class SpindleDetails:
 
     @classmethod
     def from_json(cls, doc: dict[str, Any]) -> SpindleDetails:
-        """Read :meth:`to_json` back."""
+        """Read :meth:`to_json` back.
+
+        Parameters
+        ----------
+        doc : dict
+            A result's JSON object (with the entries of :meth:`to_json`).
+
+        Returns
+        -------
+        SpindleDetails
+        """
         tilt = doc["tilt_pp_rad"]
         return cls(
             arrangement=str(doc["arrangement"]),
@@ -720,6 +901,11 @@ def details_from_json(model: str, doc: dict[str, Any]) -> ModelDetails | None:
         Model id (the JSON's ``model``).
     doc : dict
         The result's JSON object.
+
+    Returns
+    -------
+    ModelDetails or None
+        The model's details class (:data:`DETAILS_BY_MODEL`) read from ``doc``.
     """
     if model == "linear":
         return LinearDetails.from_json(doc)
@@ -768,7 +954,13 @@ class Iso15242Band:
     rms_um_per_s: float
 
     def to_json(self) -> dict[str, float]:
-        """JSON band object."""
+        """JSON band object.
+
+        Returns
+        -------
+        dict of str to float
+            ``low_hz``, ``high_hz`` [Hz] and ``rms_um_per_s`` [um/s].
+        """
         return {"low_hz": self.low_hz, "high_hz": self.high_hz, "rms_um_per_s": self.rms_um_per_s}
 
 
@@ -785,7 +977,7 @@ class Iso15242:
     direction : {"x", "y", "measuring"}
         Measuring direction by name, ``"measuring"`` when along no axis.
     measuring_direction : tuple of float
-        Unit vector of the measuring direction (x, y).
+        Unit vector of the measuring direction (x, y) [-].
     bands : dict
         Band name (L, M, H) -> :class:`Iso15242Band`.
     """
@@ -797,7 +989,14 @@ class Iso15242:
     bands: dict[str, Iso15242Band]
 
     def to_json(self) -> dict[str, Any]:
-        """JSON ``iso15242``."""
+        """JSON ``iso15242``.
+
+        Returns
+        -------
+        dict
+            ``unit``, ``speed_rpm`` [rev/min], ``direction``, ``measuring_direction`` [-] and
+            ``bands`` (name -> band object).
+        """
         return {
             "unit": self.unit,
             "speed_rpm": self.speed_rpm,
@@ -808,7 +1007,17 @@ class Iso15242:
 
     @classmethod
     def from_json(cls, doc: dict[str, Any]) -> Iso15242:
-        """Read :meth:`to_json` back."""
+        """Read :meth:`to_json` back.
+
+        Parameters
+        ----------
+        doc : dict
+            The JSON ``iso15242`` object.
+
+        Returns
+        -------
+        Iso15242
+        """
         u = doc["measuring_direction"]
         return cls(
             unit=str(doc["unit"]),
@@ -849,7 +1058,14 @@ class Verdict:
     unit: Literal["m", "um/s"] = "m"
 
     def to_json(self) -> dict[str, Any]:
-        """JSON ``verdict``."""
+        """JSON ``verdict``.
+
+        Returns
+        -------
+        dict
+            ``quantity``, ``limit_m`` and ``value_m`` [m] (``limit_um_per_s`` and
+            ``value_um_per_s`` [um/s] for a band) and ``pass``.
+        """
         suffix = "m" if self.unit == "m" else "um_per_s"
         return {
             "quantity": self.quantity,
@@ -860,7 +1076,17 @@ class Verdict:
 
     @classmethod
     def from_json(cls, doc: dict[str, Any]) -> Verdict:
-        """Read :meth:`to_json` back."""
+        """Read :meth:`to_json` back.
+
+        Parameters
+        ----------
+        doc : dict
+            The JSON ``verdict`` object (its keys give the unit).
+
+        Returns
+        -------
+        Verdict
+        """
         if "limit_m" in doc:
             return cls(
                 str(doc["quantity"]),

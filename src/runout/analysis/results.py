@@ -58,7 +58,18 @@ SPINDLE_DISPLACEMENT_OF = (
 
 
 def displacement_of(model: str) -> str:
-    """What a model's displacements are (JSON ``displacement_of``)."""
+    """What a model's displacements are (JSON ``displacement_of``).
+
+    Parameters
+    ----------
+    model : str
+        Model id.
+
+    Returns
+    -------
+    str
+        :data:`SPINDLE_DISPLACEMENT_OF` for ``"spindle"``, else :data:`DISPLACEMENT_OF`.
+    """
     return SPINDLE_DISPLACEMENT_OF if model == "spindle" else DISPLACEMENT_OF
 
 
@@ -82,6 +93,11 @@ def frequencies_json(values: dict[str, float], element: str) -> dict[str, float]
     element : {"ball", "roller"}
         Rolling elements of the bearing: a roller bearing also gets ``roller_pass_inner`` and
         ``roller_pass_outer``, equal to ``ball_pass_inner`` and ``ball_pass_outer``.
+
+    Returns
+    -------
+    dict of str to float
+        A copy of ``values`` [Hz or -], with the roller aliases for a roller bearing.
     """
     out = dict(values)
     if element == "roller":
@@ -111,9 +127,9 @@ class RunResult:
     components : tuple of Component
         Labelled spectral lines, largest first.
     runout : Runout
-        Runout figures.
+        Runout figures [m].
     measuring_direction : ndarray, shape (2,)
-        Unit vector of the radial measuring direction (radial load direction, else x).
+        Unit vector of the radial measuring direction (radial load direction, else x) [-].
     anderon : dict or None
         Band values U, R, L, M, H, E, A [Anderon] where the model gives them.
     details : ModelDetails or None
@@ -174,7 +190,13 @@ class RunResult:
         return self.displacement[2]
 
     def radial(self) -> NDArray[np.float64]:
-        """Displacement along the measuring direction [m]."""
+        """Displacement along the measuring direction [m].
+
+        Returns
+        -------
+        ndarray, shape (n,)
+            u_x x + u_y y with u the measuring direction [m].
+        """
         u = self.measuring_direction
         return u[0] * self.displacement[0] + u[1] * self.displacement[1]
 
@@ -186,7 +208,13 @@ class RunResult:
     def mean_displacement(self) -> list[float]:
         """Mean position of the inner ring's centre relative to the outer ring's over the
         record: x, y, and z when the model moves the rings axially [m]
-        (:data:`DISPLACEMENT_OF`)."""
+        (:data:`DISPLACEMENT_OF`).
+
+        Returns
+        -------
+        list of float
+            x, y (and z) [m]; the JSON's mean for a result read back.
+        """
         if self.record_mean is not None:
             return list(self.record_mean)
         mean = [float(np.mean(v)) for v in self.displacement]
@@ -218,7 +246,20 @@ class RunResult:
         return _relative_resolution(self.model) * scale
 
     def lines(self, direction: str | None = None, top: int | None = None) -> list[Component]:
-        """Components, optionally of one direction, largest first, at most ``top`` of them."""
+        """Components, optionally of one direction, largest first, at most ``top`` of them.
+
+        Parameters
+        ----------
+        direction : {"x", "y", "z"} or None
+            Direction of the lines to keep; None: all of them.
+        top : int or None
+            Most lines returned; None: all of them.
+
+        Returns
+        -------
+        list of Component
+            By p-p [m], largest first.
+        """
         chosen = [c for c in self.components if direction is None or c.direction == direction]
         chosen.sort(key=lambda c: -c.pp_m)
         return chosen[:top] if top is not None else chosen
@@ -331,7 +372,15 @@ class RunResult:
 
     # ---------------------------------------------------------------- output
     def to_json(self) -> dict[str, Any]:
-        """One JSON object: the documented contract (README, docs/conventions.md)."""
+        """One JSON object: the documented contract (README, docs/conventions.md).
+
+        Returns
+        -------
+        dict
+            Model, title, frequencies [Hz], contact angle [deg], runout [m], components, the
+            displacement convention and mean [m], then the optional ``anderon``, the model's
+            details, ``iso15242``, ``verdict`` and ``notes``.
+        """
         out: dict[str, Any] = {
             "model": self.model,
             "title": self.title,
@@ -444,6 +493,11 @@ class RunResult:
         """Readable tables: runout figures, the largest lines, band values, verdict, notes.
 
         See :func:`runout.report.summary.result_sections`.
+
+        Returns
+        -------
+        list of (str, list of (str, str, str))
+            Each section's title and its rows (quantity, value, unit).
         """
         summary = importlib.import_module("runout.report.summary")  # the layer above, by name
         return cast("list[tuple[str, Rows]]", summary.result_sections(self))

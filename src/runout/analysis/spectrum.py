@@ -186,11 +186,33 @@ class Spectrum:
         return self.sample_rate / self.n_samples
 
     def orders(self, rotation_hz: float) -> FloatArray:
-        """Bin frequencies as orders of ``rotation_hz`` [-] (waves per revolution)."""
+        """Bin frequencies as orders of ``rotation_hz`` [-] (waves per revolution).
+
+        Parameters
+        ----------
+        rotation_hz : float
+            Rotation frequency of the rotating ring [Hz] (> 0).
+
+        Returns
+        -------
+        ndarray
+            Orders [-], same shape as :attr:`frequencies`.
+        """
         return orders(self.frequencies, rotation_hz)
 
     def channel(self, index: int | tuple[int, ...]) -> Spectrum:
-        """The spectrum of one channel of a multi-channel (N-D) spectrum."""
+        """The spectrum of one channel of a multi-channel (N-D) spectrum.
+
+        Parameters
+        ----------
+        index : int or tuple of int
+            Index of the channel along the leading axes of :attr:`amplitude`.
+
+        Returns
+        -------
+        Spectrum
+            Same frequencies [Hz], window and sampling; the channel's amplitude [signal unit].
+        """
         return Spectrum(
             self.frequencies,
             np.asarray(self.amplitude[index], dtype=float),
@@ -309,6 +331,12 @@ def amplitude_spectrum(
     ValueError
         Fewer than 4 samples, non-finite values, non-uniform ``time``, bad sample rate or
         window.
+
+    Notes
+    -----
+    The p-p reading (twice the single-sided value of the Hann-windowed record) is the convention
+    of seed 000: Tada, "Three-dimensional analysis of non-repeatable runout (NRRO) in ball
+    bearings", Koyo Engineering Journal (2002), §2.2.
     """
     x = _as_signal(signal, axis)
     n = x.shape[-1]
@@ -444,11 +472,34 @@ class Lines:
         return 2.0 * self.amplitude
 
     def orders(self, rotation_hz: float) -> FloatArray:
-        """Line frequencies as orders of ``rotation_hz`` [-]."""
+        """Line frequencies as orders of ``rotation_hz`` [-].
+
+        Parameters
+        ----------
+        rotation_hz : float
+            Rotation frequency of the rotating ring [Hz] (> 0).
+
+        Returns
+        -------
+        ndarray
+            Orders [-], same shape as :attr:`frequencies`.
+        """
         return orders(self.frequencies, rotation_hz)
 
     def evaluate(self, time: ArrayLike) -> FloatArray:
-        """The fitted model at ``time`` [s]; shape ``amplitude.shape[:-1] + (len(time),)``."""
+        """The fitted model at ``time`` [s]; shape ``amplitude.shape[:-1] + (len(time),)``.
+
+        Parameters
+        ----------
+        time : array_like, shape (n,)
+            Instants [s], on the time axis of :func:`extract_lines`.
+
+        Returns
+        -------
+        ndarray
+            c + Σ_j A_j cos(2π f_j t + φ_j) at each instant [signal unit], shape
+            ``amplitude.shape[:-1] + (n,)``.
+        """
         t = np.asarray(time, dtype=float)
         ph = 2.0 * np.pi * np.multiply.outer(t, self.frequencies)  # (n, m)
         terms = self.amplitude[..., None, :] * np.cos(ph + self.phase[..., None, :])

@@ -154,6 +154,18 @@ def format_number(value: float, digits: int = 4) -> str:
     For the figures that are not lengths (frequencies, band values): ``"0.0679"``,
     ``"1235000"``, never exponent notation. Readings below 1e-12 print as ``0``.
 
+    Parameters
+    ----------
+    value : float
+        The number, in whatever unit the caller shows it (e.g. [Hz]).
+    digits : int, default 4
+        Significant digits.
+
+    Returns
+    -------
+    str
+        The number in fixed-point notation, without a unit.
+
     Raises
     ------
     ValueError
@@ -204,6 +216,11 @@ def format_resolution(resolution_m: float, unit: tuple[str, float] | None = None
     unit : tuple of (str, float), optional
         The unit of the figures it goes with; default the unit of the resolution alone. A
         resolution that would read below 1e-6 of it is written in its own unit.
+
+    Returns
+    -------
+    str
+        Two significant digits and the unit name, or ``"under 0.001 <unit>"``.
 
     Raises
     ------

@@ -250,6 +250,11 @@ TERMS: tuple[Term, ...] = (
 def names() -> dict[str, Term]:
     """Every name of :data:`TERMS` -> its row (a name appears once).
 
+    Returns
+    -------
+    dict of str to Term
+        Each name of every row, mapped to that row.
+
     Raises
     ------
     ValueError
@@ -267,6 +272,16 @@ def names() -> dict[str, Term]:
 def term(name: str) -> Term:
     """The glossary row of ``name``.
 
+    Parameters
+    ----------
+    name : str
+        A name as used in the API, case files and JSON output.
+
+    Returns
+    -------
+    Term
+        Its row (symbol, SI unit, meaning).
+
     Raises
     ------
     KeyError
@@ -280,7 +295,13 @@ def _cell(text: str) -> str:
 
 
 def glossary_markdown() -> str:
-    """The Markdown of docs/glossary.md."""
+    """The Markdown of docs/glossary.md.
+
+    Returns
+    -------
+    str
+        The whole page, a table of every row, ending in a newline.
+    """
     lines = [
         "# Glossary",
         "",

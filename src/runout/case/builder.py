@@ -73,6 +73,16 @@ class Imperfections:
         and a Z given here must equal it; element numbers and per-element arrays are checked
         against it as it is known.
 
+    Attributes
+    ----------
+    elements : int or None
+        Number of rolling elements Z, when given.
+    entries : tuple of (str, dict)
+        The case-file tables added so far, in order: table name and its keys.
+    profile_arrays : tuple of (str, ndarray, ndarray)
+        Profiles given as arrays: file name in the entries, angles [rad] and radius
+        deviations [m] (or in the entry's units).
+
     Notes
     -----
     Rolling elements are numbered 1..Z, as in the case file. The builder does not compute
@@ -153,6 +163,7 @@ class Imperfections:
         Parameters
         ----------
         part : {"inner", "outer", "ball", "roller"}
+            The part whose radius deviates.
         order : int
             Number of lobes k.
         amplitude, peak_to_peak : float or str
@@ -161,6 +172,11 @@ class Imperfections:
             φ [rad].
         element : int, optional
             Ball or roller number 1..Z; default every element.
+
+        Returns
+        -------
+        Imperfections
+            A new builder with the entry added.
         """
         return self._with(
             "waviness",
@@ -193,6 +209,7 @@ class Imperfections:
         Parameters
         ----------
         part : {"inner", "outer", "ball", "roller"}
+            The part whose radius deviates.
         orders : (int, int)
             First and last order, inclusive.
         amplitude, peak_to_peak : float or str
@@ -205,6 +222,11 @@ class Imperfections:
             Seed of the random phases (``phase="random"`` only; default 0).
         element : int, optional
             Ball or roller number 1..Z; default every element (each its own random phases).
+
+        Returns
+        -------
+        Imperfections
+            A new builder with the entry added.
         """
         return self._with(
             "waviness_spectrum",
@@ -237,6 +259,7 @@ class Imperfections:
         Parameters
         ----------
         part : {"inner", "outer", "ball", "roller"}
+            The part measured.
         orders : (int, int)
             Orders kept, first and last inclusive.
         file : str or Path, optional
@@ -251,6 +274,11 @@ class Imperfections:
             Default "um" for a file (as the case file), "m" for arrays.
         element : int, optional
             Ball or roller number 1..Z.
+
+        Returns
+        -------
+        Imperfections
+            A new builder with the entry added.
         """
         from_arrays = angles is not None or deviations is not None
         if from_arrays == (file is not None):
@@ -307,19 +335,72 @@ class Imperfections:
         angle: float | str | None = None,
         phase: float | str = 0.0,
     ) -> Imperfections:
-        """Set the inner-raceway slant (``[slant]``): its amplitude [m] or angle [rad]."""
+        """Set the inner-raceway slant (``[slant]``): its amplitude [m] or angle [rad].
+
+        Parameters
+        ----------
+        amplitude : float or str, optional
+            Amplitude W_s of the two-per-revolution term [m]; give this or ``angle``.
+        angle : float or str, optional
+            Slant angle β [rad], instead of ``amplitude``.
+        phase : float or str
+            Phase φ_s [rad].
+
+        Returns
+        -------
+        Imperfections
+            A new builder whose ``[slant]`` is this one (a slant given before is replaced).
+
+        Notes
+        -----
+        The slant is the inner-raceway term of seed 002 ("Anderon vibration"), eq. 34.
+        """
         return self._with("slant", {"amplitude": amplitude, "angle": angle, "phase": phase})
 
     def diameter_errors(self, values: Sequence[float | str] | ArrayLike) -> Imperfections:
-        """Set each element's diameter deviation [m], Z values (``[elements] diameter_errors``)."""
+        """Set each element's diameter deviation [m], Z values (``[elements] diameter_errors``).
+
+        Parameters
+        ----------
+        values : sequence of float or str, or array_like
+            Deviation of each element's diameter [m] (or strings with units), elements 1..Z.
+
+        Returns
+        -------
+        Imperfections
+            A new builder with ``[elements] diameter_errors`` set.
+        """
         return self._with("elements", {"diameter_errors": self._per_element(values, "diameter")})
 
     def pitch_errors(self, values: Sequence[float | str] | ArrayLike) -> Imperfections:
-        """Set each element's angular position error [rad], Z values (``[elements]``)."""
+        """Set each element's angular position error [rad], Z values (``[elements]``).
+
+        Parameters
+        ----------
+        values : sequence of float or str, or array_like
+            Angular position error of each element [rad] (or strings with units), elements 1..Z.
+
+        Returns
+        -------
+        Imperfections
+            A new builder with ``[elements] pitch_errors`` set.
+        """
         return self._with("elements", {"pitch_errors": self._per_element(values, "pitch")})
 
     def phase_frame(self, frame: str) -> Imperfections:
-        """Frame of element waviness phases, "cage" or "fixed" (``[elements] phase_frame``)."""
+        """Frame of element waviness phases, "cage" or "fixed" (``[elements] phase_frame``).
+
+        Parameters
+        ----------
+        frame : {"cage", "fixed"}
+            ``"cage"``: angle 0 along the outward radius through the element's centre at t = 0;
+            ``"fixed"``: angle 0 along +x of the bearing for every element.
+
+        Returns
+        -------
+        Imperfections
+            A new builder with ``[elements] phase_frame`` set.
+        """
         return self._with("elements", {"phase_frame": frame})
 
     def _per_element(self, values: Any, what: str) -> list[Any]:
@@ -334,7 +415,14 @@ class Imperfections:
 
     # --- reading it back ----------------------------------------------------------------------
     def tables(self) -> dict[str, Any]:
-        """The case-file tables this builder holds (copies), in the order they were added."""
+        """The case-file tables this builder holds (copies), in the order they were added.
+
+        Returns
+        -------
+        dict
+            Table name -> entry (``slant``, ``elements``) or list of entries (``waviness``,
+            ``waviness_spectrum``, ``profile``), keys and values as given (SI or with units).
+        """
         out: dict[str, Any] = {}
         for table, entry in self.entries:
             if table in ("slant", "elements"):
@@ -432,7 +520,25 @@ def build_case(
 
 
 def split_options(options: Mapping[str, Any]) -> tuple[dict[str, Any], dict[str, Any]]:
-    """``run``'s options as its [analysis] and [dynamics] keys; an unknown one is an error."""
+    """``run``'s options as its [analysis] and [dynamics] keys; an unknown one is an error.
+
+    Parameters
+    ----------
+    options : mapping
+        Keyword options of :func:`runout.run`, by their case-file key names.
+
+    Returns
+    -------
+    analysis : dict
+        The ``[analysis]`` keys.
+    dynamics : dict
+        The ``[dynamics]`` keys.
+
+    Raises
+    ------
+    CaseError
+        An option that is neither (with the closest key name, when one is close).
+    """
     analysis_keys = [k for k in AnalysisSpec.model_fields if k != "model"]
     dynamics_keys = list(DynamicsSpec.model_fields)
     analysis: dict[str, Any] = {}

@@ -97,7 +97,20 @@ class KeyConvention:
     honoured_when: dict[str, Callable[[CaseSpec], bool]] = field(default_factory=dict, repr=False)
 
     def status(self, model: str, spec: CaseSpec | None = None) -> Status:
-        """What ``model`` does with this key (in ``spec``, when a condition applies)."""
+        """What ``model`` does with this key (in ``spec``, when a condition applies).
+
+        Parameters
+        ----------
+        model : str
+            Model id, one of :data:`MODELS`.
+        spec : CaseSpec or None
+            The validated case-file tables, for the conditions of :attr:`honoured_when`; None:
+            the model's column of the table.
+
+        Returns
+        -------
+        {"honoured", "refused", "not_applicable"}
+        """
         condition = self.honoured_when.get(model)
         if spec is not None and condition is not None and condition(spec):
             return "honoured"
@@ -538,7 +551,18 @@ KEYS: tuple[KeyConvention, ...] = (
 
 
 def honouring_models(convention: KeyConvention) -> list[str]:
-    """Models that honour a key."""
+    """Models that honour a key.
+
+    Parameters
+    ----------
+    convention : KeyConvention
+        One row of :data:`KEYS`.
+
+    Returns
+    -------
+    list of str
+        Model ids whose column says ``honoured``, in :data:`MODELS` order.
+    """
     return [m for m in MODELS if convention.status(m) == "honoured"]
 
 
@@ -552,6 +576,7 @@ class Applicability:
     Attributes
     ----------
     model : str
+        Model id.
     uses : list of (key path, status)
         Every key the case sets, with the model's treatment.
     refusals : list of (key path, message)
@@ -582,6 +607,11 @@ def applicability(spec: CaseSpec, model: str) -> Applicability:
         The validated case-file tables.
     model : str
         Model id.
+
+    Returns
+    -------
+    Applicability
+        Every key the case sets with its status, the refusals and the notes.
     """
     uses: list[tuple[str, Status]] = []
     refusals: list[tuple[str, str]] = []
@@ -644,6 +674,18 @@ def _combination_notes(spec: CaseSpec, model: str) -> list[str]:
 def enforce(case: Case, model: str | None = None) -> tuple[str, ...]:
     """Refuse what ``model`` (default the case's) refuses; return the notes it must carry.
 
+    Parameters
+    ----------
+    case : Case
+        The case; one built in code (no ``spec``) is not checked.
+    model : str or None
+        Model id; None: the case's ``[analysis] model``.
+
+    Returns
+    -------
+    tuple of str
+        The notes the result must carry (keys not applied, combinations read one way).
+
     Raises
     ------
     CaseError
@@ -666,7 +708,14 @@ _SYMBOL = {"honoured": "✓", "refused": "✗ refused", "not_applicable": "– n
 
 
 def conventions_page() -> str:
-    """Markdown of ``docs/conventions.md``: the frame, then the key × model matrix."""
+    """Markdown of ``docs/conventions.md``: the frame, then the key × model matrix.
+
+    Returns
+    -------
+    str
+        The page's Markdown: the frame, the key × model matrix, each key's meaning and unit,
+        and the combinations read one way.
+    """
     doc = (__doc__ or "").split("\n\n", 1)[1].strip()
     lines = [
         "# Conventions: one meaning per key, in every model",

@@ -145,7 +145,18 @@ class LimitError(GeometryError):
 
 @dataclass(frozen=True)
 class Budget:
-    """Memory [bytes] and time [s] one run (or one study) may use, and where they came from."""
+    """Memory [bytes] and time [s] one run (or one study) may use, and where they came from.
+
+    Attributes
+    ----------
+    memory : float
+        Memory budget of the large arrays [B].
+    time : float
+        Budget of estimated computing time [s].
+    memory_from, time_from : str
+        Where each came from: ``"default"``, ``"analysis.max_memory"`` /
+        ``"analysis.max_time"`` (the case) or the environment variable's name.
+    """
 
     memory: float = float(DEFAULT_MAX_MEMORY)
     time: float = DEFAULT_MAX_TIME
@@ -153,7 +164,19 @@ class Budget:
     time_from: str = "default"
 
     def raise_hint(self, what: str) -> str:
-        """How to raise the budget of ``what`` ("memory" or "time")."""
+        """How to raise the budget of ``what`` ("memory" or "time").
+
+        Parameters
+        ----------
+        what : {"memory", "time"}
+            The budget exceeded.
+
+        Returns
+        -------
+        str
+            The end of a refusal's message: the limit [B or s], where it came from, and the case key
+            and environment variable that raise it.
+        """
         if what == "memory":
             return (
                 f"or raise the limit ({format_bytes(self.memory)}, {self.memory_from}) with "
@@ -190,7 +213,13 @@ class ResourceEstimate:
 
 
 def physical_memory() -> float | None:
-    """Installed memory of this machine [bytes], None when the system does not say."""
+    """Installed memory of this machine [bytes], None when the system does not say.
+
+    Returns
+    -------
+    float or None
+        Page size times physical pages [B].
+    """
     try:
         return float(os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES"))
     except (AttributeError, OSError, ValueError):
@@ -228,6 +257,11 @@ def budget(
     environ : mapping, optional
         Environment (default ``os.environ``).
 
+    Returns
+    -------
+    Budget
+        Memory [B] and time [s], each with where it came from.
+
     Raises
     ------
     LimitError
@@ -259,7 +293,18 @@ def budget(
 
 
 def case_budget(case_or_spec: Any) -> Budget:
-    """:func:`budget` of a case (or its validated spec) from its ``[analysis]`` keys."""
+    """:func:`budget` of a case (or its validated spec) from its ``[analysis]`` keys.
+
+    Parameters
+    ----------
+    case_or_spec : Case or CaseSpec
+        A case, or its validated case-file tables (``[analysis] max_memory`` [B] and
+        ``max_time`` [s]).
+
+    Returns
+    -------
+    Budget
+    """
     spec = getattr(case_or_spec, "spec", case_or_spec)
     analysis = getattr(spec, "analysis", None)
     return budget(
@@ -270,6 +315,13 @@ def case_budget(case_or_spec: Any) -> Budget:
 
 def check(estimate: ResourceEstimate, limits: Budget) -> None:
     """Refuse an estimate beyond the budget, naming the key to change.
+
+    Parameters
+    ----------
+    estimate : ResourceEstimate
+        Memory [B] and time [s] a run or study is expected to need.
+    limits : Budget
+        The budget [B, s].
 
     Raises
     ------
@@ -292,7 +344,18 @@ def check(estimate: ResourceEstimate, limits: Budget) -> None:
 
 
 def format_bytes(n: float) -> str:
-    """``1.5 GiB``-style size of ``n`` bytes."""
+    """``1.5 GiB``-style size of ``n`` bytes.
+
+    Parameters
+    ----------
+    n : float
+        A size [B] (inf: "an unbounded amount").
+
+    Returns
+    -------
+    str
+        Three significant digits in the largest binary unit not above it (B, KiB, ... EiB).
+    """
     if not math.isfinite(n):
         return "an unbounded amount"
     for unit, size in (("EiB", 1024.0**6), ("PiB", 1024.0**5), ("TiB", 1024.0**4)):
@@ -305,7 +368,18 @@ def format_bytes(n: float) -> str:
 
 
 def format_seconds(s: float) -> str:
-    """``2.5 h``-style duration of ``s`` seconds."""
+    """``2.5 h``-style duration of ``s`` seconds.
+
+    Parameters
+    ----------
+    s : float
+        A duration [s] (inf: "forever").
+
+    Returns
+    -------
+    str
+        Three significant digits in the largest unit not above it (s, min, h, days, years).
+    """
     if not math.isfinite(s):
         return "forever"
     year = 365.25 * 86400.0
@@ -319,22 +393,68 @@ def format_seconds(s: float) -> str:
 # fixed bounds and file sizes
 # --------------------------------------------------------------------------------------------
 def harmonics_memory(count: float) -> float:
-    """Memory of ``count`` harmonics while they are built and packed [bytes]."""
+    """Memory of ``count`` harmonics while they are built and packed [bytes].
+
+    Parameters
+    ----------
+    count : float
+        Number of harmonics [-].
+
+    Returns
+    -------
+    float
+        ``count`` times :data:`BYTES_PER_HARMONIC` [B].
+    """
     return float(count) * BYTES_PER_HARMONIC
 
 
 def max_profile_bytes(limits: Budget) -> int:
-    """Largest profile file read within the memory budget [bytes]."""
+    """Largest profile file read within the memory budget [bytes].
+
+    Parameters
+    ----------
+    limits : Budget
+        The budget; its memory [B] is divided by :data:`BYTES_PER_PROFILE_BYTE`.
+
+    Returns
+    -------
+    int
+        Largest profile file size [B].
+    """
     return int(limits.memory // BYTES_PER_PROFILE_BYTE)
 
 
 def max_record_bytes(limits: Budget) -> int:
-    """Largest measured-record CSV ``runout diagnose`` reads within the memory budget [bytes]."""
+    """Largest measured-record CSV ``runout diagnose`` reads within the memory budget [bytes].
+
+    Parameters
+    ----------
+    limits : Budget
+        The budget; its memory [B] is divided by :data:`RECORD_BYTES_PER_FILE_BYTE`.
+
+    Returns
+    -------
+    int
+        Largest record file size [B].
+    """
     return int(limits.memory // RECORD_BYTES_PER_FILE_BYTE)
 
 
 def profile_roots(base_dir: Path, environ: Mapping[str, str] | None = None) -> list[Path]:
-    """Directories a case's profiles may come from: the case's own and ``RUNOUT_PROFILE_DIRS``."""
+    """Directories a case's profiles may come from: the case's own and ``RUNOUT_PROFILE_DIRS``.
+
+    Parameters
+    ----------
+    base_dir : Path
+        The case file's directory.
+    environ : mapping, optional
+        Environment (default ``os.environ``), read for :data:`ENV_PROFILE_DIRS`.
+
+    Returns
+    -------
+    list of Path
+        ``base_dir`` and each directory of the variable, resolved (``~`` expanded).
+    """
     env = os.environ if environ is None else environ
     roots = [base_dir.resolve()]
     for part in env.get(ENV_PROFILE_DIRS, "").split(os.pathsep):
@@ -344,7 +464,21 @@ def profile_roots(base_dir: Path, environ: Mapping[str, str] | None = None) -> l
 
 
 def profile_allowed(path: Path, base_dir: Path, environ: Mapping[str, str] | None = None) -> bool:
-    """True when ``path`` (resolved, symbolic links followed) lies under an allowed directory."""
+    """True when ``path`` (resolved, symbolic links followed) lies under an allowed directory.
+
+    Parameters
+    ----------
+    path : Path
+        A profile file named by a case.
+    base_dir : Path
+        The case file's directory.
+    environ : mapping, optional
+        Environment (default ``os.environ``), read for :data:`ENV_PROFILE_DIRS`.
+
+    Returns
+    -------
+    bool
+    """
     resolved = path.resolve()
     return any(resolved.is_relative_to(root) for root in profile_roots(base_dir, environ))
 

@@ -9,14 +9,9 @@ import typer
 from rich.markup import escape
 from rich.table import Table
 
-__all__ = ["register"]
+from runout.cli.common import CaseArg, JsonOpt, _fail, _guard, _load, _out, _print_json
 
-# the same annotations as the other commands' (runout.cli.commands), at module level so that typer can
-# resolve them from this module's names
-CaseArg = Annotated[
-    Path, typer.Argument(help="TOML case file (see docs/case-file.md).", show_default=False)
-]
-JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON object on stdout.")]
+__all__ = ["register"]
 
 
 def _table(diagnosis: Any) -> list[Any]:
@@ -74,7 +69,6 @@ def _table(diagnosis: Any) -> list[Any]:
 
 def register(app: typer.Typer) -> None:
     """Add ``diagnose`` to ``app`` (the ``runout`` command line)."""
-    from runout.cli.common import _fail, _guard, _out, _print_json
 
     @app.command("diagnose")
     @_guard
@@ -146,8 +140,6 @@ def register(app: typer.Typer) -> None:
                 "analysis.linear_variant",
                 f'--variant must be "radial_spring" or "force_balance", got {variant!r}',
             )
-        from runout.cli.common import _load
-
         case = _load(case_file)
         directory = None
         if out is not None:

@@ -135,7 +135,14 @@ class Estimate:
     note: str = ""
 
     def to_json(self) -> dict[str, Any]:
-        """JSON-ready dict (units in key names)."""
+        """JSON-ready dict (units in key names).
+
+        Returns
+        -------
+        dict of str to Any
+            The attributes under their own names (``amplitude_m`` [m], ``phase_rad`` [rad],
+            ``uncertainty_m`` [m], ``frequency_hz`` [Hz]); ``lobes`` as a list.
+        """
         return {
             "part": self.part,
             "lobes": list(self.lobes),
@@ -157,6 +164,7 @@ class Unattributed:
     Attributes
     ----------
     frequency_hz : float
+        Frequency of the line [Hz].
     pp : float
         Peak-to-peak [m], or [m/s] for a velocity record.
     channel : str
@@ -234,7 +242,15 @@ class Diagnosis:
     spectrum: tuple[FloatArray, FloatArray, FloatArray] | None = None
 
     def to_json(self) -> dict[str, Any]:
-        """JSON-ready dict: finite numbers, units in key names."""
+        """JSON-ready dict: finite numbers, units in key names.
+
+        Returns
+        -------
+        dict of str to Any
+            Estimates, unattributed lines (``pp_m`` [m] or ``pp_m_per_s`` [m/s]), notes, the
+            record's description (``duration_s`` [s], ``sample_rate_hz`` [Hz]), the model,
+            ``rotation_hz`` [Hz], the residual noise and ``detection_limit_m`` [m].
+        """
         unit = "m" if self.quantity == "displacement" else "m_per_s"
         return {
             "estimates": [e.to_json() for e in self.estimates],
@@ -272,6 +288,11 @@ class Diagnosis:
 
         The case's own imperfection tables are dropped; ``[analysis]`` runs the linear model
         with the variant inverted. ``runout run`` on it gives the reconstructed lines.
+
+        Returns
+        -------
+        str
+            TOML text of the case (see :func:`estimated_case_text`).
         """
         return estimated_case_text(self.case, self.imperfections, self.variant, self.rotation_hz)
 
@@ -1160,7 +1181,27 @@ def _not_observable(
 
 
 def estimated_case_text(case: Any, imperfections: Any, variant: str, rotation_hz: float) -> str:
-    """Case-file text: ``case``'s bearing and operation with ``imperfections`` (SI numbers)."""
+    """Case-file text: ``case``'s bearing and operation with ``imperfections`` (SI numbers).
+
+    Parameters
+    ----------
+    case : runout.case.model.Case
+        The case whose bearing, material, operation, analysis and dynamics tables are kept
+        (its own imperfection and study tables are dropped).
+    imperfections : runout.geometry.imperfections.BearingImperfections
+        The deviations to write: amplitudes [m], phases [rad].
+    variant : str
+        Linear-model variant written into ``[analysis]``.
+    rotation_hz : float
+        Speed of the rotating ring [Hz]; written (in rpm, with the case's sign) when it
+        differs from the case's speed.
+
+    Returns
+    -------
+    str
+        TOML text with a comment header, the kept tables, the slant and one ``[[waviness]]``
+        table per harmonic (amplitude [m], phase [rad]).
+    """
     import tomli_w
 
     document = case.to_document()

@@ -114,7 +114,19 @@ class Example:
             object.__setattr__(self, "dynamics", MappingProxyType(dict(self.dynamics)))
 
     def with_analysis(self, **keys: Any) -> Example:
-        """The same example with these ``[analysis]`` keys changed (e.g. ``samples=1024``)."""
+        """The same example with these ``[analysis]`` keys changed (e.g. ``samples=1024``).
+
+        Parameters
+        ----------
+        **keys
+            ``[analysis]`` keys, by their case-file names, that replace or add to the
+            example's (``model``, ``revolutions``, ``samples``, ...).
+
+        Returns
+        -------
+        Example
+            A new example; this one is unchanged.
+        """
         return dataclasses.replace(self, analysis={**self.analysis, **keys})
 
     def case(self, **analysis: Any) -> Case:
@@ -124,6 +136,11 @@ class Example:
         ----------
         **analysis
             ``[analysis]`` keys that replace the example's (``model``, ``revolutions``, ...).
+
+        Returns
+        -------
+        runout.case.model.Case
+            The validated case, as a case file of the same content would give it.
         """
         return build_case(
             self.bearing,
@@ -142,6 +159,11 @@ class Example:
         **options
             ``[analysis]`` keys (``model``, ``revolutions``, ``samples``, ...) and
             ``[dynamics]`` keys that replace the example's.
+
+        Returns
+        -------
+        runout.analysis.results.RunResult
+            The result of the example's model.
         """
         from runout.api import run
 
@@ -179,6 +201,11 @@ def tada_bearing(
         Diametral play P_d [m] (default 10 um).
     contact_angle : float or str, optional
         Fixed contact angle [rad]; default free (set by clearance and preload).
+
+    Returns
+    -------
+    BallBearing
+        The bearing of Table 1 with these changes.
     """
     return BallBearing(
         elements=elements,
@@ -219,6 +246,11 @@ def tada(
         Preload [N].
     peak_to_peak : float or str
         Peak-to-peak height of each waviness [m].
+
+    Returns
+    -------
+    Example
+        The case of ``examples/seed000_tada_fig7.toml`` with these changes.
     """
     waves = Imperfections(elements=elements)
     for part in ("inner", "outer"):
@@ -251,6 +283,11 @@ def kim_bearing(*, elements: int = 10, radial_clearance: Quantity = "5 um") -> B
         Number of balls Z [-] (Table 2 varies it).
     radial_clearance : float or str
         Diametral play P_d [m].
+
+    Returns
+    -------
+    BallBearing
+        The bearing of Table 1 with these changes.
     """
     return BallBearing(
         elements=elements,
@@ -292,6 +329,11 @@ def kim(
         Radial load along -y [N] (none in the paper).
     oversize : float or str or None
         Diameter error of ball 1 [m]; None for perfect balls.
+
+    Returns
+    -------
+    Example
+        The case of ``examples/seed001_kim_spindle.toml`` with these changes.
     """
     errors: list[Quantity] = [0] * elements
     imperfections = None
@@ -328,6 +370,11 @@ def bearing_608(*, contact_angle: Quantity | None = "10 deg") -> BallBearing:
     ----------
     contact_angle : float or str or None
         Fixed contact angle [rad]; None for the free angle of a bearing without clearance.
+
+    Returns
+    -------
+    BallBearing
+        The 608 of Tab. 1.
     """
     return BallBearing(
         elements=7,
@@ -355,6 +402,11 @@ def anderon_608(*, speed: Quantity = "1800 rpm", axial_load: Quantity = "20 N") 
         Inner-ring speed [Hz].
     axial_load : float or str
         Axial load [N].
+
+    Returns
+    -------
+    Example
+        The case of ``examples/seed002_608.toml`` with these changes.
     """
     imperfections = (
         Imperfections(elements=7)
@@ -397,6 +449,11 @@ def purohit_bearing(*, elements: int = 9, radial_clearance: Quantity = "0.2 um")
         Number of balls Z [-] (the paper varies it).
     radial_clearance : float or str
         Diametral play P_d [m].
+
+    Returns
+    -------
+    BallBearing
+        The bearing of Table 2 with these changes.
     """
     diameter = _si("7.96 mm", "length")
     return BallBearing(
@@ -438,6 +495,11 @@ def purohit(
         Axial preload [N].
     radial_load_direction : float or str, optional
         Direction of the radial load from +x [rad]; default -y.
+
+    Returns
+    -------
+    Example
+        The case of ``examples/seed003_purohit.toml`` with these changes.
     """
     direction = {}
     if radial_load_direction is not None:
@@ -464,6 +526,11 @@ def nu209_bearing() -> RollerBearing:
     """The NU209 cylindrical roller bearing of seed 004 (Yu et al. 2017, Table 1).
 
     Fourteen 10 mm rollers between raceways of 54.991 mm and 75.032 mm.
+
+    Returns
+    -------
+    RollerBearing
+        The NU209 of Table 1.
     """
     return RollerBearing(
         elements=14,
@@ -496,6 +563,11 @@ def nu209(
         Inner-ring speed [Hz].
     radial_load : float or str
         Measuring load [N].
+
+    Returns
+    -------
+    Example
+        The case of ``examples/seed004_nu209.toml`` with these changes.
     """
     size = amplitude if isinstance(amplitude, str) else f"{amplitude * 1e6:.6g} um"
     return Example(

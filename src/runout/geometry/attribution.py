@@ -58,18 +58,25 @@ def attribution_rows(
     contact_angle : float
         α [rad].
     n_elements : int
-        Z (≥ 3).
+        Z (≥ 3) [-].
     rotating_ring : {"inner", "outer"}
         Which ring turns (the other is stationary).
     speed_hz : float
         Speed of the rotating ring [Hz] (≥ 0); frequencies are order × speed.
     n_max : int
-        Harmonics n = 1..n_max listed for the nZ ± 1 and 2n rows.
+        Harmonics n = 1..n_max listed for the nZ ± 1 and 2n rows [-].
 
     Returns
     -------
     list of dict
-        ``lobes`` is a string ("1", "nZ-1 = 6", "2n = 4", "-"); ``order`` ≥ 0.
+        ``lobes`` is a string ("1", "nZ-1 = 6", "2n = 4", "-"); ``order`` ≥ 0 (per revolution
+        of the rotating ring) [-]; ``frequency_hz`` is order × ``speed_hz`` [Hz].
+
+    Notes
+    -----
+    The rows follow seed 002 Tab. 3 (Anderon model, with the equation numbers quoted in each
+    row's ``formula``) and agree with seed 000 Tab. 2 (Tada) for the outer ring rotating; see
+    the module docstring.
     """
     if rotating_ring not in ("inner", "outer"):
         raise ValueError(f'rotating_ring must be "inner" or "outer", got {rotating_ring!r}')
@@ -152,7 +159,18 @@ def attribution_rows(
 
 
 def attribution_table_rows(rows: list[dict[str, Any]]) -> list[tuple[str, str, str]]:
-    """Three-column text rows (what, order, Hz) of :func:`attribution_rows` for tables."""
+    """Three-column text rows (what, order, Hz) of :func:`attribution_rows` for tables.
+
+    Parameters
+    ----------
+    rows : list of dict
+        Rows as returned by :func:`attribution_rows` (``order`` [-], ``frequency_hz`` [Hz]).
+
+    Returns
+    -------
+    list of tuple of str
+        ``(what, "order ...", "... Hz")`` for each row, numbers to six significant digits.
+    """
     return [
         (
             f"{r['part']} {r['factor']} [{r['lobes']}]: {r['formula']}",

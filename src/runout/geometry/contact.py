@@ -254,7 +254,17 @@ def ball_race_curvature(
 # Ellipticity and the elliptic integrals
 # --------------------------------------------------------------------------------------------
 class HertzIntegrals(NamedTuple):
-    """Ellipticity κ = a/b [-] and the complete elliptic integrals K(m), E(m), m = 1 - 1/κ²."""
+    """Ellipticity κ = a/b [-] and the complete elliptic integrals K(m), E(m), m = 1 - 1/κ².
+
+    Attributes
+    ----------
+    ellipticity : ndarray
+        κ = a/b (>= 1) [-].
+    first_kind : ndarray
+        Complete elliptic integral of the first kind K(m) [-].
+    second_kind : ndarray
+        Complete elliptic integral of the second kind E(m) [-].
+    """
 
     ellipticity: FloatArray
     first_kind: FloatArray
@@ -530,7 +540,21 @@ class PointContact:
     def from_radii(
         cls, r_i1: float, r_i2: float, r_ii1: float, r_ii2: float, effective_modulus: float
     ) -> PointContact:
-        """Contact of two bodies from their principal radii [m] (:func:`curvature_from_radii`)."""
+        """Contact of two bodies from their principal radii [m] (:func:`curvature_from_radii`).
+
+        Parameters
+        ----------
+        r_i1, r_i2, r_ii1, r_ii2 : float
+            Principal radii of body I and body II [m]: positive convex, negative concave,
+            ``numpy.inf`` flat; index 1 is the rolling plane, 2 the transverse plane.
+        effective_modulus : float
+            Harris's E' [Pa].
+
+        Returns
+        -------
+        PointContact
+            The contact solved by :func:`point_contact`.
+        """
         s, f = curvature_from_radii(r_i1, r_i2, r_ii1, r_ii2)
         return point_contact(float(s), float(f), effective_modulus)
 
@@ -540,21 +564,65 @@ class PointContact:
         return np.cbrt(3.0 * q / (self.effective_modulus * self.curvature_sum))
 
     def approach(self, load: ArrayLike) -> FloatArray:
-        """Elastic approach δ = (Q/K)^(2/3) [m] for a normal load Q [N] (>= 0)."""
+        """Elastic approach δ = (Q/K)^(2/3) [m] for a normal load Q [N] (>= 0).
+
+        Parameters
+        ----------
+        load : array_like
+            Normal contact load Q [N] (>= 0).
+
+        Returns
+        -------
+        ndarray
+            Approach δ [m].
+        """
         return (_check_load(load) / self.stiffness) ** (2.0 / 3.0)
 
     def load(self, approach: ArrayLike) -> FloatArray:
-        """Normal load Q = K [δ]₊^1.5 [N]; a negative approach (a gap) carries no load."""
+        """Normal load Q = K [δ]₊^1.5 [N]; a negative approach (a gap) carries no load.
+
+        Parameters
+        ----------
+        approach : array_like
+            Approach δ [m]; negative for a gap.
+
+        Returns
+        -------
+        ndarray
+            Normal load Q [N].
+        """
         d = _as_float_array(approach, "approach")
         return self.stiffness * np.maximum(d, 0.0) ** 1.5
 
     def semi_axes(self, load: ArrayLike) -> tuple[FloatArray, FloatArray]:
-        """Semi-major a and semi-minor b axes of the contact ellipse [m]."""
+        """Semi-major a and semi-minor b axes of the contact ellipse [m].
+
+        Parameters
+        ----------
+        load : array_like
+            Normal contact load Q [N] (>= 0).
+
+        Returns
+        -------
+        a, b : ndarray
+            Semi-major and semi-minor axes [m].
+        """
         lam = self._scale(load)
         return self.a_star * lam, self.b_star * lam
 
     def max_pressure(self, load: ArrayLike) -> FloatArray:
-        """Maximum Hertz pressure 3Q / (2π a b) [Pa] (0 at zero load)."""
+        """Maximum Hertz pressure 3Q / (2π a b) [Pa] (0 at zero load).
+
+        Parameters
+        ----------
+        load : array_like
+            Normal contact load Q [N] (>= 0).
+
+        Returns
+        -------
+        ndarray
+            Maximum pressure p_max [Pa].
+        """
         q = _check_load(load)
         a, b = self.semi_axes(q)
         with np.errstate(divide="ignore", invalid="ignore"):
@@ -654,11 +722,33 @@ class BallContacts:
     combined_stiffness: float
 
     def approach(self, load: ArrayLike) -> FloatArray:
-        """Total approach δ_i + δ_o = (Q/K_n)^(2/3) of the two raceways [m]."""
+        """Total approach δ_i + δ_o = (Q/K_n)^(2/3) of the two raceways [m].
+
+        Parameters
+        ----------
+        load : array_like
+            Ball load Q [N] (>= 0).
+
+        Returns
+        -------
+        ndarray
+            Total approach δ_i + δ_o [m].
+        """
         return (_check_load(load) / self.combined_stiffness) ** (2.0 / 3.0)
 
     def load(self, approach: ArrayLike) -> FloatArray:
-        """Ball load K_n [δ]₊^1.5 [N] for a total approach δ [m]."""
+        """Ball load K_n [δ]₊^1.5 [N] for a total approach δ [m].
+
+        Parameters
+        ----------
+        approach : array_like
+            Total approach δ of the two raceways [m]; negative for a gap.
+
+        Returns
+        -------
+        ndarray
+            Ball load Q [N].
+        """
         d = _as_float_array(approach, "approach")
         return self.combined_stiffness * np.maximum(d, 0.0) ** 1.5
 
@@ -706,13 +796,34 @@ def radius_ratio(curvature_difference: ArrayLike) -> FloatArray:
 
     With :math:`1/R_x` and :math:`1/R_y` the relative curvatures of the two principal planes,
     :math:`F = (1/R_x - 1/R_y)/(1/R_x + 1/R_y)`, so :math:`R_y/R_x = (1+F)/(1-F)`.
+
+    Parameters
+    ----------
+    curvature_difference : array_like
+        F(ρ) in [0, 1) [-].
+
+    Returns
+    -------
+    ndarray
+        Radius ratio R_y/R_x [-].
     """
     f = _as_float_array(curvature_difference, "curvature_difference")
     return (1.0 + f) / (1.0 - f)
 
 
 def curvature_difference_from_ratio(ratio: ArrayLike) -> FloatArray:
-    """F(ρ) = (r - 1)/(r + 1) for a radius ratio r = R_y/R_x >= 1 (inverse of radius_ratio)."""
+    """F(ρ) = (r - 1)/(r + 1) for a radius ratio r = R_y/R_x >= 1 (inverse of radius_ratio).
+
+    Parameters
+    ----------
+    ratio : array_like
+        Radius ratio r = R_y/R_x (>= 1) [-].
+
+    Returns
+    -------
+    ndarray
+        Curvature difference F(ρ) [-].
+    """
     r = _as_float_array(ratio, "ratio")
     return (r - 1.0) / (r + 1.0)
 
@@ -731,6 +842,16 @@ def hamrock_brewe(ratio: ArrayLike) -> HertzIntegrals:
 
     Their stated accuracy is a few per cent; used here only as a cross-check and as the
     starting point of :func:`ellipticity`.
+
+    Parameters
+    ----------
+    ratio : array_like
+        Radius ratio r = R_y/R_x (>= 1) [-].
+
+    Returns
+    -------
+    HertzIntegrals
+        Approximate κ, :math:`\mathcal{K}` and :math:`\mathcal{E}` [-].
     """
     r = _as_float_array(ratio, "ratio")
     return HertzIntegrals(1.0339 * r**0.636, 1.5277 + 0.6023 * np.log(r), 1.0003 + 0.5968 / r)
@@ -810,6 +931,15 @@ def stiffness_from_delta_star_table(
     :math:`K = \tfrac{2\sqrt2}{3}E'(\Sigma\rho)^{-1/2}(\delta^*)^{-3/2}` (seed 003 eq. 2.12-2.13
     generalised to any E'), with δ* from :func:`delta_star_from_table`.
 
+    Parameters
+    ----------
+    curvature_sum : array_like
+        Σρ [1/m].
+    curvature_difference : array_like
+        F(ρ) within the table's range [0, 0.9998527] [-].
+    effective_modulus : array_like
+        Harris's E' [Pa].
+
     Returns
     -------
     ndarray
@@ -845,6 +975,11 @@ def harris_steel_approach(
         Σρ [1/m].
     delta_star : array_like
         δ* [-] (from :func:`dimensionless_factors` or :func:`delta_star_from_table`).
+
+    Returns
+    -------
+    ndarray
+        Approach δ [m].
 
     Notes
     -----
@@ -891,6 +1026,11 @@ def ball_flat_contact_radius(
         :math:`r_b` [m].
     material : Material or None
         E and ν; default steel (``Material()``).
+
+    Returns
+    -------
+    ndarray
+        Contact radius r [m].
     """
     mat = Material() if material is None else material
     _positive_array(ball_radius, "ball_radius")
@@ -953,6 +1093,25 @@ def ball_flat_cap_displacement(
     """Inverse of :func:`ball_flat_cap_force` (the small root, x <= r_b) [m].
 
     x = r_b - sqrt(r_b² - r²) with r from :func:`ball_flat_contact_radius` (seed 002 eq. 9).
+
+    Parameters
+    ----------
+    load : array_like
+        Contact force f [N].
+    ball_radius : float
+        :math:`r_b` [m].
+    material : Material or None
+        E and ν; default steel.
+
+    Returns
+    -------
+    ndarray
+        Contact displacement x [m], 0 <= x <= r_b.
+
+    Notes
+    -----
+    Seed 002 eq. 9-10; see :func:`ball_flat_cap_force` for how x relates to the Hertz
+    approach.
     """
     r = ball_flat_contact_radius(load, ball_radius, material)
     if np.any(r > ball_radius):
@@ -1018,7 +1177,26 @@ def line_contact_approach(
 def line_contact_load(
     approach: ArrayLike, length: ArrayLike, effective_modulus: float = _STEEL_EFFECTIVE_MODULUS
 ) -> FloatArray:
-    """Inverse of :func:`line_contact_approach`: Q = K [δ]₊^(10/9) [N]."""
+    """Inverse of :func:`line_contact_approach`: Q = K [δ]₊^(10/9) [N].
+
+    Parameters
+    ----------
+    approach : array_like
+        δ [m]; negative for a gap (no load).
+    length : array_like
+        Effective contact length l [m].
+    effective_modulus : float
+        Harris's E' [Pa]; default steel (E = 207.5 GPa, ν = 0.3, Harris's values).
+
+    Returns
+    -------
+    ndarray
+        Q [N].
+
+    Notes
+    -----
+    Palmgren's law as quoted by Harris (*Rolling Bearing Analysis*, ch. 6), inverted.
+    """
     d = _as_float_array(approach, "approach")
     ln = _positive_array(length, "length")
     scale = (_STEEL_EFFECTIVE_MODULUS / effective_modulus) ** _LINE_EXP
@@ -1047,22 +1225,66 @@ class LineContact:
     stiffness: float
 
     def approach(self, load: ArrayLike) -> FloatArray:
-        """Palmgren approach δ [m] for a roller load Q [N]."""
+        """Palmgren approach δ [m] for a roller load Q [N].
+
+        Parameters
+        ----------
+        load : array_like
+            Roller load Q [N] (>= 0).
+
+        Returns
+        -------
+        ndarray
+            Approach δ [m] (:func:`line_contact_approach`).
+        """
         return line_contact_approach(load, self.length, self.effective_modulus)
 
     def load(self, approach: ArrayLike) -> FloatArray:
-        """Roller load Q [N] for an approach δ [m] (0 for a gap)."""
+        """Roller load Q [N] for an approach δ [m] (0 for a gap).
+
+        Parameters
+        ----------
+        approach : array_like
+            Approach δ [m]; negative for a gap.
+
+        Returns
+        -------
+        ndarray
+            Roller load Q [N] (:func:`line_contact_load`).
+        """
         return line_contact_load(approach, self.length, self.effective_modulus)
 
     def semi_width(self, load: ArrayLike) -> FloatArray:
-        r"""Hertz half-width :math:`b = [8Q/(\pi l E'\Sigma\rho)]^{1/2}` [m] (Harris ch. 6)."""
+        r"""Hertz half-width :math:`b = [8Q/(\pi l E'\Sigma\rho)]^{1/2}` [m] (Harris ch. 6).
+
+        Parameters
+        ----------
+        load : array_like
+            Roller load Q [N] (>= 0).
+
+        Returns
+        -------
+        ndarray
+            Half-width b of the contact band [m].
+        """
         q = _check_load(load)
         return np.sqrt(
             8.0 * q / (np.pi * self.length * self.effective_modulus * self.curvature_sum)
         )
 
     def max_pressure(self, load: ArrayLike) -> FloatArray:
-        """Hertz maximum pressure 2Q / (π b l) [Pa] (0 at zero load)."""
+        """Hertz maximum pressure 2Q / (π b l) [Pa] (0 at zero load).
+
+        Parameters
+        ----------
+        load : array_like
+            Roller load Q [N] (>= 0).
+
+        Returns
+        -------
+        ndarray
+            Maximum pressure p_max [Pa].
+        """
         q = _check_load(load)
         b = self.semi_width(q)
         with np.errstate(divide="ignore", invalid="ignore"):
@@ -1087,11 +1309,33 @@ class RollerContacts:
     combined_stiffness: float
 
     def approach(self, load: ArrayLike) -> FloatArray:
-        """Combined approach δ_i + δ_o [m] for a roller load Q [N]."""
+        """Combined approach δ_i + δ_o [m] for a roller load Q [N].
+
+        Parameters
+        ----------
+        load : array_like
+            Roller load Q [N] (>= 0).
+
+        Returns
+        -------
+        ndarray
+            Combined approach δ_i + δ_o [m].
+        """
         return self.inner.approach(load) + self.outer.approach(load)
 
     def load(self, approach: ArrayLike) -> FloatArray:
-        """Roller load Q [N] for a combined approach δ_i + δ_o [m]."""
+        """Roller load Q [N] for a combined approach δ_i + δ_o [m].
+
+        Parameters
+        ----------
+        approach : array_like
+            Combined approach δ_i + δ_o [m]; negative for a gap.
+
+        Returns
+        -------
+        ndarray
+            Roller load Q [N].
+        """
         d = _as_float_array(approach, "approach")
         return self.combined_stiffness * np.maximum(d, 0.0) ** (1.0 / _LINE_EXP)
 
@@ -1215,6 +1459,7 @@ def ball_load_validity(
     Parameters
     ----------
     bearing : BallBearing
+        Geometry and material.
     load : float
         Normal ball load Q [N].
     contact_angle : float
@@ -1223,6 +1468,12 @@ def ball_load_validity(
         Case key of the load, for the findings.
     what : str
         The load in words (``"the most loaded ball, about 3.2e4 N"``).
+
+    Returns
+    -------
+    list of HertzFinding
+        The most severe finding of the two raceways (empty when the contact is valid or the
+        load is not a finite positive force).
     """
     if not (math.isfinite(load) and load > 0.0):
         return []
@@ -1251,6 +1502,23 @@ def roller_load_validity(
 
     The line contact's width 2b against the roller diameter, and its maximum pressure against
     the steel's hardness (error) and the ISO 76 static limit of roller bearings (warning).
+
+    Parameters
+    ----------
+    bearing : RollerBearing
+        Geometry and material; without ``roller_length`` nothing is checked.
+    load : float
+        Roller load Q [N].
+    key : str
+        Case key of the load, for the findings.
+    what : str
+        The load in words.
+
+    Returns
+    -------
+    list of HertzFinding
+        The most severe finding of the two raceways (empty when the contact is valid, the
+        roller length is unknown or the load is not a finite positive force).
     """
     if bearing.roller_length is None or not (math.isfinite(load) and load > 0.0):
         return []

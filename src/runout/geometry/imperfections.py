@@ -126,6 +126,22 @@ def slant_amplitude(angle: float, radius: float) -> float:
     r"""W_s from a slant angle β (seed 002 eq. 34): ``W_s = r (1 − cos β) / (2 cos β)`` [m].
 
     Evaluated as ``r sin²(β/2) / cos β`` (no cancellation for small β).
+
+    Parameters
+    ----------
+    angle : float
+        Slant angle β [rad], |β| < π/2.
+    radius : float
+        Radius r_o at which the slant is seen [m] (> 0); see the Notes of :class:`Slant`.
+
+    Returns
+    -------
+    float
+        W_s, zero-to-peak [m] (≥ 0).
+
+    Notes
+    -----
+    Seed 002 (Anderon calculation model) eq. 34.
     """
     _check_radius(radius)
     if not (math.isfinite(angle) and 0.0 <= abs(angle) < 0.5 * math.pi):
@@ -134,7 +150,24 @@ def slant_amplitude(angle: float, radius: float) -> float:
 
 
 def slant_angle(amplitude: float, radius: float) -> float:
-    """Inverse of :func:`slant_amplitude`: β = 2 asin √(W_s / (r + 2 W_s)) [rad] (≥ 0)."""
+    """Inverse of :func:`slant_amplitude`: β = 2 asin √(W_s / (r + 2 W_s)) [rad] (≥ 0).
+
+    Parameters
+    ----------
+    amplitude : float
+        W_s, zero-to-peak [m] (≥ 0).
+    radius : float
+        Radius r_o at which the slant is seen [m] (> 0).
+
+    Returns
+    -------
+    float
+        Slant angle β [rad] (≥ 0).
+
+    Notes
+    -----
+    Seed 002 (Anderon calculation model) eq. 34, solved for β.
+    """
     _check_radius(radius)
     if not (math.isfinite(amplitude) and amplitude >= 0.0):
         raise ImperfectionError(
@@ -196,6 +229,20 @@ class Slant:
 
         ``radius`` is r_o [m], or a bearing whose outer raceway radius ``d_o / 2`` is used (see
         the Notes of the class).
+
+        Parameters
+        ----------
+        angle : float
+            Slant angle β [rad], |β| < π/2.
+        radius : float or BallBearing or RollerBearing
+            r_o [m], or a bearing supplying ``outer_raceway_diameter / 2``.
+        phase : float
+            φ_s [rad].
+
+        Returns
+        -------
+        Slant
+            The slant with W_s from :func:`slant_amplitude` [m].
         """
         if isinstance(radius, int | float):
             return cls(slant_amplitude(angle, float(radius)), phase)
@@ -224,6 +271,16 @@ class Slant:
             φ_s [rad].
         radius : float, optional
             The r_o of eq. 34 [m], overriding the default.
+
+        Returns
+        -------
+        Slant
+            The slant, amplitude W_s [m] and phase φ_s [rad].
+
+        Raises
+        ------
+        ImperfectionError
+            Unless exactly one of ``amplitude`` and ``angle`` is given.
         """
         if (amplitude is None) == (angle is None):
             raise ImperfectionError("slant", "give exactly one of amplitude (W_s) and angle")
@@ -234,7 +291,18 @@ class Slant:
         return cls.from_angle(angle, r, phase)
 
     def angle(self, radius: float) -> float:
-        """The slant angle β [rad] that gives this W_s at radius r [m]."""
+        """The slant angle β [rad] that gives this W_s at radius r [m].
+
+        Parameters
+        ----------
+        radius : float
+            Radius r at which the slant is seen [m] (> 0).
+
+        Returns
+        -------
+        float
+            β [rad] (≥ 0), by :func:`slant_angle`.
+        """
         return slant_angle(self.amplitude, radius)
 
     @property
@@ -243,7 +311,22 @@ class Slant:
         return 2.0 * self.amplitude
 
     def displacement(self, theta: ArrayLike) -> NDArray[np.float64]:
-        """``W_s cos(2θ − φ_s)`` [m] at inner-ring angles θ [rad] (seed 002 eq. 35)."""
+        """``W_s cos(2θ − φ_s)`` [m] at inner-ring angles θ [rad] (seed 002 eq. 35).
+
+        Parameters
+        ----------
+        theta : array_like
+            Inner-ring rotation angle θ [rad].
+
+        Returns
+        -------
+        ndarray
+            Slant displacement [m], shaped like ``theta``.
+
+        Notes
+        -----
+        Seed 002 (Anderon calculation model) eq. 35.
+        """
         t = np.asarray(theta, dtype=np.float64)
         return self.amplitude * np.cos(2.0 * t - self.phase)
 
@@ -375,7 +458,18 @@ class BearingImperfections:
 
     @classmethod
     def perfect(cls, n_elements: int) -> BearingImperfections:
-        """A bearing of ``n_elements`` perfect parts."""
+        """A bearing of ``n_elements`` perfect parts.
+
+        Parameters
+        ----------
+        n_elements : int
+            Number of rolling elements Z (≥ 1) [-].
+
+        Returns
+        -------
+        BearingImperfections
+            Every deviation zero.
+        """
         if isinstance(n_elements, bool) or not isinstance(n_elements, int | np.integer):
             raise ImperfectionError("n_elements", f"must be an integer, got {n_elements!r}")
         if n_elements < 1:
@@ -406,6 +500,25 @@ class BearingImperfections:
         ``diameter_errors[index]`` (order 0) plus ``r(θ) + r(θ + π)`` of its waviness (seed
         002 eq. 26); θ is the contact point's angle in the element's frame. An order-0 term in
         ``elements[index]`` (a radius error) adds twice its value.
+
+        Parameters
+        ----------
+        index : int
+            0-based element index (negative counts from the end).
+
+        Returns
+        -------
+        Harmonics
+            Diameter deviation w_b(θ) [m], even orders only plus the order-0 size error.
+
+        Raises
+        ------
+        IndexError
+            If ``index`` is out of range.
+
+        Notes
+        -----
+        Seed 002 (Anderon calculation model) eq. 26.
         """
         if not -self.n_elements <= index < self.n_elements:
             raise IndexError(f"element index {index} out of range for {self.n_elements} elements")
@@ -414,7 +527,13 @@ class BearingImperfections:
         return h + Harmonics([0], [d]) if d != 0.0 else h
 
     def element_diameter_deviations(self) -> tuple[Harmonics, ...]:
-        """:meth:`element_diameter_deviation` of every element."""
+        """:meth:`element_diameter_deviation` of every element.
+
+        Returns
+        -------
+        tuple of Harmonics
+            Diameter deviation of each element [m], length Z.
+        """
         return tuple(self.element_diameter_deviation(j) for j in range(self.n_elements))
 
     def evaluate_element_diameters(self, theta: ArrayLike) -> NDArray[np.float64]:
@@ -424,6 +543,11 @@ class BearingImperfections:
         ----------
         theta : array_like, shape (Z, N) or (N,)
             Contact-point angle in each element's frame [rad]; a 1-D array is used for all.
+
+        Returns
+        -------
+        ndarray, shape (Z, N)
+            Diameter deviation of each element at its angles [m].
         """
         from runout.geometry._kernels import harmonic_sum_rows
 
@@ -451,15 +575,48 @@ class BearingImperfections:
         return BearingImperfections(**kwargs)
 
     def with_inner(self, harmonics: Harmonics) -> BearingImperfections:
-        """Copy with the inner raceway replaced."""
+        """Copy with the inner raceway replaced.
+
+        Parameters
+        ----------
+        harmonics : Harmonics
+            New radius deviation of the inner raceway [m].
+
+        Returns
+        -------
+        BearingImperfections
+            The copy.
+        """
         return self._replace(inner=harmonics)
 
     def with_outer(self, harmonics: Harmonics) -> BearingImperfections:
-        """Copy with the outer raceway replaced."""
+        """Copy with the outer raceway replaced.
+
+        Parameters
+        ----------
+        harmonics : Harmonics
+            New radius deviation of the outer raceway [m].
+
+        Returns
+        -------
+        BearingImperfections
+            The copy.
+        """
         return self._replace(outer=harmonics)
 
     def with_elements(self, elements: Sequence[Harmonics]) -> BearingImperfections:
-        """Copy with every element's waviness replaced (length Z)."""
+        """Copy with every element's waviness replaced (length Z).
+
+        Parameters
+        ----------
+        elements : sequence of Harmonics
+            New radius deviation of each element [m], length Z.
+
+        Returns
+        -------
+        BearingImperfections
+            The copy.
+        """
         if len(elements) != self.n_elements:
             raise ImperfectionError(
                 "imperfections.elements",
@@ -468,11 +625,33 @@ class BearingImperfections:
         return self._replace(elements=tuple(elements))
 
     def with_diameter_errors(self, values: ArrayLike) -> BearingImperfections:
-        """Copy with new element diameter errors [m], shape (Z,)."""
+        """Copy with new element diameter errors [m], shape (Z,).
+
+        Parameters
+        ----------
+        values : array_like, shape (Z,)
+            Diameter deviation of each element from the nominal diameter [m].
+
+        Returns
+        -------
+        BearingImperfections
+            The copy.
+        """
         return self._replace(diameter_errors=values)
 
     def with_pitch_errors(self, values: ArrayLike) -> BearingImperfections:
-        """Copy with new element pitch errors [rad], shape (Z,)."""
+        """Copy with new element pitch errors [rad], shape (Z,).
+
+        Parameters
+        ----------
+        values : array_like, shape (Z,)
+            Angular position error of each element [rad], positive counter-clockwise.
+
+        Returns
+        -------
+        BearingImperfections
+            The copy.
+        """
         return self._replace(pitch_errors=values)
 
     def with_element_errors(
@@ -480,7 +659,20 @@ class BearingImperfections:
         diameter_errors: ArrayLike | None = None,
         pitch_errors: ArrayLike | None = None,
     ) -> BearingImperfections:
-        """Copy with the given per-element errors replaced (None keeps the current ones)."""
+        """Copy with the given per-element errors replaced (None keeps the current ones).
+
+        Parameters
+        ----------
+        diameter_errors : array_like, shape (Z,), optional
+            Diameter deviation of each element [m].
+        pitch_errors : array_like, shape (Z,), optional
+            Angular position error of each element [rad].
+
+        Returns
+        -------
+        BearingImperfections
+            The copy.
+        """
         changes: dict[str, Any] = {}
         if diameter_errors is not None:
             changes["diameter_errors"] = diameter_errors
@@ -489,7 +681,18 @@ class BearingImperfections:
         return self._replace(**changes)
 
     def with_slant(self, slant: Slant | None) -> BearingImperfections:
-        """Copy with the slant replaced (None removes it)."""
+        """Copy with the slant replaced (None removes it).
+
+        Parameters
+        ----------
+        slant : Slant or None
+            New inner-raceway slant (amplitude [m], phase [rad]).
+
+        Returns
+        -------
+        BearingImperfections
+            The copy.
+        """
         return self._replace(slant=slant)
 
     def element_phases_from_fixed_frame(self) -> BearingImperfections:
@@ -545,6 +748,11 @@ class BearingImperfections:
         element : int or sequence of int, optional
             Rolling elements only: 1-based element number(s) (as in the case file); None adds
             to every element.
+
+        Returns
+        -------
+        BearingImperfections
+            The copy.
         """
         if not isinstance(harmonics, Harmonics):
             raise ImperfectionError(
@@ -590,6 +798,11 @@ class BearingImperfections:
         None), ``kind`` ("waviness", "diameter_error", "pitch_error", "slant"), ``order``,
         ``amplitude`` (zero-to-peak; for diameter and pitch errors the signed error),
         ``phase`` [rad] and ``unit`` ("m" or "rad"). Zero errors are omitted.
+
+        Returns
+        -------
+        list of dict
+            The rows, keyed as above; ``amplitude`` in the row's ``unit`` ([m] or [rad]).
         """
         rows: list[dict[str, Any]] = []
 
@@ -669,11 +882,18 @@ def anderon_608_example(
 
     Parameters
     ----------
-    seed, rng
-        Source of the random phases (exactly one).
+    seed : int, optional
+        Seed of a new :func:`numpy.random.default_rng` for the random phases.
+    rng : numpy.random.Generator, optional
+        Generator of the random phases (exactly one of ``seed`` and ``rng``).
     ball_waviness : {"first", "all"}
         Eq. 47 is written for ball z = 0 only (``W_b0k``); "first" follows that literally,
         "all" gives every ball the same law with its own random phases.
+
+    Returns
+    -------
+    BearingImperfections
+        Seven balls; amplitudes [m], phases [rad].
     """
     if ball_waviness not in ("first", "all"):
         raise ImperfectionError("ball_waviness", f'must be "first" or "all", got {ball_waviness!r}')

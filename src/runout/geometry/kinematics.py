@@ -65,6 +65,11 @@ def pitch_ratio(
         Pitch diameter d_m [m].
     contact_angle : array_like
         Contact angle α [rad].
+
+    Returns
+    -------
+    ndarray or float
+        γ [-], broadcast over the inputs.
     """
     return np.asarray(ball_diameter) * np.cos(contact_angle) / np.asarray(pitch_diameter)
 
@@ -80,8 +85,6 @@ def cage_frequency(
 
     .. math:: f_c = \\tfrac12 f_i (1-γ) + \\tfrac12 f_o (1+γ)
 
-    Seed 003 eq. 2.18; seed 002 eq. 5; seed 001 eq. 7.
-
     Parameters
     ----------
     inner_speed, outer_speed : array_like
@@ -90,6 +93,16 @@ def cage_frequency(
         D and d_m [m].
     contact_angle : array_like
         α [rad].
+
+    Returns
+    -------
+    ndarray or float
+        f_c [Hz], signed like the ring speeds.
+
+    Notes
+    -----
+    Seed 003 eq. 2.18; seed 002 eq. 5; seed 001 eq. 7 (Purohit & Purohit 2006; the Anderon
+    calculation model; Kim, Choi & Yoon).
     """
     g = pitch_ratio(ball_diameter, pitch_diameter, contact_angle)
     return 0.5 * np.asarray(inner_speed) * (1.0 - g) + 0.5 * np.asarray(outer_speed) * (1.0 + g)
@@ -106,8 +119,26 @@ def ball_spin_frequency(
 
     .. math:: f_b = \\frac{d_m}{2D}(1-γ^2)\\,|f_i - f_o|
 
-    Seed 002 eq. 4, seed 001 eq. 9. The sense is opposite to the inner ring's motion relative
-    to the cage; only the magnitude is returned.
+    The sense is opposite to the inner ring's motion relative to the cage; only the magnitude
+    is returned.
+
+    Parameters
+    ----------
+    inner_speed, outer_speed : array_like
+        Ring rotation frequencies [Hz], signed.
+    ball_diameter, pitch_diameter : array_like
+        D and d_m [m].
+    contact_angle : array_like
+        α [rad].
+
+    Returns
+    -------
+    ndarray or float
+        f_b [Hz] (>= 0).
+
+    Notes
+    -----
+    Seed 002 eq. 4, seed 001 eq. 9 (the Anderon calculation model; Kim, Choi & Yoon).
     """
     g = pitch_ratio(ball_diameter, pitch_diameter, contact_angle)
     ratio = np.asarray(pitch_diameter) / (2.0 * np.asarray(ball_diameter))
@@ -124,7 +155,26 @@ def ball_pass_inner_frequency(
 ) -> Any:
     """Rate at which elements pass a point of the inner raceway, Z |f_i - f_c| [Hz].
 
-    Seed 002 eq. 49 (flaw pulse rate on the inner ring); Tada's f_i for a stationary inner ring.
+    Parameters
+    ----------
+    n_elements : array_like
+        Number of elements Z [-].
+    inner_speed, outer_speed : array_like
+        Ring rotation frequencies [Hz], signed.
+    ball_diameter, pitch_diameter : array_like
+        D and d_m [m].
+    contact_angle : array_like
+        α [rad].
+
+    Returns
+    -------
+    ndarray or float
+        f_BPI [Hz] (>= 0).
+
+    Notes
+    -----
+    Seed 002 eq. 49 (flaw pulse rate on the inner ring); Tada's f_i for a stationary inner ring
+    (seed 000, Tada 2002).
     """
     fc = cage_frequency(inner_speed, outer_speed, ball_diameter, pitch_diameter, contact_angle)
     return np.asarray(n_elements) * np.abs(np.asarray(inner_speed) - fc)
@@ -140,7 +190,26 @@ def ball_pass_outer_frequency(
 ) -> Any:
     """Rate at which elements pass a point of the outer raceway, Z |f_o - f_c| [Hz].
 
-    Seed 002 eq. 53; seed 003 eq. 2.20 (ball passage frequency, stationary outer race).
+    Parameters
+    ----------
+    n_elements : array_like
+        Number of elements Z [-].
+    inner_speed, outer_speed : array_like
+        Ring rotation frequencies [Hz], signed.
+    ball_diameter, pitch_diameter : array_like
+        D and d_m [m].
+    contact_angle : array_like
+        α [rad].
+
+    Returns
+    -------
+    ndarray or float
+        f_BPO [Hz] (>= 0).
+
+    Notes
+    -----
+    Seed 002 eq. 53; seed 003 eq. 2.20 (ball passage frequency, stationary outer race)
+    (the Anderon calculation model; Purohit & Purohit 2006).
     """
     fc = cage_frequency(inner_speed, outer_speed, ball_diameter, pitch_diameter, contact_angle)
     return np.asarray(n_elements) * np.abs(np.asarray(outer_speed) - fc)
@@ -152,6 +221,17 @@ class Frequencies:
 
     ``rotation`` is the speed of the rotating ring; every other frequency divided by it is an
     order (waves per revolution of the rotating ring), see :meth:`orders`.
+
+    Attributes
+    ----------
+    rotation : float
+        Speed of the rotating ring [Hz].
+    cage : float
+        Cage frequency f_c, seen from the stationary frame [Hz].
+    ball_spin : float
+        Element spin about its own axis relative to the cage f_b [Hz].
+    ball_pass_inner, ball_pass_outer : float
+        Ball-pass frequencies of the inner and outer raceways [Hz].
     """
 
     rotation: float
@@ -161,11 +241,28 @@ class Frequencies:
     ball_pass_outer: float
 
     def to_dict(self) -> dict[str, float]:
-        """Frequencies in Hz keyed as in the JSON contract (``frequencies_hz``)."""
+        """Frequencies in Hz keyed as in the JSON contract (``frequencies_hz``).
+
+        Returns
+        -------
+        dict of str to float
+            Field name to frequency [Hz].
+        """
         return asdict(self)
 
     def orders(self) -> dict[str, float]:
-        """The same frequencies in orders of the rotating ring's speed [-]."""
+        """The same frequencies in orders of the rotating ring's speed [-].
+
+        Returns
+        -------
+        dict of str to float
+            Field name to order [-] (``rotation`` is 1).
+
+        Raises
+        ------
+        ZeroDivisionError
+            At zero speed.
+        """
         if self.rotation == 0.0:
             raise ZeroDivisionError("orders are undefined at zero speed")
         return {k: v / self.rotation for k, v in asdict(self).items()}

@@ -69,6 +69,16 @@ def write_columns(path: Path, header: list[str], columns: list[NDArray[np.float6
 def read_result_json(directory: Path) -> dict[str, Any]:
     """The JSON object of ``directory / "result.json"``.
 
+    Parameters
+    ----------
+    directory : Path
+        A run directory (``runout run --out``).
+
+    Returns
+    -------
+    dict of str to Any
+        The decoded JSON contract (values SI, as written).
+
     Raises
     ------
     RunoutError
@@ -86,6 +96,18 @@ def read_result_json(directory: Path) -> dict[str, Any]:
 
 def read_history(path: Path) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """Time [s] and displacement (3, n) [m] of a ``history.csv``.
+
+    Parameters
+    ----------
+    path : Path
+        The ``history.csv`` file (columns :data:`HISTORY_COLUMNS`).
+
+    Returns
+    -------
+    time : ndarray, shape (n,)
+        Sample times [s].
+    displacement : ndarray, shape (3, n)
+        Displacement x, y, z [m].
 
     Raises
     ------

@@ -31,7 +31,13 @@ MODEL_MODULES: dict[str, str] = {
 
 
 def available_models() -> list[str]:
-    """Model ids this installation provides."""
+    """Model ids this installation provides.
+
+    Returns
+    -------
+    list of str
+        The ids of :data:`MODEL_MODULES` whose module can be imported, sorted.
+    """
     return sorted(
         model
         for model, module in MODEL_MODULES.items()
@@ -53,6 +59,11 @@ def measuring_direction(case: Any, model: str | None = None) -> NDArray[np.float
         A validated case.
     model : str, optional
         Model id; default the case's ``[analysis] model``.
+
+    Returns
+    -------
+    ndarray, shape (2,)
+        Unit vector (x, y) of the measuring direction [-].
     """
     model = model or case.analysis.model
     op = case.operation

@@ -179,6 +179,21 @@ def ball_passage_frequency(st: DynamicSetup) -> float:
     Seed 003 eq. 2.20 writes it for a stationary outer ring, where it is also the rate at which
     balls pass a point of the outer ring; with the outer ring turning the stiffness still varies
     with the balls' positions relative to the (fixed) load.
+
+    Parameters
+    ----------
+    st : DynamicSetup
+        The model's setup (:func:`setup`); gives Z and the cage frequency f_c [Hz].
+
+    Returns
+    -------
+    float
+        Ball passage frequency Z |f_c| [Hz].
+
+    Notes
+    -----
+    Purohit & Purohit, "Dynamic analysis of ball bearings with effect of preload and number
+    of balls" (2006), eq. 2.20 (seed 003).
     """
     return st.n_elements * abs(st.kinematics.cage)
 
@@ -192,6 +207,28 @@ def candidate_lines(
     003 eq. 2.20), the unbalance at f_i and its interactions, the linearised natural
     frequencies, and every line of the imperfections (:func:`predicted_lines`, with the
     linearised model's phasors for the shares).
+
+    Parameters
+    ----------
+    st : DynamicSetup
+        The model's setup (:func:`setup`): kinematics [Hz], degrees of freedom, unbalance
+        force [N] and preloaded contact angle [rad].
+    imperfections : BearingImperfections
+        The case's imperfections (raceway and ball waviness, size and pitch errors).
+    natural : ndarray
+        Linearised natural frequencies [Hz].
+    loaded : bool, optional
+        A radial load is applied: adds the load-zone lines of the imperfections. Default False.
+
+    Returns
+    -------
+    list of Candidate
+        Candidate lines, frequencies [Hz], each with its source.
+
+    Notes
+    -----
+    Ball passage lines after Purohit & Purohit, "Dynamic analysis of ball bearings with effect
+    of preload and number of balls" (2006), eq. 2.20 (seed 003).
     """
     kin = st.kinematics
     fbp = ball_passage_frequency(st)

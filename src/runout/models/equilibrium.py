@@ -306,7 +306,15 @@ class EquilibriumSolution:
     residual: float
 
     def ball_table(self) -> list[dict[str, float]]:
-        """One row per ball, SI values with the unit in the key."""
+        """One row per ball, SI values with the unit in the key.
+
+        Returns
+        -------
+        list of dict
+            One dict per ball: ``ball`` (number from 1), ``azimuth_deg`` [deg], inner and
+            outer contact angles [deg], loads [N] and approaches [m], ``centrifugal_force_n``
+            [N], ``gyroscopic_moment_n_m`` [N m], ``orbit_speed_hz`` and ``spin_speed_hz`` [Hz].
+        """
         rows = []
         for j in range(self.azimuth.size):
             rows.append(
@@ -731,6 +739,11 @@ def _moment_start(ring: _Ring, op: Operation) -> NDArray[np.float64]:
 def setup(case: Case) -> None:
     """The input checks of :func:`solve_equilibrium` for a case, without solving anything.
 
+    Parameters
+    ----------
+    case : Case
+        A validated case with ``[analysis] model = "equilibrium"``.
+
     Raises
     ------
     GeometryError
@@ -765,6 +778,8 @@ def solve_equilibrium(
     Returns
     -------
     EquilibriumSolution
+        The converged ring displacement [m, rad], the 5×5 stiffness matrix and the per-ball
+        contact angles [rad], loads [N], approaches [m] and speeds [rad/s].
 
     Raises
     ------
@@ -851,6 +866,13 @@ class EquilibriumResult(RunResult):
     Its tables and files come from :attr:`details`
     (:class:`~runout.analysis.result_details.EquilibriumDetails`, also in the JSON); ``solution``
     is the full solution (per-ball speeds, forces, the Newton record) for Python use.
+
+    Attributes
+    ----------
+    solution : EquilibriumSolution or None
+        The converged Jones–Harris state: ring displacement [m, rad], stiffness matrix,
+        per-ball contact angles [rad], loads [N], approaches [m] and speeds [rad/s]. The other
+        fields are those of :class:`RunResult`.
     """
 
     solution: EquilibriumSolution | None = None
@@ -877,6 +899,7 @@ def radial_stiffness(sol: EquilibriumSolution, speed_hz: float) -> RadialStiffne
     Parameters
     ----------
     sol : EquilibriumSolution
+        Converged equilibrium (:func:`solve_equilibrium`), stiffness matrix in SI units.
     speed_hz : float
         Speed of the rotating ring [Hz] (reported as ``speed_rpm``).
 
@@ -899,7 +922,32 @@ def radial_stiffness(sol: EquilibriumSolution, speed_hz: float) -> RadialStiffne
 
 
 def run(case: Case) -> RunResult:
-    """Run the Jones–Harris equilibrium model (seed 001 §2.1) on a case."""
+    """Run the Jones–Harris equilibrium model (seed 001 §2.1) on a case.
+
+    Parameters
+    ----------
+    case : Case
+        A validated case with ``[analysis] model = "equilibrium"`` and a ball bearing.
+
+    Returns
+    -------
+    RunResult
+        An :class:`EquilibriumResult` at one instant: the inner ring's displacement relative to
+        the outer ring [m] (axial counted from the rings axially centred), no lines, zero
+        runout, and :class:`~runout.analysis.result_details.EquilibriumDetails` (ring
+        displacement [m, rad], stiffness matrix, radial stiffness [N/m], per-ball table).
+
+    Raises
+    ------
+    GeometryError
+        Not a ball bearing, an unknown race control, or no load.
+
+    Notes
+    -----
+    Kim, Choi & Yoon, "Vibration analysis of ball bearings with ball geometric
+    imperfections", §2.1, eq. 1-9 (seed 001), with Jones's raceway-control theory from
+    Harris, *Rolling Bearing Analysis*.
+    """
     bearing = case.bearing
     op = case.operation
     if not isinstance(bearing, BallBearing):

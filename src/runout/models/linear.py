@@ -159,6 +159,20 @@ def rates(bearing: Bearing, operation: Operation, contact_angle: float) -> Rates
         Ring speeds [Hz]; the rotating ring's speed must not be zero.
     contact_angle : float
         α [rad].
+
+    Returns
+    -------
+    Rates
+        ν_i, ν_o, ν_c, ν_b [-] (orders, signed) and the rotating ring's speed [Hz].
+
+    Raises
+    ------
+    GeometryError
+        When the rotating ring's speed is zero.
+
+    Notes
+    -----
+    "Anderon vibration" (seed 002, the instrument maker's calculation model), eq. 4-7, generalised to either ring rotating.
     """
     speed = abs(operation.speed)
     if speed == 0.0:
@@ -180,6 +194,29 @@ def variant_gains(contact_angle: float, variant: str = "radial_spring") -> tuple
       constant preload): a ring's radial deviation w_r interferes by ``w_r cos α`` along the
       contact line and the radial balance divides by ``cos α``, so rings pass 1:1; an element's
       diameter deviation lies on the contact line and passes as ``1 / cos α``.
+
+    Parameters
+    ----------
+    contact_angle : float
+        α [rad].
+    variant : {"radial_spring", "force_balance"}, optional
+        Contact model; default ``"radial_spring"``.
+
+    Returns
+    -------
+    g_ring, g_element : float
+        Gain of the ring (and slant) deviations and of the element diameter deviations [-].
+
+    Raises
+    ------
+    GeometryError
+        An unknown variant, or ``"force_balance"`` at a contact angle of 90°.
+
+    Notes
+    -----
+    ``"radial_spring"``: "Anderon vibration" (seed 002, the instrument maker's calculation model), eq. 13 and 21. ``"force_balance"``: Tada, "Three-dimensional
+    analysis of non-repeatable runout (NRRO) in ball bearings", Koyo Engineering Journal
+    (2002), eq. 2 and 5 (seed 000), linearised.
     """
     c = math.cos(contact_angle)
     if variant == "radial_spring":
@@ -231,7 +268,18 @@ class Terms:
         return int(self.omega.size)
 
     def evaluate(self, theta: ArrayLike) -> NDArray[np.complex128]:
-        """u(θ) [m] by NumPy broadcasting (the reference for :func:`synthesize`)."""
+        """u(θ) [m] by NumPy broadcasting (the reference for :func:`synthesize`).
+
+        Parameters
+        ----------
+        theta : array_like
+            Angles of the rotating ring [rad] (flattened).
+
+        Returns
+        -------
+        ndarray of complex
+            u = x + i y at each angle [m].
+        """
         t = np.asarray(theta, dtype=np.float64).reshape(-1)
         out = np.zeros(t.size, dtype=np.complex128)
         step = max(1, 2_000_000 // max(1, self.omega.size))
@@ -327,6 +375,16 @@ def closed_form_terms(
     Returns
     -------
     Terms
+        Signed orders Ω_j [-] and coefficients C_j [m] of u = x + i y, with their sources.
+
+    Raises
+    ------
+    GeometryError
+        Fewer than 3 elements, or an invalid variant.
+
+    Notes
+    -----
+    "Anderon vibration" (seed 002, the instrument maker's calculation model), eq. 32-40.
     """
     z = imperfections.n_elements
     if z < 3:
@@ -406,6 +464,13 @@ class LineSource:
     r"""One source's part of a line: its x and y phasors [m].
 
     :math:`x = \mathrm{Re}(X e^{i\omega\theta})`, likewise y.
+
+    Attributes
+    ----------
+    source : Source
+        What produces this part of the line.
+    x, y : complex
+        Phasors X, Y of this source's part of x and y [m].
     """
 
     source: Source
@@ -544,13 +609,35 @@ class SpectralLines:
         return np.abs(self.order - np.round(self.order)) <= _INTEGER_TOL
 
     def along(self, direction: ArrayLike) -> NDArray[np.complex128]:
-        """Complex amplitude of the displacement along unit vector ``(cos a, sin a)`` [m]."""
+        """Complex amplitude of the displacement along unit vector ``(cos a, sin a)`` [m].
+
+        Parameters
+        ----------
+        direction : array_like, shape (2,)
+            Unit vector (cos a, sin a) of the direction [-].
+
+        Returns
+        -------
+        ndarray of complex
+            Phasor of each line along ``direction`` [m].
+        """
         d = np.asarray(direction, dtype=np.float64)
         along: NDArray[np.complex128] = d[0] * self.x_complex + d[1] * self.y_complex
         return along
 
     def select(self, mask: ArrayLike) -> SpectralLines:
-        """The lines where ``mask`` is true."""
+        """The lines where ``mask`` is true.
+
+        Parameters
+        ----------
+        mask : array_like of bool
+            One flag per line.
+
+        Returns
+        -------
+        SpectralLines
+            The selected lines, with their labels and sources.
+        """
         m = np.asarray(mask, dtype=bool)
         return SpectralLines(
             self.order[m],
@@ -564,7 +651,17 @@ class SpectralLines:
         )
 
     def derivative(self) -> SpectralLines:
-        """Lines of the displacement density du/dθ [m/rad] (seed 002 eq. 42)."""
+        """Lines of the displacement density du/dθ [m/rad] (seed 002 eq. 42).
+
+        Returns
+        -------
+        SpectralLines
+            The same orders with C₊, C₋ multiplied by ±iω [m/rad].
+
+        Notes
+        -----
+        "Anderon vibration" (seed 002, the instrument maker's calculation model), eq. 42.
+        """
         return SpectralLines(
             self.order,
             1j * self.order * self.c_plus,
@@ -580,7 +677,18 @@ class SpectralLines:
         )
 
     def evaluate(self, theta: ArrayLike) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-        """x(θ), y(θ) [m] by NumPy broadcasting (reference for :func:`synthesize`)."""
+        """x(θ), y(θ) [m] by NumPy broadcasting (reference for :func:`synthesize`).
+
+        Parameters
+        ----------
+        theta : array_like
+            Angles of the rotating ring [rad] (flattened).
+
+        Returns
+        -------
+        x, y : ndarray
+            Displacements at each angle [m].
+        """
         t = np.asarray(theta, dtype=np.float64).reshape(-1)
         x = np.zeros(t.size)
         y = np.zeros(t.size)
@@ -635,6 +743,12 @@ def spectral_lines(terms: Terms, rotation_hz: float, z: int, inner_rotating: boo
         Number of elements (for the n of nZ ± 1 in labels).
     inner_rotating : bool
         Use seed 002's symbols (I, O, B_A, B_B) in labels.
+
+    Returns
+    -------
+    SpectralLines
+        One line per distinct |Ω| [-], ascending, with C₊, C₋ [m], labels and each source's
+        own phasors [m].
     """
     w = np.abs(terms.omega)
     order = np.argsort(w, kind="stable")
@@ -706,6 +820,15 @@ def synthesize(
     Rotating phasors re-anchored every 256 samples (:mod:`runout.analysis.spectrum`); agrees with
     :meth:`SpectralLines.evaluate` to about 1e-13 of the largest amplitude.
 
+    Parameters
+    ----------
+    lines : SpectralLines
+        Lines to synthesise (orders [-], phasors [m] or [m/rad]).
+    revolutions : float
+        Length of the record in revolutions of the rotating ring [-].
+    samples : int
+        Number of samples over the record.
+
     Returns
     -------
     theta : ndarray
@@ -731,6 +854,24 @@ def solve(r: NDArray[np.complex128], p: NDArray[np.complex128], z: int) -> NDArr
     .. math:: u = \frac{R - P\bar R / Z}{Z/2 - |P|^2 / (2Z)}
 
     With equally spaced elements P = 0 and u = 2R/Z (eq. 21-22).
+
+    Parameters
+    ----------
+    r : ndarray of complex
+        R = Σ_z w_z e^{iθ_z}, the elements' deviations summed as phasors [m].
+    p : ndarray of complex
+        P = Σ_z e^{2iθ_z} [-] (0 for equally spaced elements).
+    z : int
+        Number of elements Z.
+
+    Returns
+    -------
+    ndarray of complex
+        u = x + i y [m].
+
+    Notes
+    -----
+    "Anderon vibration" (seed 002, the instrument maker's calculation model), eq. 18-22.
     """
     q = 0.5 * z
     return (r - p * np.conj(r) / (2.0 * q)) / (q - np.abs(p) ** 2 / (4.0 * q))
@@ -761,6 +902,20 @@ def direct_sum(
         Angles of the rotating ring [rad].
     variant : str
         See :func:`variant_gains`.
+
+    Returns
+    -------
+    x, y : ndarray
+        Displacements at each angle [m].
+
+    Raises
+    ------
+    GeometryError
+        Fewer than 3 elements, or an invalid variant.
+
+    Notes
+    -----
+    "Anderon vibration" (seed 002, the instrument maker's calculation model), eq. 22 and 28 (eq. 18 with unequal spacing, :func:`solve`).
     """
     z = imperfections.n_elements
     if z < 3:
@@ -834,7 +989,13 @@ class LinearResult(RunResult):
         return self.spectral_lines
 
     def density_lines(self) -> SpectralLines:
-        """Lines of the displacement density v = du/dθ [m/rad] (eq. 42)."""
+        """Lines of the displacement density v = du/dθ [m/rad] (eq. 42).
+
+        Returns
+        -------
+        SpectralLines
+            Orders [-] and phasors [m/rad] (:meth:`SpectralLines.derivative`).
+        """
         return self._lines().derivative()
 
     def anderon_lines(self, direction: str = "x", bands: BandSet = ANDERON_BANDS) -> BandValues:
@@ -846,6 +1007,15 @@ class LinearResult(RunResult):
             Displacement component (seed 002 measures x).
         bands : BandSet
             Bands in orders.
+
+        Returns
+        -------
+        BandValues
+            ``values`` in Anderon, ``rms`` in µin/rad.
+
+        Notes
+        -----
+        "Anderon vibration" (seed 002, the instrument maker's calculation model), eq. 1 and 42.
         """
         lines = self._lines()
         amp = lines.x_amplitude if direction == "x" else lines.y_amplitude
@@ -863,10 +1033,13 @@ class LinearResult(RunResult):
             Whole revolutions of the rotating ring (seed 002: 6).
         samples_per_rev : int, optional
             Default: the smallest power of two above 2.5 × the highest line order (≥ 256).
+        direction : {"x", "y"}
+            Displacement component (seed 002 measures x).
 
         Returns
         -------
         theta, v : ndarray
+            Angles of the rotating ring [rad] and the displacement density [m/rad].
         """
         lines = self._lines().derivative()
         if samples_per_rev is None:
@@ -889,6 +1062,28 @@ class LinearResult(RunResult):
 
         This is what seed 002 did (six revolutions, rectangular window): lines that are not
         multiples of 1/revolutions leak into neighbouring bins and bands.
+
+        Parameters
+        ----------
+        revolutions : int
+            Whole revolutions of the rotating ring in the record (seed 002: 6).
+        samples_per_rev : int, optional
+            Samples per revolution; default as :meth:`density_waveform`.
+        bands : BandSet
+            Bands in orders.
+        window : str or None
+            ``None`` (rectangular, as seed 002) or a window name such as ``"hann"``.
+        direction : {"x", "y"}
+            Displacement component.
+
+        Returns
+        -------
+        BandValues
+            ``values`` in Anderon, ``rms`` in µin/rad.
+
+        Notes
+        -----
+        "Anderon vibration" (seed 002, the instrument maker's calculation model), eq. 1 and 42, Fig. 12.
         """
         _, v = self.density_waveform(revolutions, samples_per_rev, direction)
         spr = v.size // revolutions
@@ -898,6 +1093,13 @@ class LinearResult(RunResult):
         self, revolutions: int = 6, bands: BandSet = ANDERON_BANDS
     ) -> dict[str, dict[str, float]]:
         """Band values from exact lines and from a DFT, and their relative difference.
+
+        Parameters
+        ----------
+        revolutions : int
+            Whole revolutions of the DFT record (seed 002: 6).
+        bands : BandSet
+            Bands in orders.
 
         Returns
         -------
@@ -917,7 +1119,15 @@ class LinearResult(RunResult):
         }
 
     def line_anderon_spectrum(self) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-        """Orders and rms displacement density of each x line [µin/rad] (Fig. 12 axes)."""
+        """Orders and rms displacement density of each x line [µin/rad] (Fig. 12 axes).
+
+        Returns
+        -------
+        order : ndarray
+            Line orders [-] (> 0).
+        rms : ndarray
+            rms of dx/dθ of each line [µin/rad].
+        """
         lines = self._lines()
         keep = lines.order > 0
         rms = lines.order[keep] * lines.x_amplitude[keep] / math.sqrt(2.0) / MICROINCH
@@ -932,6 +1142,18 @@ def linear_result(result: RunResult) -> LinearResult:
     :math:`\bar C_- = (X - iY)/2` (:class:`SpectralLines`); the DC line (order 0) and the
     lines the output leaves out as cancelled (below 1e-12 of the largest) are not in the
     JSON, and neither enters the Anderon values (a density has no DC).
+
+    Parameters
+    ----------
+    result : RunResult
+        A result of the linear model read back from JSON (components with pp [m] and
+        phase [rad]).
+
+    Returns
+    -------
+    LinearResult
+        The same result with its spectral lines (orders [-], phasors [m]) and the angle of the
+        rotating ring at each instant [rad].
     """
     by_order: dict[float, list[complex]] = {}
     for c in result.components:

@@ -121,7 +121,31 @@ def hertz_potential(
     force: NDArray[np.float64],
 ) -> float:
     """Energy of the Hertz contacts minus the work of ``force`` at shaft centre q (compiled);
-    the Newton line search of eq. 16-17 descends it (also used by the Monte Carlo kernel)."""
+    the Newton line search of eq. 16-17 descends it (also used by the Monte Carlo kernel).
+
+    Parameters
+    ----------
+    c : ndarray, shape (Z,)
+        δ_k at x = y = 0 [m] (eq. 10 without the x, y terms).
+    cth, sth : ndarray, shape (Z,)
+        Cosine and sine of the ball angles θ_k [-].
+    k : float
+        C_k = K_n [N/m^1.5].
+    q0, q1 : float
+        Shaft centre x, y [m].
+    force : ndarray, shape (2,)
+        External radial load on the shaft (F_x, F_y) [N].
+
+    Returns
+    -------
+    float
+        Σ_k K_n (2δ_k)^{5/2} / 2.5 over the loaded balls minus F · q [J].
+
+    Notes
+    -----
+    The potential whose gradient is the balance of Kim, Choi & Yoon, "Vibration analysis of ball bearings with ball geometric
+    imperfections" (seed 001), eq. 14-17.
+    """
     e: float = -(force[0] * q0 + force[1] * q1)
     for j in range(c.size):
         d = 2.0 * c[j] + q0 * cth[j] + q1 * sth[j]
@@ -140,6 +164,20 @@ def loaded_balls_collinear(
     then singular: e.g. two opposite balls hold the shaft along their line and nothing holds
     it across (its position there is undetermined). Relative threshold 1e-12 on
     det / trace².
+
+    Parameters
+    ----------
+    c : ndarray, shape (Z,)
+        δ_k at x = y = 0 [m].
+    cth, sth : ndarray, shape (Z,)
+        Cosine and sine of the ball angles θ_k [-].
+    q0, q1 : float
+        Shaft centre x, y [m].
+
+    Returns
+    -------
+    bool
+        True when the loaded balls cannot hold the shaft across their common line.
     """
     h00 = h01 = h11 = 0.0
     for j in range(c.size):
@@ -160,6 +198,35 @@ def solve_kernel(
     """Newton solve of seed 001 eq. 16-17 at every instant, no external load (compiled).
 
     :func:`solve_kernel_loaded` with a zero force; same parameters and returns.
+
+    Parameters
+    ----------
+    c : ndarray, shape (n, Z)
+        δ_k at x = y = 0 [m] (eq. 10 without the x, y terms).
+    theta : ndarray, shape (n, Z)
+        Ball angles [rad].
+    k : float
+        C_k = K_n [N/m^1.5].
+    d_ref : float
+        Reference approach δ_0 [m] (step tolerance and line-search threshold).
+    max_iter : int
+        Newton iterations per instant.
+
+    Returns
+    -------
+    q : ndarray, shape (n, 2)
+        Shaft centre [m].
+    unloaded : ndarray, shape (n,)
+        Balls without load at each instant.
+    status : int
+        0 ok, 1 too few loaded balls, 2 singular, 3 not converged.
+    instant : int
+        Instant of the failure (-1 when status is 0).
+
+    Notes
+    -----
+    Kim, Choi & Yoon, "Vibration analysis of ball bearings with ball geometric
+    imperfections" (seed 001), eq. 16-18.
     """
     return solve_kernel_loaded(c, theta, k, d_ref, max_iter, np.zeros(2))
 
@@ -435,10 +502,35 @@ def solve_reference(
     ``force`` is the external radial load (F_x, F_y) [N] (default none) and ``stiffness``
     C_k = K_n [N/m^1.5] (only matters with a load: without one the balance is homogeneous).
 
+    Parameters
+    ----------
+    c : ndarray, shape (n, Z)
+        δ_k at x = y = 0 [m] (eq. 10 without the x, y terms).
+    theta : ndarray, shape (n, Z)
+        Ball angles [rad].
+    tol : float
+        Newton step tolerance [m].
+    max_iter : int, optional
+        Newton iterations; default :data:`MAX_ITER`.
+    force : ndarray, shape (2,), optional
+        External radial load on the shaft (F_x, F_y) [N]; default none.
+    stiffness : float, optional
+        C_k = K_n [N/m^1.5]; default 1.
+
     Returns
     -------
     ndarray, shape (n, 2)
         Shaft centre [m].
+
+    Raises
+    ------
+    ConvergenceError
+        When the Newton iteration does not converge within ``max_iter``.
+
+    Notes
+    -----
+    Kim, Choi & Yoon, "Vibration analysis of ball bearings with ball geometric
+    imperfections" (seed 001), eq. 16-18.
     """
     nvec = np.stack([np.cos(theta), np.sin(theta)], axis=-1)
     q = np.zeros((c.shape[0], 2))
@@ -469,7 +561,21 @@ def solve_reference(
 
 @dataclass(frozen=True)
 class Setup:
-    """Contact angle α [rad], K_n [N/m^1.5], δ_0 [m] and frequencies of a case."""
+    """Contact angle α [rad], K_n [N/m^1.5], δ_0 [m] and frequencies of a case.
+
+    Attributes
+    ----------
+    contact_angle : float
+        Operating contact angle α under the axial preload [rad].
+    stiffness : float
+        Combined ball-race contact constant C_k = K_n [N/m^1.5].
+    initial_approach : float
+        δ_0 = (δ_i + δ_o)/2 of the static axial-load solution [m].
+    kinematics : Kinematics
+        Signed ring, cage and spin frequencies [Hz] and the number of balls.
+    force : ndarray, shape (2,)
+        External radial load on the shaft (F_x, F_y) [N].
+    """
 
     contact_angle: float
     stiffness: float
@@ -479,7 +585,28 @@ class Setup:
 
 
 def setup(case: Case) -> Setup:
-    """Derive α, K_n, δ_0 = (δ_i + δ_o)/2 and the kinematics (see module docstring)."""
+    """Derive α, K_n, δ_0 = (δ_i + δ_o)/2 and the kinematics (see module docstring).
+
+    Parameters
+    ----------
+    case : Case
+        A validated case with a ball bearing and an axial preload > 0 [N].
+
+    Returns
+    -------
+    Setup
+        α [rad], K_n [N/m^1.5], δ_0 [m], the kinematics [Hz] and the radial load [N].
+
+    Raises
+    ------
+    GeometryError
+        Not a ball bearing, or no axial preload.
+
+    Notes
+    -----
+    δ_0 as in Kim, Choi & Yoon, "Vibration analysis of ball bearings with ball geometric
+    imperfections" (seed 001), text after eq. 18; K_n as C_k of eq. 14-15.
+    """
     bearing = case.bearing
     op = case.operation
     if not isinstance(bearing, BallBearing):
@@ -517,7 +644,32 @@ def approaches(
     time: NDArray[np.float64],
     element_projection: ElementProjection = "none",
 ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """δ_k at x = y = 0 (eq. 10) and ball angles, shape (n, Z) each."""
+    """δ_k at x = y = 0 (eq. 10) and ball angles, shape (n, Z) each.
+
+    Parameters
+    ----------
+    case : Case
+        The case (its imperfections).
+    st : Setup
+        From :func:`setup`.
+    time : ndarray, shape (n,)
+        Instants [s].
+    element_projection : {"none", "radial"}, optional
+        ``"radial"`` multiplies the ball deviations by cos α; default ``"none"`` (eq. 10 as
+        printed).
+
+    Returns
+    -------
+    c : ndarray, shape (n, Z)
+        δ_k at x = y = 0 [m].
+    theta : ndarray, shape (n, Z)
+        Ball angles θ_k [rad].
+
+    Notes
+    -----
+    Kim, Choi & Yoon, "Vibration analysis of ball bearings with ball geometric
+    imperfections" (seed 001), eq. 8 and 10-13.
+    """
     dev = contact_deviations(case.imperfections, st.kinematics, time)
     ball = dev.ball * (math.cos(st.contact_angle) if element_projection == "radial" else 1.0)
     c = st.initial_approach + 0.5 * (dev.inner + ball - dev.outer)
@@ -533,10 +685,33 @@ def solve(
 ) -> tuple[NDArray[np.float64], NDArray[np.integer[Any]]]:
     """Shaft centre (3, n) [m] (z = 0) and unloaded-ball counts (n,) at ``time``.
 
+    Parameters
+    ----------
+    case : Case
+        The case (its imperfections).
+    time : ndarray, shape (n,)
+        Instants [s].
+    st : Setup, optional
+        From :func:`setup`; derived from ``case`` when None.
+    element_projection : {"none", "radial"}, optional
+        ``"radial"`` multiplies the ball deviations by cos α; default ``"none"``.
+
+    Returns
+    -------
+    disp : ndarray, shape (3, n)
+        Shaft centre (x, y, 0) relative to the outer ring [m].
+    unloaded : ndarray of int, shape (n,)
+        Balls without load at each instant.
+
     Raises
     ------
     ContactLossError, ConvergenceError, NumericalError
         When the shaft cannot be held at some instant (the error names it).
+
+    Notes
+    -----
+    Kim, Choi & Yoon, "Vibration analysis of ball bearings with ball geometric
+    imperfections" (seed 001), eq. 10-18 (with the radial load of the module docstring).
     """
     st = setup(case) if st is None else st
     t = np.ascontiguousarray(time, dtype=np.float64)
@@ -575,7 +750,18 @@ def solve(
 
 
 def planar_note(contact_angle: float) -> str:
-    """What the planar model (seed 001 eq. 10-17) costs against the 3-D one, in words."""
+    """What the planar model (seed 001 eq. 10-17) costs against the 3-D one, in words.
+
+    Parameters
+    ----------
+    contact_angle : float
+        Operating contact angle α [rad].
+
+    Returns
+    -------
+    str
+        A note for the result: the stiffness ratio 1/cos²α [-] and the ball gain cos α [-].
+    """
     c = math.cos(contact_angle)
     return (
         "planar model (seed 001 eq. 10-17): the contacts act radially, so under a radial load "
@@ -586,7 +772,25 @@ def planar_note(contact_angle: float) -> str:
 
 
 def run(case: Case) -> RunResult:
-    """Run the quasi-static 2-D model (seed 001) on a case."""
+    """Run the quasi-static 2-D model (seed 001) on a case.
+
+    Parameters
+    ----------
+    case : Case
+        A validated case with ``[analysis] model = "quasi_static_2d"``, a ball bearing and an
+        axial preload.
+
+    Returns
+    -------
+    RunResult
+        Shaft centre relative to the outer ring [m] over the analysis window, the fitted lines
+        and the runout figures [m].
+
+    Notes
+    -----
+    Kim, Choi & Yoon, "Vibration analysis of ball bearings with ball geometric
+    imperfections" (seed 001), eq. 8-18.
+    """
     st = setup(case)
     return run_quasi_static(
         case,

@@ -142,6 +142,17 @@ def preload_approach(
         α [rad], > 0.
     axial : float
         F_a [N], > 0.
+
+    Returns
+    -------
+    float
+        δ_pl [m].
+
+    Notes
+    -----
+    The balance of Tada, "Three-dimensional analysis of non-repeatable runout (NRRO) in ball
+    bearings", Koyo Engineering Journal (2002) (seed 000), eq. 5, without deviations and radial load, with Q = K_n δ^{3/2}
+    (eq. 3).
     """
     return float((axial / (stiffness * n_elements * math.sin(contact_angle))) ** (2.0 / 3.0))
 
@@ -322,6 +333,11 @@ def solve_kernel(
         0 ok, 1 too few loaded balls, 2 singular, 3 not converged.
     instant : int
         Instant of the failure (-1 when status is 0).
+
+    Notes
+    -----
+    Tada, "Three-dimensional analysis of non-repeatable runout (NRRO) in ball
+    bearings", Koyo Engineering Journal (2002) (seed 000), eq. 2-5.
     """
     n, z = c.shape
     q = np.zeros((n, 3))
@@ -493,10 +509,37 @@ def solve_reference(
     :func:`numpy.linalg.solve`, damped steps (halved while the residual norm grows), every
     instant started from q = 0.
 
+    Parameters
+    ----------
+    c : ndarray, shape (n, Z)
+        Approach of each ball at q = 0 [m] (:func:`approaches`).
+    theta : ndarray, shape (n, Z)
+        Ball angles [rad].
+    contact_angle : float
+        α [rad].
+    stiffness : float
+        K_n [N/m^1.5].
+    force : ndarray, shape (3,)
+        Right-hand side of the balance [N].
+    tol : float
+        Newton step tolerance [m].
+    max_iter : int, optional
+        Newton iterations; default :data:`MAX_ITER`.
+
     Returns
     -------
     ndarray, shape (n, 3)
         Outer-ring centre [m].
+
+    Raises
+    ------
+    ConvergenceError
+        When the Newton iteration does not converge within ``max_iter``.
+
+    Notes
+    -----
+    Tada, "Three-dimensional analysis of non-repeatable runout (NRRO) in ball
+    bearings", Koyo Engineering Journal (2002) (seed 000), eq. 2-5.
     """
     ca, sa = math.cos(contact_angle), math.sin(contact_angle)
     nvec = np.stack([ca * np.cos(theta), ca * np.sin(theta), np.full_like(theta, sa)], axis=-1)
@@ -543,10 +586,30 @@ def linearised_displacement(
     .. math:: H q = \sum_j \big(Q_0 + k_l (c_j - \delta_{pl})\big) n_j - F,
               \qquad H = k_l \sum_j n_j n_j^T.
 
+    Parameters
+    ----------
+    c : ndarray, shape (n, Z)
+        Approach of each ball at q = 0 [m] (:func:`approaches`).
+    theta : ndarray, shape (n, Z)
+        Ball angles [rad].
+    contact_angle : float
+        α [rad].
+    stiffness : float
+        K_n [N/m^1.5].
+    preload : float
+        δ_pl [m], the approach the loads are linearised about.
+    force : ndarray, shape (3,)
+        Right-hand side of the balance [N].
+
     Returns
     -------
     ndarray, shape (n, 3)
         Outer-ring centre [m].
+
+    Notes
+    -----
+    Tada, "Three-dimensional analysis of non-repeatable runout (NRRO) in ball
+    bearings", Koyo Engineering Journal (2002) (seed 000), eq. 5 and the linear equation of §2.2.1.
     """
     ca, sa = math.cos(contact_angle), math.sin(contact_angle)
     nvec = np.stack([ca * np.cos(theta), ca * np.sin(theta), np.full_like(theta, sa)], axis=-1)
@@ -575,6 +638,7 @@ class Setup:
     force : ndarray, shape (3,)
         Right-hand side of eq. 5 [N].
     kinematics : Kinematics
+        Signed ring, cage and spin frequencies [Hz] and the number of balls.
     """
 
     contact_angle: float
@@ -590,6 +654,19 @@ def contact_line_deviation(imperfections: Any, contact_angle: float) -> float:
     Raceway orders >= 2 (order 1 is a rigid translation, not a change of the ball's room)
     projected on the contact line, plus the largest element diameter deviation (its
     waviness and diameter error, seed 002 eq. 26).
+
+    Parameters
+    ----------
+    imperfections : BearingImperfections
+        Raceway and element deviations [m].
+    contact_angle : float
+        α [rad].
+
+    Returns
+    -------
+    float
+        Sum of the raceway amplitudes of orders >= 2 times cos α plus the largest sum of an
+        element's diameter amplitudes [m].
     """
     rings = 0.0
     for h in (imperfections.inner, imperfections.outer):
@@ -614,6 +691,17 @@ def check_axial_room(
     contact angle; beyond that travel no such motion exists, and the fixed-angle model's
     axial runout is an artefact (e.g. 381 µm of axial p-p with 2 nm of clearance and a small
     preload, where the end play is 1.3 µm).
+
+    Parameters
+    ----------
+    imperfections : BearingImperfections
+        Raceway and element deviations [m].
+    bearing : BallBearing
+        Geometry: curvature-centre distance A [m] and free contact angle α⁰ [rad].
+    contact_angle : float
+        α [rad], > 0.
+    preload : float
+        δ_pl [m].
 
     Raises
     ------
@@ -640,7 +728,29 @@ def check_axial_room(
 
 
 def setup(case: Case) -> Setup:
-    """Contact angle, K_n, δ_pl, loads and frequencies of a case (see module docstring)."""
+    """Contact angle, K_n, δ_pl, loads and frequencies of a case (see module docstring).
+
+    Parameters
+    ----------
+    case : Case
+        A validated case with a ball bearing, an axial preload > 0 [N] and a contact angle > 0.
+
+    Returns
+    -------
+    Setup
+        α [rad], K_n [N/m^1.5], δ_pl [m], the loads [N] and the kinematics [Hz].
+
+    Raises
+    ------
+    GeometryError
+        Not a ball bearing, no preload, no contact angle, or deviations larger than the axial
+        room (:func:`check_axial_room`).
+
+    Notes
+    -----
+    K_n of Tada, "Three-dimensional analysis of non-repeatable runout (NRRO) in ball
+    bearings", Koyo Engineering Journal (2002) (seed 000), eq. 4; δ_pl from the balance of eq. 5 (:func:`preload_approach`).
+    """
     bearing = case.bearing
     op = case.operation
     if not isinstance(bearing, BallBearing):
@@ -680,7 +790,29 @@ def setup(case: Case) -> Setup:
 def approaches(
     case: Case, st: Setup, time: NDArray[np.float64]
 ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """Approach at q = 0 (eq. 2) and ball angles, shape (n, Z) each."""
+    """Approach at q = 0 (eq. 2) and ball angles, shape (n, Z) each.
+
+    Parameters
+    ----------
+    case : Case
+        The case (its imperfections).
+    st : Setup
+        From :func:`setup`.
+    time : ndarray, shape (n,)
+        Instants [s].
+
+    Returns
+    -------
+    c : ndarray, shape (n, Z)
+        (W_i - W_o) cos α + W_b + δ_pl [m].
+    theta : ndarray, shape (n, Z)
+        Ball angles θ_j [rad].
+
+    Notes
+    -----
+    Tada, "Three-dimensional analysis of non-repeatable runout (NRRO) in ball
+    bearings", Koyo Engineering Journal (2002) (seed 000), eq. 2.
+    """
     dev = contact_deviations(case.imperfections, st.kinematics, time)
     c = (dev.inner - dev.outer) * math.cos(st.contact_angle) + dev.ball + st.preload
     return np.ascontiguousarray(c), np.ascontiguousarray(dev.theta)
@@ -692,10 +824,31 @@ def solve(
     """Shaft (inner-ring) centre relative to the outer ring (3, n) [m] and unloaded-ball counts
     (n,) at ``time``: the kernel's outer-ring position (seed 000's frame) with its sign turned.
 
+    Parameters
+    ----------
+    case : Case
+        The case (its imperfections).
+    time : ndarray, shape (n,)
+        Instants [s].
+    st : Setup, optional
+        From :func:`setup`; derived from ``case`` when None.
+
+    Returns
+    -------
+    disp : ndarray, shape (3, n)
+        Shaft centre relative to the outer ring (x, y, z) [m], z from the preloaded position.
+    unloaded : ndarray of int, shape (n,)
+        Balls without load at each instant.
+
     Raises
     ------
     ContactLossError, ConvergenceError, NumericalError
         When the ring cannot be held at some instant (the error names it).
+
+    Notes
+    -----
+    Tada, "Three-dimensional analysis of non-repeatable runout (NRRO) in ball
+    bearings", Koyo Engineering Journal (2002) (seed 000), eq. 2-5.
     """
     st = setup(case) if st is None else st
     t = np.ascontiguousarray(time, dtype=np.float64)
@@ -731,7 +884,18 @@ def solve(
 
 
 def time_grid_of(case: Case) -> NDArray[np.float64]:
-    """The instants [s] of a case's analysis (``revolutions`` turns, ``samples`` instants)."""
+    """The instants [s] of a case's analysis (``revolutions`` turns, ``samples`` instants).
+
+    Parameters
+    ----------
+    case : Case
+        The case (its speed [Hz] and ``[analysis]`` window).
+
+    Returns
+    -------
+    ndarray
+        Instants [s].
+    """
     an = case.analysis
     return time_grid(case.operation.speed, an.revolutions, an.samples)
 
@@ -743,6 +907,23 @@ def axial_position(case: Case, st: Setup) -> float:
     α, so the inner ring sits :math:`(A + \delta_{pl})\sin\alpha` along the axial load (for
     the loaded contact angle of Harris's relation this is the equilibrium model's static
     position; with a fixed angle it is the position that angle implies).
+
+    Parameters
+    ----------
+    case : Case
+        The case (a ball bearing: curvature-centre distance A [m]).
+    st : Setup
+        From :func:`setup`: α [rad] and δ_pl [m].
+
+    Returns
+    -------
+    float
+        (A + δ_pl) sin α [m].
+
+    Raises
+    ------
+    GeometryError
+        Not a ball bearing.
     """
     bearing = case.bearing
     if not isinstance(bearing, BallBearing):
@@ -756,6 +937,23 @@ def run(case: Case) -> RunResult:
 
     The reported z is measured from the rings axially centred (:func:`axial_position` plus
     the solved motion), as in every model.
+
+    Parameters
+    ----------
+    case : Case
+        A validated case with ``[analysis] model = "quasi_static_3d"``, a ball bearing and an
+        axial preload.
+
+    Returns
+    -------
+    RunResult
+        Shaft centre relative to the outer ring [m] over the analysis window, the fitted lines
+        and the runout figures [m].
+
+    Notes
+    -----
+    Tada, "Three-dimensional analysis of non-repeatable runout (NRRO) in ball
+    bearings", Koyo Engineering Journal (2002) (seed 000), eq. 2-5.
     """
     st = setup(case)
     offset = axial_position(case, st)

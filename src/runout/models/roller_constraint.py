@@ -290,6 +290,24 @@ def run(case: Case) -> RunResult:
     ``analysis.samples`` rotation angles from 0 to ``analysis.revolutions`` turns (both ends
     included). ``runout.radial_pp_m`` is max - min along the measuring-load direction
     (``operation.radial_load_direction``, default -y); ``horizontal_pp_m`` across it.
+
+    Parameters
+    ----------
+    case : Case
+        A validated case with ``[analysis] model = "roller_constraint"``.
+
+    Returns
+    -------
+    RunResult
+        Centre of the shaft relative to the outer ring [m] at each rotation angle, the fitted
+        lines, the runout figures [m] and :class:`~runout.analysis.result_details.RollerDetails`
+        (rollers held, ISO 492 radial runout [m]).
+
+    Notes
+    -----
+    Yu et al., "Prediction method for the radial runout of inner ring in cylindrical roller
+    bearings", Math. Probl. Eng. (2017), §4-5, eq. 1-16 (seed 004), solved exactly as the
+    module docstring describes.
     """
     notes: list[str] = []
     geo = geometry_from(case.bearing, case.imperfections, case.operation)

@@ -138,6 +138,7 @@ class BearingSetup:
     Attributes
     ----------
     name : str
+        The bearing's name in the case.
     position : float
         p_b [m].
     contact_angle : float
@@ -155,6 +156,7 @@ class BearingSetup:
     pitch_radius : float
         R_b = d_m / 2 [m].
     kinematics : Kinematics
+        Signed ring, cage and spin frequencies [Hz] and the number of balls.
     """
 
     name: str
@@ -181,13 +183,15 @@ class Setup:
     Attributes
     ----------
     bearings : tuple of BearingSetup
+        Each bearing's constants, in the layout's order.
     force : ndarray, shape (m,)
         Generalised load: F_x, F_y, F_z [N], M_x, M_y [N m], then the spring force [N] when m = 6.
     nose_position : float
-        [m].
+        Axial coordinate p_n of the nose [m].
     geo : ndarray, shape (5, N)
         Per ball: cos α, s sin α, p [m], R [m], K_n [N/m^1.5].
     floating : ndarray of bool, shape (N,)
+        Per ball: its outer ring slides on the preload spring.
     scale : ndarray, shape (m,)
         Length per unit of each coordinate [m].
     reg : ndarray, shape (m,)
@@ -213,6 +217,18 @@ class Setup:
 
 def thrust_signs(positions: list[float], arrangement: str) -> list[int]:
     """s_b per bearing: DT all +1; DB +1 at or before the mean position, -1 after; DF reversed.
+
+    Parameters
+    ----------
+    positions : list of float
+        Axial positions p_b of the bearings [m].
+    arrangement : {"DB", "DF", "DT"}
+        Back-to-back, face-to-face or tandem.
+
+    Returns
+    -------
+    list of int
+        s_b = +1 (thrust on the shaft along +z) or -1 (along -z) per bearing [-].
 
     Raises
     ------
@@ -240,10 +256,30 @@ def _angle_at(bearing: Any, operation: Operation, load: float) -> float:
 def setup(layout: SpindleLayout, operation: Operation) -> Setup:
     """Contact angles, K_n, preload approaches, loads and frequencies (module docstring).
 
+    Parameters
+    ----------
+    layout : SpindleLayout
+        Bearings with their positions [m] and imperfections, arrangement, preload (spring
+        force [N] or position preload [m]) and nose position [m].
+    operation : Operation
+        Ring speeds [Hz], radial [N], axial [N] and moment [N m] loads and their directions
+        [rad].
+
+    Returns
+    -------
+    Setup
+        Per-bearing constants, the generalised load [N, N m] and the solver's scales.
+
     Raises
     ------
     GeometryError
         A key the spindle cannot honour (named as in the case file).
+
+    Notes
+    -----
+    Each bearing after Tada, "Three-dimensional analysis of non-repeatable runout (NRRO) in ball
+    bearings", Koyo Engineering Journal (2002) (seed 000), K_n of eq. 4 and its preload approach from the balance of eq. 5
+    (:func:`runout.models.quasi_static_3d.preload_approach`).
     """
     bs = layout.bearings
     signs = thrust_signs([b.position for b in bs], layout.arrangement)
@@ -362,7 +398,21 @@ def _nominal_c(st: Setup) -> NDArray[np.float64]:
 
 
 def normals(st: Setup, cth: NDArray[np.float64], sth: NDArray[np.float64]) -> NDArray[np.float64]:
-    """Generalised normals g_j, shape (..., N, m) for cos θ, sin θ of shape (..., N)."""
+    """Generalised normals g_j, shape (..., N, m) for cos θ, sin θ of shape (..., N).
+
+    Parameters
+    ----------
+    st : Setup
+        From :func:`setup`.
+    cth, sth : ndarray, shape (..., N)
+        Cosine and sine of the ball angles θ_j [-].
+
+    Returns
+    -------
+    ndarray, shape (..., N, m)
+        g_j: the contact normal [-] and its moment arms about x and y [m] (module docstring),
+        and the spring slide's column [-] when m = 6.
+    """
     ca, ssa, p, r = st.geo[0], st.geo[1], st.geo[2], st.geo[3]
     nx, ny = ca * cth, ca * sth
     nz = np.broadcast_to(ssa, nx.shape)
@@ -398,7 +448,29 @@ def _raise(status: int, instant: int, time: NDArray[np.float64]) -> None:
 def contact_arrays(
     st: Setup, imperfections: list[BearingImperfections], t: NDArray[np.float64]
 ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
-    """Approach at q = 0 and cos θ_j, sin θ_j of every ball at ``t``, shape (n, N) each."""
+    """Approach at q = 0 and cos θ_j, sin θ_j of every ball at ``t``, shape (n, N) each.
+
+    Parameters
+    ----------
+    st : Setup
+        From :func:`setup`.
+    imperfections : list of BearingImperfections
+        Each bearing's deviations [m], in the order of ``st.bearings``.
+    t : ndarray, shape (n,)
+        Instants [s].
+
+    Returns
+    -------
+    c : ndarray, shape (n, N)
+        c_j = (W_ij - W_oj) cos α_b + W_bj + c_0b [m].
+    cth, sth : ndarray, shape (n, N)
+        Cosine and sine of the ball angles θ_j [-].
+
+    Notes
+    -----
+    Tada, "Three-dimensional analysis of non-repeatable runout (NRRO) in ball
+    bearings", Koyo Engineering Journal (2002) (seed 000), eq. 2, bearing by bearing.
+    """
     parts = []
     for b, imp in zip(st.bearings, imperfections, strict=True):
         src = contact_sources(
@@ -423,6 +495,22 @@ def solve(
 
     Warm-started Newton solves (:func:`runout.models._spindle_kernels.solve_chunk`) over
     chunks of :data:`CHUNK` instants, the contact arrays of one chunk at a time.
+
+    Parameters
+    ----------
+    st : Setup
+        From :func:`setup`.
+    imperfections : list of BearingImperfections
+        Each bearing's deviations [m], in the order of ``st.bearings``.
+    time : ndarray, shape (n,)
+        Instants [s].
+
+    Returns
+    -------
+    q : ndarray, shape (n, m)
+        Shaft coordinates x, y, z [m], θx, θy [rad] (and the spring slide w [m] when m = 6).
+    unloaded : ndarray of int, shape (n,)
+        Balls without load at each instant.
 
     Raises
     ------
@@ -473,9 +561,28 @@ def solve_reference(
     Same equations as the kernel, independent code: batched :func:`numpy.linalg.solve`,
     steps halved while the residual norm grows, every instant started from q = 0.
 
+    Parameters
+    ----------
+    st : Setup
+        From :func:`setup`.
+    c : ndarray, shape (n, N)
+        Approach of each ball at q = 0 [m] (:func:`contact_arrays`).
+    cth, sth : ndarray, shape (n, N)
+        Cosine and sine of the ball angles θ_j [-].
+    tol : float
+        Newton step tolerance [m] (rotations scaled by the lever of ``st.scale``).
+    max_iter : int, optional
+        Newton iterations; default :data:`MAX_ITER`.
+
     Returns
     -------
     ndarray, shape (n, m)
+        Shaft coordinates x, y, z [m], θx, θy [rad] (and the spring slide w [m] when m = 6).
+
+    Raises
+    ------
+    ConvergenceError
+        When the Newton iteration does not converge within ``max_iter``.
     """
     g = normals(st, cth, sth)  # (n, N, m)
     k = st.geo[4]
@@ -512,26 +619,83 @@ def generalised_forces(
     sth: NDArray[np.float64],
     q: NDArray[np.float64],
 ) -> NDArray[np.float64]:
-    """Σ_j Q_j g_j at one instant (c, cth, sth of shape (N,), q of shape (m,))."""
+    """Σ_j Q_j g_j at one instant (c, cth, sth of shape (N,), q of shape (m,)).
+
+    Parameters
+    ----------
+    st : Setup
+        From :func:`setup`.
+    c : ndarray, shape (N,)
+        Approach of each ball at q = 0 [m].
+    cth, sth : ndarray, shape (N,)
+        Cosine and sine of the ball angles θ_j [-].
+    q : ndarray, shape (m,)
+        Shaft coordinates x, y, z [m], θx, θy [rad] (and the spring slide w [m] when m = 6).
+
+    Returns
+    -------
+    ndarray, shape (m,)
+        Generalised contact force: F_x, F_y, F_z [N], M_x, M_y [N m] (and the spring
+        force [N] when m = 6).
+    """
     g = normals(st, cth, sth)
     d = np.maximum(c + g @ q, 0.0)
     return np.asarray((st.geo[4] * d**1.5) @ g)
 
 
 def ball_loads(st: Setup, q: NDArray[np.float64]) -> NDArray[np.float64]:
-    """Load of every ball at the shaft's position ``q`` without imperfections (t = 0) [N]."""
+    """Load of every ball at the shaft's position ``q`` without imperfections (t = 0) [N].
+
+    Parameters
+    ----------
+    st : Setup
+        From :func:`setup`.
+    q : ndarray, shape (m,)
+        Shaft coordinates x, y, z [m], θx, θy [rad] (and the spring slide w [m] when m = 6).
+
+    Returns
+    -------
+    ndarray, shape (N,)
+        Q_j = K_n [δ_j]_+^{3/2} of every ball, bearing after bearing [N].
+    """
     cth, sth = _nominal_angles(st)
     d = np.maximum(_nominal_c(st) + normals(st, cth, sth) @ q, 0.0)
     return np.asarray(st.geo[4] * d**1.5)
 
 
 def plane_record(q: NDArray[np.float64], position: float) -> NDArray[np.float64]:
-    """The shaft's displacement at the axial coordinate ``position`` [m], shape (3, n)."""
+    """The shaft's displacement at the axial coordinate ``position`` [m], shape (3, n).
+
+    Parameters
+    ----------
+    q : ndarray, shape (n, m)
+        Shaft coordinates x, y, z [m], θx, θy [rad] at each instant.
+    position : float
+        Axial coordinate of the plane [m].
+
+    Returns
+    -------
+    ndarray, shape (3, n)
+        (x + p θy, y - p θx, z) [m].
+    """
     return np.stack([q[:, 0] + position * q[:, 4], q[:, 1] - position * q[:, 3], q[:, 2]])
 
 
 def nose_record(st: Setup, q: NDArray[np.float64]) -> NDArray[np.float64]:
-    """The shaft's displacement at the nose, (x + p_n θy, y - p_n θx, z), shape (3, n) [m]."""
+    """The shaft's displacement at the nose, (x + p_n θy, y - p_n θx, z), shape (3, n) [m].
+
+    Parameters
+    ----------
+    st : Setup
+        From :func:`setup` (the nose position p_n [m]).
+    q : ndarray, shape (n, m)
+        Shaft coordinates x, y, z [m], θx, θy [rad] at each instant.
+
+    Returns
+    -------
+    ndarray, shape (3, n)
+        Displacement of the nose relative to the housing [m].
+    """
     return plane_record(q, st.nose_position)
 
 
@@ -539,11 +703,22 @@ def static_stiffness(st: Setup) -> tuple[NDArray[np.float64], NDArray[np.float64
     """The shaft's static position without imperfections (t = 0) and its 5×5 stiffness at the
     nose [N/m, N/rad, N m/m, N m/rad], the spring coordinate condensed out.
 
+    Parameters
+    ----------
+    st : Setup
+        From :func:`setup`.
+
     Returns
     -------
     q : ndarray, shape (m,)
+        Static shaft coordinates x, y, z [m], θx, θy [rad] (and the spring slide w [m]).
     stiffness : ndarray, shape (5, 5)
         Rows and columns x, y, z, θx, θy of the nose.
+
+    Raises
+    ------
+    ContactLossError, ConvergenceError, NumericalError
+        When the shaft cannot be held.
     """
     cth, sth = _nominal_angles(st)
     c = _nominal_c(st)
@@ -623,7 +798,32 @@ def _own_phasors(
 
 
 def run(case: Case) -> RunResult:
-    """Run the spindle model on a spindle case (``[spindle]`` + ``[[bearings]]``)."""
+    """Run the spindle model on a spindle case (``[spindle]`` + ``[[bearings]]``).
+
+    Parameters
+    ----------
+    case : Case
+        A validated case with ``[analysis] model = "spindle"``, a ``[spindle]`` table and two
+        or more ``[[bearings]]``.
+
+    Returns
+    -------
+    RunResult
+        The nose's displacement relative to the housing [m], the fitted lines, the runout
+        figures [m] and :class:`~runout.analysis.result_details.SpindleDetails` (per-bearing
+        runout, static position, 5×5 stiffness at the nose).
+
+    Raises
+    ------
+    GeometryError
+        No ``[spindle]`` table, or a key the spindle cannot honour.
+
+    Notes
+    -----
+    Each bearing's contacts after Tada, "Three-dimensional analysis of non-repeatable runout (NRRO) in ball
+    bearings", Koyo Engineering Journal (2002) (seed 000), eq. 2-5, extended to a rigid shaft with five degrees
+    of freedom (module docstring).
+    """
     layout = case.spindle
     if layout is None:
         raise GeometryError(

@@ -583,7 +583,27 @@ def plot_ball_loads(
     outer_angle_deg: np.ndarray,
     title: str = "",
 ) -> Any:
-    """Ball loads [N] and contact angles [deg] against the ball's azimuth (equilibrium model)."""
+    """Ball loads [N] and contact angles [deg] against the ball's azimuth (equilibrium model).
+
+    Two panels sharing the azimuth axis: the inner and outer contact loads Q_i and Q_o above,
+    the inner and outer contact angles α_i and α_o below.
+
+    Parameters
+    ----------
+    azimuth_deg : ndarray, shape (Z,)
+        Azimuth ψ of each ball [deg].
+    inner_load, outer_load : ndarray, shape (Z,)
+        Contact load of each ball on the inner and the outer raceway [N].
+    inner_angle_deg, outer_angle_deg : ndarray, shape (Z,)
+        Contact angle of each ball at the inner and the outer raceway [deg].
+    title : str
+        Case title, put ahead of the figure's own title.
+
+    Returns
+    -------
+    matplotlib Axes
+        The upper (load) panel; its ``figure`` holds both.
+    """
     plt = pyplot()
     _, (ax, ax2) = plt.subplots(2, 1, figsize=(7, 5), sharex=True)
     ax.plot(azimuth_deg, inner_load, "o-", ms=3, label="Q_i (inner)")
@@ -796,6 +816,21 @@ def plot_density_waveform(
 
     The look of seed 002 Fig. 11 and 14; a long record is drawn through its min/max
     envelope (every peak kept).
+
+    Parameters
+    ----------
+    revolutions : ndarray, shape (n,)
+        Rotation of the rotating ring [rev].
+    density_um_per_rad : ndarray, shape (n,)
+        Displacement density dx/dθ at each instant [µm/rad].
+    title : str
+        Case title, put ahead of the figure's own title.
+    ax : matplotlib Axes, optional
+        Where to draw (a new figure by default).
+
+    Returns
+    -------
+    matplotlib Axes
     """
     plt = pyplot()
     if ax is None:
@@ -826,6 +861,25 @@ def plot_anderon_spectrum(
     :data:`FLOOR_FRACTION` of the largest line (stated in the title); each band's Anderon value
     drawn as a horizontal bar across the band (E and A, which span the others, are left out of
     the bars and given in the legend).
+
+    Parameters
+    ----------
+    orders : ndarray, shape (m,)
+        Order of each line [waves per revolution].
+    line_rms_uin_per_rad : ndarray, shape (m,)
+        Rms displacement density of each line [µin/rad]; lines of zero are not drawn.
+    bands : dict
+        Band name -> (low, high) edges [waves per revolution].
+    band_values : dict
+        Band name -> Anderon value [Anderon]; a band missing from it gets no bar.
+    title : str
+        Case title, put ahead of the figure's own title.
+    ax : matplotlib Axes, optional
+        Where to draw (a new figure by default).
+
+    Returns
+    -------
+    matplotlib Axes
     """
     plt = pyplot()
     if ax is None:
@@ -946,7 +1000,36 @@ def plot_linear_figures(
     bands: dict[str, tuple[float, float]],
     band_values: dict[str, dict[str, float]],
 ) -> list[Path]:
-    """Save the linear model's waveform, Anderon spectrum and band chart as PNG files."""
+    """Save the linear model's waveform, Anderon spectrum and band chart as PNG files.
+
+    :func:`plot_density_waveform`, :func:`plot_anderon_spectrum` (with the first series of
+    ``band_values``) and :func:`plot_band_values` (every series).
+
+    Parameters
+    ----------
+    directory : Path
+        Existing output directory.
+    title : str
+        Case title, put ahead of each figure's own title.
+    revolutions : ndarray, shape (n,)
+        Rotation of the rotating ring [rev].
+    density_um_per_rad : ndarray, shape (n,)
+        Displacement density dx/dθ at each instant [µm/rad].
+    orders : ndarray, shape (m,)
+        Order of each line [waves per revolution].
+    line_rms_uin_per_rad : ndarray, shape (m,)
+        Rms displacement density of each line [µin/rad].
+    bands : dict
+        Band name -> (low, high) edges [waves per revolution].
+    band_values : dict
+        Series name -> band name -> Anderon value [Anderon] (at least one series).
+
+    Returns
+    -------
+    list of Path
+        ``density_waveform.png``, ``anderon_spectrum.png`` and ``anderon_bands.png`` in
+        ``directory``.
+    """
     first = next(iter(band_values.values()))
     figures = (
         ("density_waveform.png", plot_density_waveform(revolutions, density_um_per_rad, title)),
@@ -962,7 +1045,22 @@ def plot_linear_figures(
 # ---------------------------------------------------------------- roller_constraint model
 @style.styled
 def save_figure(ax: Any, path: Path, dpi: int = 120) -> Path:
-    """Save the figure of ``ax`` to ``path`` and close it."""
+    """Save the figure of ``ax`` to ``path`` and close it.
+
+    Parameters
+    ----------
+    ax : matplotlib Axes
+        An axes of the figure to save.
+    path : Path
+        File to write (its suffix gives the format, e.g. ``.png``).
+    dpi : int
+        Resolution [dots per inch].
+
+    Returns
+    -------
+    Path
+        ``path``.
+    """
     return _save(ax.figure, path, dpi=dpi)
 
 
@@ -970,7 +1068,24 @@ def save_figure(ax: Any, path: Path, dpi: int = 120) -> Path:
 def plot_constraint_displacement(
     angle_deg: np.ndarray, radial: np.ndarray, horizontal: np.ndarray, ax: Any = None
 ) -> Any:
-    """Ring-centre displacement along and across the load against the rotation angle, in µm."""
+    """Ring-centre displacement along and across the load against the rotation angle, in µm.
+
+    The rigid (``roller_constraint``) model's stable position of the loaded ring; the title
+    gives the radial runout (peak-to-peak along the load).
+
+    Parameters
+    ----------
+    angle_deg : ndarray, shape (n,)
+        Rotation angle of the turning ring [deg].
+    radial, horizontal : ndarray, shape (n,)
+        Displacement of the ring centre along and across the load [m].
+    ax : matplotlib Axes, optional
+        Where to draw (a new figure by default).
+
+    Returns
+    -------
+    matplotlib Axes
+    """
     plt = pyplot()
     if ax is None:
         _, ax = plt.subplots(figsize=(8, 3.5))
@@ -989,7 +1104,25 @@ def plot_constraint_displacement(
 def plot_contact_pattern(
     angle_deg: np.ndarray, touching: np.ndarray, pair: np.ndarray, ax: Any = None
 ) -> Any:
-    """Which rollers touch the loaded ring at each angle (dots) and which two hold it (line)."""
+    """Which rollers touch the loaded ring at each angle (dots) and which two hold it (line).
+
+    Rollers are numbered from 1 on the y axis.
+
+    Parameters
+    ----------
+    angle_deg : ndarray, shape (n,)
+        Rotation angle of the turning ring [deg].
+    touching : ndarray of bool, shape (n, Z)
+        Whether each roller touches the loaded ring at each angle.
+    pair : ndarray of int, shape (n, 2)
+        The two rollers (0-based) whose contacts hold the ring at each angle.
+    ax : matplotlib Axes, optional
+        Where to draw (a new figure by default).
+
+    Returns
+    -------
+    matplotlib Axes
+    """
     plt = pyplot()
     if ax is None:
         _, ax = plt.subplots(figsize=(8, 3.5))
@@ -1015,7 +1148,30 @@ def plot_order_sweep(
     n_elements: int,
     ax: Any = None,
 ) -> Any:
-    """Runout against the harmonic order of each part, with multiples of Z marked."""
+    """Runout against the harmonic order of each part, with multiples of Z marked.
+
+    One curve per part, the perfect bearing's runout as a dotted line and the multiples of Z as
+    dashed ones.
+
+    Parameters
+    ----------
+    orders : ndarray of int, shape (m,)
+        Harmonic orders swept [-].
+    runout : ndarray, shape (len(parts), m)
+        Radial runout p-p along the load, one row per part [m].
+    parts : tuple of str
+        The parts swept (``"inner"``, ``"outer"``, ``"roller"``), the curves' labels.
+    baseline : float
+        Runout of the same bearing with perfect parts [m].
+    n_elements : int
+        Number of rollers Z [-].
+    ax : matplotlib Axes, optional
+        Where to draw (a new figure by default).
+
+    Returns
+    -------
+    matplotlib Axes
+    """
     plt = pyplot()
     if ax is None:
         _, ax = plt.subplots(figsize=(8, 3.5))
@@ -1045,6 +1201,21 @@ def plot_dynamic_spectrum(result: RunResult, ax: Any = None, f_max: float | None
     ball passage and its harmonics, unbalance, natural frequencies, waviness lines. The axis
     starts :data:`FLOOR_FRACTION` below the largest peak (stated in the title); a long spectrum
     is drawn through its min/max envelope (every peak kept).
+
+    Parameters
+    ----------
+    result : RunResult
+        A time-history result (at least two instants, evenly spaced).
+    ax : matplotlib Axes, optional
+        Where to draw (a new figure, laid out before labels are placed, by default).
+    f_max : float, optional
+        Highest frequency drawn [Hz]; by default 8 times the ball-passage frequency (a tenth
+        of the sample rate for a result without dynamic details), at most the Nyquist
+        frequency.
+
+    Returns
+    -------
+    matplotlib Axes
     """
     from runout.analysis.spectrum import amplitude_spectrum
 
@@ -1103,7 +1274,20 @@ def plot_dynamic_spectrum(result: RunResult, ax: Any = None, f_max: float | None
 
 @style.styled
 def plot_dynamic_figures(result: RunResult, directory: Path) -> list[Path]:
-    """``spectrum.png`` of a dynamic run (the standard figures are written separately)."""
+    """``spectrum.png`` of a dynamic run (the standard figures are written separately).
+
+    Parameters
+    ----------
+    result : RunResult
+        A result of the ``dynamic`` model.
+    directory : Path
+        Existing output directory.
+
+    Returns
+    -------
+    list of Path
+        ``spectrum.png`` in ``directory``, drawn by :func:`plot_dynamic_spectrum`.
+    """
     return [_save(plot_dynamic_spectrum(result).figure, directory / "spectrum.png")]
 
 

@@ -103,6 +103,13 @@ def model_files(result: RunResult, directory: Path) -> list[Path]:
     its JSON and record suffice for (the rigid model's contact table needs the run's
     solution, which is not stored).
 
+    Parameters
+    ----------
+    result : RunResult
+        The result.
+    directory : Path
+        Existing output directory.
+
     Returns
     -------
     list of Path

@@ -45,7 +45,27 @@ Rows = list[tuple[str, str, str]]
 
 @dataclass(frozen=True)
 class BearingSummary:
-    """Derived geometry, Hertz contacts and frequencies of one bearing at one operating point."""
+    """Derived geometry, Hertz contacts and frequencies of one bearing at one operating point.
+
+    Made by :func:`bearing_summary`.
+
+    Attributes
+    ----------
+    bearing : BallBearing or RollerBearing
+        The bearing.
+    operation : Operation
+        Its operating point (speed, rotating ring, loads).
+    contact_angle : float
+        Contact angle the bearing runs at [rad]
+        (:func:`runout.geometry.loading.operating_contact_angle`).
+    frequencies : Frequencies
+        Characteristic frequencies at that angle [Hz].
+    contacts : BallContacts or RollerContacts or None
+        Hertz point contacts of a ball bearing at that angle, or the line contacts of a roller
+        bearing with a roller length; None for a roller bearing without one.
+    loading : AxialLoading or None
+        The static axial-load solution, when one was computed.
+    """
 
     bearing: Bearing
     operation: Operation
@@ -56,7 +76,15 @@ class BearingSummary:
 
     # ------------------------------------------------------------------------ JSON
     def to_json(self) -> dict[str, Any]:
-        """Plain-JSON dictionary; SI values with the unit in the key name."""
+        """Plain-JSON dictionary; SI values with the unit in the key name.
+
+        Returns
+        -------
+        dict
+            ``bearing``, ``derived``, ``contact`` (when there are contacts), ``axial_loading``
+            (when computed), ``contact_angle_deg``, ``frequencies_hz`` and ``orders`` (None at
+            zero speed).
+        """
         b = self.bearing
         out: dict[str, Any] = {"bearing": _bearing_json(b), "derived": _derived_json(b)}
         if isinstance(self.contacts, BallContacts):
@@ -98,7 +126,14 @@ class BearingSummary:
 
     # ------------------------------------------------------------------------ tables
     def sections(self) -> list[tuple[str, Rows]]:
-        """Titled rows (quantity, value, unit) for the readable output."""
+        """Titled rows (quantity, value, unit) for the readable output.
+
+        Returns
+        -------
+        list of (title, rows)
+            Geometry, contacts, axial loading (when computed) and frequencies; rows are
+            (quantity, value, unit) strings.
+        """
         b = self.bearing
         geometry: Rows = [
             ("type", b.kind, ""),
@@ -290,6 +325,7 @@ class ModelUse:
     Attributes
     ----------
     model : str
+        Model id.
     contact_angle : float
         Effective contact angle [rad] (see :data:`_ANGLE_SOURCE` for how the model gets it).
     radial_clearance : float
@@ -297,8 +333,12 @@ class ModelUse:
     preload_approach : float or None
         Elastic approach of a ball along its contact line under the axial preload [m].
     keys : list of (key path, status)
+        Each case key with how the model treats it (``"honoured"``, ``"refused"``,
+        ``"not_applicable"``).
     notes : list of str
+        Sentences on keys and key combinations.
     refusals : list of (key path, message)
+        The keys the model refuses, with why.
     """
 
     model: str
@@ -310,7 +350,13 @@ class ModelUse:
     refusals: list[tuple[str, str]]
 
     def to_json(self) -> dict[str, Any]:
-        """JSON entry ``model_use`` of ``runout check --json``."""
+        """JSON entry ``model_use`` of ``runout check --json``.
+
+        Returns
+        -------
+        dict
+            Plain-JSON dictionary; SI values with the unit in the key name.
+        """
         return {
             "model": self.model,
             "contact_angle_deg": math.degrees(self.contact_angle),
@@ -324,7 +370,13 @@ class ModelUse:
         }
 
     def rows(self) -> Rows:
-        """Readable rows for ``runout check``."""
+        """Readable rows for ``runout check``.
+
+        Returns
+        -------
+        list of (quantity, value, unit)
+            Effective inputs, then each key's treatment, the notes and the refusals.
+        """
         rows: Rows = [
             ("contact angle", f"{math.degrees(self.contact_angle):.4f}", "deg"),
             ("  how", _ANGLE_SOURCE[self.model], ""),
@@ -352,6 +404,12 @@ def model_use(case: Any, model: str | None = None) -> ModelUse:
         A validated case (read from a file: the key table needs its ``spec``).
     model : str, optional
         Model id.
+
+    Returns
+    -------
+    ModelUse
+        The effective contact angle, clearance and preload approach, and each key's treatment
+        (no keys for a case not read from a file).
     """
     from runout.case.conventions import applicability
 
@@ -643,6 +701,11 @@ def verdict_line(verdict: Verdict) -> str:
     ----------
     verdict : Verdict
         A verdict (:func:`runout.analysis.results.verdict_of`, or ``Verdict.from_json``).
+
+    Returns
+    -------
+    str
+        ``PASS`` or ``FAIL``, the quantity, its value and the limit.
     """
     from runout.base.display import format_length, length_unit
 

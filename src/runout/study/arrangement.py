@@ -91,6 +91,11 @@ def line_amplitudes(
         Diameter-deviation harmonic of each ball, :math:`a e^{i\\varphi}` [m].
     orders : array_like of int, shape (K,), optional
         Orders k of ``form``'s columns (for the labels; default 2, 4, ...).
+
+    Returns
+    -------
+    ArrangementLines
+        The p-p of the f_c line and of the k f_b ± f_c lines of each order [m].
     """
     d = np.asarray(size_errors, dtype=np.float64)
     z = d.size
@@ -191,15 +196,20 @@ def optimise_arrangement(
     rng : numpy.random.Generator
         Random starts and the random-assembly baseline.
     exact_limit, restarts, random_trials : int
-        Search budget.
+        Search budget: the most arrangements enumerated for an exact search, the local
+        search's random starts, and the random assemblies of the baseline.
     case : Case, optional
         A 2-D model case (:mod:`runout.models.quasi_static_2d`); when given, the best
         ``candidates`` distinct arrangements are run by the nonlinear model and the one with the
         smallest nonlinear objective is returned (``verified``).
+    candidates : int
+        How many of the best arrangements of the closed form the nonlinear model checks
+        (with ``case`` only).
 
     Returns
     -------
     Arrangement
+        The chosen balls with their lines and the random-assembly baseline.
     """
     d = np.asarray(size_errors, dtype=np.float64)
     n, z = d.size, int(n_elements)

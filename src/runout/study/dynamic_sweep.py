@@ -62,7 +62,36 @@ def _case_digest(case: Any) -> str:
 
 @dataclass(frozen=True)
 class SweepPoint:
-    """One point of a sweep: inputs and the figures of its steady state."""
+    """One point of a sweep: inputs and the figures of its steady state.
+
+    Attributes
+    ----------
+    elements : int
+        Number of balls Z [-].
+    preload_n : float
+        Axial preload [N].
+    contact_angle_deg : float
+        Contact angle of the run [deg].
+    ball_passage_hz : float
+        Ball passage frequency [Hz].
+    natural_frequencies_hz : list of float
+        Linearised natural frequencies at the static start, ascending [Hz].
+    radial_pp_m : float
+        Radial runout p-p along the measuring direction [m].
+    ball_passage_pp_m : float
+        p-p of the ball-passage line along the measuring direction [m]; 0 below the
+        solver's resolution.
+    mean_displacement_m : list of float
+        Mean x and y of the rotor [m].
+    spectrum_hz : list of float
+        Frequencies of the amplitude spectrum along the measuring direction, up to 8 times
+        the ball passage frequency [Hz].
+    spectrum_pp_m : list of float
+        Its p-p at each frequency [m].
+    lines : list of dict
+        The largest fitted lines in x and y (of the 12 largest), as
+        :meth:`runout.analysis.lines.Component.to_json` writes them.
+    """
 
     elements: int
     preload_n: float
@@ -77,7 +106,13 @@ class SweepPoint:
     lines: list[dict[str, Any]]
 
     def to_json(self) -> dict[str, Any]:
-        """Plain JSON."""
+        """Plain JSON.
+
+        Returns
+        -------
+        dict
+            Field name -> value (the file of a point in ``points/``, less the case digest).
+        """
         return dict(self.__dict__)
 
 
@@ -115,6 +150,16 @@ def exact_number(value: float) -> str:
     ``f"{value:g}"`` when it round-trips (``10``, ``0.5``: the names of earlier versions stay
     valid), ``repr`` otherwise (``10.0000001``). Two different values therefore never share a
     text: a point name made of 6 significant digits let two close preloads share one result.
+
+    Parameters
+    ----------
+    value : float
+        The number (a preload [N] in a point name).
+
+    Returns
+    -------
+    str
+        Its text; ``-0.0`` is written as ``0``.
     """
     value = float(value) + 0.0  # -0.0 and 0.0 are one preload
     short = f"{value:g}"
@@ -122,7 +167,20 @@ def exact_number(value: float) -> str:
 
 
 def point_name(elements: int, preload: float) -> str:
-    """Name of a sweep point (and of its file in ``points/``): ``Z<z>_P<preload>N``, exact."""
+    """Name of a sweep point (and of its file in ``points/``): ``Z<z>_P<preload>N``, exact.
+
+    Parameters
+    ----------
+    elements : int
+        Number of balls Z [-].
+    preload : float
+        Axial preload [N], written by :func:`exact_number`.
+
+    Returns
+    -------
+    str
+        E.g. ``Z9_P10N``.
+    """
     return f"Z{int(elements)}_P{exact_number(preload)}N"
 
 

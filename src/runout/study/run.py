@@ -162,6 +162,11 @@ def dask_executor(address: str | None = None, **cluster: Any) -> Executor:
     **cluster
         Keyword arguments of :class:`distributed.LocalCluster` when ``address`` is None.
 
+    Returns
+    -------
+    concurrent.futures.Executor
+        The executor of a Dask client (``Client.get_executor()``), for :func:`run_study`.
+
     Raises
     ------
     StudyError
@@ -667,7 +672,19 @@ def _assemble(
 
 
 def study_limit(case: Case) -> tuple[str, float] | None:
-    """``(limit_on, limit [m])`` of the case's spec limit on a runout figure, or None."""
+    """``(limit_on, limit [m])`` of the case's spec limit on a runout figure, or None.
+
+    Parameters
+    ----------
+    case : Case
+        A validated case.
+
+    Returns
+    -------
+    tuple of (str, float) or None
+        ``[analysis] limit_on`` and ``limit`` in SI ([m] for a runout p-p, [m/s] for an
+        ISO 15242 band); None when the case sets no limit.
+    """
     analysis = case.analysis
     limit = getattr(analysis, "limit", None)
     if limit is None:
@@ -677,6 +694,18 @@ def study_limit(case: Case) -> tuple[str, float] | None:
 
 def load_study(directory: Path | str, case: Case) -> StudyResult:
     """Read a finished study from its output directory.
+
+    Parameters
+    ----------
+    directory : Path or str
+        The study's output directory (``manifest.json`` and ``chunks/``).
+    case : Case
+        The case that ran the study (its digest must match the manifest's).
+
+    Returns
+    -------
+    StudyResult
+        The study assembled from its chunks, as :func:`run_study` returned it.
 
     Raises
     ------

@@ -176,7 +176,13 @@ SECTIONS: list[Section] = [
 
 
 def section_keys() -> list[str]:
-    """The keys of :data:`SECTIONS`, in document order (``runout reproduce --only``)."""
+    """The keys of :data:`SECTIONS`, in document order (``runout reproduce --only``).
+
+    Returns
+    -------
+    list of str
+        ``kinematics``, ``contact``, ... as :data:`SECTIONS` orders them.
+    """
     return [s.key for s in SECTIONS]
 
 
@@ -184,7 +190,26 @@ def build(
     only: Iterable[str] | None = None,
     progress: Callable[[str, int, int], None] | None = None,
 ) -> Document:
-    """Run the checks (all sections, or those in ``only``) and render the document."""
+    """Run the checks (all sections, or those in ``only``) and render the document.
+
+    Parameters
+    ----------
+    only : iterable of str, optional
+        Keys of the sections to run (:func:`section_keys`); None runs them all and adds the
+        index of the example case files.
+    progress : callable, optional
+        Called as ``progress(title, index, count)`` before each section.
+
+    Returns
+    -------
+    Document
+        The Markdown of VALIDATION.md (its head, the sections) and every evaluated row.
+
+    Raises
+    ------
+    runout.base.errors.RunoutError
+        A key of ``only`` that names no section.
+    """
     keys = section_keys()
     wanted = list(keys if only is None else only)
     unknown = [k for k in wanted if k not in keys]

@@ -51,7 +51,23 @@ def examples_dir() -> Path:
 
 
 def example_path(name: str) -> Path:
-    """The path of the example case file ``name`` (e.g. ``"seed002_608.toml"``)."""
+    """The path of the example case file ``name`` (e.g. ``"seed002_608.toml"``).
+
+    Parameters
+    ----------
+    name : str
+        File name in :func:`examples_dir`.
+
+    Returns
+    -------
+    Path
+        The file.
+
+    Raises
+    ------
+    runout.base.errors.RunoutError
+        No such file.
+    """
     path = examples_dir() / name
     if not path.is_file():
         from runout.base.errors import RunoutError
@@ -61,14 +77,40 @@ def example_path(name: str) -> Path:
 
 
 def load(name: str) -> Case:
-    """The example case file ``name``, parsed and validated."""
+    """The example case file ``name``, parsed and validated.
+
+    Parameters
+    ----------
+    name : str
+        File name in :func:`examples_dir` (e.g. ``"seed002_608.toml"``).
+
+    Returns
+    -------
+    Case
+        The validated case.
+    """
     from runout.case.model import load_case
 
     return load_case(example_path(name))
 
 
 def variant(name: str, mutate: Callable[[dict[str, Any]], None]) -> Case:
-    """The example ``name`` with its data changed by ``mutate`` (a loop done in code)."""
+    """The example ``name`` with its data changed by ``mutate`` (a loop done in code).
+
+    Parameters
+    ----------
+    name : str
+        File name in :func:`examples_dir`.
+    mutate : callable
+        Changes the case's data (the dictionary of its tables, as the file gives them) in
+        place.
+
+    Returns
+    -------
+    Case
+        The changed data, validated as a case file (relative paths against
+        :func:`examples_dir`).
+    """
     from runout.case.model import parse_case
 
     case = load(name)
@@ -78,13 +120,43 @@ def variant(name: str, mutate: Callable[[dict[str, Any]], None]) -> Case:
 
 
 def uses(name: str, what: str) -> str:
-    """Register that a check computes from the example ``name`` (reproducing ``what``)."""
+    """Register that a check computes from the example ``name`` (reproducing ``what``).
+
+    Parameters
+    ----------
+    name : str
+        File name in :func:`examples_dir`.
+    what : str
+        What the file reproduces (e.g. a paper's table), for the document's index; the first
+        registration of a file is kept.
+
+    Returns
+    -------
+    str
+        ``name``, for :attr:`Check.case`.
+    """
     EXAMPLE_USES.setdefault(name, what)
     return name
 
 
 def ball_bearing(case: Case) -> BallBearing:
-    """The ball bearing of ``case`` (a check built for ball bearings refuses a roller one)."""
+    """The ball bearing of ``case`` (a check built for ball bearings refuses a roller one).
+
+    Parameters
+    ----------
+    case : Case
+        A validated case.
+
+    Returns
+    -------
+    BallBearing
+        ``case.bearing``.
+
+    Raises
+    ------
+    TypeError
+        A roller bearing.
+    """
     from runout.geometry.bearing import BallBearing
 
     if not isinstance(case.bearing, BallBearing):
@@ -93,7 +165,23 @@ def ball_bearing(case: Case) -> BallBearing:
 
 
 def fixed_contact_angle(bearing: BallBearing) -> float:
-    """The bearing's fixed ``contact_angle`` [rad]; a check that needs one refuses a free angle."""
+    """The bearing's fixed ``contact_angle`` [rad]; a check that needs one refuses a free angle.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        The bearing.
+
+    Returns
+    -------
+    float
+        Its contact angle [rad].
+
+    Raises
+    ------
+    ValueError
+        A free contact angle (None).
+    """
     if bearing.contact_angle is None:
         raise ValueError("the check needs a fixed contact_angle")
     return bearing.contact_angle

@@ -29,7 +29,19 @@ def _close(a: str, b: str, rtol: float) -> bool:
 
 
 def split_sections(text: str) -> dict[str, str]:
-    """``### title`` → its block (up to the next ``### `` heading)."""
+    """``### title`` → its block (up to the next ``### `` heading).
+
+    Parameters
+    ----------
+    text : str
+        A Markdown document.
+
+    Returns
+    -------
+    dict of str to str
+        Section title -> its lines, heading included; the text before the first heading is
+        under ``""``.
+    """
     out: dict[str, str] = {}
     title = ""
     for line in text.splitlines(keepends=True):
@@ -41,7 +53,23 @@ def split_sections(text: str) -> dict[str, str]:
 
 def compare(fresh: str, existing: str, rtol: float = CHECK_RTOL) -> list[str]:
     """Differences between two documents, numbers compared within ``rtol`` or one unit of
-    their last printed digit (so a last-digit change on another CPU is not a difference)."""
+    their last printed digit (so a last-digit change on another CPU is not a difference).
+
+    Parameters
+    ----------
+    fresh : str
+        The document just built.
+    existing : str
+        The document on disk.
+    rtol : float
+        Relative tolerance on a number [-].
+
+    Returns
+    -------
+    list of str
+        One message per differing line (and one when the line counts differ); empty when the
+        documents agree.
+    """
     a, b = fresh.splitlines(), existing.splitlines()
     problems: list[str] = []
     if len(a) != len(b):

@@ -91,7 +91,18 @@ def _harris_209_curvature(race: str, which: int) -> float:
 
 
 def harris_209_bearing() -> BallBearing:
-    """Harris's 209 bearing (:data:`HARRIS_209`, steel :data:`HARRIS_STEEL`)."""
+    """Harris's 209 bearing (:data:`HARRIS_209`, steel :data:`HARRIS_STEEL`).
+
+    Returns
+    -------
+    BallBearing
+        Nine 12.7 mm balls on a 65 mm pitch circle, conformity 0.52 at both raceways, no
+        clearance.
+
+    Notes
+    -----
+    The 209 deep-groove ball bearing example of Harris, *Rolling Bearing Analysis*.
+    """
     from runout import BallBearing
 
     h = HARRIS_209
@@ -200,7 +211,21 @@ def _palmgren() -> float:
 
 
 def point_contact_checks() -> list[Check]:
-    """The point-contact table."""
+    """The point-contact table.
+
+    Returns
+    -------
+    list of Check
+        Curvature sums, curvature differences and approaches of Harris's 209 bearing, the
+        δ* table and the constants of seed 003, the Hamrock-Brewe fits and seed 002's ball on
+        a flat.
+
+    Notes
+    -----
+    Harris's 209 bearing (Σρ, F(ρ) and the approach at 1000 N from the δ* table); seed 003
+    Table 1 (Harris's δ*) and eq. 2.10-2.15; the curve fits of κ, 𝒦 and ℰ of Hamrock and
+    Brewe (1983); seed 002 eq. 9-11 and Fig. 6 (a 2 mm ball on a flat).
+    """
     h = "Harris, 209 bearing (D 12.7 mm, d_m 65 mm, f = 0.52, α = 0)"
     return [
         Check(
@@ -401,7 +426,17 @@ def point_contact_checks() -> list[Check]:
 
 
 def line_contact_checks() -> list[Check]:
-    """The line-contact table."""
+    """The line-contact table.
+
+    Returns
+    -------
+    list of Check
+        The load of Palmgren's line contact at one approach and length.
+
+    Notes
+    -----
+    Palmgren's line-contact law as Harris quotes it (:data:`PALMGREN_LINE_CONSTANT`).
+    """
     published = PALMGREN_LINE_CONSTANT * 0.004 ** (10 / 9) * 15.0 ** (8 / 9)
     return [
         Check(

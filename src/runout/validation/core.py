@@ -91,7 +91,15 @@ class Check:
     digits: int = 5
 
     def evaluate(self) -> Row:
-        """Compute ours and apply the rule: the :class:`Row` of the document."""
+        """Compute ours and apply the rule: the :class:`Row` of the document.
+
+        Returns
+        -------
+        Row
+            Our value (and its spread when ``ours`` gives one) with the verdict: :data:`AGREE`
+            within the rule, :data:`SPREAD` outside it but inside the spread of ours (with
+            ``spread_from_ours``), :data:`NOT` otherwise.
+        """
         value = self.ours()
         low = high = None
         if isinstance(value, tuple):
@@ -146,7 +154,13 @@ class Row:
     verdict: str
 
     def cells(self) -> list[str]:
-        """The table's cells: source, quantity, published, ours, difference, verdict, why."""
+        """The table's cells: source, quantity, published, ours, difference, verdict, why.
+
+        Returns
+        -------
+        list of str
+            The seven cells of :data:`runout.validation.render.HEADER`, in its order.
+        """
         c = self.check
         pub = c.published
         d = c.digits
@@ -184,7 +198,20 @@ class Row:
 
 
 def bind(fn: Callable[..., Any], *args: Any) -> Callable[[], Value]:
-    """``fn`` with its arguments bound (a loop variable captured by value)."""
+    """``fn`` with its arguments bound (a loop variable captured by value).
+
+    Parameters
+    ----------
+    fn : callable
+        Computes our value from ``args``.
+    *args
+        Its positional arguments.
+
+    Returns
+    -------
+    callable
+        ``fn(*args)`` without arguments, for :attr:`Check.ours`.
+    """
     return functools.partial(fn, *args)
 
 
@@ -217,7 +244,19 @@ def _rule_text(c: Check) -> str:
 
 @dataclass(frozen=True)
 class Group:
-    """A sub-section: a heading, prose, a table of checks, prose after it."""
+    """A sub-section: a heading, prose, a table of checks, prose after it.
+
+    Attributes
+    ----------
+    title : str
+        The ``####`` heading; empty for none.
+    intro : str
+        Prose before the table (Markdown).
+    checks : callable
+        Builds the group's list of :class:`Check` (called when the document is built).
+    outro : str or callable
+        Prose after the table; a callable when it quotes computed numbers.
+    """
 
     title: str
     intro: str
@@ -228,7 +267,19 @@ class Group:
 
 @dataclass(frozen=True)
 class Section:
-    """A ``###`` section of the document: ``key`` for ``--only``, a title, prose, groups."""
+    """A ``###`` section of the document: ``key`` for ``--only``, a title, prose, groups.
+
+    Attributes
+    ----------
+    key : str
+        Its name for ``runout reproduce --only``.
+    title : str
+        The ``###`` heading.
+    intro : str
+        Prose under the heading (Markdown).
+    groups : list of Group
+        Its tables, in order.
+    """
 
     key: str
     title: str
@@ -238,17 +289,37 @@ class Section:
 
 @dataclass(frozen=True)
 class Document:
-    """The rendered Markdown and every evaluated row."""
+    """The rendered Markdown and every evaluated row.
+
+    Attributes
+    ----------
+    text : str
+        The Markdown document (VALIDATION.md).
+    rows : list of Row
+        Every evaluated check, in document order.
+    """
 
     text: str
     rows: list[Row]
 
     def counts(self) -> dict[str, int]:
-        """Number of rows per verdict."""
+        """Number of rows per verdict.
+
+        Returns
+        -------
+        dict of str to int
+            :data:`AGREE`, :data:`SPREAD` and :data:`NOT` -> number of rows.
+        """
         return {v: sum(r.verdict == v for r in self.rows) for v in (AGREE, SPREAD, NOT)}
 
     def summary(self) -> str:
-        """One line: checks, agreeing, within spread, not reproduced."""
+        """One line: checks, agreeing, within spread, not reproduced.
+
+        Returns
+        -------
+        str
+            ``N checks: A agree, S within spread, X not reproduced``.
+        """
         c = self.counts()
         return (
             f"{len(self.rows)} checks: {c[AGREE]} agree, {c[SPREAD]} within spread, "

@@ -80,7 +80,21 @@ def _bias_gap(i: int) -> float:
 
 
 def checks() -> list[Check]:
-    """The diagnosis rows of VALIDATION.md."""
+    """The diagnosis rows of VALIDATION.md.
+
+    Returns
+    -------
+    list of Check
+        The estimates diagnosed from the linear model's record of seed 002's deviations, the
+        deviation scale per band Fig. 20 implies against Fig. 12, and the bias of each variant
+        of the inverted linear model on a ``quasi_static_3d`` record.
+
+    Notes
+    -----
+    Seed 002 ("Anderon vibration"): the deviations of eq. 43-47, the computed band values of
+    Fig. 12 and the measured ones of Fig. 20 (:data:`FIG12`, :data:`FIG20`, :data:`W_I1`,
+    :data:`W_S`).
+    """
     name = uses("seed002_608.toml", "`runout diagnose` round trip of eq. 43–47, Fig. 20 scale")
     rows: list[Check] = []
     for i, (quantity, published, _ours, tol, why) in enumerate(_seed002()):

@@ -40,6 +40,20 @@ class FftReading:
     rows: int
 
     def read(self, frequency: float, line: complex) -> float:
+        """What the paper's spectrum shows at its bin nearest ``frequency`` for a true line.
+
+        Parameters
+        ----------
+        frequency : float
+            Frequency of the line [Hz].
+        line : complex
+            The true line's phasor [nm p-p].
+
+        Returns
+        -------
+        float
+            :func:`runout.analysis.spectrum.peak_bin_gain` × |line + floor| [nm p-p].
+        """
         from runout.analysis.spectrum import peak_bin_gain
 
         gain = float(peak_bin_gain(frequency, self.duration))
@@ -62,6 +76,25 @@ def identify_fft_reading(
     parameters; use it on many more rows than that. Record lengths one period of the line
     apart (≈ 1/f) fit almost equally: what is identified is where each line falls between
     two bins.
+
+    Parameters
+    ----------
+    frequency : ndarray, shape (m,)
+        Frequency of each line [Hz].
+    line : ndarray of complex, shape (m,)
+        Exact phasor of each line, in the unit of ``published`` (nm p-p for seed 001).
+    published : ndarray, shape (m,)
+        The paper's reading of each line.
+    floor_frequency : float
+        Frequency at which the paper prints its floor [Hz].
+    floor_reading : float
+        The floor's reading there, in the unit of ``published``.
+
+    Returns
+    -------
+    FftReading
+        The record length, the floor phasor, the largest relative misfit and the number of
+        rows.
     """
     from scipy.optimize import least_squares
 

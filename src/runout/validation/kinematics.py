@@ -59,7 +59,18 @@ KIM_FREQUENCIES_HZ = {"cage": 50.0, "ball_spin": 335.0}
 
 @functools.cache
 def cwru_orders() -> dict[str, float]:
-    """Our orders of the CWRU 6205 (inner ring turning at 1 Hz)."""
+    """Our orders of the CWRU 6205 (inner ring turning at 1 Hz).
+
+    Returns
+    -------
+    dict of str to float
+        Frequency name (``cage``, ``ball_spin``, ``ball_pass_inner``, ...) -> order [-].
+
+    Notes
+    -----
+    Compared with the CWRU bearing data centre's table of the 6205-2RS JEM
+    (:data:`CWRU_6205`).
+    """
     from runout import BallBearing, Operation
     from runout.geometry.kinematics import bearing_frequencies
 
@@ -69,7 +80,17 @@ def cwru_orders() -> dict[str, float]:
 
 @functools.cache
 def orders_608() -> dict[str, float]:
-    """Our orders of the 608 of ``examples/seed002_608.toml`` (inner ring turning at 1 Hz)."""
+    """Our orders of the 608 of ``examples/seed002_608.toml`` (inner ring turning at 1 Hz).
+
+    Returns
+    -------
+    dict of str to float
+        Frequency name (``cage``, ``ball_spin``, ``ball_pass_inner``, ...) -> order [-].
+
+    Notes
+    -----
+    Compared with seed 002 eq. 48-59 (:data:`SEED002_ORDERS`).
+    """
     from runout import Operation
     from runout.geometry.kinematics import bearing_frequencies
 
@@ -108,7 +129,19 @@ def _seed004_cage_error() -> float:
 
 
 def checks() -> list[Check]:
-    """The kinematics table."""
+    """The kinematics table.
+
+    Returns
+    -------
+    list of Check
+        Orders of the CWRU 6205 and of seed 002's 608, seed 001's f_c and f_b, and two closed
+        forms checked against theory.
+
+    Notes
+    -----
+    The CWRU 6205-2RS JEM table; seed 002 eq. 48-59; seed 001 §5.1; seed 003 eq. 2.20;
+    seed 004 eq. 3.
+    """
     cw = "CWRU 6205-2RS JEM (9 balls, 0.3126 in, 1.537 in, 0°)"
     s002 = uses("seed002_608.toml", "seed 002 Tab. 1, eq. 43–47, eq. 48–59, Fig. 12")
     s001 = uses("seed001_kim_spindle.toml", "seed 001 Table 1 bearing, §5.1 frequencies")

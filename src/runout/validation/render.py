@@ -21,7 +21,22 @@ def _table(rows: Sequence[Row]) -> str:
 
 
 def render_section(section: Section) -> tuple[str, list[Row]]:
-    """Markdown of one section and its evaluated rows."""
+    """Markdown of one section and its evaluated rows.
+
+    Every check of every group is evaluated (:meth:`Check.evaluate`) here.
+
+    Parameters
+    ----------
+    section : Section
+        The section.
+
+    Returns
+    -------
+    text : str
+        Its Markdown: heading, prose and one table per group.
+    rows : list of Row
+        Its evaluated checks, in table order.
+    """
     parts = [f"### {section.title}", section.intro.strip()]
     rows: list[Row] = []
     for g in section.groups:
@@ -66,7 +81,14 @@ BENCHMARKS.md.
 
 
 def example_index() -> str:
-    """The last section: every example case file a check computed from, and what it reproduces."""
+    """The last section: every example case file a check computed from, and what it reproduces.
+
+    Returns
+    -------
+    str
+        Markdown of the section: a table of the files registered in
+        :data:`~runout.validation.cases.EXAMPLE_USES`, by name.
+    """
     lines = [
         "### Example case files used above",
         "",

@@ -62,6 +62,11 @@ def tada_case(
         The case file's ``[elements]`` table (per-ball size and pitch errors).
     name : str
         The example case file changed.
+
+    Returns
+    -------
+    Case
+        The changed example, validated as a case file.
     """
 
     def mutate(data: dict[str, Any]) -> None:
@@ -83,7 +88,18 @@ def tada_case(
 
 
 def tada_frequencies(case: Case) -> dict[str, float]:
-    """f_c, f_b, f_r and Tada's f_i = Z f_c, f_o = Z (f_r − f_c) [Hz] at the loaded angle."""
+    """f_c, f_b, f_r and Tada's f_i = Z f_c, f_o = Z (f_r − f_c) [Hz] at the loaded angle.
+
+    Parameters
+    ----------
+    case : Case
+        A case of the 3-D quasi-static model (its loaded contact angle is that model's).
+
+    Returns
+    -------
+    dict of str to float
+        ``f_c``, ``f_b``, ``f_r``, ``f_i`` and ``f_o`` [Hz].
+    """
     from runout.geometry.kinematics import ball_spin_frequency, cage_frequency
     from runout.models import quasi_static_3d as qs3
 
@@ -100,6 +116,20 @@ def tada_line_pp(case: Case, freqs: Sequence[float], disp: np.ndarray | None = N
 
     ``disp`` is the displacement (3, samples) [m] on ``qs3.time_grid_of(case)`` when already
     solved; otherwise the case is solved here.
+
+    Parameters
+    ----------
+    case : Case
+        A case of the 3-D quasi-static model.
+    freqs : sequence of float
+        Frequencies of the lines [Hz].
+    disp : ndarray, shape (3, samples), optional
+        The solved displacement [m].
+
+    Returns
+    -------
+    ndarray, shape (3, len(freqs))
+        p-p of each line in x, y and z [m].
     """
     from runout.analysis.spectrum import extract_lines
     from runout.models import quasi_static_3d as qs3
@@ -173,6 +203,28 @@ def tada_second_order_lines(z: int, lobes: int, direction: str) -> tuple[int, li
 
     Returns the multiple of Z at which it falls, (2 lobes ± 1 or 2 lobes), and its p-p [m]
     for :data:`TADA_CONCLUSION3_AMPLITUDES` (x for ``direction="xy"``, z for ``"z"``).
+
+    Parameters
+    ----------
+    z : int
+        Number of balls Z [-].
+    lobes : int
+        Lobes of the outer-ring waviness [-].
+    direction : {"xy", "z"}
+        The radial (read in x) or the axial line.
+
+    Returns
+    -------
+    multiple : int
+        The multiple m of the cage frequency in the line's frequency |m f_c − 2 lobes f_o|
+        (2 lobes ± 1 radially, 2 lobes axially).
+    lines : list of float
+        Its p-p at each amplitude of :data:`TADA_CONCLUSION3_AMPLITUDES` [m].
+
+    Notes
+    -----
+    Seed 000 conclusion 3 (with Fig. 3): the second-order line grows with the square of the
+    waviness amplitude.
     """
     from runout.models import quasi_static_3d as qs3
 
@@ -250,7 +302,19 @@ def _angle_to(printed: float, value: float) -> float:
 
 
 def checks() -> list[Check]:
-    """The Tada table."""
+    """The Tada table.
+
+    Returns
+    -------
+    list of Check
+        The direction of each line of Table 2, conclusion 1 (first-order line = waviness
+        p-p), the growth exponent of conclusion 3, and the inclination and axes of the
+        ellipses of Fig. 6.
+
+    Notes
+    -----
+    Seed 000 Table 2, conclusions 1 and 3 (Fig. 3) and §3.2 / Fig. 6 (:data:`TADA_FIG6`).
+    """
     name = uses("seed000_tada_table2.toml", "seed 000 Table 1 bearing, Table 2 and conclusion 1")
     fig6 = uses("seed000_tada_fig6.toml", "seed 000 §3.2 / Fig. 6 ellipses (12 cells)")
     out: list[Check] = []
