@@ -1,7 +1,7 @@
 """One cell of the key × model matrix (runout.case.conventions) checked against what the model does.
 
-Shared by tests/unit/test_conventions_matrix.py (single-bearing models) and
-tests/unit/test_spindle_conventions.py (the spindle column, on a spindle case).
+Shared by tests/unit/case/test_conventions_matrix.py (single-bearing models) and
+tests/unit/case/test_spindle_conventions.py (the spindle column, on a spindle case).
 """
 
 from __future__ import annotations

@@ -2,7 +2,7 @@
 
 :func:`brentq` is Brent's method as SciPy's ``scipy.optimize.brentq`` runs it (the same steps
 in the same floating-point operations, so the same iterates and root to the bit; tested
-against SciPy in ``tests/unit/test_roots.py``). It exists because importing scipy.optimize
+against SciPy in ``tests/unit/base/test_roots.py``). It exists because importing scipy.optimize
 costs ~0.1-0.2 s, and `runout frequencies` and `runout check` need one root (the contact angle
 under an axial load) and nothing else from it.
 

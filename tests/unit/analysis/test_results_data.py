@@ -15,7 +15,7 @@ from runout.case.model import load_case, parse_case
 from runout.runner import run_model
 from runout.study.run import Quantity, StudyResult, run_study
 
-EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+EXAMPLES = Path(__file__).resolve().parents[3] / "examples"
 LINE_COLUMNS = [
     "direction",
     "frequency_hz",

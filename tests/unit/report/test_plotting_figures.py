@@ -16,10 +16,10 @@ from typing import Any
 
 import numpy as np
 import pytest
-from plot_checks import MAX_LINE_POINTS, figure_problems, png_problems
 from typer.testing import CliRunner
 
 from cases import KIM_BEARING, KIM_OPERATION, dynamic_case
+from plot_checks import MAX_LINE_POINTS, figure_problems, png_problems
 from runout.base.display import format_length
 from runout.case.model import parse_case
 from runout.cli.commands import app
@@ -28,7 +28,7 @@ from runout.report import plotting
 from runout.runner import run_model
 from runout.study.run import Quantity, run_study
 
-EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+EXAMPLES = Path(__file__).resolve().parents[3] / "examples"
 
 KIM: dict[str, Any] = {
     "title": "Kim spindle bearing",

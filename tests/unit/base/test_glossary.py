@@ -15,7 +15,7 @@ from runout.base import glossary
 from runout.case.model import BearingSpec, MaterialSpec, OperationSpec
 from runout.geometry.bearing import BallBearing, Material, Operation, RollerBearing
 
-DOC = Path(__file__).resolve().parents[2] / "docs" / "glossary.md"
+DOC = Path(__file__).resolve().parents[3] / "docs" / "glossary.md"
 SPECS = {"bearing": BearingSpec, "operation": OperationSpec, "material": MaterialSpec}
 CLASSES = (BallBearing, RollerBearing, Operation, Material)
 #: SI unit of each quantity kind of the case schema (runout.base.units), as the glossary writes it.

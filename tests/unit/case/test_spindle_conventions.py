@@ -1,6 +1,6 @@
 """The spindle column of the key × model matrix (runout.case.conventions) is what the model does.
 
-As tests/unit/test_conventions_matrix.py for the single-bearing models: a spindle base case
+As tests/unit/case/test_conventions_matrix.py for the single-bearing models: a spindle base case
 and the same case with one key changed; an honoured key changes the result, a refused key
 ends with a CaseError naming it and the models that honour it, a key not applied leaves a
 note naming it. Keys of [bearing] are changed in every [[bearings]] entry, imperfections are
@@ -13,12 +13,12 @@ from collections.abc import Callable
 from typing import Any
 
 import pytest
-from spindle_cases import spindle_document
 
 from convention_cells import assert_cell
 from runout.base.errors import CaseError
 from runout.case.conventions import KEYS
 from runout.case.model import parse_case
+from spindle_cases import spindle_document
 
 Data = dict[str, Any]
 

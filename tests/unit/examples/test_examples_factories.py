@@ -16,7 +16,7 @@ from runout import examples
 from runout.base.errors import CaseError
 from runout.case.model import Case, load_case
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 STORED_JSON = ROOT / "tests" / "data" / "examples_json"
 
 FACTORIES: list[tuple[Callable[[], examples.Example], str]] = [

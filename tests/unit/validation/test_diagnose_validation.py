@@ -9,7 +9,7 @@ import pytest
 
 from runout.validation._diagnosis_checks import nonlinear_bias_rows, recovery_markdown, seed002_rows
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 
 
 def test_documented_recovery_table_is_what_the_code_gives():

@@ -21,7 +21,7 @@ from runout.validation._diagnosis_checks import (
     synthetic_record,
 )
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 CASE = ROOT / "examples" / "seed002_608.toml"
 
 

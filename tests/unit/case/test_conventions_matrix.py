@@ -17,7 +17,7 @@ from cases import TADA_BEARING
 from convention_cells import assert_cell
 from runout.case.conventions import KEYS, MODELS, conventions_page
 
-DOC = Path(__file__).resolve().parents[2] / "docs" / "conventions.md"
+DOC = Path(__file__).resolve().parents[3] / "docs" / "conventions.md"
 
 Data = dict[str, Any]
 
@@ -143,7 +143,7 @@ CHANGES: dict[str, tuple[Callable[[Data, str], None], Callable[[Data], None]]] =
     "analysis.bands": (_no_patch, _set("analysis.bands", "iso15242")),
     'analysis.limit_on = "axial_pp"': (_no_patch, _axial_limit),
     "analysis.limit": (_no_patch, _set("analysis.limit", "1 um")),
-    # run on a spindle case: tests/unit/test_spindle_conventions.py
+    # run on a spindle case: tests/unit/case/test_spindle_conventions.py
     "spindle, bearings": (_no_patch, lambda d: None),
 }
 
@@ -153,7 +153,7 @@ def test_every_key_has_a_change() -> None:
     assert all(len(c.statuses) == len(MODELS) for c in KEYS)
 
 
-# the spindle column needs a spindle case: tests/unit/test_spindle_conventions.py
+# the spindle column needs a spindle case: tests/unit/case/test_spindle_conventions.py
 CELLS = [
     (c.key, m) for c in KEYS for m in MODELS if m != "spindle" and c.key != "spindle, bearings"
 ]

@@ -31,7 +31,7 @@ NU209 = RollerBearing(Z, 10e-3, 54.991e-3, 75.032e-3)
 BALL = BallBearing(9, 3.969e-3, 22.5e-3, 0.52, 0.53, 15e-6)
 ALPHA = rc.rotation_angles(1.0, 181)
 ALPHA_540 = rc.rotation_angles(1.5, 2161)
-EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+EXAMPLES = Path(__file__).resolve().parents[3] / "examples"
 REL = 1e-11  # fixed-frame input vs the old model (measured: at most 1.8e-12)
 
 # Recorded from roller_constraint before it read the cage frame (its kernel's fixed frame),

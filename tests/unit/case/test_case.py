@@ -11,7 +11,7 @@ import pytest
 from runout.base.errors import CaseError
 from runout.case.model import load_case, parse_case
 
-EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+EXAMPLES = Path(__file__).resolve().parents[3] / "examples"
 
 BASE = {
     "bearing": {

@@ -28,7 +28,7 @@ from runout.analysis.result_details import (
 from runout.analysis.results import RunResult, _radians_exactly
 from runout.models.linear import LinearResult
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 STORED = sorted((ROOT / "tests" / "data" / "examples_json").glob("*.json.gz"))
 
 

@@ -14,12 +14,12 @@ from typing import Any
 
 import numpy as np
 import pytest
-from spindle_cases import TADA, spindle_case
 
 from runout.case.model import Case, parse_case
 from runout.models import quasi_static_3d as qs3
 from runout.models import spindle as sp
 from runout.runner import run_model
+from spindle_cases import TADA, spindle_case
 
 A = 10e-9  # waviness amplitude [m]
 

@@ -13,7 +13,7 @@ import pytest
 
 from runout.validation import reproduce as rp
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 
 
 @pytest.fixture(scope="module")

@@ -6,7 +6,7 @@ from pathlib import Path
 
 from runout.case.schema_doc import case_file_reference
 
-DOC = Path(__file__).resolve().parents[2] / "docs" / "case-file.md"
+DOC = Path(__file__).resolve().parents[3] / "docs" / "case-file.md"
 
 
 def test_case_file_reference_is_current() -> None:
