@@ -1,5 +1,5 @@
-"""Signal-processing helpers of :mod:`runout.analysis.spectrum`: orders, p-p conversions, input checks
-and the FFT windows.
+"""Signal-processing helpers of :mod:`runout.analysis.spectrum`: orders, p-p conversions,
+input checks and the FFT windows.
 """
 
 from __future__ import annotations

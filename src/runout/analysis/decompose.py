@@ -8,8 +8,8 @@ of them:
    :class:`Source` (part, element, lobes, term, formula). Candidates at the same frequency are
    one line with several sources.
 2. **Fit** (:func:`fit_lines`): least squares at the exact frequencies
-   (:func:`runout.analysis.spectrum.extract_lines`, no leakage). Lines closer than the record resolves
-   are fitted jointly down to :data:`JOINT_FIT` / T; closer than that they cannot be told
+   (:func:`runout.analysis.spectrum.extract_lines`, no leakage). Lines closer than the record
+   resolves are fitted jointly down to :data:`JOINT_FIT` / T; closer than that they cannot be told
    apart, and the result's notes say which, and how many revolutions would separate them: no
    line is merged without a word.
 3. **Residual search**: peaks left in the residual's Hann spectrum above a threshold are fitted

@@ -1,10 +1,10 @@
 """Typed model-specific parts of a run result, and the ``[analysis]`` outputs added to it.
 
-Each model fills :attr:`runout.analysis.results.RunResult.details` with one of the frozen dataclasses
-here (:data:`ModelDetails`); :meth:`to_json` gives the model's own entries of the JSON contract
-(keys and order as documented per model in docs/models/) and :meth:`from_json` reads them
-back from a ``result.json``. :class:`Iso15242` and :class:`Verdict` are what
-:func:`runout.analysis.results.apply_analysis` adds for ``[analysis] bands = "iso15242"`` and
+Each model fills :attr:`runout.analysis.results.RunResult.details` with one of the frozen
+dataclasses here (:data:`ModelDetails`); :meth:`to_json` gives the model's own entries of the
+JSON contract (keys and order as documented per model in docs/models/) and :meth:`from_json`
+reads them back from a ``result.json``. :class:`Iso15242` and :class:`Verdict` are what
+:func:`runout.runner.analysis.apply_analysis` adds for ``[analysis] bands = "iso15242"`` and
 ``[analysis] limit``.
 
 Some details also hold in-memory data of the run that the JSON does not carry (the rigid
@@ -90,8 +90,9 @@ class LinearDetails:
     Attributes
     ----------
     attribution : tuple of dict
-        Frequency attribution table of the bearing (:func:`runout.geometry.attribution.attribution_rows`:
-        part, factor, lobes, formula, order [-], frequency_hz [Hz]).
+        Frequency attribution table of the bearing
+        (:func:`runout.geometry.attribution.attribution_rows`: part, factor, lobes, formula,
+        order [-], frequency_hz [Hz]).
     linear_variant : {"radial_spring", "force_balance"}
         Contact model of the closed form.
     explained_fraction : float
@@ -803,7 +804,7 @@ class SpindleDetails:
     Attributes
     ----------
     arrangement : {"DB", "DF", "DT"}
-        Arrangement of the angular-contact pair (back to back, face to face, tandem).
+        Back-to-back, face-to-face or tandem.
     nose_position_m : float
         Axial coordinate of the reported runout [m].
     tilt_pp_rad : tuple of float

@@ -2,8 +2,8 @@
 
 A model fills a :class:`RunResult`: the time (or angle) history of the measured ring's centre,
 the labelled spectral lines (``components``), the runout figures and the model's typed
-details (:mod:`runout.analysis.result_details`). The JSON it prints is the documented contract (README,
-docs/conventions.md, docs/decomposition.md) and :meth:`RunResult.from_json` reads it back;
+details (:mod:`runout.analysis.result_details`). The JSON it prints is the documented contract
+(README, docs/conventions.md, docs/decomposition.md) and :meth:`RunResult.from_json` reads it back;
 ``to_dataframe`` and ``to_xarray`` give the lines and the history to pandas and xarray (the
 ``data`` extra, imported when called). This module neither draws nor writes files: the readable
 tables come from :mod:`runout.report.summary`, the files from :mod:`runout.io.result_files` and the
@@ -134,15 +134,17 @@ class RunResult:
         Band values U, R, L, M, H, E, A [Anderon] where the model gives them.
     details : ModelDetails or None
         The model's own outputs (:mod:`runout.analysis.result_details`, e.g.
-        :class:`~runout.analysis.result_details.DynamicDetails` with ``natural_frequencies_hz``); their
-        JSON entries follow the common ones.
+        :class:`~runout.analysis.result_details.DynamicDetails` with
+        ``natural_frequencies_hz``); their JSON entries follow the common ones.
     notes : tuple of str
         Warnings a user should read (unloaded balls, assumptions).
     element : {"ball", "roller"}
-        Rolling elements of the bearing (set by :func:`runout.runner.analysis.apply_analysis`): names the passage
-        frequencies (``roller_pass_*`` aliases in the JSON of a roller bearing).
+        Rolling elements of the bearing (set by
+        :func:`runout.runner.analysis.apply_analysis`): names the passage frequencies
+        (``roller_pass_*`` aliases in the JSON of a roller bearing).
     iso15242 : Iso15242 or None
-        ISO 15242-1 band values (``[analysis] bands = "iso15242"``, :func:`runout.runner.analysis.apply_analysis`).
+        ISO 15242-1 band values [um/s] (``[analysis] bands = "iso15242"``,
+        :func:`runout.runner.analysis.apply_analysis`).
     verdict : Verdict or None
         The result against ``[analysis] limit`` (:func:`runout.runner.analysis.apply_analysis`).
     record_mean : tuple of float or None

@@ -64,7 +64,8 @@ from runout.analysis._line_kernels import (
     _synthesize_numpy,
 )
 from runout.analysis._line_kernels import (
-    _synthesize_uniform_kernel as _synthesize_uniform_kernel,  # runout.analysis.decompose's synthesis
+    # runout.analysis.decompose's synthesis
+    _synthesize_uniform_kernel as _synthesize_uniform_kernel,
 )
 from runout.analysis._signal import (
     MICROINCH,

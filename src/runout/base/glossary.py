@@ -1,12 +1,12 @@
 """The glossary: one name per quantity, in one table that renders docs/glossary.md.
 
 The case-file keys, the Python constructor arguments and attributes, the JSON keys and the
-docs use the names of :data:`TERMS`. ``python -m runout.base.glossary > docs/glossary.md`` writes the
-page; a test fails when the committed page differs, when a ``[bearing]``, ``[operation]`` or
-``[material]`` key or a field of :class:`runout.geometry.bearing.BallBearing`,
+docs use the names of :data:`TERMS`. ``python -m runout.base.glossary > docs/glossary.md``
+writes the page; a test fails when the committed page differs, when a ``[bearing]``,
+``[operation]`` or ``[material]`` key or a field of :class:`runout.geometry.bearing.BallBearing`,
 :class:`~runout.geometry.bearing.RollerBearing`, :class:`~runout.geometry.bearing.Operation` or
-:class:`~runout.geometry.bearing.Material` is missing from it, or when a name's unit differs between
-the case file, the Python docstring and the glossary.
+:class:`~runout.geometry.bearing.Material` is missing from it, or when a name's unit differs
+between the case file, the Python docstring and the glossary.
 """
 
 from __future__ import annotations

@@ -87,8 +87,8 @@ class Imperfections:
     -----
     Rolling elements are numbered 1..Z, as in the case file. The builder does not compute
     harmonics; :meth:`runout.case.model.Case.from_inputs` (and :func:`run`) resolve it against the
-    bearing into :class:`runout.geometry.imperfections.Imperfections`, exactly as a case file's tables
-    are resolved.
+    bearing into :class:`runout.geometry.imperfections.Imperfections`, exactly as a case file's
+    tables are resolved.
     """
 
     elements: int | None

@@ -59,7 +59,7 @@ class Sizes:
     Attributes
     ----------
     elements : int
-        Z.
+        Number of rolling elements Z [-].
     ring_harmonics : int
         Harmonics of the inner plus the outer raceway.
     element_harmonics : int
@@ -69,7 +69,7 @@ class Sizes:
     max_order : int
         Highest order of any part.
     samples, revolutions : float
-        ``[analysis]`` samples and revolutions.
+        ``[analysis]`` samples and revolutions [-].
     """
 
     elements: int
@@ -92,7 +92,17 @@ class Sizes:
 
 
 def sizes_of(case: Any) -> Sizes:
-    """:class:`Sizes` of a validated case."""
+    """:class:`Sizes` of a validated case.
+
+    Parameters
+    ----------
+    case : Case
+        A validated case (its resolved imperfections, bearing and ``[analysis]``).
+
+    Returns
+    -------
+    Sizes
+    """
     imp = case.imperfections
     elements = [len(imp.elements[j]) + 1 for j in range(imp.n_elements)]
     orders = [imp.inner.max_order, imp.outer.max_order]
@@ -138,6 +148,25 @@ def estimate_run(case: Any, model: str) -> ResourceEstimate:
 
     The dynamic model's step count needs its natural frequencies;
     :func:`runout.models.dynamic.plan_integration` refines this estimate once they are known.
+
+    Parameters
+    ----------
+    case : Case
+        A validated case (a spindle case: every bearing's share).
+    model : str
+        Model id.
+
+    Returns
+    -------
+    ResourceEstimate
+        Peak memory of the large arrays [B] and computing time [s], with the case keys that
+        size them.
+
+    Raises
+    ------
+    LimitError
+        For the quasi-static models, a record whose angles would pass
+        :data:`~runout.case.limits.MAX_PHASE_ANGLE` [rad].
     """
 
     if model == "spindle" and getattr(case, "spindle", None) is not None:
@@ -252,7 +281,18 @@ def _estimate_spindle(case: Any) -> ResourceEstimate:
 
 
 def study_points(case: Any) -> int:
-    """Number of runs a case's ``[study]`` asks for (samples, or sweep points x models)."""
+    """Number of runs a case's ``[study]`` asks for (samples, or sweep points x models).
+
+    Parameters
+    ----------
+    case : Case
+        A validated case.
+
+    Returns
+    -------
+    int
+        0 without ``[study]``.
+    """
 
     study = case.study
     if study is None:
@@ -292,7 +332,19 @@ COST_BATCH = 1.5e-8
 
 
 def batched_study(case: Any) -> bool:
-    """The ball-size Monte Carlo of the unloaded 2-D model, which runs batched (runout.study.run)."""
+    """The ball-size Monte Carlo of the unloaded 2-D model, which runs batched (runout.study.run).
+
+    Parameters
+    ----------
+    case : Case
+        A validated case with a ``[study]``.
+
+    Returns
+    -------
+    bool
+        True for a Monte Carlo of ``quasi_static_2d`` alone, without radial load, that varies
+        only the balls' sizes.
+    """
     study = case.study
     models = tuple(study.models) if study.models else (case.analysis.model,)
     return bool(
@@ -303,13 +355,13 @@ def batched_study(case: Any) -> bool:
     )
 
 
-#: Bytes one pass of :func:`runout.study._pool.evaluate_rows` holds per bearing and instant: the records (16), their
-#: transposed copy for the line fit (16), the RRO waveform or the residual of the split (8) and
-#: a margin (measured ~40 B).
+#: Bytes one pass of :func:`runout.study._pool.evaluate_rows` holds per bearing and instant:
+#: the records (16), their transposed copy for the line fit (16), the RRO waveform or the
+#: residual of the split (8) and a margin (measured ~40 B).
 BYTES_PER_ROW_INSTANT = 48
-#: Most memory one pass of :func:`runout.study._pool.evaluate_rows` holds [B]: a chunk with more bearings than fit
-#: is evaluated in passes of rows (each row's numbers depend on that row only, so the passes
-#: change nothing but the memory).
+#: Most memory one pass of :func:`runout.study._pool.evaluate_rows` holds [B]: a chunk with
+#: more bearings than fit is evaluated in passes of rows (each row's numbers depend on that
+#: row only, so the passes change nothing but the memory).
 PASS_BYTES = 64 * 2**20
 
 
@@ -325,8 +377,14 @@ def batched_memory(case: Any, workers: int = 1) -> float:
     Parameters
     ----------
     case : Case
+        A validated case with a ball-size Monte Carlo ``[study]``.
     workers : int
         Worker processes (1: the study runs in this process, one chunk per Numba thread).
+
+    Returns
+    -------
+    float
+        Estimated peak memory of the arrays [B].
     """
     s = sizes_of(case)
     n = float(s.samples)
@@ -348,6 +406,18 @@ def estimate_study(case: Any, per_run: ResourceEstimate) -> ResourceEstimate:
     arrays and one pass of rows per concurrent evaluation (:func:`batched_memory`, in this
     process; :func:`runout.study.run.run_study` checks again for worker processes) and costs
     :data:`COST_BATCH` per instant and ball instead of a whole run.
+
+    Parameters
+    ----------
+    case : Case
+        A validated case with a ``[study]``.
+    per_run : ResourceEstimate
+        Estimate of one run [B, s] (the largest of the study's models).
+
+    Returns
+    -------
+    ResourceEstimate
+        Memory [B] and time [s] of the whole study; the key that sets the number of runs.
     """
     points = study_points(case)
     key = _study_key(case)
@@ -362,7 +432,18 @@ def estimate_study(case: Any, per_run: ResourceEstimate) -> ResourceEstimate:
 
 
 def check_limits(case: Any) -> None:
-    """Refuse a case whose run (or study) would exceed the budget, before any work."""
+    """Refuse a case whose run (or study) would exceed the budget, before any work.
+
+    Parameters
+    ----------
+    case : Case
+        A validated case; its budget is :func:`runout.case.limits.case_budget`.
+
+    Raises
+    ------
+    LimitError
+        The estimate of a run, or of the study, beyond the memory or time budget.
+    """
     limits = case_budget(case)
     per_run = estimate_run(case, case.analysis.model)
     if case.study is not None:

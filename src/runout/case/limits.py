@@ -145,7 +145,7 @@ class LimitError(GeometryError):
 
 @dataclass(frozen=True)
 class Budget:
-    """Memory [bytes] and time [s] one run (or one study) may use, and where they came from.
+    """Memory [B] and time [s] one run (or one study) may use, and where they came from.
 
     Attributes
     ----------
@@ -195,7 +195,7 @@ class ResourceEstimate:
     Attributes
     ----------
     memory : float
-        Peak size of the large arrays [bytes].
+        Peak size of the large arrays [B].
     seconds : float
         Computing time [s].
     memory_key, time_key : str
@@ -213,7 +213,7 @@ class ResourceEstimate:
 
 
 def physical_memory() -> float | None:
-    """Installed memory of this machine [bytes], None when the system does not say.
+    """Installed memory of this machine [B], None when the system does not say.
 
     Returns
     -------
@@ -251,7 +251,7 @@ def budget(
     Parameters
     ----------
     max_memory : float or None
-        ``[analysis] max_memory`` [bytes].
+        ``[analysis] max_memory`` [B].
     max_time : float or None
         ``[analysis] max_time`` [s].
     environ : mapping, optional
@@ -393,7 +393,7 @@ def format_seconds(s: float) -> str:
 # fixed bounds and file sizes
 # --------------------------------------------------------------------------------------------
 def harmonics_memory(count: float) -> float:
-    """Memory of ``count`` harmonics while they are built and packed [bytes].
+    """Memory of ``count`` harmonics while they are built and packed [B].
 
     Parameters
     ----------
@@ -409,7 +409,7 @@ def harmonics_memory(count: float) -> float:
 
 
 def max_profile_bytes(limits: Budget) -> int:
-    """Largest profile file read within the memory budget [bytes].
+    """Largest profile file read within the memory budget [B].
 
     Parameters
     ----------
@@ -425,7 +425,7 @@ def max_profile_bytes(limits: Budget) -> int:
 
 
 def max_record_bytes(limits: Budget) -> int:
-    """Largest measured-record CSV ``runout diagnose`` reads within the memory budget [bytes].
+    """Largest measured-record CSV ``runout diagnose`` reads within the memory budget [B].
 
     Parameters
     ----------

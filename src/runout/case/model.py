@@ -186,7 +186,28 @@ _OPERATION_KEYS = (
 # --------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
 class Analysis:
-    """What to compute: model id, revolutions of the rotating ring, number of instants."""
+    """What to compute: model id, revolutions of the rotating ring, number of instants.
+
+    Attributes
+    ----------
+    model : str
+        Model id (:data:`MODEL_IDS`).
+    revolutions : float
+        Revolutions of the rotating ring in the record [-].
+    samples : int
+        Number of instants [-].
+    linear_variant : {"radial_spring", "force_balance"}
+        Contact model of the linear model.
+    race_control : {"outer", "inner", "none"}
+        Raceway that resists the gyroscopic moment (equilibrium model).
+    bands : {"anderon", "iso15242"} or None
+        Band values formed from the lines, if any.
+    limit : float or None
+        Spec limit in SI: [m] for a runout p-p, [m/s] for an ISO 15242 band.
+    limit_on : str
+        Quantity the limit applies to: ``"radial_pp"``, ``"rro_pp"``, ``"nrro_pp"``,
+        ``"axial_pp"`` or ``"iso15242.<band>"``.
+    """
 
     model: str = "quasi_static_3d"
     revolutions: float = 20.0
@@ -212,11 +233,15 @@ class Case:
     path : str
         The case file as given, or ``"<python>"`` for a case built in code.
     title : str
+        Shown in outputs.
     bearing : BallBearing or RollerBearing
+        Geometry and material, SI ([m], [rad], [Pa]).
     operation : Operation
+        Speeds [Hz] and loads [N, N m] on the shaft.
     imperfections : runout.geometry.imperfections.BearingImperfections
         The resolved harmonics of every part (what the models use).
     analysis : Analysis
+        What to compute.
     spec : CaseSpec
         The validated case-file document.
     profile_data : mapping
@@ -270,13 +295,20 @@ class Case:
             ``[operation]``; default a bearing at rest without load.
         imperfections : runout.Imperfections, optional
             The builder of ``[[waviness]]``, ``[[waviness_spectrum]]``, ``[[profile]]``,
-            ``[slant]`` and ``[elements]`` (:class:`runout.case.builder.Imperfections`); default none.
+            ``[slant]`` and ``[elements]`` (:class:`runout.case.builder.Imperfections`);
+            default none.
         title : str
+            Shown in outputs.
         analysis, dynamics, study : mapping, optional
             The ``[analysis]``, ``[dynamics]`` and ``[study]`` keys, by their case-file names:
             SI numbers or strings with units.
         base_dir : str or Path, optional
             Directory that ``[[profile]]`` files are read from; default the working directory.
+
+        Returns
+        -------
+        Case
+            Validated and checked against the budget as a case file would be.
 
         Raises
         ------
@@ -326,7 +358,13 @@ class Case:
         return parse_case(data, PYTHON_PATH, base, profile_data=profiles)
 
     def to_document(self) -> dict[str, Any]:
-        """The case-file document (tables of SI numbers) that gives this case again."""
+        """The case-file document (tables of SI numbers) that gives this case again.
+
+        Returns
+        -------
+        dict
+            The keys that were given (keys never set are left out), without None values.
+        """
         return self.spec.model_dump(mode="python", exclude_unset=True, exclude_none=True)
 
     def to_toml(self) -> str:
@@ -334,6 +372,11 @@ class Case:
 
         Keys given at their defaults are written only when they were given; ``[[profile]]``
         files are named as in the case and read relative to the saved file.
+
+        Returns
+        -------
+        str
+            TOML text, tables in the order of the case-file reference.
 
         Raises
         ------
@@ -375,6 +418,11 @@ class Case:
 
         Each profile's CSV is named after the case file (``<stem>.<part>_profile_<k>.csv``), so
         that cases saved into one directory do not share a profile file.
+
+        Parameters
+        ----------
+        path : str or Path
+            The case file to write (its directory must exist).
 
         Returns
         -------
@@ -440,6 +488,10 @@ def parse_case(
     profile_data : mapping, optional
         Profiles given as arrays: ``[[profile]] file`` name -> (angles, deviations) in the
         units of the entry, used instead of reading that file.
+
+    Returns
+    -------
+    Case
 
     Raises
     ------
@@ -592,6 +644,17 @@ def load_case(
 def read_case_data(path: str | Path) -> dict[str, Any]:
     """The TOML document of a case file, read within the size limit, not yet validated.
 
+    Parameters
+    ----------
+    path : str or Path
+        The case file (a regular file of at most
+        :data:`~runout.case.limits.MAX_CASE_FILE_BYTES` [B], UTF-8).
+
+    Returns
+    -------
+    dict
+        The parsed TOML document.
+
     Raises
     ------
     CaseError
@@ -646,6 +709,18 @@ def parse_override(text: str) -> tuple[str, Any]:
     The value is read as a TOML value (``8192``, ``"30 N"``, ``[1, 2]``, ``true``); a bare
     word that is not one (``30 N`` without quotes, ``outer``) is taken as a string.
 
+    Parameters
+    ----------
+    text : str
+        One ``--set`` argument, ``KEY=VALUE``.
+
+    Returns
+    -------
+    key : str
+        The dotted key, stripped.
+    value : object
+        The TOML value, or the bare text as a string.
+
     Raises
     ------
     ValueError
@@ -674,6 +749,15 @@ def apply_overrides(data: dict[str, Any], overrides: Mapping[str, Any], path: st
     ``title``, ``table.key`` or ``table[i].key`` (entries counted from 1); a table the
     document lacks is created. A key the case does not have is left to the validation, which
     names it with a did-you-mean hint.
+
+    Parameters
+    ----------
+    data : dict
+        The TOML document of a case, changed in place.
+    overrides : mapping
+        Dotted key path -> value as the file would give it (SI number or string with unit).
+    path : str
+        File name used in error messages.
 
     Raises
     ------
@@ -744,7 +828,23 @@ def _remap(key: str, name: str, index: int, entries: dict[str, list[int]]) -> st
 
 
 def bearing_document(document: dict[str, Any], name: str) -> tuple[dict[str, Any], dict[str, Any]]:
-    """A bearing's single-bearing case document, and the indices of its entries per table."""
+    """A bearing's single-bearing case document, and the indices of its entries per table.
+
+    Parameters
+    ----------
+    document : dict
+        The spindle case's document (validated, keys as given).
+    name : str
+        The bearing's ``name`` in ``[[bearings]]``.
+
+    Returns
+    -------
+    own : dict
+        The bearing's own case document (``quasi_static_3d``, the record's ``[analysis]`` keys).
+    entries : dict of str to list of int
+        Per imperfection table, the indices (from 1) in the spindle case of the entries that
+        went into the bearing's case.
+    """
     entry = next(b for b in document["bearings"] if b["name"] == name)
     own: dict[str, Any] = {
         "title": document.get("title", ""),
@@ -780,6 +880,24 @@ def build_layout(
     profile_data: ProfileData | None,
 ) -> tuple[SpindleLayout, list[Case]]:
     """The spindle of a validated spindle case, and each bearing's own case.
+
+    Parameters
+    ----------
+    spec : CaseSpec
+        The validated spindle case (``[spindle]``, ``[[bearings]]``).
+    path : str
+        File name used in error messages.
+    base_dir : Path or None
+        Directory that relative profile files are resolved against.
+    profile_data : mapping or None
+        Profiles given as arrays: ``[[profile]] file`` name -> (angles, deviations).
+
+    Returns
+    -------
+    layout : SpindleLayout
+        The bearings at their axial positions [m], arrangement and preload [N or m].
+    cases : list of Case
+        Each bearing's own single-bearing case, in the case file's order.
 
     Raises
     ------

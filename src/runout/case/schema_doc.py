@@ -59,7 +59,14 @@ def _default(info: Any) -> str:
 
 
 def case_file_reference() -> str:
-    """The Markdown key reference of every case-file table."""
+    """The Markdown key reference of every case-file table.
+
+    Returns
+    -------
+    str
+        The Markdown of docs/case-file.md: the conventions of values and units, then one table
+        per case-file table (key, default, meaning), from the schema's descriptions.
+    """
     lines = [
         "# Case-file reference",
         "",

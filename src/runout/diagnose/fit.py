@@ -11,9 +11,9 @@ force-balance variant) around:
    Candidates that stay below :data:`SCREEN` times the median level of the record's spectrum
    are below detection and not fitted.
 2. **Line fit.** The record is fitted at those exact frequencies by the decomposition layer
-   (:func:`runout.analysis.decompose.fit_lines`: joint least squares, no leakage; lines the record cannot
-   separate are fitted as one and said so; peaks left in the residual are fitted too and, when
-   no candidate explains them, reported as *unattributed*).
+   (:func:`runout.analysis.decompose.fit_lines`: joint least squares, no leakage; lines the
+   record cannot separate are fitted as one and said so; peaks left in the residual are fitted
+   too and, when no candidate explains them, reported as *unattributed*).
 3. **Inverse.** The model is linear in the complex deviation coefficients; the gains are read
    from the forward model itself. With x and y, the forward and backward whirl of each line are
    two observations; with one channel, one. A line is *detected* when it stands

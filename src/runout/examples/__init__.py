@@ -130,7 +130,7 @@ class Example:
         return dataclasses.replace(self, analysis={**self.analysis, **keys})
 
     def case(self, **analysis: Any) -> Case:
-        """The validated case (:meth:`runout.case.model.Case.from_inputs`), with every check of a file.
+        """The validated case (:meth:`runout.case.model.Case.from_inputs`), checked as a file is.
 
         Parameters
         ----------

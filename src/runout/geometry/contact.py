@@ -423,8 +423,7 @@ def dimensionless_factors(
         b^* = \Big(\frac{2\mathcal{E}}{\pi\kappa}\Big)^{1/3},\quad
         \delta^* = \frac{2\mathcal{K}}{\pi}\Big(\frac{\pi}{2\kappa^2\mathcal{E}}\Big)^{1/3}
 
-    (Harris, *Rolling Bearing Analysis*, ch. 6; δ* is the quantity tabulated in seed 003
-    Table 1.) All three equal 1 for a circular contact.
+    All three equal 1 for a circular contact.
 
     Parameters
     ----------
@@ -435,6 +434,11 @@ def dimensionless_factors(
     -------
     a_star, b_star, delta_star : ndarray
         [-].
+
+    Notes
+    -----
+    Harris, *Rolling Bearing Analysis*, ch. 6; δ* is the quantity tabulated in seed 003
+    (Purohit & Purohit 2006) Table 1.
     """
     return _factors(ellipticity(curvature_difference))
 
@@ -456,8 +460,7 @@ def hertz_point_stiffness(
     .. math:: K = \frac{2\sqrt2}{3}\,E'\,(\Sigma\rho)^{-1/2}\,(\delta^*)^{-3/2}
 
     Obtained by solving Harris's :math:`\delta = \delta^*[3Q/(E'\Sigma\rho)]^{2/3}\Sigma\rho/2`
-    for Q. It is seed 003 eq. 2.12-2.13 for any material (see :func:`harris_steel_approach`
-    for the steel-only numbers).
+    for Q.
 
     Parameters
     ----------
@@ -472,6 +475,12 @@ def hertz_point_stiffness(
     -------
     ndarray
         K [N/m^1.5].
+
+    Notes
+    -----
+    It is seed 003 (Purohit & Purohit 2006) eq. 2.12-2.13 for any material (see
+    :func:`harris_steel_approach` for the steel-only numbers); Harris, *Rolling Bearing
+    Analysis*, ch. 6.
     """
     s = _positive_array(curvature_sum, "curvature_sum")
     ep = _positive_array(effective_modulus, "effective_modulus")
@@ -646,6 +655,13 @@ def point_contact(
     Returns
     -------
     PointContact
+        κ [-], the elliptic integrals K(m), E(m) [-], a*, b*, δ* [-] and the stiffness
+        K [N/m^1.5].
+
+    Notes
+    -----
+    Harris, *Rolling Bearing Analysis*, ch. 6; the stiffness is seed 003 (Purohit & Purohit
+    2006) eq. 2.12-2.13 for any material (:func:`hertz_point_stiffness`).
     """
     h = ellipticity(curvature_difference)
     kappa, k, e = h
@@ -678,10 +694,6 @@ def combined_stiffness(k_inner: ArrayLike, k_outer: ArrayLike, exponent: float =
         K_n = \Big[\Big(\frac1{K_i}\Big)^{1/n} + \Big(\frac1{K_o}\Big)^{1/n}\Big]^{-n}
             = \frac{K_i K_o}{\big(K_i^{1/n} + K_o^{1/n}\big)^{n}}.
 
-    With n = 3/2 this is seed 001 eq. 15 (first form), seed 000 eq. 4 (second form,
-    :math:`K_iK_o/[K_i^{2/3}+K_o^{2/3}]^{1.5}`) and seed 003 eq. 2.14 (first form with the
-    exponent written 1/n): multiplying the bracket of the first form by
-    :math:`(K_iK_o)^{1/n}` turns it into the second, so the three are one expression.
     Use n = 10/9 for line contacts.
 
     Parameters
@@ -695,6 +707,14 @@ def combined_stiffness(k_inner: ArrayLike, k_outer: ArrayLike, exponent: float =
     -------
     ndarray
         K_n [N/m^n].
+
+    Notes
+    -----
+    With n = 3/2 this is seed 001 eq. 15 (first form), seed 000 eq. 4 (second form,
+    :math:`K_iK_o/[K_i^{2/3}+K_o^{2/3}]^{1.5}`) and seed 003 eq. 2.14 (first form with the
+    exponent written 1/n): multiplying the bracket of the first form by
+    :math:`(K_iK_o)^{1/n}` turns it into the second, so the three are one expression
+    (Kim, Choi & Yoon; Tada 2002; Purohit & Purohit 2006).
     """
     ki = _positive_array(k_inner, "k_inner")
     ko = _positive_array(k_outer, "k_outer")
@@ -909,6 +929,11 @@ def delta_star_from_table(curvature_difference: ArrayLike) -> FloatArray:
     GeometryError
         Outside the table's range; the last row (F = 1, δ* = 0) is the line-contact limit and
         cannot be interpolated towards.
+
+    Notes
+    -----
+    Seed 003 (Purohit & Purohit 2006) Table 1, after Harris (1991); see
+    :data:`HARRIS_DELTA_STAR_TABLE` for the restored row.
     """
     f = _as_float_array(curvature_difference, "curvature_difference")
     table = np.array(HARRIS_DELTA_STAR_TABLE[:-1])
@@ -944,6 +969,10 @@ def stiffness_from_delta_star_table(
     -------
     ndarray
         K [N/m^1.5].
+
+    Notes
+    -----
+    Seed 003 (Purohit & Purohit 2006) eq. 2.12-2.13 and Table 1.
     """
     s = _positive_array(curvature_sum, "curvature_sum")
     ep = _positive_array(effective_modulus, "effective_modulus")
@@ -1014,10 +1043,6 @@ def ball_flat_contact_radius(
 
     .. math:: r = \Big(\frac{3(1-\nu^2)\,r_b\,f}{2E}\Big)^{1/3}
 
-    This is exactly Hertz's circle for a sphere of radius :math:`r_b` on a half-space of the
-    same material (:math:`a^3 = 3 f R / (4E^*)`, :math:`1/E^* = 2(1-\nu^2)/E`), i.e. the
-    exact point-contact solution with radii :math:`(r_b, r_b, \infty, \infty)`.
-
     Parameters
     ----------
     load : array_like
@@ -1031,6 +1056,13 @@ def ball_flat_contact_radius(
     -------
     ndarray
         Contact radius r [m].
+
+    Notes
+    -----
+    Seed 002 (Anderon calculation model) eq. 9. This is exactly Hertz's circle for a sphere
+    of radius :math:`r_b` on a half-space of the same material (:math:`a^3 = 3 f R / (4E^*)`,
+    :math:`1/E^* = 2(1-\nu^2)/E`), i.e. the exact point-contact solution with radii
+    :math:`(r_b, r_b, \infty, \infty)`.
     """
     mat = Material() if material is None else material
     _positive_array(ball_radius, "ball_radius")

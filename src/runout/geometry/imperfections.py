@@ -21,8 +21,8 @@ Conventions
   = 2 Σ_{k even} a_k cos(kθ + φ_k)`` (seed 002 eq. 26): odd orders cancel, even orders double
   (:meth:`Harmonics.diameter_deviation`).
 * Rolling elements are numbered 1..Z in user-facing arguments (the ``element`` argument of
-  :meth:`BearingImperfections.add`, the ``element`` key of case files and of :meth:`summary` rows) and
-  indexed 0..Z-1 everywhere else (tuple positions, ``index`` arguments, arrays).
+  :meth:`BearingImperfections.add`, the ``element`` key of case files and of :meth:`summary`
+  rows) and indexed 0..Z-1 everywhere else (tuple positions, ``index`` arguments, arrays).
 * ``pitch_errors[j]`` is the angular position error of element j relative to equal spacing
   [rad], positive counter-clockwise (ahead of its nominal place in the +θ sense).
 * Randomness only through a :class:`numpy.random.Generator` passed in, or one created by
@@ -373,9 +373,9 @@ class BearingImperfections:
     Notes
     -----
     Z is taken from ``elements``, else from ``diameter_errors`` or ``pitch_errors``; missing
-    per-element data default to perfect: ``BearingImperfections(elements=8, outer=...)`` is a bearing
-    of 8 perfect elements with a wavy outer raceway. Without any of them Z is unknown and the
-    constructor refuses. :class:`runout.Imperfections` (:mod:`runout.api`) is the builder
+    per-element data default to perfect: ``BearingImperfections(elements=8, outer=...)`` is a
+    bearing of 8 perfect elements with a wavy outer raceway. Without any of them Z is unknown
+    and the constructor refuses. :class:`runout.Imperfections` (:mod:`runout.api`) is the builder
     that reads like the case file and takes Z from the bearing.
     Element *indices* are 0-based (tuple positions, ``index`` arguments); element *numbers*
     in :meth:`add` and :meth:`summary` are 1-based like the case file's ``element`` key.

@@ -141,6 +141,11 @@ def axial_load_for_contact_angle(
     -------
     float
         F_a [N].
+
+    Notes
+    -----
+    Harris, *Rolling Bearing Analysis* (thrust-loaded ball bearing); seed 003 (Purohit &
+    Purohit 2006) eq. 2.21 is its zero-clearance case (see the module Notes).
     """
     alpha0 = _free_angle(bearing, free_contact_angle)
     alpha = float(contact_angle)
@@ -304,6 +309,10 @@ def axial_loading_fixed_angle(
     -------
     AxialLoading
         ``free_contact_angle`` and ``contact_angle`` both hold the fixed α.
+
+    Notes
+    -----
+    Seed 000 (Tada 2002) eq. 5, z row, with x = y = 0; K_n is seed 000 eq. 4.
     """
     fa = _check_axial_load(axial_load)
     alpha = bearing.unloaded_contact_angle if contact_angle is None else float(contact_angle)
@@ -326,6 +335,11 @@ def operating_contact_angle(
 ) -> tuple[float, AxialLoading | None]:
     """Contact angle the bearing runs at, and the axial-load solution behind it.
 
+    A fixed ``contact_angle`` in the bearing description wins; otherwise a ball bearing under an
+    axial load runs at the loaded contact angle (Harris's load-angle relation,
+    :func:`runout.geometry.loading.axial_loading`), and without axial load at the free contact
+    angle. Roller bearings run at 0.
+
     Parameters
     ----------
     bearing : BallBearing or RollerBearing
@@ -333,15 +347,10 @@ def operating_contact_angle(
     operation : Operation
         Its operating condition (``axial_load`` [N]).
 
-    A fixed ``contact_angle`` in the bearing description wins; otherwise a ball bearing under an
-    axial load runs at the loaded contact angle (Harris's load-angle relation,
-    :func:`runout.geometry.loading.axial_loading`), and without axial load at the free contact angle.
-    Roller bearings run at 0.
-
     Returns
     -------
     contact_angle : float
-        [rad]
+        Operating contact angle α [rad].
     loading : AxialLoading or None
         The static axial-load solution when one was computed.
     """

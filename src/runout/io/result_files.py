@@ -1,8 +1,9 @@
 """The files of a run: what ``runout run --out DIR`` writes, and reading them back.
 
 :func:`write_result` writes ``result.json`` (the JSON contract), ``history.csv`` (the record),
-``lines.csv`` (the labelled lines), the standard figures (:func:`runout.report.plotting.write_figures`)
-and each model's own files, chosen by the type of the result's details
+``lines.csv`` (the labelled lines), the standard figures
+(:func:`runout.report.plotting.write_figures`) and each model's own files, chosen by the type
+of the result's details
 (:mod:`runout.analysis.result_details`): ``bearing.gif`` (quasi-static models), ``balls.csv``,
 ``stiffness.csv`` and ``balls.png`` (equilibrium), ``spectrum.csv`` and ``spectrum.png``
 (dynamic), ``contacts.csv``, ``order_sweep.csv`` and its figures (rigid constraint model) and
@@ -24,7 +25,8 @@ from runout.base.errors import RunoutError
 
 __all__ = ["HISTORY_COLUMNS", "read_history", "read_result", "read_result_json", "write_columns"]
 
-#: Header of ``history.csv``: time [s], x, y, z [m] (:data:`runout.analysis.results.DISPLACEMENT_OF`).
+#: Header of ``history.csv``: time [s], x, y, z [m]
+#: (:data:`runout.analysis.results.DISPLACEMENT_OF`).
 HISTORY_COLUMNS = ["time_s", "x_m", "y_m", "z_m"]
 
 #: Rows formatted per call of :func:`write_columns` (bounds its temporary memory: a few MB).

@@ -56,8 +56,9 @@ Notes
   is along −y by default, so the paper's x is our −y. The contact constant of eq. 2.11–2.15 is
   wrong in the source (see VALIDATION.md); K_n comes from
   :func:`runout.geometry.contact.ball_race_contacts` (``contact_law = "exact"``) or from the paper's
-  δ* table (``"delta_star_table"``, :func:`runout.geometry.contact.stiffness_from_delta_star_table`),
-  at the preloaded contact angle.
+  δ* table (``"delta_star_table"``,
+  :func:`runout.geometry.contact.stiffness_from_delta_star_table`), at the preloaded contact
+  angle.
 * Eq. 2.21 is the zero-clearance case of Harris's load-angle relation; we solve the full
   relation with clearance, :math:`F_a = Z K_n (A\cos\alpha^0/\cos\alpha_p - A)^{3/2}
   \sin\alpha_p`, with K_n of the chosen law at α_p (for the exact law this is

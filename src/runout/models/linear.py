@@ -172,7 +172,8 @@ def rates(bearing: Bearing, operation: Operation, contact_angle: float) -> Rates
 
     Notes
     -----
-    "Anderon vibration" (seed 002, the instrument maker's calculation model), eq. 4-7, generalised to either ring rotating.
+    "Anderon vibration" (seed 002, the instrument maker's calculation model), eq. 4-7,
+    generalised to either ring rotating.
     """
     speed = abs(operation.speed)
     if speed == 0.0:
@@ -214,9 +215,10 @@ def variant_gains(contact_angle: float, variant: str = "radial_spring") -> tuple
 
     Notes
     -----
-    ``"radial_spring"``: "Anderon vibration" (seed 002, the instrument maker's calculation model), eq. 13 and 21. ``"force_balance"``: Tada, "Three-dimensional
-    analysis of non-repeatable runout (NRRO) in ball bearings", Koyo Engineering Journal
-    (2002), eq. 2 and 5 (seed 000), linearised.
+    ``"radial_spring"``: "Anderon vibration" (seed 002, the instrument maker's calculation model),
+    eq. 13 and 21. ``"force_balance"``: Tada, "Three-dimensional analysis of non-repeatable
+    runout (NRRO) in ball bearings", Koyo Engineering Journal (2002), eq. 2 and 5 (seed 000),
+    linearised.
     """
     c = math.cos(contact_angle)
     if variant == "radial_spring":
@@ -915,7 +917,8 @@ def direct_sum(
 
     Notes
     -----
-    "Anderon vibration" (seed 002, the instrument maker's calculation model), eq. 22 and 28 (eq. 18 with unequal spacing, :func:`solve`).
+    "Anderon vibration" (seed 002, the instrument maker's calculation model), eq. 22 and 28
+    (eq. 18 with unequal spacing, :func:`solve`).
     """
     z = imperfections.n_elements
     if z < 3:
@@ -1083,7 +1086,8 @@ class LinearResult(RunResult):
 
         Notes
         -----
-        "Anderon vibration" (seed 002, the instrument maker's calculation model), eq. 1 and 42, Fig. 12.
+        "Anderon vibration" (seed 002, the instrument maker's calculation model), eq. 1
+        and 42, Fig. 12.
         """
         _, v = self.density_waveform(revolutions, samples_per_rev, direction)
         spr = v.size // revolutions

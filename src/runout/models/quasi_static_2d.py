@@ -143,8 +143,8 @@ def hertz_potential(
 
     Notes
     -----
-    The potential whose gradient is the balance of Kim, Choi & Yoon, "Vibration analysis of ball bearings with ball geometric
-    imperfections" (seed 001), eq. 14-17.
+    The potential whose gradient is the balance of Kim, Choi & Yoon, "Vibration analysis of
+    ball bearings with ball geometric imperfections" (seed 001), eq. 14-17.
     """
     e: float = -(force[0] * q0 + force[1] * q1)
     for j in range(c.size):

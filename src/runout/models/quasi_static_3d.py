@@ -25,8 +25,8 @@ with
 * x, y, z the outer ring's centre relative to the inner ring's; +z opens the contacts.
 
 Load :math:`Q_j = K_n[\delta_j]_+^{3/2}` (eq. 3, K_n of eq. 4 from
-:func:`runout.geometry.contact.ball_race_contacts`); a ball with :math:`\delta_j \le 0` carries none. The
-balance (eq. 5), with the unit contact normal :math:`n_j = (\cos\alpha\cos\theta_j,
+:func:`runout.geometry.contact.ball_race_contacts`); a ball with :math:`\delta_j \le 0` carries
+none. The balance (eq. 5), with the unit contact normal :math:`n_j = (\cos\alpha\cos\theta_j,
 \cos\alpha\sin\theta_j, \sin\alpha)`, is
 
 .. math:: \sum_j Q_j\,n_j = (-F_r\cos\beta,\; -F_r\sin\beta,\; F_a),
@@ -151,8 +151,8 @@ def preload_approach(
     Notes
     -----
     The balance of Tada, "Three-dimensional analysis of non-repeatable runout (NRRO) in ball
-    bearings", Koyo Engineering Journal (2002) (seed 000), eq. 5, without deviations and radial load, with Q = K_n δ^{3/2}
-    (eq. 3).
+    bearings", Koyo Engineering Journal (2002) (seed 000), eq. 5, without deviations and
+    radial load, with Q = K_n δ^{3/2} (eq. 3).
     """
     return float((axial / (stiffness * n_elements * math.sin(contact_angle))) ** (2.0 / 3.0))
 
@@ -749,7 +749,8 @@ def setup(case: Case) -> Setup:
     Notes
     -----
     K_n of Tada, "Three-dimensional analysis of non-repeatable runout (NRRO) in ball
-    bearings", Koyo Engineering Journal (2002) (seed 000), eq. 4; δ_pl from the balance of eq. 5 (:func:`preload_approach`).
+    bearings", Koyo Engineering Journal (2002) (seed 000), eq. 4; δ_pl from the balance of
+    eq. 5 (:func:`preload_approach`).
     """
     bearing = case.bearing
     op = case.operation

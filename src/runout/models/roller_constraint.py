@@ -87,7 +87,8 @@ Notes
   of their diameter on the groove-bottom diameters ``d_m ∓ (D + P_d/2)``; groove conformity,
   axial play and slant are ignored. This is a simplification for light-load radial runout.
 * The profiles must be convex (every harmonic with :math:`C_m m^2` well below the radius);
-  otherwise the rigid contact is not unique and a :class:`~runout.base.errors.GeometryError` says so.
+  otherwise the rigid contact is not unique and a :class:`~runout.base.errors.GeometryError` says
+  so.
 """
 
 from __future__ import annotations

@@ -47,8 +47,8 @@ Arrangement and preload
   spring (a sixth coordinate w, their axial slide; their balls see :math:`z - w`) and the
   spring pushes them with F_p: the -z group carries exactly F_p, the +z group F_p plus the
   axial load. In DT the preload is an axial force on the shaft. Each bearing's contact angle
-  is its own at the preload it carries (:func:`runout.report.summary.operating_contact_angle`, or the
-  fixed ``contact_angle``), shared equally within a group.
+  is its own at the preload it carries (:func:`runout.report.summary.operating_contact_angle`,
+  or the fixed ``contact_angle``), shared equally within a group.
 * Position (rigid) preload δ_a: the outer rings are fixed; at q = 0 each bearing is pressed
   :math:`\delta_a/2` axially into its contacts, :math:`c_{0b} = (\delta_a/2)\sin\alpha_b`,
   and z settles where the groups balance. The contact angle is the one of the load that
@@ -277,9 +277,9 @@ def setup(layout: SpindleLayout, operation: Operation) -> Setup:
 
     Notes
     -----
-    Each bearing after Tada, "Three-dimensional analysis of non-repeatable runout (NRRO) in ball
-    bearings", Koyo Engineering Journal (2002) (seed 000), K_n of eq. 4 and its preload approach from the balance of eq. 5
-    (:func:`runout.models.quasi_static_3d.preload_approach`).
+    Each bearing after Tada, "Three-dimensional analysis of non-repeatable runout (NRRO) in
+    ball bearings", Koyo Engineering Journal (2002) (seed 000): K_n of eq. 4 and its preload
+    approach from the balance of eq. 5 (:func:`runout.models.quasi_static_3d.preload_approach`).
     """
     bs = layout.bearings
     signs = thrust_signs([b.position for b in bs], layout.arrangement)
@@ -820,9 +820,9 @@ def run(case: Case) -> RunResult:
 
     Notes
     -----
-    Each bearing's contacts after Tada, "Three-dimensional analysis of non-repeatable runout (NRRO) in ball
-    bearings", Koyo Engineering Journal (2002) (seed 000), eq. 2-5, extended to a rigid shaft with five degrees
-    of freedom (module docstring).
+    Each bearing's contacts after Tada, "Three-dimensional analysis of non-repeatable runout
+    (NRRO) in ball bearings", Koyo Engineering Journal (2002) (seed 000), eq. 2-5, extended to
+    a rigid shaft with five degrees of freedom (module docstring).
     """
     layout = case.spindle
     if layout is None:

@@ -1,9 +1,9 @@
 """Figures of studies and sweeps: Monte Carlo histograms, sweep curves, the dynamic sweep.
 
-Split out of :mod:`runout.report.plotting`, which re-exports every name (import them from there: this
-module takes the shared drawing helpers from it). The rules are :mod:`runout.report.plotting`'s: one
-style (:mod:`runout.report._plot_style`), every axis names its quantity and unit, lengths at their
-own scale.
+Split out of :mod:`runout.report.plotting`, which re-exports every name (import them from
+there: this module takes the shared drawing helpers from it). The rules are
+:mod:`runout.report.plotting`'s: one style (:mod:`runout.report._plot_style`), every axis names
+its quantity and unit, lengths at their own scale.
 """
 
 from __future__ import annotations

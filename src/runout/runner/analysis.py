@@ -30,6 +30,19 @@ def measured_lines(result: RunResult) -> tuple[NDArray[np.float64], NDArray[np.f
     The x and y lines of one frequency are combined as phasors,
     ``|u_x X + u_y Y|`` with ``X = (pp_x / 2) exp(i φ_x)``: the line a probe along the
     measuring direction ``u`` would see. Axial (z) lines are left out.
+
+    Parameters
+    ----------
+    result : RunResult
+        A model's result: its ``components`` (``pp_m`` [m], ``phase_rad`` [rad],
+        ``frequency_hz`` [Hz]) and ``measuring_direction`` (unit vector [-]).
+
+    Returns
+    -------
+    frequencies : ndarray
+        Line frequencies [Hz].
+    amplitudes : ndarray
+        Zero-to-peak amplitudes along the measuring direction [m].
     """
     u = result.measuring_direction
     phasors: dict[float, complex] = {}
@@ -60,6 +73,17 @@ def iso15242_of(result: RunResult) -> Iso15242:
     Bands L, M, H with the edges of 1800 rpm scaled to the rotating ring's speed
     (:func:`runout.analysis.spectrum.iso15242_band_set`), from the radial lines along the measuring
     direction (:func:`measured_lines`).
+
+    Parameters
+    ----------
+    result : RunResult
+        A model's result with a rotating ring (``frequencies.rotation`` [Hz] > 0).
+
+    Returns
+    -------
+    Iso15242
+        Band edges [Hz] and rms velocity per band [um/s], the speed [rpm] and the measuring
+        direction.
     """
     from runout.analysis.spectrum import iso15242_band_set, iso15242_bands_from_lines
 
@@ -78,7 +102,23 @@ def iso15242_of(result: RunResult) -> Iso15242:
 
 
 def anderon_json(result: RunResult) -> dict[str, float]:
-    """Anderon band values from the lines along the measuring direction, in orders."""
+    """Anderon band values from the lines along the measuring direction, in orders.
+
+    Parameters
+    ----------
+    result : RunResult
+        A model's result with a rotating ring (``frequencies.rotation`` [Hz] > 0).
+
+    Returns
+    -------
+    dict of str to float
+        Band name -> Anderon value [Anderon] (seed 002 eq. 1 and 42).
+
+    Notes
+    -----
+    Seed 002 (Anderon calculation model) eq. 1 and 42, via
+    :func:`runout.analysis.spectrum.anderon_bands_from_lines`.
+    """
     from runout.analysis.spectrum import anderon_bands_from_lines
 
     freqs, amps = measured_lines(result)
@@ -91,10 +131,23 @@ def verdict_of(result: RunResult, limit: float, quantity: str) -> Verdict:
 
     Parameters
     ----------
+    result : RunResult
+        The result judged (its ``runout`` figures [m] or ``iso15242`` bands [um/s]).
     limit : float
         [m] for a runout p-p, [m/s] for a band (``iso15242.L`` ...).
     quantity : str
         ``radial_pp``, ``rro_pp``, ``nrro_pp``, ``axial_pp`` or ``iso15242.<band>``.
+
+    Returns
+    -------
+    Verdict
+        Limit and value in [m] for a runout p-p, in [um/s] for a band (the limit converted
+        from [m/s]), and whether the value is within the limit.
+
+    Raises
+    ------
+    ValueError
+        A band quantity for a result without ISO 15242 band values.
     """
     if quantity.startswith("iso15242."):
         if result.iso15242 is None:
@@ -113,6 +166,19 @@ def apply_analysis(result: RunResult, case: Case) -> RunResult:
     values from the lines (the linear model keeps its own, from its exact x lines as seed 002
     measured), ``limit`` the ``verdict``; the bearing's element type names the passage
     frequencies. Idempotent: applying it twice gives the same result.
+
+    Parameters
+    ----------
+    result : RunResult
+        The model's result.
+    case : Case
+        The case run; its ``[analysis]`` table (``bands``, ``limit`` [m] or [m/s],
+        ``limit_on``) and its bearing.
+
+    Returns
+    -------
+    RunResult
+        A copy with ``iso15242``, ``anderon``, ``verdict`` and ``element`` set.
 
     Raises
     ------

@@ -49,6 +49,20 @@ def case_key(case: Any, key: str) -> str:
 
     The rigid roller model names parts (``"inner raceway"``, ``"roller 3"``): they map to the
     first waviness, spectrum or profile entry of that part.
+
+    Parameters
+    ----------
+    case : Case
+        The loaded case (its ``spec`` tables are searched for a part's entry).
+    key : str
+        Key of a model's check: a parameter name (``"contact_angle"``) or a part
+        (``"inner raceway"``, ``"roller 3"``).
+
+    Returns
+    -------
+    str
+        The case key (``"bearing.contact_angle"``, ``"waviness[2].amplitude"``); ``key``
+        itself when it names neither, ``"waviness"`` for a part with no entry.
     """
     if key in _MODEL_KEYS:
         return _MODEL_KEYS[key]
@@ -72,7 +86,20 @@ def case_key(case: Any, key: str) -> str:
 
 
 def as_case_error(case: Any, exc: GeometryError) -> CaseError:
-    """A model's :class:`GeometryError` as a :class:`CaseError` naming the case file."""
+    """A model's :class:`GeometryError` as a :class:`CaseError` naming the case file.
+
+    Parameters
+    ----------
+    case : Case
+        The case the model ran on (its ``path`` and tables).
+    exc : GeometryError
+        The model's error; its key is mapped by :func:`case_key`.
+
+    Returns
+    -------
+    CaseError
+        The same message, naming the case file and the case key.
+    """
     return CaseError(case.path, case_key(case, exc.key), exc.message)
 
 
@@ -141,7 +168,27 @@ def _interference_loads(case: Any) -> list[tuple[str, float, str]]:
 
 
 def hertz_findings(case: Any, model: str) -> list[Any]:
-    """Hertz validity findings of the most loaded element (and of oversized balls)."""
+    """Hertz validity findings of the most loaded element (and of oversized balls).
+
+    Rough, safe-side element loads [N] from the case's axial, radial (with the dynamic model's
+    unbalance force) and moment loads, judged by
+    :func:`runout.geometry.contact.ball_load_validity` or
+    :func:`runout.geometry.contact.roller_load_validity`.
+
+    Parameters
+    ----------
+    case : Case
+        The loaded case (bearing, operation, imperfections; spindle for the spindle model).
+    model : str
+        Model id (``"dynamic"`` adds the unbalance force, ``"spindle"`` checks each bearing
+        of the spindle).
+
+    Returns
+    -------
+    list of HertzFinding
+        Warnings (beyond the ISO 76 static limit) and errors (no elastic contact); empty
+        when every contact is valid or the contact angle cannot be found.
+    """
     from runout.geometry.contact import ball_load_validity, roller_load_validity
     from runout.geometry.loading import operating_contact_angle
 
@@ -250,6 +297,7 @@ def validate(case: Any, model: str | None = None, *, strict: bool = True) -> tup
     Parameters
     ----------
     case : Case
+        The loaded case.
     model : str or None
         Model id; default ``case.analysis.model``.
     strict : bool

@@ -29,6 +29,17 @@ def run_model(case: Case) -> RunResult:
     the run with a :class:`runout.base.errors.CaseError`; the keys it does not apply are added to
     the result's notes.
 
+    Parameters
+    ----------
+    case : Case
+        A loaded case (:func:`runout.case.model.load_case`); SI values inside.
+
+    Returns
+    -------
+    RunResult
+        The model's result with the case's ``[analysis]`` outputs (bands, verdict) and the
+        notes of the checks and conventions.
+
     Raises
     ------
     ModelNotAvailableError

@@ -19,7 +19,8 @@ from runout.base.units import to_si
 from runout.case._schema import split_shorthand
 from runout.case.model import Case, CaseSpec, StudySpec, VarySpec, parse_vary_key
 
-#: Runout figures kept per sample, in this order (the keys of :class:`runout.analysis.results.Runout`).
+#: Runout figures kept per sample, in this order (the keys of
+#: :class:`runout.analysis.results.Runout`).
 RUNOUT_KEYS = ("radial_pp_m", "axial_pp_m", "rro_pp_m", "nrro_pp_m")
 FORMAT = "runout-study/1"
 _DIAMETER_KEY = "elements.diameter_errors"

@@ -103,8 +103,8 @@ class RowResults:
 def line_projector(time: NDArray[np.float64], freqs: NDArray[np.float64]) -> NDArray[np.float64]:
     r"""Least-squares projector P, shape (1 + 2m, n): [c, a_j, b_j] = P x.
 
-    The fit of :func:`runout.analysis.spectrum.extract_lines` (constant plus a cos/sin pair per line,
-    :math:`x \approx c + \sum_j a_j\cos 2\pi f_j t + b_j \sin 2\pi f_j t`) written as the
+    The fit of :func:`runout.analysis.spectrum.extract_lines` (constant plus a cos/sin pair per
+    line, :math:`x \approx c + \sum_j a_j\cos 2\pi f_j t + b_j \sin 2\pi f_j t`) written as the
     pseudo-inverse of its design matrix, so that many records are fitted by one product.
     """
     w = 2.0 * np.pi * np.outer(time, freqs)

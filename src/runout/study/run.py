@@ -1,7 +1,7 @@
 r"""Studies at scale: Monte Carlo over drawn case quantities and sweeps over listed ones.
 
-A study takes a validated :class:`runout.case.model.Case` with a ``[study]`` table and evaluates many
-variants of it: *samples* (Monte Carlo bearings) or *points* (sweep values × models). Each
+A study takes a validated :class:`runout.case.model.Case` with a ``[study]`` table and evaluates
+many variants of it: *samples* (Monte Carlo bearings) or *points* (sweep values × models). Each
 variant is the case with some quantities replaced, validated like a case file and run by the
 model named in ``[analysis]`` (or ``[study] models``); from each run we keep the runout figures
 and every labelled line (:class:`runout.analysis.results.Component`, p-p [m]).

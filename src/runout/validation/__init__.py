@@ -134,7 +134,7 @@ SECTIONS: list[Section] = [
         "Quasi-static NRRO models (`runout.models.quasi_static_3d`, "
         "`runout.models.quasi_static_2d`)",
         "Tests: `tests/reference/test_seed000_tada.py`, "
-        "`tests/reference/test_seed001_kim_nrro.py`, `tests/unit/test_quasi_static_3d.py`.",
+        "`tests/reference/test_seed001_kim_nrro.py`, `tests/unit/models/test_quasi_static_3d.py`.",
         [
             Group(
                 "Seed 000 (Tada), 3-D model, standard model of Table 1",

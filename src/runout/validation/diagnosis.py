@@ -28,7 +28,7 @@ __all__ = ["BIAS_AMPLITUDE", "FIG12", "FIG20", "INTRO", "W_I1", "W_S", "checks"]
 BIAS_AMPLITUDE = 20e-9
 
 INTRO = """\
-Tests: `tests/unit/test_diagnose_validation.py`, `tests/unit/test_diagnose.py`,
+Tests: `tests/unit/validation/test_diagnose_validation.py`, `tests/unit/diagnose/test_diagnose.py`,
 `tests/property/test_diagnose_roundtrip.py`. `runout diagnose` inverts the linear model; the
 rows below diagnose (1) the velocity record the linear model computes from seed 002's
 deviations (eq. 43–47), as the Anderon meter's single channel sees it, (2) Fig. 20's measured

@@ -66,7 +66,17 @@ KIM_TABLE2 = {
 
 @functools.cache
 def kim_fitted_preload() -> float:
-    """The axial load [N] that gives Table 2's 18.73° at Z = 10 (static solution)."""
+    """The axial load [N] that gives Table 2's 18.73° at Z = 10 (static solution).
+
+    Returns
+    -------
+    float
+        The axial preload [N] (the paper does not print it).
+
+    Notes
+    -----
+    Fitted on seed 001 Table 2, row Z = 10 (:data:`KIM_TABLE2`).
+    """
     from runout.geometry.loading import axial_load_for_contact_angle
 
     return float(
@@ -76,14 +86,35 @@ def kim_fitted_preload() -> float:
 
 @functools.cache
 def kim_axial_loading(z: int) -> AxialLoading:
-    """The axial-load solution with ``z`` balls at :func:`kim_fitted_preload`."""
+    """The axial-load solution with ``z`` balls at :func:`kim_fitted_preload`.
+
+    Parameters
+    ----------
+    z : int
+        Number of balls Z [-].
+
+    Returns
+    -------
+    AxialLoading
+        Contact angle, ball load and approaches of the Table 1 bearing (static solution).
+    """
     from runout.geometry.loading import axial_loading
 
     return axial_loading(kim_bearing(elements=z), kim_fitted_preload())
 
 
 def table2_checks() -> list[Check]:
-    """Table 2 (static): the fitted preload predicts the other columns."""
+    """Table 2 (static): the fitted preload predicts the other columns.
+
+    Returns
+    -------
+    list of Check
+        α, δ_i and δ_o for each Z of Table 2.
+
+    Notes
+    -----
+    Seed 001 Table 2 (:data:`KIM_TABLE2`).
+    """
     s001 = uses("seed001_kim_spindle.toml", "seed 001 Table 1 bearing, §5.1 frequencies")
     out = []
     for z, (alpha, d_i, d_o) in KIM_TABLE2.items():
@@ -205,6 +236,22 @@ def kim_lines(name: str, z: int, balls: tuple[int, ...], form: bool = False) -> 
     ``form=False``: the balls carry the 0.1 µm size error only; ``form=True``: the order-2
     waviness only (y is the same whirl, so x says it all). The phase is that of
     x = Σ A cos(2π f t + φ), t = 0 when ball 1 is at θ = 0 (seed 001 eq. 8).
+
+    Parameters
+    ----------
+    name : str
+        The example case file (``seed001_kim_table4.toml`` or ``seed001_kim_tables5_8.toml``).
+    z : int
+        Number of balls Z [-].
+    balls : tuple of int
+        Numbers (from 1) of the balls carrying the error.
+    form : bool
+        Order-2 waviness (True) instead of the size error (False).
+
+    Returns
+    -------
+    ndarray of complex, shape (3,)
+        The phasors of the three lines [nm p-p].
     """
     from runout.analysis.spectrum import extract_lines
     from runout.models import quasi_static_2d as qs2
@@ -221,13 +268,41 @@ def kim_lines(name: str, z: int, balls: tuple[int, ...], form: bool = False) -> 
 
 
 def kim_fc_pp_nm(name: str, z: int, balls: tuple[int, ...]) -> float:
-    """f_c line p-p [nm] of the 2-D model (x; y is the same circle)."""
+    """f_c line p-p [nm] of the 2-D model (x; y is the same circle).
+
+    Parameters
+    ----------
+    name : str
+        The example case file (``seed001_kim_table4.toml`` or ``seed001_kim_tables5_8.toml``).
+    z : int
+        Number of balls Z [-].
+    balls : tuple of int
+        Numbers (from 1) of the balls 0.1 µm oversize.
+
+    Returns
+    -------
+    float
+        The exact f_c line p-p [nm].
+    """
     return float(abs(kim_lines(name, z, balls)[0]))
 
 
 @functools.cache
 def kim_cage_hz(name: str, z: int) -> float:
-    """f_c [Hz] of the Table 1 bearing with ``z`` balls (eq. 7 at the loaded angle)."""
+    """f_c [Hz] of the Table 1 bearing with ``z`` balls (eq. 7 at the loaded angle).
+
+    Parameters
+    ----------
+    name : str
+        The example case file (``seed001_kim_table4.toml`` or ``seed001_kim_tables5_8.toml``).
+    z : int
+        Number of balls Z [-].
+
+    Returns
+    -------
+    float
+        Cage frequency f_c [Hz].
+    """
     from runout.models import quasi_static_2d as qs2
 
     return float(qs2.setup(_kim_case(name, z, (1,), size=True, form=False)).kinematics.cage)
@@ -238,6 +313,16 @@ def kim_fft_reading() -> FftReading:
     """The reading of seed 001's f_c column, identified from Table 4 and Tables 5–8 (18 rows).
 
     The floor's size is the 0.99 nm printed for the balanced arrangements (at Z = 10).
+
+    Returns
+    -------
+    FftReading
+        Record length, floor phasor and misfit (:func:`identify_fft_reading`).
+
+    Notes
+    -----
+    Identified from seed 001 Table 4 and Tables 5-8 (:data:`KIM_TABLE4`,
+    :data:`KIM_TABLES5_8`, :data:`KIM_FLOOR`).
     """
     t4, t58 = "seed001_kim_table4.toml", "seed001_kim_tables5_8.toml"
     rows = [(kim_cage_hz(t4, z), kim_lines(t4, z, (1,))[0], v) for z, v in KIM_TABLE4.items()]
@@ -250,19 +335,63 @@ def kim_fft_reading() -> FftReading:
 
 
 def kim_read_nm(name: str, z: int, balls: tuple[int, ...]) -> float:
-    """Our f_c line as seed 001's spectrum would have shown it [nm p-p]."""
+    """Our f_c line as seed 001's spectrum would have shown it [nm p-p].
+
+    Parameters
+    ----------
+    name : str
+        The example case file (``seed001_kim_table4.toml`` or ``seed001_kim_tables5_8.toml``).
+    z : int
+        Number of balls Z [-].
+    balls : tuple of int
+        Numbers (from 1) of the balls 0.1 µm oversize.
+
+    Returns
+    -------
+    float
+        The f_c line through :func:`kim_fft_reading` [nm p-p].
+    """
     return kim_fft_reading().read(kim_cage_hz(name, z), kim_lines(name, z, balls)[0])
 
 
 def kim_form_ratio(balls: tuple[int, ...], column: int) -> float:
-    """Our 2 f_b ∓ f_c line of an arrangement over that of ball 1 alone (order-2 waviness)."""
+    """Our 2 f_b ∓ f_c line of an arrangement over that of ball 1 alone (order-2 waviness).
+
+    Parameters
+    ----------
+    balls : tuple of int
+        Numbers (from 1) of the balls carrying the waviness, Z = 10.
+    column : {0, 1}
+        0 for the 2 f_b − f_c line, 1 for the 2 f_b + f_c line.
+
+    Returns
+    -------
+    float
+        The ratio of the two lines' p-p [-].
+
+    Notes
+    -----
+    Compared with the 2 f_b ± f_c columns of seed 001 Tables 5-8 over Table 4's at Z = 10.
+    """
     name = "seed001_kim_tables5_8.toml"
     lines, one = kim_lines(name, 10, balls, True), kim_lines(name, 10, (1,), True)
     return float(abs(lines[1 + column]) / abs(one[1 + column]))
 
 
 def nrro_checks() -> list[Check]:
-    """Tables 4–8: the f_c line, exact and as the paper's FFT reads it; the form-error ratios."""
+    """Tables 4–8: the f_c line, exact and as the paper's FFT reads it; the form-error ratios.
+
+    Returns
+    -------
+    list of Check
+        The f_c line of each row of Table 4 and Tables 5-8 (exact and as read), the
+        superposition check of Table 6, the balanced sets, and the 2 f_b ± f_c ratios.
+
+    Notes
+    -----
+    Seed 001 Tables 4-8 (:data:`KIM_TABLE4`, :data:`KIM_TABLE4_FORM_Z10`,
+    :data:`KIM_TABLES5_8`, :data:`KIM_SYMMETRIC`, :data:`KIM_FLOOR`).
+    """
     t4 = uses("seed001_kim_table4.toml", "seed 001 Table 4 (Z = 7…12 in code)")
     t58 = uses("seed001_kim_tables5_8.toml", "seed 001 Tables 5–8 (arrangements in code)")
     out: list[Check] = []
@@ -379,7 +508,14 @@ depend on its size. Tests: `tests/reference/test_seed001_kim_nrro.py`."""
 
 
 def nrro_outro() -> str:
-    """The explanation under the Kim table, with the identified reading computed."""
+    """The explanation under the Kim table, with the identified reading computed.
+
+    Returns
+    -------
+    str
+        Markdown: how the paper read its f_c column, with the numbers of
+        :func:`kim_fft_reading` and of our exact lines.
+    """
     r = kim_fft_reading()
     t58 = "seed001_kim_tables5_8.toml"
     gain = r.read(kim_cage_hz(t58, 10), 0j) / abs(r.floor)
@@ -430,7 +566,20 @@ alone does not reproduce their Z-trend."""
 
 @functools.cache
 def kim_equilibrium_angles(z: int, speed_factor: float = 1.0) -> tuple[float, float]:
-    """(α_i, α_o) [°] of the Jones–Harris equilibrium, ``z`` balls, speed × ``speed_factor``."""
+    """(α_i, α_o) [°] of the Jones–Harris equilibrium, ``z`` balls, speed × ``speed_factor``.
+
+    Parameters
+    ----------
+    z : int
+        Number of balls Z [-].
+    speed_factor : float
+        Factor on the speed of ``examples/seed001_kim_equilibrium.toml`` [-].
+
+    Returns
+    -------
+    tuple of float
+        Inner and outer contact angles of ball 1 [deg].
+    """
     from runout.geometry.bearing import Operation
     from runout.models.equilibrium import solve_equilibrium
 
@@ -450,7 +599,17 @@ def kim_equilibrium_angles(z: int, speed_factor: float = 1.0) -> tuple[float, fl
 
 
 def equilibrium_checks() -> list[Check]:
-    """Table 2 at 7200 rpm (Jones–Harris) and the speed² law of the angle split."""
+    """Table 2 at 7200 rpm (Jones–Harris) and the speed² law of the angle split.
+
+    Returns
+    -------
+    list of Check
+        α_i and α_o at 7200 rpm for each Z of Table 2, and the growth of α_i − α_o with speed.
+
+    Notes
+    -----
+    Seed 001 Table 2 (:data:`KIM_TABLE2`) with the Jones–Harris equilibrium of §2.1.
+    """
     name = uses("seed001_kim_equilibrium.toml", "seed 001 §2.1, Table 2 at 7200 rpm (Z in code)")
     out: list[Check] = []
     for z, (alpha, _, _) in KIM_TABLE2.items():

@@ -23,7 +23,23 @@ STUDY_SAMPLES: int | None = None
 
 @functools.cache
 def kim_table9(sigma: float) -> np.ndarray:
-    """f_c p-p [nm] of every bearing of the Monte Carlo at ball diameter σ."""
+    """f_c p-p [nm] of every bearing of the Monte Carlo at ball diameter σ.
+
+    Parameters
+    ----------
+    sigma : float
+        Standard deviation σ of the ball diameter errors [m].
+
+    Returns
+    -------
+    ndarray, shape (samples,)
+        The f_c line p-p of each bearing in x [nm] (:data:`STUDY_SAMPLES` bearings, or the
+        case file's 1000).
+
+    Notes
+    -----
+    The study of seed 001 Table 9 (:data:`KIM_TABLE9`).
+    """
     from runout.case.model import parse_case
     from runout.study.run import run_study
 
@@ -37,13 +53,40 @@ def kim_table9(sigma: float) -> np.ndarray:
 
 
 def rayleigh(sigma: float, z: int = 10) -> tuple[float, float]:
-    """(mean, standard deviation) [nm] of the f_c line p-p by the Rayleigh law, σ [m]."""
+    """(mean, standard deviation) [nm] of the f_c line p-p by the Rayleigh law, σ [m].
+
+    The p-p has the scale s = (4/Z) σ √(Z/2): mean s √(π/2), standard deviation
+    s √((4 − π)/2).
+
+    Parameters
+    ----------
+    sigma : float
+        Standard deviation σ of the ball diameter errors [m].
+    z : int
+        Number of balls Z [-].
+
+    Returns
+    -------
+    tuple of float
+        Mean and standard deviation of the f_c line p-p [nm].
+    """
     s = 4.0 / z * sigma * math.sqrt(z / 2.0) * 1e9
     return s * math.sqrt(math.pi / 2.0), s * math.sqrt((4.0 - math.pi) / 2.0)
 
 
 def checks() -> list[Check]:
-    """The Monte Carlo table."""
+    """The Monte Carlo table.
+
+    Returns
+    -------
+    list of Check
+        Mean and standard deviation of the f_c line at each σ of Table 9, both against the
+        Rayleigh law at σ = 0.1 µm, and the scaling of the mean with σ.
+
+    Notes
+    -----
+    Seed 001 Table 9 (:data:`KIM_TABLE9`).
+    """
     name = uses("seed001_kim_table9.toml", "seed 001 Table 9 (σ = 0.05, 0.033 µm in code)")
     out: list[Check] = []
     for sigma, (mean, std) in KIM_TABLE9.items():
@@ -114,4 +157,4 @@ Case `examples/seed001_kim_table9.toml`: bearing of Table 1 at 7200 rpm, preload
 **peak-to-peak** (the convention that reproduces Tables 4–8). Rayleigh law: f_c p-p has scale
 s = (4/Z)·σ·√(Z/2); mean s√(π/2), standard deviation s√((4−π)/2) (derivation in
 docs/studies.md). Tests: `tests/reference/test_seed001_kim_table9.py`,
-`tests/unit/test_study.py`, `tests/unit/test_arrangement.py`."""
+`tests/unit/study/test_study.py`, `tests/unit/study/test_arrangement.py`."""

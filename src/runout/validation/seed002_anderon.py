@@ -84,13 +84,37 @@ def _g608() -> _Geometry608:
 
 
 def waviness(k: int) -> float:
-    """Eq. 45–47: 0.1 µm / k^1.5."""
+    """Eq. 45–47: 0.1 µm / k^1.5.
+
+    Parameters
+    ----------
+    k : int
+        Waviness order (lobes) [-].
+
+    Returns
+    -------
+    float
+        Waviness amplitude of order ``k`` [m].
+    """
     return float(0.1 * UM / k**1.5)
 
 
 def inner_lines() -> tuple[np.ndarray, np.ndarray]:
     """Eq. 35: eccentricity (order 1), slant (2), waviness of nZ ± 1 lobes at the orders
-    nZ(1 + γ)/2 ± 1; times cos α."""
+    nZ(1 + γ)/2 ± 1; times cos α.
+
+    Returns
+    -------
+    orders : ndarray
+        Order of each line [waves per revolution].
+    amplitudes : ndarray
+        Its amplitude, times cos α [m].
+
+    Notes
+    -----
+    Seed 002 eq. 35 with the deviations of eq. 43-45 and the cos α of eq. 41, for the 608 of
+    Tab. 1.
+    """
     g = _g608()
     f_inner = (1 + g.d_b * g.cos_a / g.d_c) / 2
     orders, amps = [1.0, 2.0], [W_I1, W_S]
@@ -118,13 +142,40 @@ def _outer_pairs() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 
 
 def outer_lines() -> tuple[np.ndarray, np.ndarray]:
-    """Expected power of each outer line (random phases)."""
+    """Expected power of each outer line (random phases).
+
+    Each line O_nZ holds the waviness of nZ − 1 and nZ + 1 lobes; with random phases its
+    expected power is that of the root sum of squares of the two.
+
+    Returns
+    -------
+    orders : ndarray
+        Order of each line [waves per revolution].
+    amplitudes : ndarray
+        Its rms-combined amplitude, times cos α [m].
+
+    Notes
+    -----
+    Seed 002 eq. 37 with the outer-ring waviness of eq. 46 and the cos α of eq. 41.
+    """
     o, w1, w2 = _outer_pairs()
     return o, np.hypot(w1, w2)
 
 
 def ball_lines() -> tuple[np.ndarray, np.ndarray]:
-    """Eq. 39, waviness on ball z = 0 only: harmonic 2n gives B_An and B_Bn of (2/Z) W each."""
+    """Eq. 39, waviness on ball z = 0 only: harmonic 2n gives B_An and B_Bn of (2/Z) W each.
+
+    Returns
+    -------
+    orders : ndarray
+        Order of each line [waves per revolution].
+    amplitudes : ndarray
+        Its amplitude, times cos α [m].
+
+    Notes
+    -----
+    Seed 002 eq. 39 with the ball waviness of eq. 47 and the cos α of eq. 41.
+    """
     g = _g608()
     f_cage = (1 - g.d_b * g.cos_a / g.d_c) / 2
     f_spin = (g.d_c**2 - g.d_b**2 * g.cos_a**2) / (2 * g.d_b * g.d_c)
@@ -182,7 +233,19 @@ def _outer_l_draws() -> tuple[float, float, float]:
 
 
 def spectrum_checks() -> list[Check]:
-    """The closed-form band values against Figs. 12, 13, 15, 17."""
+    """The closed-form band values against Figs. 12, 13, 15, 17.
+
+    Returns
+    -------
+    list of Check
+        The R, A and U bands of Fig. 12, the bands of the inner ring, the balls and the outer
+        ring alone, and the total.
+
+    Notes
+    -----
+    Seed 002 eq. 35, 37 and 39 (with eq. 41) against Figs. 12, 13, 15 and 17 (:data:`FIG12`,
+    :data:`FIG13`, :data:`FIG15`, :data:`FIG17`).
+    """
     f12, f13, f15, f17 = (
         "Seed 002 Fig. 12",
         "Seed 002 Fig. 13, inner ring only",
@@ -352,6 +415,22 @@ def anderon_band_values(
     The lines are the linear model's closed forms (seed 002 eq. 33–41) at the bearing's fixed
     contact angle; the DFT is the paper's route: :data:`DFT_REVOLUTIONS` revolutions of dx/dθ,
     :data:`DFT_SAMPLES_PER_REV` samples per revolution, rectangular window (eq. 42, eq. 1).
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        A ball bearing with a fixed contact angle.
+    operation : Operation
+        Speed and rotating ring.
+    imperfections : BearingImperfections
+        The part deviations.
+
+    Returns
+    -------
+    exact : dict of str to float
+        Band name -> value of the exact lines [Anderon].
+    dft : dict of str to float
+        Band name -> value of the six-revolution DFT [Anderon].
     """
     from runout.analysis.spectrum import (
         ANDERON_BANDS,
@@ -388,7 +467,22 @@ def _reseed(draw: int) -> Callable[[dict[str, Any]], None]:
 
 @functools.cache
 def seed002_spread(parts: str, draws: int = LINEAR_DRAWS) -> tuple[np.ndarray, np.ndarray]:
-    """(exact, DFT) band values, shape (draws, 7) in the order URLMHEA."""
+    """(exact, DFT) band values, shape (draws, 7) in the order URLMHEA.
+
+    Each draw is the example of ``parts`` with the seeds of its waviness spectra replaced.
+
+    Parameters
+    ----------
+    parts : {"i", "o", "b", "iob"}
+        The example (:data:`SEED002_FILES`): inner ring, outer ring, ball, or all sources.
+    draws : int
+        Number of random phase draws.
+
+    Returns
+    -------
+    exact, dft : ndarray, shape (draws, 7)
+        Band values of the exact lines and of the six-revolution DFT [Anderon].
+    """
     name = SEED002_FILES[parts][0]
     exact = np.empty((draws, len(BANDS)))
     dft = np.empty((draws, len(BANDS)))
@@ -406,7 +500,19 @@ def _stat(parts: str, band: str, which: int) -> tuple[float, float, float]:
 
 
 def linear_checks() -> list[Check]:
-    """The linear model's band values over random phase draws against the same figures."""
+    """The linear model's band values over random phase draws against the same figures.
+
+    Returns
+    -------
+    list of Check
+        Median and 1-99 % range of each band over :data:`LINEAR_DRAWS` draws, exact lines and
+        six-revolution DFT, for each example of :data:`SEED002_FILES`.
+
+    Notes
+    -----
+    Seed 002 Figs. 12, 13, 15 and 17 (:data:`FIG12`, :data:`FIG13`, :data:`FIG15`,
+    :data:`FIG17`).
+    """
     out: list[Check] = []
     table = [
         (
@@ -457,7 +563,7 @@ def linear_checks() -> list[Check]:
 
 
 LINEAR_INTRO = """\
-Tests: `tests/reference/test_seed002_anderon.py`, `tests/unit/test_linear.py`,
+Tests: `tests/reference/test_seed002_anderon.py`, `tests/unit/models/test_linear.py`,
 `tests/property/test_linear_properties.py`. Case `examples/seed002_608.toml` and its
 one-part variants: Z = 7, D = 3.9688 mm, d_m = 15 mm, α = 10°, eq. 43–47 (W_i1 2.5 µm, W_s
 0.05 µm, 0.1 µm/k^1.5 on inner 2–799, outer 2–1359, ball z = 0 2–286), plus W_b00 = 0.1 µm on

@@ -36,7 +36,16 @@ DYN_NATURAL_HZ = {(5, 10.0): 90.0, (8, 10.0): 135.0, (8, 50.0): 100.0}
 
 @functools.cache
 def dynamic_points() -> dict[tuple[int, float], SweepPoint]:
-    """Sweep points of examples/seed003_purohit.toml: Z × preload (the runout sweep-dynamic)."""
+    """Sweep points of examples/seed003_purohit.toml: Z × preload (the runout sweep-dynamic).
+
+    Every Z of :data:`DYN_ELEMENTS` at 0 and 10 N, plus Z = 5 at 30 and 50 N and Z = 8 at
+    50 and 100 N.
+
+    Returns
+    -------
+    dict
+        (Z, preload [N]) -> :class:`runout.study.dynamic_sweep.SweepPoint`.
+    """
     from runout.study.dynamic_sweep import sweep
 
     case = load("seed003_purohit.toml")
@@ -55,7 +64,19 @@ def _bpv_nm(z: int, p: float) -> float:
 
 
 def checks() -> list[Check]:
-    """The dynamic-model table."""
+    """The dynamic-model table.
+
+    Returns
+    -------
+    list of Check
+        The ball-pass frequency of each Z at 10 N, three natural frequencies, and the trends
+        of the ball-passage vibration and of f_n with Z and preload.
+
+    Notes
+    -----
+    Seed 003 Fig. 3 (:data:`DYN_BPF`), Figs. 3-4 (:data:`DYN_NATURAL_HZ`) and the statements
+    of §3, §3.1 and §3.2.
+    """
     name = uses("seed003_purohit.toml", "seed 003 Table 2 rotor, Figs. 3–4 (dynamic)")
     out: list[Check] = []
     for i, (z, value) in enumerate(DYN_BPF.items()):
@@ -168,7 +189,7 @@ def checks() -> list[Check]:
 
 
 INTRO = """\
-Tests: `tests/unit/test_dynamic.py`, `tests/reference/test_dynamic_checks.py` (independent
+Tests: `tests/unit/models/test_dynamic.py`, `tests/reference/test_dynamic_checks.py` (independent
 checks: contact law vs eq. 2.4–2.5, tangent stiffness vs central differences, Newmark vs a
 NumPy reference and DOP853, energy conservation and dissipation, low-speed limit vs the
 quasi-static solve), `tests/cli/test_run_dynamic.py`. Rotor of seed 003 Table 2

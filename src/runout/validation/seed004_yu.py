@@ -60,6 +60,15 @@ def eq17_gap(clearance: float) -> float:
     clearance : float
         Radial clearance P_d [m] of the NU209 of ``examples/seed004_nu209.toml`` (the inner
         raceway diameter is changed to give it).
+
+    Returns
+    -------
+    float
+        max |ours / eq. 17 − 1| of the ring centre along the load over one revolution [-].
+
+    Notes
+    -----
+    Seed 004 §6.1, eq. 17 (:data:`EQ17_CLEARANCES`).
     """
     from runout import RollerBearing
     from runout.geometry.imperfections import BearingImperfections
@@ -84,6 +93,21 @@ def ellipse_gaps(semi_minor: float) -> tuple[float, float]:
 
     The inner raceway is an ellipse of semi-axes :data:`ELLIPSE_SEMI_MAJOR` and ``semi_minor``
     [m]; "exact" is the closest distance (a parallel curve), eq. 18–21 the paper's.
+
+    Parameters
+    ----------
+    semi_minor : float
+        Semi-minor axis b of the elliptic inner raceway [m].
+
+    Returns
+    -------
+    tuple of float
+        Largest distance of our ring centre, and of eq. 18-21's, to the exact one, relative to
+        the exact position along the load [-].
+
+    Notes
+    -----
+    Seed 004 §6.2, eq. 18-21 (:data:`ELLIPSE_SEMI_MINORS`).
     """
     from runout import RollerBearing
     from runout.geometry.imperfections import BearingImperfections
@@ -109,7 +133,19 @@ def ellipse_gaps(semi_minor: float) -> tuple[float, float]:
 
 
 def checks() -> list[Check]:
-    """The roller-bearing table."""
+    """The roller-bearing table.
+
+    Returns
+    -------
+    list of Check
+        The circular case of eq. 17, the elliptic cases of eq. 18-21, the runout of each of
+        Figs. 9-12, and Fig. 12 as the paper computed it.
+
+    Notes
+    -----
+    Seed 004 §6.1 (eq. 17), §6.2 (eq. 18-21) and §7, Figs. 9-12 (:data:`FIGURE_RUNOUT_UM`,
+    :data:`FIG12_POSITIONS_UM`).
+    """
     figs = {
         "seed004_nu209.toml": (
             "Fig. 9",
@@ -231,7 +267,7 @@ def _roller_fig12_paper() -> tuple[float, float, float]:
 INTRO = """\
 Source: seed 004 (Yu et al. 2017), NU209 of Table 1 (d_i 54.991 mm, d_e 75.032 mm, D_w 10 mm,
 Z 14, P_d 41 µm), inner ring turning, measuring load along −y. Tests:
-`tests/reference/test_seed004_nu209.py`, `tests/unit/test_roller_constraint.py`. "Ours" is
+`tests/reference/test_seed004_nu209.py`, `tests/unit/models/test_roller_constraint.py`. "Ours" is
 the exact lowest-potential position (Newton on the exact closest distance, active-set contact
 search); 540° are sampled at 0.25° (2,161 positions) as in the paper. Runout is max − min of
 the displacement along the load. Roller spin: pure rolling (see the module Notes on eq. 2). The
