@@ -18,7 +18,7 @@ import importlib.util
 import sys
 import types
 import warnings
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, cast
 
 from runout.base._numba_cache import ensure_numba_cache
 
@@ -100,7 +100,7 @@ class _MovedFinder:
     def find_spec(self, fullname: str, path: Any, target: Any = None) -> Any:
         if fullname not in MOVED_MODULES:
             return None
-        return importlib.util.spec_from_loader(fullname, self)
+        return importlib.util.spec_from_loader(fullname, cast(Any, self))
 
     def create_module(self, spec: Any) -> types.ModuleType:
         homes = MOVED_MODULES[spec.name]

@@ -305,7 +305,8 @@ def glossary_markdown() -> str:
     lines = [
         "# Glossary",
         "",
-        "Generated from `runout.base.glossary` by `python -m runout.base.glossary`; do not edit by hand.",
+        "Generated from `runout.base.glossary` by `python -m runout.base.glossary`; do not edit "
+        "by hand.",
         "",
         "One name per quantity, everywhere: in the Python API, the case files, the JSON output and",
         "the docs. SI inside; units appear only in case files, the command line and reports.",

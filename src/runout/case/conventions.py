@@ -720,8 +720,8 @@ def conventions_page() -> str:
     lines = [
         "# Conventions: one meaning per key, in every model",
         "",
-        "Generated from `runout.case.conventions` by `python -m runout.case.conventions`; do not edit by "
-        "hand. A test runs every cell of the matrix.",
+        "Generated from `runout.case.conventions` by `python -m runout.case.conventions`; do not "
+        "edit by hand. A test runs every cell of the matrix.",
         "",
         doc,
         "",

@@ -174,8 +174,8 @@ def harmonic_sum_rows(
     """Row-wise harmonic sums: row z of ``theta`` with harmonics ``offsets[z]:offsets[z+1]``.
 
     The harmonics of all rows are packed one after the other (ragged layout, see
-    :func:`runout.geometry.imperfections.pack_harmonics`); this evaluates, for instance, the diameter
-    deviation of every rolling element at its own spin angles in one call.
+    :func:`runout.geometry.imperfections.pack_harmonics`); this evaluates, for instance, the
+    diameter deviation of every rolling element at its own spin angles in one call.
 
     Parameters
     ----------

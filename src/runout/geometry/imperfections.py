@@ -858,7 +858,8 @@ class BearingImperfections:
     def __repr__(self) -> str:
         waved = sum(not h.is_empty for h in self.elements)
         return (
-            f"BearingImperfections(Z={self.n_elements}, inner={self.inner!r}, outer={self.outer!r}, "
+            f"BearingImperfections(Z={self.n_elements}, inner={self.inner!r}, "
+            f"outer={self.outer!r}, "
             f"elements with waviness={waved}, "
             f"max |diameter error|={np.abs(self.diameter_errors).max():.3g} m, "
             f"max |pitch error|={np.abs(self.pitch_errors).max():.3g} rad, slant={self.slant!r})"

@@ -1,14 +1,11 @@
-"""The files of a run: what ``runout run --out DIR`` writes, and reading them back.
+"""The files of a run, read back: ``result.json`` and ``history.csv`` of a ``runout run --out``
+directory into a typed :class:`~runout.analysis.results.RunResult` (:func:`read_result`), and
+the fast CSV column writer the run files use (:func:`write_columns`).
 
-:func:`write_result` writes ``result.json`` (the JSON contract), ``history.csv`` (the record),
-``lines.csv`` (the labelled lines), the standard figures
-(:func:`runout.report.plotting.write_figures`) and each model's own files, chosen by the type
-of the result's details
-(:mod:`runout.analysis.result_details`): ``bearing.gif`` (quasi-static models), ``balls.csv``,
-``stiffness.csv`` and ``balls.png`` (equilibrium), ``spectrum.csv`` and ``spectrum.png``
-(dynamic), ``contacts.csv``, ``order_sweep.csv`` and its figures (rigid constraint model) and
-the Anderon figures (linear). :func:`read_result` reads ``result.json`` and ``history.csv`` of
-such a directory back into a :class:`~runout.analysis.results.RunResult`.
+:func:`runout.report.run_files.write_result` writes the directory: ``result.json`` (the JSON
+contract), ``history.csv`` (the record), ``lines.csv`` (the labelled lines), the standard
+figures and each model's own files and figures. Writing figures belongs to the report layer;
+reading needs none, so this module stays below it.
 """
 
 from __future__ import annotations

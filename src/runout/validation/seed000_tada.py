@@ -414,4 +414,5 @@ E = 208 GPa, ν = 0.3, P_d = 10 µm. **The paper gives no groove conformities; w
 (inner) / 0.53 (outer).** Inputs are peak-to-peak as in the paper (20 nm). Tada's eq. 1
 (waviness functions) is missing from the extraction; we derive it from the kinematics (module
 docstring). Line amplitudes are fitted at the predicted frequencies
-(`runout.analysis.spectrum.extract_lines`, no leakage). Tests: `tests/reference/test_seed000_tada.py`."""
+(`runout.analysis.spectrum.extract_lines`, no leakage). Tests:
+`tests/reference/test_seed000_tada.py`."""

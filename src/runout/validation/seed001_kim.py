@@ -542,11 +542,11 @@ properties of that reading explain all of them:
   true line it raises or lowers a reading by up to 1 nm depending on the arrangement's phase:
   this is why (1,4,7) reads high and (1,5,9) low;
 * **a Hann window on a finite record**: the f_c line falls between two bins and is read low
-  by the scalloping loss (`runout.analysis.spectrum.peak_bin_gain`). f_c moves with the contact angle
-  of each Z (Table 2), so the loss changes with Z: this is the Z-trend of Table 4.
+  by the scalloping loss (`runout.analysis.spectrum.peak_bin_gain`). f_c moves with the contact
+  angle of each Z (Table 2), so the loss changes with Z: this is the Z-trend of Table 4.
 
-Identification (`runout.validation.reproduce.identify_fft_reading`): the floor's size is taken from the
-balanced rows (0.99 nm as read, i.e. {floor_pp:.3f} nm p-p before the window); the record
+Identification (`runout.validation.reproduce.identify_fft_reading`): the floor's size is taken
+from the balanced rows (0.99 nm as read, i.e. {floor_pp:.3f} nm p-p before the window); the record
 length and the floor's phase are fitted by least squares to the {r.rows} other published f_c
 values of Table 4 and Tables 5–8: T = {r.duration:.4f} s (records one f_c period, ≈ 0.02 s,
 longer or shorter fit almost as well: what is pinned is where f_c falls between bins; the
