@@ -152,7 +152,11 @@ def test_iso_ts_16281_suite_case6_pure_moment() -> None:
     sol = solve_equilibrium(b, Operation("inner", 0.0, moment_load=ISO_MOMENT * ratio))
     q = sol.displacement
     assert q[3] * ratio == pytest.approx(3.6957e-3, rel=ISO_TOL)
-    assert q[4] == 0.0 and q[0] == 0.0  # tilt about the moment vector, axially centred
+    # tilt about the moment vector, axially centred: zero by symmetry, so at the solver's
+    # resolution (1e-9 of the tilt, and of its displacement at the raceway), not exactly 0.0
+    # (a fused multiply-add on another CPU breaks the exact cancellation of mirrored balls)
+    assert abs(q[4]) <= 1e-9 * abs(q[3])
+    assert abs(q[0]) <= 1e-9 * abs(q[3]) * 0.5 * b.pitch_diameter
     # raw, with the user's 1 N m: 1.31 % below the suite (ℜ_i vs d_m/2 as tilt radius and arm)
     raw = solve_equilibrium(b, Operation("inner", 0.0, moment_load=ISO_MOMENT)).displacement
     assert raw[3] / 3.6957e-3 - 1.0 == pytest.approx(-0.0131, abs=5e-4)

@@ -2,6 +2,8 @@
 
 The documents are the stored ``runout run --json`` outputs of every example
 (``tests/data/examples_json``, checked against the CLI by ``tests/cli/test_examples_json.py``).
+Byte for byte holds on any machine: nothing is computed, the stored floats are read and written
+back (``repr`` round-trips a float exactly).
 """
 
 from __future__ import annotations
