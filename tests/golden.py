@@ -498,7 +498,7 @@ def _match_by(new: list[Any], old: list[Any], key: Any) -> list[tuple[int, int]]
 def _label_from_tied_sources(new: dict[str, Any], old: dict[str, Any]) -> bool:
     """Whether two labels differ only because tied sources swapped: each is the short label
     of its own sources (the sources and their order are compared on their own)."""
-    from runout.analysis.results import Source, short_label
+    from runout.analysis.lines import Source, short_label
 
     def label_of(line: dict[str, Any]) -> str | None:
         try:

@@ -25,7 +25,8 @@ import pytest
 
 import golden
 from runout.analysis.decompose import FLOOR, RESIDUAL_REL
-from runout.analysis.results import Source, _relative_resolution, short_label
+from runout.analysis.lines import Source, short_label
+from runout.analysis.results import _relative_resolution
 
 ROOT = Path(__file__).resolve().parents[2]
 STORED = sorted((ROOT / "tests" / "data" / "examples_json").glob("*.json.gz"))
@@ -122,7 +123,8 @@ def another_machine(doc: dict[str, Any], seed: int) -> dict[str, Any]:
 def _resolution(doc: dict[str, Any]) -> float:
     """What the model's solved positions may differ by [m]: its relative resolution (the
     solvers' stopping tolerance, at least 1e-13) times the largest displacement the document
-    states, positions and approaches included (:meth:`runout.analysis.results.RunResult.resolution_m`)."""
+    states, positions and approaches included
+    (:meth:`runout.analysis.results.RunResult.resolution_m`)."""
     sizes: list[float] = []
 
     def walk(x: Any, path: golden.Path) -> None:

@@ -135,7 +135,19 @@ def _row_differences(fresh: list[str], disk: list[str], rtol: float) -> list[str
 
 
 def split_sections(text: str) -> dict[str, str]:
-    """``### title`` → its block (up to the next ``### `` heading)."""
+    """``### title`` → its block (up to the next ``### `` heading).
+
+    Parameters
+    ----------
+    text : str
+        A validation document (Markdown).
+
+    Returns
+    -------
+    dict of str to str
+        Each section's title and its text, heading included (the text before the first
+        heading under the title ``""``).
+    """
     out: dict[str, str] = {}
     title = ""
     for line in text.splitlines(keepends=True):
