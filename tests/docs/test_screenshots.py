@@ -58,7 +58,7 @@ def test_no_overlapping_text(
     assert found["textboxes"] > 50  # the probe measured the page's text
     assert found["overlaps"] == 0, found["examples"]
     # short labels in the tables (their sources open on demand), not paragraph-long rows: a
-    # 6204 page was 7,000 px of such rows; a label as half the page is one
+    # 6204 page was 7,000 px of such rows; a label as wide as half the page is one
     assert 0 < found["widest"] < 600, found["widest"]
     if name != "demo":  # the demo page holds four reports
         assert found["height"] < 6000, found["height"]

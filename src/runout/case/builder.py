@@ -71,7 +71,7 @@ class Imperfections:
     elements : int, optional
         Number of rolling elements Z. Optional: the bearing gives Z when the case is built,
         and a Z given here must equal it; element numbers and per-element arrays are checked
-        against it as it is known.
+        against it as soon as it is known.
 
     Attributes
     ----------

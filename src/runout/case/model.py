@@ -414,7 +414,7 @@ class Case:
         return "\n".join(chunk.strip("\n") + "\n" for chunk in chunks)
 
     def save(self, path: str | Path) -> Path:
-        """Write :meth:`to_toml` to ``path``, and profiles given as CSV beside it.
+        """Write :meth:`to_toml` to ``path``, and profiles given as arrays as CSV beside it.
 
         Each profile's CSV is named after the case file (``<stem>.<part>_profile_<k>.csv``), so
         that cases saved into one directory do not share a profile file.

@@ -9,7 +9,7 @@ line when the first kernel starts compiling and, when the command succeeds, one 
 was compiled and how long it took. ``runout warm`` compiles every model's kernels ahead.
 
 Numba is imported only by the commands that need it (``runout frequencies`` does not), so
-:func:`watch` does not import it: it registers the listener as Numba has been imported,
+:func:`watch` does not import it: it registers the listener as soon as Numba has been imported,
 through a finder on :data:`sys.meta_path` that removes itself after that one import.
 """
 

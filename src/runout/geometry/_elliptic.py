@@ -53,7 +53,7 @@ def complete_elliptic(p: ArrayLike, m: ArrayLike) -> tuple[FloatArray, FloatArra
     Parameters
     ----------
     p : array_like
-        Complementary parameter :math:`p = 1 - m`, in [0, 1] [-]; may be as the
+        Complementary parameter :math:`p = 1 - m`, in [0, 1] [-]; may be as small as the
         smallest positive double.
     m : array_like
         Parameter :math:`m` in [0, 1] [-], consistent with ``p``.

@@ -1420,7 +1420,7 @@ class HertzFinding:
     Attributes
     ----------
     severity : {"warning", "error"}
-        ``"error"``: the contact cannot be elastic (ellipse as the element, mean
+        ``"error"``: the contact cannot be elastic (ellipse as long as the element, mean
         pressure above the steel's hardness); ``"warning"``: beyond the ISO 76 static limit,
         permanent dents, the elastic results are optimistic.
     key : str
@@ -1453,7 +1453,7 @@ def _judge(
             HertzFinding(
                 "error",
                 key,
-                f"{stated}: the contact would be as the element itself, far outside "
+                f"{stated}: the contact would be as large as the element itself, far outside "
                 "Hertz theory (no such elastic contact exists)",
             )
         ]

@@ -283,7 +283,7 @@ def plan_integration(
         key = "dynamics.mass"
         what += f" (natural frequency {f_hi:.3g} Hz)"
     elif 2 * block_steps > window_steps and undamped:
-        # little or no damping: the transient blocks last as the free vibration does
+        # little or no damping: the transient blocks last as long as the free vibration does
         key = "dynamics.damping"
     else:
         key = "analysis.revolutions"

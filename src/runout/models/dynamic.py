@@ -367,7 +367,7 @@ def run(case: Any, progress: Callable[[float], None] | None = None) -> RunResult
         )
     if integ.min_loaded < st.n_elements:
         notes.append(
-            f"balls lost contact: as {integ.min_loaded} of {st.n_elements} loaded "
+            f"balls lost contact: as few as {integ.min_loaded} of {st.n_elements} loaded "
             "(clearance / load zone)"
         )
     bearing = case.bearing

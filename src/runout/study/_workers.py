@@ -78,7 +78,7 @@ PR_SET_PDEATHSIG = 1
 
 
 def die_with_parent(parent: int, kernel: bool = True) -> None:  # pragma: no cover - workers
-    """End this process as process ``parent`` ends, however it ends.
+    """End this process as soon as process ``parent`` ends, however it ends.
 
     A pool worker waits on its task queue, whose write end it holds itself, so it never sees
     its parent go: a SIGKILLed ``runout study --workers N`` would leave N orphans finishing

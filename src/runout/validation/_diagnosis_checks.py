@@ -196,7 +196,7 @@ Row = tuple[str, float, float, float, str]
 
 
 def seed002_rows(case_path: str | None = None) -> list[Row]:
-    """Seed 002's reading of Fig. 20 against Fig. 12, as the paper allows.
+    """Seed 002's reading of Fig. 20 against Fig. 12, as far as the paper allows.
 
     1. The diagnosis of the record Fig. 12 is computed from (eq. 43-47 through the linear
        model, a one-channel velocity record as the Anderon meter's) gives back the deviations
