@@ -207,7 +207,7 @@ def test_installed_wheel_reproduces_validation_md(installed: Path, tmp_path: Pat
         [
             str(installed),
             "-m",
-            "runout.cli.commands",
+            "runout.cli",
             "reproduce",
             "--check",
             "--out",
