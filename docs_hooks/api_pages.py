@@ -41,7 +41,9 @@ NOT_API = {"runout.case.schema_doc", "runout.validation.reproduce"}
 def summary(path: Path) -> str:
     """The first sentence line of a module's docstring."""
     doc = ast.get_docstring(ast.parse(path.read_text(encoding="utf-8"))) or ""
-    return doc.strip().splitlines()[0] if doc.strip() else ""
+    first = doc.strip().splitlines()[0] if doc.strip() else ""
+    # Sphinx roles read as plain code in a Markdown list (:class:`X` -> `X`)
+    return re.sub(r":\w+:`~?([^`]+)`", r"`\1`", first).replace("``", "`")
 
 
 def public_modules(package: str) -> list[tuple[str, Path]]:

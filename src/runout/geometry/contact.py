@@ -961,7 +961,7 @@ def stiffness_from_delta_star_table(
     curvature_sum : array_like
         Σρ [1/m].
     curvature_difference : array_like
-        F(ρ) within the table's range [0, 0.9998527] [-].
+        F(ρ) [-], within the table's range (0 to 0.9998527).
     effective_modulus : array_like
         Harris's E' [Pa].
 

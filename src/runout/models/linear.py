@@ -860,9 +860,9 @@ def solve(r: NDArray[np.complex128], p: NDArray[np.complex128], z: int) -> NDArr
     Parameters
     ----------
     r : ndarray of complex
-        R = Σ_z w_z e^{iθ_z}, the elements' deviations summed as phasors [m].
+        ``R = Σ_z w_z exp(iθ_z)``, the elements' deviations summed as phasors [m].
     p : ndarray of complex
-        P = Σ_z e^{2iθ_z} [-] (0 for equally spaced elements).
+        ``P = Σ_z exp(2iθ_z)`` [-] (0 for equally spaced elements).
     z : int
         Number of elements Z.
 

@@ -139,7 +139,7 @@ def hertz_potential(
     Returns
     -------
     float
-        Σ_k K_n (2δ_k)^{5/2} / 2.5 over the loaded balls minus F · q [J].
+        ``Σ_k K_n (2δ_k)^(5/2) / 2.5`` over the loaded balls minus ``F · q`` [J].
 
     Notes
     -----

@@ -152,7 +152,7 @@ def preload_approach(
     -----
     The balance of Tada, "Three-dimensional analysis of non-repeatable runout (NRRO) in ball
     bearings", Koyo Engineering Journal (2002) (seed 000), eq. 5, without deviations and
-    radial load, with Q = K_n δ^{3/2} (eq. 3).
+    radial load, with ``Q = K_n δ^(3/2)`` (eq. 3).
     """
     return float((axial / (stiffness * n_elements * math.sin(contact_angle))) ** (2.0 / 3.0))
 

@@ -656,7 +656,7 @@ def ball_loads(st: Setup, q: NDArray[np.float64]) -> NDArray[np.float64]:
     Returns
     -------
     ndarray, shape (N,)
-        Q_j = K_n [δ_j]_+^{3/2} of every ball, bearing after bearing [N].
+        ``Q_j = K_n max(δ_j, 0)^(3/2)`` of every ball, bearing after bearing [N].
     """
     cth, sth = _nominal_angles(st)
     d = np.maximum(_nominal_c(st) + normals(st, cth, sth) @ q, 0.0)
