@@ -1,11 +1,11 @@
 """Benchmark of runout.analysis.spectrum: least-squares extraction of many known lines.
 
-Ours: :func:`runout.analysis.spectrum.extract_lines` (closed-form Gram matrix, compiled
-rotating-phasor projections, Cholesky with one refinement step, BLAS on one thread). Reference:
-the straightforward approach, building the dense 65,536 x 401 design matrix and calling
-:func:`numpy.linalg.lstsq`, also with its BLAS on one thread: on a shared 2-core machine a
-threaded BLAS made it ten times slower when the other core was busy (2.5 s vs 26 s), which
-measures the machine, not the method.
+Ours: :func:`runout.analysis.spectrum.extract_lines` (closed-form Gram matrix, projections as BLAS
+products of 256-sample blocks, Cholesky with one refinement step, BLAS on one thread).
+Reference: the straightforward approach, building the dense 65,536 x 401 design matrix and
+calling :func:`numpy.linalg.lstsq`, also with its BLAS on one thread: on a shared 2-core
+machine a threaded BLAS made it ten times slower when the other core was busy (2.5 s vs
+26 s), which measures the machine, not the method.
 """
 
 from __future__ import annotations

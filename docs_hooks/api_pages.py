@@ -91,9 +91,7 @@ def write_pages() -> list[tuple[str, list[tuple[str, str]]]]:
             is_package = path.name == "__init__.py"
             options = "\n    options:\n      members: false\n" if is_package and i == 0 else "\n"
             if is_package and len(modules) > 1:
-                listed = "\n".join(
-                    f"- [`{n}`]({n}.md): {summary(p)}" for n, p in modules[1:]
-                )
+                listed = "\n".join(f"- [`{n}`]({n}.md): {summary(p)}" for n, p in modules[1:])
                 text = f"# `{name}`\n\n::: {name}{options}\n## Modules\n\n{listed}\n"
             else:
                 text = f"# `{name}`\n\n::: {name}{options}"

@@ -619,7 +619,7 @@ def _uniform_steps(time: FloatArray) -> bool:
 
 
 def _synthesize(fit: Any, time: FloatArray, uniform: bool | None = None) -> FloatArray:
-    """The fitted lines and offset at uniform ``time`` (the compiled rotating-phasor kernel).
+    """The fitted lines and offset at uniform ``time`` (blocks of phasors, BLAS products).
 
     ``uniform``: whether ``time`` is uniform (:func:`_uniform_steps`), when the caller knows.
     """

@@ -32,12 +32,9 @@ Contents
 
 from __future__ import annotations
 
-import contextlib
-import functools
 import math
 import warnings
 from dataclasses import dataclass
-from typing import Any
 
 import numpy as np
 import numpy.typing as npt
@@ -79,6 +76,7 @@ from runout.analysis._signal import (
     to_zero_to_peak,
 )
 from runout.analysis._signal import _window as _window
+from runout.base._threads import one_blas_thread as _one_blas_thread
 
 __all__ = [
     "ANDERON_BANDS",
@@ -507,32 +505,6 @@ class Lines:
         return np.asarray(terms.sum(axis=-1) + self.constant[..., None])
 
 
-@functools.lru_cache(maxsize=1)
-def _blas_controller() -> Any:
-    """threadpoolctl's controller of the BLAS libraries loaded (NumPy's and SciPy's)."""
-    import scipy.linalg  # noqa: F401  (loads SciPy's BLAS, so that the controller sees it)
-
-    try:
-        from threadpoolctl import ThreadpoolController
-    except ImportError:  # a dependency; without it the BLAS keeps its default threads
-        return None
-    return ThreadpoolController()
-
-
-def _one_blas_thread() -> contextlib.AbstractContextManager[Any]:
-    """Run the enclosed BLAS/LAPACK calls on one thread.
-
-    The fit's dense algebra is small (a symmetric eigenvalue problem and a Cholesky of
-    ``2 m + 1`` unknowns, ~5 ms on one core for 200 lines): a threaded BLAS gains nothing on
-    it, and when the cores are busy with other work its threads wait for each other, which
-    measured 0.36-2.3 s instead of 65 ms for a 200-line fit on a shared 2-core machine.
-    """
-    controller = _blas_controller()
-    if controller is None:
-        return contextlib.nullcontext()
-    return controller.limit(limits=1, user_api="blas")
-
-
 def _fmt_pair(a: float, b: float) -> str:
     """'a Hz and b Hz' with just enough digits to tell them apart."""
     for digits in range(6, 18):
@@ -568,9 +540,9 @@ def extract_lines(
     Implementation: normal equations :math:`M^T M\,c = M^T x` scaled to unit diagonal, solved
     by Cholesky with one step of iterative refinement on the true residual (which recovers
     the accuracy of a QR solve for the condition numbers accepted here). For uniform samples
-    :math:`M^T M` is computed in closed form from Dirichlet sums and :math:`M^T x` by a
-    compiled rotating-phasor (Goertzel-like) loop, so the cost is O(n m + m^3) and memory
-    O(n + m^2); non-uniform samples use a chunked O(n m^2) NumPy path.
+    :math:`M^T M` is computed in closed form from Dirichlet sums and :math:`M^T x` by matrix
+    products of blocks of 256 samples with one table of phasors (BLAS), so the cost is
+    O(n m + m^3) and memory O(n + m^2); non-uniform samples use a chunked O(n m^2) NumPy path.
 
     Parameters
     ----------

@@ -7,7 +7,6 @@ import costs about 0.1 s of the start-up of the light commands (``runout frequen
 from __future__ import annotations
 
 import math
-import sys
 from collections.abc import Callable
 from typing import Any, TypeVar
 
@@ -25,11 +24,15 @@ _MAX_STEPS = 16
 #: (an eighth of an ulp), and the terms of the sum still to come are below 2⁻¹⁰⁰ relative.
 _TOLERANCE = 2.0**-27
 
-#: Arrays from this size on use the compiled loop (:mod:`runout.geometry._elliptic_kernel`), and so do
-#: smaller ones once numba is loaded anyway (a model is running); the light commands
-#: (``frequencies``, ``check``: the ellipticity's starting table has 406 entries) stay in NumPy
-#: and never import numba. Every path gives the same bits.
+#: Arrays from this size on use the compiled loop (:mod:`runout.geometry._elliptic_kernel`); smaller
+#: ones (the ellipticity's starting table has 406 entries, a model's contacts a few dozen) stay
+#: in NumPy or Python floats (:data:`_LOOP_SIZE`), a fraction of a millisecond, so that neither
+#: the light commands (``frequencies``, ``check``) nor the first run of a model wait for the
+#: loop to compile. Every path gives the same bits.
 _COMPILED_SIZE = 4096
+
+#: Arrays below this size (and in [0, 1]) go entry by entry in Python floats (:func:`_scalar`).
+_LOOP_SIZE = 64
 
 _TINY = 5e-324
 _HALF_PI = 0.5 * math.pi
@@ -110,8 +113,17 @@ def complete_elliptic(p: ArrayLike, m: ArrayLike) -> tuple[FloatArray, FloatArra
         # some ten times faster than NumPy's per-call overhead on one-element arrays
         k1, e1 = _scalar(float(p_arr.flat[0]), float(m_arr.flat[0]))
         return np.full(p_arr.shape, k1), np.full(p_arr.shape, e1)
-    compiled = p_arr.size >= _COMPILED_SIZE or "numba" in sys.modules
-    if compiled and np.all((p_arr >= 0.0) & (p_arr <= 1.0)):
+    p_few = p_arr.ravel().tolist() if p_arr.size < _LOOP_SIZE else []
+    m_few = m_arr.ravel().tolist() if p_few else []
+    if p_few and all(
+        0.0 <= p_i <= 1.0 and 0.0 <= m_i <= 1.0 for p_i, m_i in zip(p_few, m_few, strict=True)
+    ):
+        # a few contacts (a model's Hertz constants, angle by angle): Python floats entry by
+        # entry, several times faster than NumPy's per-call overhead (bit for bit the same)
+        pairs = [_scalar(p_i, m_i) for p_i, m_i in zip(p_few, m_few, strict=True)]
+        k_few = np.array([k_i for k_i, _ in pairs]).reshape(p_arr.shape)
+        return k_few, np.array([e_i for _, e_i in pairs]).reshape(p_arr.shape)
+    if p_arr.size >= _COMPILED_SIZE and np.all((p_arr >= 0.0) & (p_arr <= 1.0)):
         # many contacts at once: the float loop compiled, entry by entry (bit for bit)
         from runout.geometry._elliptic_kernel import complete_elliptic_all
 
@@ -149,12 +161,30 @@ def _scalar(p: float, m: float) -> tuple[float, float]:
         return float(k_arr[0]), float(e_arr[0])
     if p == 0.0:
         return math.inf, 1.0
-    mean, total = _agm(math.sqrt(p), m, math.sqrt, bool)
+    mean, total = _agm_float(math.sqrt(p), m)
     k = _HALF_PI / mean
     if m <= 0.5:
         return k, k * (1.0 - total)
-    mean_c, total_c = _agm(math.sqrt(m), p, math.sqrt, bool)
+    mean_c, total_c = _agm_float(math.sqrt(m), p)
     return k, mean_c + k * total_c
+
+
+def _agm_float(b: float, c_sq: float) -> tuple[float, float]:
+    """:func:`_agm` of Python floats: the same operations, without NumPy's per-call cost
+    (locals only: the models' Hertz constants call it a few hundred times per solve)."""
+    a, total, weight = 1.0, 0.5 * c_sq, 1.0
+    tolerance = _TOLERANCE
+    for _ in range(_MAX_STEPS):
+        a_next = 0.5 * (a + b)
+        b = math.sqrt(a * b)
+        a = a_next
+        c = c_sq / (4.0 * a)
+        c_sq = c * c
+        total = total + weight * c_sq
+        weight *= 2.0
+        if not c > tolerance * a:  # NaN counts as converged
+            return a, total
+    raise ArithmeticError("the arithmetic-geometric mean did not converge")  # pragma: no cover
 
 
 def _any(x: NDArray[np.bool_]) -> bool:
@@ -166,20 +196,11 @@ def _agm(b: _T, c_sq: _T, sqrt: Callable[[_T], _T], any_: Callable[[Any], bool])
 
     Every entry stops at its own convergence (arrays keep a converged entry as it is), so an
     entry's value never depends on the other entries of the array: floats, arrays and the
-    compiled loop (:func:`runout.geometry._elliptic_kernel.complete_elliptic_all`) agree bit for bit.
+    compiled loop (:func:`runout.geometry._elliptic_kernel.complete_elliptic_all`) agree bit for
+    bit.
     """
     if isinstance(b, float):
-        a, total, weight = 1.0, 0.5 * c_sq, 1.0
-        for _ in range(_MAX_STEPS):
-            a_next = 0.5 * (a + b)
-            b = sqrt(a * b)
-            a = a_next
-            c = c_sq / (4.0 * a)
-            c_sq = c * c
-            total = total + weight * c_sq
-            weight *= 2.0
-            if not c > _TOLERANCE * a:  # NaN counts as converged
-                return a, total
+        return _agm_float(b, c_sq)
     else:
         a_arr = np.ones_like(b)
         total_arr = 0.5 * c_sq

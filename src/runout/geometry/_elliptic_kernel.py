@@ -1,8 +1,8 @@
 """Compiled arithmetic-geometric mean for large arrays (see :mod:`runout.geometry._elliptic`).
 
-Kept apart so that importing :mod:`runout.geometry._elliptic` (and so :mod:`runout.geometry.contact`) does not
-import numba: the light commands (``runout frequencies``, ``check``) evaluate one contact at a
-time and never come here.
+Kept apart so that importing :mod:`runout.geometry._elliptic` (and so
+:mod:`runout.geometry.contact`) does not import numba: the light commands (``runout
+frequencies``, ``check``) evaluate one contact at a time and never come here.
 """
 
 from __future__ import annotations
@@ -16,7 +16,8 @@ from numpy.typing import NDArray
 
 @numba.njit(cache=True)
 def _agm_one(b: float, c_sq: float, max_steps: int, tolerance: float) -> tuple[float, float, bool]:
-    """M(1, b) and Σ 2^(n-1) c_n² of one entry: the float loop of :func:`runout.geometry._elliptic._agm`."""
+    """M(1, b) and Σ 2^(n-1) c_n² of one entry: the float loop of
+    :func:`runout.geometry._elliptic._agm`."""
     a = 1.0
     total = 0.5 * c_sq
     weight = 1.0
@@ -37,7 +38,8 @@ def _agm_one(b: float, c_sq: float, max_steps: int, tolerance: float) -> tuple[f
 def complete_elliptic_all(
     p: NDArray[np.float64], m: NDArray[np.float64], max_steps: int, tolerance: float, tiny: float
 ) -> tuple[NDArray[np.float64], NDArray[np.float64], bool]:
-    """K(m) and E(m) of every entry, as :func:`runout.geometry._elliptic.complete_elliptic` does them.
+    """K(m) and E(m) of every entry, as :func:`runout.geometry._elliptic.complete_elliptic` does
+    them.
 
     Entry by entry the operations of its float path (``_scalar``): M(1, √p) for K and, above
     m = 1/2, M(1, √m) for E by Legendre's relation; p = 0 gives (∞, 1).

@@ -24,6 +24,7 @@ import math
 
 import numba
 import numpy as np
+from numba.extending import register_jitable
 from numpy.typing import NDArray
 
 from runout.analysis.results import SOLVER_RTOL
@@ -37,6 +38,10 @@ Harmonics = tuple[
     FloatArray, FloatArray, FloatArray, FloatArray, FloatArray, FloatArray,
     FloatArray, FloatArray, FloatArray, IntArray,
 ]  # fmt: skip
+
+#: The rotating phasors of the Newmark kernels (:func:`newmark_kernel`): rates [rad/s],
+#: rotations per step (cos, sin), ball, ring and ball-harmonic coefficients, ball offsets.
+Phasors = tuple[FloatArray, FloatArray, FloatArray, FloatArray, FloatArray, IntArray]
 
 #: Newton step tolerance relative to the reference approach.
 NEWTON_RTOL = SOLVER_RTOL["dynamic"]
@@ -96,11 +101,13 @@ def _deviations(
         wb[j] = _hsum(bk, ba, bp, boff[j], boff[j + 1], spin) if bk.size else 0.0
 
 
-@numba.njit(cache=True)
 def _phasor_tables(
     par: FloatArray, theta0: FloatArray, hk: Harmonics
 ) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
     """Rates and coefficients of the rotating phasors of :func:`_phasor_deviations`.
+
+    Set-up of the Newmark kernels, in Python (``math``, the same bits as compiled): compiled,
+    it would only make the first run of the model wait for its compilation.
 
     Phasor 0 is the cage :math:`e^{i\\omega_c t}`, 1 the unbalance :math:`e^{i\\Omega t}`,
     then one per raceway harmonic (inner, then outer; rate :math:`k(\\omega_c - \\omega)`)
@@ -168,7 +175,10 @@ def _phasor_rotate(ph: FloatArray, rot: FloatArray) -> None:
         ph[m, 1] = pr * rot[m, 1] + pi * rot[m, 0]
 
 
-@numba.njit(cache=True)
+# register_jitable: compiled into its caller, without Python and C entry points of its own
+# (first-run compilation time); a helper that several compiled functions of one run call
+# stays njit (compiled once, not once per caller).
+@register_jitable(no_cfunc_wrapper=True)
 def _phasor_balls(ph: FloatArray, ball: FloatArray, cth: FloatArray, sth: FloatArray) -> None:
     """cos and sin of the ball angles θ_j from the cage phasor (perfect parts: nothing else)."""
     er = ph[0, 0]
@@ -255,7 +265,7 @@ def _contact(
     return f0, f1, f2, k00, k01, k02, k11, k12, k22, loaded
 
 
-@numba.njit(cache=True)
+@register_jitable(no_cfunc_wrapper=True)
 def _solve3(
     j00: float,
     j01: float,
@@ -283,8 +293,7 @@ def _newmark_radial(
     t_start: float,
     state: FloatArray,
     par: FloatArray,
-    theta0: FloatArray,
-    hk: Harmonics,
+    phasors: Phasors,
     max_iter: int,
     out: FloatArray,
 ) -> tuple[int, int, int, int]:
@@ -295,7 +304,6 @@ def _newmark_radial(
     The same scheme and tests, with that contact written into the loop (no z row, no 3x3
     solve) and, for perfect parts, without re-evaluating the constant gap.
     """
-    z = theta0.size
     h = par[P_H]
     m = par[P_M]
     c = par[P_C]
@@ -305,21 +313,22 @@ def _newmark_radial(
     c1 = 4.0 / h
     hh = 0.5 * h
     jd = m * c0 + 2.0 * c / h
+    rate, rot, ball, ring, bcoef, boff = phasors
+    z = ball.shape[0]
+    # allocated here (fresh arrays: the compiler knows they alias nothing, the loop below
+    # runs a third faster than on arrays passed in) and filled by loops: np.full and np.zeros
+    # would each compile an implementation of their own
     cth = np.empty(z)
     sth = np.empty(z)
-    gap = np.full(z, par[P_G0])
-    wb = np.zeros(z)
-    # radial gap + ball deviation at q = 0: constant for perfect parts
-    gw = np.full(z, par[P_G0])
-    rate, ball, ring, bcoef = _phasor_tables(par, theta0, hk)
-    boff = hk[9]
+    gap = np.empty(z)
+    wb = np.empty(z)
+    gw = np.empty(z)  # radial gap + ball deviation at q = 0: constant for perfect parts
+    for j in range(z):
+        gap[j] = gw[j] = par[P_G0]
+        wb[j] = 0.0
+    ph = np.empty((rate.size, 2))
     g0 = par[P_G0]
     wavy = rate.size > 2
-    ph = np.empty((rate.size, 2))
-    rot = np.empty((rate.size, 2))
-    for i in range(rate.size):
-        rot[i, 0] = math.cos(rate[i] * h)
-        rot[i, 1] = math.sin(rate[i] * h)
     q0, q1 = state[0], state[1]
     v0, v1 = state[3], state[4]
     a0, a1 = state[6], state[7]
@@ -468,10 +477,15 @@ def newmark_kernel(
     min_loaded : int
         Fewest loaded balls at any step.
     """
+    # the phasors' tables and rotations per step, set up here (not compiled: see _phasor_tables)
+    rate, ball, ring, bcoef = _phasor_tables(par, theta0, hk)
+    h = float(par[P_H])
+    rot = np.array([[math.cos(r * h), math.sin(r * h)] for r in rate.tolist()]).reshape(-1, 2)
+    phasors = (rate, rot, ball, ring, bcoef, hk[9])
     if ndof == 2 and par[P_ZP] == 0.0:
         # in the plane without axial offset the exact geometry is seed 003 eq. 2.3-2.5
-        return _newmark_radial(n_steps, stride, t_start, state, par, theta0, hk, max_iter, out)
-    return _newmark_general(n_steps, stride, t_start, state, par, theta0, hk, ndof, max_iter, out)
+        return _newmark_radial(n_steps, stride, t_start, state, par, phasors, max_iter, out)
+    return _newmark_general(n_steps, stride, t_start, state, par, phasors, ndof, max_iter, out)
 
 
 @numba.njit(cache=True)
@@ -481,14 +495,12 @@ def _newmark_general(
     t_start: float,
     state: FloatArray,
     par: FloatArray,
-    theta0: FloatArray,
-    hk: Harmonics,
+    phasors: Phasors,
     ndof: int,
     max_iter: int,
     out: FloatArray,
 ) -> tuple[int, int, int, int]:
     """:func:`newmark_kernel` with the exact contact geometry (:func:`_contact`), any z_p."""
-    z = theta0.size
     h = par[P_H]
     m = par[P_M]
     c = par[P_C]
@@ -499,19 +511,18 @@ def _newmark_general(
     c0 = 4.0 / (h * h)
     c1 = 4.0 / h
     jd = m * c0 + 2.0 * c / h
-    cth = np.empty(z)
+    rate, rot, ball, ring, bcoef, boff = phasors
+    z = ball.shape[0]
+    cth = np.empty(z)  # allocated here, filled by loops: see _newmark_radial
     sth = np.empty(z)
-    gap = np.full(z, par[P_G0])  # constant for perfect parts
-    wb = np.zeros(z)
-    rate, ball, ring, bcoef = _phasor_tables(par, theta0, hk)
-    boff = hk[9]
+    gap = np.empty(z)  # constant for perfect parts
+    wb = np.empty(z)
+    for j in range(z):
+        gap[j] = par[P_G0]
+        wb[j] = 0.0
+    ph = np.empty((rate.size, 2))
     g0 = par[P_G0]
     wavy = rate.size > 2
-    ph = np.empty((rate.size, 2))
-    rot = np.empty((rate.size, 2))
-    for i in range(rate.size):
-        rot[i, 0] = math.cos(rate[i] * h)
-        rot[i, 1] = math.sin(rate[i] * h)
     q0, q1, q2 = state[0], state[1], state[2]
     v0, v1, v2 = state[3], state[4], state[5]
     a0, a1, a2 = state[6], state[7], state[8]
@@ -591,63 +602,54 @@ def _newmark_general(
     return OK, -1, iters, min_loaded
 
 
-@numba.njit(cache=True)
-def _potential(
+def _in_order(terms: FloatArray, start: float = 0.0) -> FloatArray:
+    """``start`` plus the terms along the first axis, added one by one in order as the
+    compiled loops add them (NumPy's ``sum`` adds pairwise: other round-off)."""
+    if terms.shape[0] == 0:
+        return np.full(terms.shape[1:], start)
+    steps = terms.copy()
+    steps[0] += start
+    return np.asarray(np.cumsum(steps, axis=0)[-1])
+
+
+def _contact_terms(
     q0: float,
     q1: float,
     q2: float,
-    cth: FloatArray,
-    sth: FloatArray,
-    gap: FloatArray,
-    wb: FloatArray,
+    dev: tuple[FloatArray, FloatArray, FloatArray, FloatArray],
     a: float,
     zp: float,
-    k: float,
     ndof: int,
-    e0: float,
-    e1: float,
-    e2: float,
-) -> float:
+) -> tuple[FloatArray, FloatArray, FloatArray, float]:
+    """Approaches δ_j [m], radial and total distances sr_j, s_j [m] of every ball's groove
+    centres, and the axial one s_a [m] (the geometry of :func:`_contact`, over all balls)."""
+    cth, sth, gap, wb = dev
     sa = zp + (q2 if ndof == 3 else 0.0)
-    en = -(e0 * q0 + e1 * q1 + (e2 * q2 if ndof == 3 else 0.0))
-    for j in range(cth.size):
-        g = gap[j] + q0 * cth[j] + q1 * sth[j]
-        sr = a + g
-        s = math.sqrt(sr * sr + sa * sa)
-        d = (g * (a + sr) + sa * sa) / (s + a) + wb[j]
-        if d > 0.0:
-            en += k / 2.5 * d * d * math.sqrt(d)
-    return en
+    g = gap + q0 * cth + q1 * sth
+    sr = a + g
+    s = np.sqrt(sr * sr + sa * sa)
+    d = (g * (a + sr) + sa * sa) / (s + a) + wb
+    return d, sr, s, sa
 
 
-@numba.njit(cache=True)
-def _load_sum(
-    q0: float,
-    q1: float,
-    q2: float,
-    cth: FloatArray,
-    sth: FloatArray,
-    gap: FloatArray,
-    wb: FloatArray,
-    a: float,
-    zp: float,
-    k: float,
-    ndof: int,
-) -> float:
-    """Sum of the ball loads Σ_j Q_j [N] (scale of the round-off in the force balance)."""
-    sa = zp + (q2 if ndof == 3 else 0.0)
-    total = 0.0
-    for j in range(cth.size):
-        g = gap[j] + q0 * cth[j] + q1 * sth[j]
-        sr = a + g
-        s = math.sqrt(sr * sr + sa * sa)
-        d = (g * (a + sr) + sa * sa) / (s + a) + wb[j]
-        if d > 0.0:
-            total += k * d * math.sqrt(d)
-    return total
+def _static_deviations(
+    t: float, par: FloatArray, theta0: FloatArray, hk: Harmonics
+) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
+    """:func:`_deviations` in NumPy: cos θ_j, sin θ_j, gap and ball deviation at time t."""
+    ik, ia, ip, ok, oa, op, bk, ba, bp, boff = hk
+    th = theta0 + par[P_WC] * t
+    gap = np.full(theta0.size, par[P_G0])
+    if ik.size:
+        angle = th - par[P_WI] * t
+        gap = gap + _in_order(ia[:, None] * np.cos(ik[:, None] * angle + ip[:, None]))
+    if ok.size:
+        angle = th - par[P_WO] * t
+        gap = gap - _in_order(oa[:, None] * np.cos(ok[:, None] * angle + op[:, None]))
+    terms = ba * np.cos(bk * (par[P_WB] * t) + bp)
+    wb = np.array([_in_order(terms[boff[j] : boff[j + 1]]) for j in range(theta0.size)])
+    return np.cos(th), np.sin(th), gap, wb
 
 
-@numba.njit(cache=True)
 def static_kernel(
     times: FloatArray,
     q_start: FloatArray,
@@ -657,8 +659,11 @@ def static_kernel(
     ndof: int,
     max_iter: int,
 ) -> tuple[FloatArray, int, int]:
-    """Quasi-static solution of the same contact model at each instant (compiled).
+    """Quasi-static solution of the same contact model at each instant.
 
+    NumPy over the balls, not compiled: a run solves an instant or two (the start of the
+    integration), where compiling the solve would make the first run of the model wait some
+    2 s. The steps and tests of the compiled Newmark kernel's contact (:func:`_contact`).
     Newton's method on the convex potential :math:`\\Pi(q) = \\sum_j \\tfrac{K_n}{2.5}
     [\\delta_j]_+^{5/2} - F(t)\\cdot q` (inertia and damping dropped), Armijo backtracking and
     a warm start from the previous instant.
@@ -683,66 +688,70 @@ def static_kernel(
     instant : int
         Failing instant (-1 if ok).
     """
-    z = theta0.size
-    a = par[P_A]
-    zp = par[P_ZP]
-    k = par[P_K]
-    tol = par[P_TOL]
-    fx, fy, fz = par[P_FX], par[P_FY], par[P_FZ]
-    fu, wu = par[P_FU], par[P_WU]
-    cth = np.empty(z)
-    sth = np.empty(z)
-    gap = np.empty(z)
-    wb = np.empty(z)
+    a, zp, k, tol = float(par[P_A]), float(par[P_ZP]), float(par[P_K]), float(par[P_TOL])
+    fx, fy, fz = float(par[P_FX]), float(par[P_FY]), float(par[P_FZ])
+    fu, wu = float(par[P_FU]), float(par[P_WU])
     n = times.size
     q = np.zeros((n, 3))
-    p0, p1, p2 = q_start[0], q_start[1], q_start[2]
+    p0, p1, p2 = float(q_start[0]), float(q_start[1]), float(q_start[2])
     if ndof == 2:
         p2 = 0.0
     # tiny regularisation: keeps Newton moving while few balls are loaded
-    reg = 1e-9 * k * math.sqrt(par[P_TOL] / NEWTON_RTOL)
-    for i in range(n):
-        t = times[i]
-        _deviations(t, par, theta0, hk, cth, sth, gap, wb)
-        e0 = fx + fu * math.cos(wu * t)
-        e1 = fy + fu * math.sin(wu * t)
-        e2 = fz
+    reg = 1e-9 * k * math.sqrt(tol / NEWTON_RTOL)
+
+    def potential(
+        q0: float, q1: float, q2: float, dev: tuple[FloatArray, ...], e: tuple[float, ...]
+    ) -> float:
+        d = _contact_terms(q0, q1, q2, dev, a, zp, ndof)[0]  # type: ignore[arg-type]
+        d = d[d > 0.0]
+        en = -(e[0] * q0 + e[1] * q1 + (e[2] * q2 if ndof == 3 else 0.0))
+        return float(_in_order(k / 2.5 * d * d * np.sqrt(d), en))
+
+    for i, t in enumerate(times.tolist()):
+        dev = _static_deviations(t, par, theta0, hk)
+        cth, sth = dev[0], dev[1]
+        e = (fx + fu * math.cos(wu * t), fy + fu * math.sin(wu * t), fz)
         converged = False
-        scale = math.sqrt(e0 * e0 + e1 * e1 + (e2 * e2 if ndof == 3 else 0.0))
+        scale = math.sqrt(e[0] * e[0] + e[1] * e[1] + (e[2] * e[2] if ndof == 3 else 0.0))
         for _ in range(max_iter):
-            f0, f1, f2, k00, k01, k02, k11, k12, k22, _l = _contact(
-                p0, p1, p2, cth, sth, gap, wb, a, zp, k, ndof
-            )
-            r0, r1, r2 = f0 - e0, f1 - e1, f2 - e2
+            # the sums of _contact over the loaded balls
+            d, sr, s, sa = _contact_terms(p0, p1, p2, dev, a, zp, ndof)
+            on = d > 0.0
+            d, sr, s, c_on, s_on = d[on], sr[on], s[on], cth[on], sth[on]
+            sd = np.sqrt(d)
+            load = k * d * sd
+            nx, ny, nz = sr * c_on / s, sr * s_on / s, sa / s
+            geo = load / s
+            kk = 1.5 * k * sd - geo
+            r0 = float(_in_order(load * nx)) - e[0]
+            r1 = float(_in_order(load * ny)) - e[1]
+            r2 = float(_in_order(load * nz)) - e[2]
+            k00 = float(_in_order(kk * nx * nx + geo * c_on * c_on))
+            k01 = float(_in_order(kk * nx * ny + geo * c_on * s_on))
+            k11 = float(_in_order(kk * ny * ny + geo * s_on * s_on))
+            k02 = float(_in_order(kk * nx * nz))
+            k12 = float(_in_order(kk * ny * nz))
+            k22 = float(_in_order(kk * nz * nz + geo))
             worst = max(abs(r0), abs(r1), abs(r2) if ndof == 3 else 0.0)
-            if worst <= FORCE_RTOL * (
-                _load_sum(p0, p1, p2, cth, sth, gap, wb, a, zp, k, ndof) + scale
-            ):
+            if worst <= FORCE_RTOL * (float(_in_order(load)) + scale):
                 converged = True  # forces balance to round-off (see the docstring)
                 break
-            s0, s1, s2 = _solve3(k00 + reg, k01, k02, k11 + reg, k12, k22 + reg, r0, r1, r2, ndof)
+            if ndof == 2:  # _solve3's operations, in Python (nothing to compile)
+                det = (k00 + reg) * (k11 + reg) - k01 * k01
+                s0 = ((k11 + reg) * r0 - k01 * r1) / det
+                s1 = ((k00 + reg) * r1 - k01 * r0) / det
+                s2 = 0.0
+            else:  # the compiled solve's Python source
+                s0, s1, s2, _ok = solve_spd3.py_func(  # type: ignore[no-untyped-call]
+                    k00 + reg, k01, k02, k11 + reg, k12, k22 + reg, r0, r1, r2
+                )
             big = max(abs(s0), abs(s1), abs(s2))
             step = 1.0
             if big > 1e-3 * tol / NEWTON_RTOL:
-                en0 = _potential(p0, p1, p2, cth, sth, gap, wb, a, zp, k, ndof, e0, e1, e2)
+                en0 = potential(p0, p1, p2, dev, e)
                 slope = -(r0 * s0 + r1 * s1 + r2 * s2)
                 for _ls in range(60):
-                    en1 = _potential(
-                        p0 - step * s0,
-                        p1 - step * s1,
-                        p2 - step * s2,
-                        cth,
-                        sth,
-                        gap,
-                        wb,
-                        a,
-                        zp,
-                        k,
-                        ndof,
-                        e0,
-                        e1,
-                        e2,
-                    )
+                    en1 = potential(p0 - step * s0, p1 - step * s1, p2 - step * s2, dev, e)
                     if en1 <= en0 + 1e-4 * step * slope:
                         break
                     step *= 0.5

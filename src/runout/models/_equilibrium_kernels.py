@@ -13,7 +13,13 @@ Derivatives are complex-step derivatives (exact to round-off), as in the NumPy c
 scalar ball function is evaluated in complex arithmetic with a step of ``1e-30 i``. Square root
 and arctangent take their first-order complex-step forms (:func:`_sqrt_cs`, :func:`_atan_cs`),
 exact to round-off for such steps and far less code to compile than the general complex
-functions. First compilation (empty cache) takes some 8 s on the 2-core machine.
+functions.
+
+Compilation time (a model's first run on an empty cache, some 3.5 s on the 2-core machine):
+one entry point per run (:func:`_balls`, which ends with :func:`_ring_jacobian`); the
+restarts (:func:`_restart_balls`) compile only in a run that needs them; helpers with one
+calling kernel are ``register_jitable`` (compiled into it, no Python or C entry points of
+their own), helpers shared by two stay ``njit`` (compiled once).
 
 The kernels take C-contiguous float64 arrays and plain scalars, are compiled with
 ``cache=True`` and without ``fastmath``. The constants of the bearing travel in one float64
@@ -27,6 +33,7 @@ import math
 
 import numba
 import numpy as np
+from numba.extending import register_jitable
 from numpy.typing import NDArray
 
 FloatArray = NDArray[np.float64]
@@ -145,25 +152,11 @@ def constants(
 # --------------------------------------------------------------------------------------------
 # scalar ball functions (real or complex arguments)
 # --------------------------------------------------------------------------------------------
-@numba.njit(cache=True)
-def _tan_beta(
-    cos_i: complex,
-    sin_i: complex,
-    cos_o: complex,
-    sin_o: complex,
-    gamma: float,
-    inner_control: bool,
-) -> complex:
-    """tan β of the spin axis: outer-raceway control, or inner (Harris)."""
-    if inner_control:
-        return sin_i / (cos_i - gamma)
-    return sin_o / (cos_o + gamma)
-
-
-@numba.njit(cache=True)
-def _speeds_at(
-    tb: complex,
-    cb: complex,
+# register_jitable: compiled into its caller, without Python and C entry points of its own
+# (first-run compilation time); a helper that several compiled functions of one run call
+# stays njit (compiled once, not once per caller).
+@register_jitable(no_cfunc_wrapper=True)
+def _speeds_cs(
     cos_i: complex,
     sin_i: complex,
     cos_o: complex,
@@ -171,8 +164,18 @@ def _speeds_at(
     gamma: float,
     inner: float,
     outer: float,
+    inner_control: bool,
 ) -> tuple[complex, complex, complex]:
-    """Orbit and spin speed and sin β for the attitude (tan β, cos β), as ``ball_speeds``."""
+    """Orbit and spin speed and sin β (Harris, ``equilibrium.ball_speeds``), complex-step
+    arguments; the spin-axis attitude tan β of inner- or outer-raceway control.
+
+    :func:`_speeds` is the same in real arithmetic.
+    """
+    if inner_control:
+        tb = sin_i / (cos_i - gamma)
+    else:
+        tb = sin_o / (cos_o + gamma)
+    cb = 1.0 / _sqrt_cs(1.0 + tb * tb)
     sb = tb * cb
     ci = cos_i + tb * sin_i
     co = cos_o + tb * sin_o
@@ -184,7 +187,7 @@ def _speeds_at(
     return omega_m, omega_r, sb
 
 
-@numba.njit(cache=True)
+@register_jitable(no_cfunc_wrapper=True)
 def _speeds(
     cos_i: float,
     sin_i: float,
@@ -195,32 +198,25 @@ def _speeds(
     outer: float,
     inner_control: bool,
 ) -> tuple[float, float, float]:
-    """Orbit speed, spin speed and sin β (Harris), real arguments (``equilibrium.ball_speeds``)."""
-    # real in, real out: ``.real`` only names the type (the value is unchanged)
-    tb = _tan_beta(cos_i, sin_i, cos_o, sin_o, gamma, inner_control).real
+    """:func:`_speeds_cs` in real arithmetic, the same operations (lift-off fixed point: the
+    complex version would cost it its complex divisions at every pass)."""
+    if inner_control:
+        tb = sin_i / (cos_i - gamma)
+    else:
+        tb = sin_o / (cos_o + gamma)
     cb = 1.0 / math.sqrt(1.0 + tb * tb)
-    omega_m, omega_r, sb = _speeds_at(tb, cb, cos_i, sin_i, cos_o, sin_o, gamma, inner, outer)
-    return omega_m.real, omega_r.real, sb.real
+    sb = tb * cb
+    ci = cos_i + tb * sin_i
+    co = cos_o + tb * sin_o
+    w = inner - outer
+    a = (1.0 - gamma * cos_i) * co
+    b = (1.0 + gamma * cos_o) * ci
+    omega_m = outer + w * a / (a + b)
+    omega_r = w / ((co / (1.0 + gamma * cos_o) + ci / (1.0 - gamma * cos_i)) * gamma * cb)
+    return omega_m, omega_r, sb
 
 
-@numba.njit(cache=True)
-def _speeds_cs(
-    cos_i: complex,
-    sin_i: complex,
-    cos_o: complex,
-    sin_o: complex,
-    gamma: float,
-    inner: float,
-    outer: float,
-    inner_control: bool,
-) -> tuple[complex, complex, complex]:
-    """:func:`_speeds` for complex-step arguments."""
-    tb = _tan_beta(cos_i, sin_i, cos_o, sin_o, gamma, inner_control)
-    cb = 1.0 / _sqrt_cs(1.0 + tb * tb)
-    return _speeds_at(tb, cb, cos_i, sin_i, cos_o, sin_o, gamma, inner, outer)
-
-
-@numba.njit(cache=True)
+@register_jitable(no_cfunc_wrapper=True)
 def _atan_cs(z: complex) -> complex:
     """arctan of a complex-step argument x + i h, |h| negligible against |x| and 1.
 
@@ -232,7 +228,7 @@ def _atan_cs(z: complex) -> complex:
     return complex(math.atan(x), z.imag / (1.0 + x * x))
 
 
-@numba.njit(cache=True)
+@register_jitable(no_cfunc_wrapper=True)
 def _sqrt_cs(z: complex) -> complex:
     """Square root of a complex-step argument x + i h, x > 0, |h| negligible against x.
 
@@ -245,7 +241,7 @@ def _sqrt_cs(z: complex) -> complex:
     return complex(r, z.imag / (2.0 * r))
 
 
-@numba.njit(cache=True)
+@register_jitable(no_cfunc_wrapper=True)
 def _hertz(delta: complex, k: complex) -> complex:
     """K δ^1.5 for Re δ > 0, else 0 (complex step through the load)."""
     if delta.real > 0.0:
@@ -253,7 +249,7 @@ def _hertz(delta: complex, k: complex) -> complex:
     return 0.0j
 
 
-@numba.njit(cache=True)
+@register_jitable(no_cfunc_wrapper=True)
 def _ball_state(
     x1: complex,
     x2: complex,
@@ -330,7 +326,7 @@ def _ball_state(
     return g1, g2, pa, pr, mg, fc, q_i, q_o, d_i, d_o, alpha_i, alpha_o, wm, wr
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")  # into _ball_newton, its one caller: see _balls
 def _residual_jacobian(
     x1: float,
     x2: float,
@@ -402,7 +398,7 @@ def _approaches(
 # --------------------------------------------------------------------------------------------
 # ball equilibrium
 # --------------------------------------------------------------------------------------------
-@numba.njit(cache=True)
+@register_jitable(no_cfunc_wrapper=True)
 def _ball_newton(
     xs: FloatArray,
     aa: FloatArray,
@@ -483,7 +479,7 @@ def _ball_newton(
             break
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")  # into _balls: see there
 def _lifted_off(
     a: FloatArray,
     ko0: FloatArray,
@@ -512,7 +508,7 @@ def _lifted_off(
     ro0 = cst[C_RO0]
     ao = np.empty(z)
     ai = np.empty(z)
-    d_i = np.zeros(z)
+    d_i = np.empty(z)  # set for every ball by each pass of the fixed point
     for j in range(z):
         ao[j] = math.atan(a[j, 0] / a[j, 1])
         ai[j] = ao[j]
@@ -553,7 +549,7 @@ def _lifted_off(
         lifted[j] = d_i[j] <= 0.0
 
 
-@numba.njit(cache=True)
+@register_jitable(no_cfunc_wrapper=True)
 def _start(
     a1: float, a2: float, ki0: float, ko0: float, ri0: float, ro0: float
 ) -> tuple[float, float]:
@@ -567,7 +563,7 @@ def _start(
     return a1 / dist * r, a2 / dist * r
 
 
-@numba.njit(cache=True)
+@register_jitable(no_cfunc_wrapper=True)
 def _closed_start(
     a1: float, a2: float, ko0: float, cst: FloatArray, side: float
 ) -> tuple[float, float]:
@@ -600,7 +596,7 @@ def _closed_start(
 
 # Small loops instead of NumPy array expressions (`.all()`, `~done`, fancy indexing, slice
 # assignment): the same work, but several times less compile time.
-@numba.njit(cache=True)
+@register_jitable(no_cfunc_wrapper=True)
 def _all(flags: NDArray[np.bool_]) -> bool:
     """Every entry true."""
     for m in range(flags.size):
@@ -609,7 +605,7 @@ def _all(flags: NDArray[np.bool_]) -> bool:
     return True
 
 
-@numba.njit(cache=True)
+@register_jitable(no_cfunc_wrapper=True)
 def _copy_rows(dst: NDArray[np.float64], src: NDArray[np.float64]) -> None:
     """dst[:] = src for arrays of shape (n, 2)."""
     for m in range(src.shape[0]):
@@ -617,17 +613,17 @@ def _copy_rows(dst: NDArray[np.float64], src: NDArray[np.float64]) -> None:
         dst[m, 1] = src[m, 1]
 
 
-@numba.njit(cache=True)
-def _positions(flags: BoolArray, value: bool) -> IntArray:
-    """Positions m with flags[m] == value, int64."""
+@register_jitable(no_cfunc_wrapper=True)
+def _positions(flags: BoolArray) -> IntArray:
+    """Positions m with flags[m] true, int64."""
     n = 0
     for m in range(flags.size):
-        if flags[m] == value:
+        if flags[m]:
             n += 1
     out = np.empty(n, dtype=np.int64)
     n = 0
     for m in range(flags.size):
-        if flags[m] == value:
+        if flags[m]:
             out[n] = m
             n += 1
     return out
@@ -685,9 +681,12 @@ def _friction_continuation(
 
 
 @numba.njit(cache=True)
-def _solve_balls(
-    a: FloatArray,
+def _balls(
+    q: FloatArray,
+    cos_psi: FloatArray,
+    sin_psi: FloatArray,
     x: FloatArray,
+    have_x: bool,
     ki0: FloatArray,
     ki1: FloatArray,
     ai_c: FloatArray,
@@ -698,20 +697,37 @@ def _solve_balls(
     lam_i: float,
     lam_o: float,
     speed_on: bool,
+    a: FloatArray,
+    x_star: FloatArray,
     loaded: BoolArray,
+    done: BoolArray,
+    jac: FloatArray,
+    state: FloatArray,
+    parts: FloatArray,
 ) -> bool:
-    """Eq. 3-4 for every loaded ball, in place in ``x`` (Z, 2) from its current value.
+    """Groove centres ``a`` at ring displacement q and eq. 3-4 for every loaded ball, in place
+    in ``x`` (Z, 2) from its current value (or the Hertz split without ``have_x``).
 
-    Unloaded balls (a gap at rest, lifted off at speed) go to the outer groove bottom. A loaded
-    ball starts with both contacts closed; one that does not converge is restarted from its
-    outer-contact-only centre X*, then by continuation in the friction, then from both contacts
-    closed off the line of groove centres (:func:`_closed_start`; at speed). Returns
-    ``False`` when some ball still does not converge.
+    The lift-off test is inlined here, and the Jacobian of the ball residual into the ball
+    Newton (their one call each): compiled on their own they would also build Python and C
+    entry points for their arguments, first-run compilation time for nothing.
+
+    Unloaded balls (a gap at rest, lifted off at speed: ``loaded`` false) go to the outer
+    groove bottom. A loaded ball starts with both contacts closed; ``done`` tells which
+    converged (true for the unloaded ones), and the restarts of :func:`_restart_balls` take
+    the others from their outer-contact-only centres ``x_star`` (at speed). Returns whether
+    every ball converged, and then also the ball states and the Jacobian of the ring force
+    (:func:`_ring_jacobian`, compiled into this kernel: one entry point, not two).
     """
-    z = a.shape[0]
+    z = cos_psi.size
     ri0 = cst[C_RI0]
     ro0 = cst[C_RO0]
-    x_star = np.empty((z, 2))
+    rad_i = cst[C_RAD_I]
+    for j in range(z):
+        a[j, 0] = cst[C_A1] + q[0] + rad_i * (q[3] * sin_psi[j] - q[4] * cos_psi[j])
+        a[j, 1] = cst[C_A2] + q[1] * cos_psi[j] + q[2] * sin_psi[j]
+        if not have_x:
+            x[j, 0], x[j, 1] = _start(a[j, 0], a[j, 1], ki0[j], ko0[j], ri0, ro0)
     if speed_on:
         _lifted_off(a, ko0, ko1, ao_c, cst, lam_i, lam_o, x_star, loaded)
         for j in range(z):
@@ -719,7 +735,8 @@ def _solve_balls(
     else:
         for j in range(z):
             loaded[j] = math.hypot(a[j, 0], a[j, 1]) > ri0 + ro0
-    idx = _positions(loaded, True)
+    all_done = True
+    idx = _positions(loaded)
     n = idx.size
     if n:
         xs = np.empty((n, 2))
@@ -738,128 +755,157 @@ def _solve_balls(
                     xs[m, 1] = x_star[j, 1]
                 else:
                     xs[m, 0], xs[m, 1] = _start(a[j, 0], a[j, 1], ki0[j], ko0[j], ri0, ro0)
-        tol = 1e-13 * cst[C_SCALE]
-        done = np.empty(n, dtype=np.bool_)
+        ok = np.empty(n, dtype=np.bool_)
         _ball_newton(
-            xs, aa, idx, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o, speed_on, tol, done
+            xs,
+            aa,
+            idx,
+            ki0,
+            ki1,
+            ai_c,
+            ko0,
+            ko1,
+            ao_c,
+            cst,
+            lam_i,
+            lam_o,
+            speed_on,
+            1e-13 * cst[C_SCALE],
+            ok,
         )
-        # at speed, restart the balls that did not converge: from X*, then by continuation
-        # and then from both contacts closed off the line of groove centres (_closed_start)
-        for attempt in range(4 if speed_on else 0):
-            redo = _positions(done, False)
-            k = redo.size
-            if k == 0:
-                break
-            xr = np.empty((k, 2))
-            ar = np.empty((k, 2))
-            idx_r = np.empty(k, dtype=np.int64)
-            for r in range(k):
-                m = redo[r]
-                j = idx[m]
-                idx_r[r] = j
-                ar[r, 0] = aa[m, 0]
-                ar[r, 1] = aa[m, 1]
-                if attempt == 0:
-                    xr[r, 0] = x_star[j, 0]
-                    xr[r, 1] = x_star[j, 1]
-                elif attempt == 1:
-                    xr[r, 0], xr[r, 1] = _start(ar[r, 0], ar[r, 1], ki0[j], ko0[j], ri0, ro0)
-                else:
-                    side = 1.0 if attempt == 2 else -1.0
-                    xr[r, 0], xr[r, 1] = _closed_start(ar[r, 0], ar[r, 1], ko0[j], cst, side)
-            dr = np.empty(k, dtype=np.bool_)
-            if attempt != 1:
-                _ball_newton(
-                    xr,
-                    ar,
-                    idx_r,
-                    ki0,
-                    ki1,
-                    ai_c,
-                    ko0,
-                    ko1,
-                    ao_c,
-                    cst,
-                    lam_i,
-                    lam_o,
-                    speed_on,
-                    tol,
-                    dr,
-                )
-            else:
-                _friction_continuation(
-                    xr,
-                    ar,
-                    idx_r,
-                    ki0,
-                    ki1,
-                    ai_c,
-                    ko0,
-                    ko1,
-                    ao_c,
-                    cst,
-                    lam_i,
-                    lam_o,
-                    speed_on,
-                    tol,
-                    dr,
-                )
-            for r in range(k):
-                m = redo[r]
-                xs[m, 0] = xr[r, 0]
-                xs[m, 1] = xr[r, 1]
-                done[m] = dr[r]
-        if not _all(done):
-            return False
         for m in range(n):
             x[idx[m], 0] = xs[m, 0]
             x[idx[m], 1] = xs[m, 1]
+            done[idx[m]] = ok[m]
+            all_done = all_done and ok[m]
     for j in range(z):
         if not loaded[j]:  # on the outer groove bottom
             x[j, 0] = 0.0
             x[j, 1] = ro0
-    return True
+            done[j] = True
+    if all_done:
+        _ring_jacobian(
+            a,
+            x,
+            cos_psi,
+            sin_psi,
+            ki0,
+            ki1,
+            ai_c,
+            ko0,
+            ko1,
+            ao_c,
+            cst,
+            lam_i,
+            lam_o,
+            speed_on,
+            jac,
+            state,
+            loaded,
+            parts,
+        )
+    return all_done
+
+
+@numba.njit(cache=True)
+def _restart_balls(
+    a: FloatArray,
+    x: FloatArray,
+    ki0: FloatArray,
+    ki1: FloatArray,
+    ai_c: FloatArray,
+    ko0: FloatArray,
+    ko1: FloatArray,
+    ao_c: FloatArray,
+    cst: FloatArray,
+    lam_i: float,
+    lam_o: float,
+    speed_on: bool,
+    x_star: FloatArray,
+    done: BoolArray,
+    cos_psi: FloatArray,
+    sin_psi: FloatArray,
+    loaded: BoolArray,
+    jac: FloatArray,
+    state: FloatArray,
+    parts: FloatArray,
+) -> bool:
+    """At speed, the balls :func:`_balls` left unconverged (``done`` false), restarted.
+
+    From the outer-contact-only centre X*, then by continuation in the friction, then from
+    both contacts closed off the line of groove centres on either side (:func:`_closed_start`),
+    each attempt on the balls still unconverged, in place in ``x`` and ``done``; then, when
+    every ball has converged, the ball states and the Jacobian (:func:`_ring_jacobian`).
+    Returns whether every ball converged. Compiled only when a run needs it (rarely: near
+    lift-off).
+    """
+    ri0 = cst[C_RI0]
+    ro0 = cst[C_RO0]
+    tol = 1e-13 * cst[C_SCALE]
+    redo_flags = np.empty(done.size, dtype=np.bool_)
+    for attempt in range(4):
+        for j in range(done.size):
+            redo_flags[j] = not done[j]
+        redo = _positions(redo_flags)
+        k = redo.size
+        if k == 0:
+            break
+        xr = np.empty((k, 2))
+        ar = np.empty((k, 2))
+        for r in range(k):
+            j = redo[r]
+            ar[r, 0] = a[j, 0]
+            ar[r, 1] = a[j, 1]
+            if attempt == 0:
+                xr[r, 0] = x_star[j, 0]
+                xr[r, 1] = x_star[j, 1]
+            elif attempt == 1:
+                xr[r, 0], xr[r, 1] = _start(ar[r, 0], ar[r, 1], ki0[j], ko0[j], ri0, ro0)
+            else:
+                side = 1.0 if attempt == 2 else -1.0
+                xr[r, 0], xr[r, 1] = _closed_start(ar[r, 0], ar[r, 1], ko0[j], cst, side)
+        dr = np.empty(k, dtype=np.bool_)
+        if attempt != 1:
+            _ball_newton(
+                xr, ar, redo, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o, speed_on, tol, dr
+            )
+        else:
+            _friction_continuation(
+                xr, ar, redo, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o, speed_on, tol, dr
+            )
+        for r in range(k):
+            j = redo[r]
+            x[j, 0] = xr[r, 0]
+            x[j, 1] = xr[r, 1]
+            done[j] = dr[r]
+    ok = _all(done)
+    if ok:
+        _ring_jacobian(
+            a,
+            x,
+            cos_psi,
+            sin_psi,
+            ki0,
+            ki1,
+            ai_c,
+            ko0,
+            ko1,
+            ao_c,
+            cst,
+            lam_i,
+            lam_o,
+            speed_on,
+            jac,
+            state,
+            loaded,
+            parts,
+        )
+    return ok
 
 
 # --------------------------------------------------------------------------------------------
 # ring force and stiffness
 # --------------------------------------------------------------------------------------------
-@numba.njit(cache=True)
-def _pairwise_sum(v: FloatArray) -> float:
-    """Sum in NumPy's order for a contiguous float64 vector of up to 128 entries.
-
-    ``numpy.sum`` adds fewer than 8 numbers in sequence and up to 128 in eight interleaved
-    partial sums; following that order keeps the ring force bit-for-bit where it cancels
-    (e.g. the radial force of a purely axial load).
-    """
-    n = v.size
-    if n < 8 or n > 128:
-        res = 0.0
-        for i in range(n):
-            res += v[i]
-        return res
-    r0, r1, r2, r3 = v[0], v[1], v[2], v[3]
-    r4, r5, r6, r7 = v[4], v[5], v[6], v[7]
-    i = 8
-    top = n - n % 8
-    while i < top:
-        r0 += v[i]
-        r1 += v[i + 1]
-        r2 += v[i + 2]
-        r3 += v[i + 3]
-        r4 += v[i + 4]
-        r5 += v[i + 5]
-        r6 += v[i + 6]
-        r7 += v[i + 7]
-        i += 8
-    acc: float = ((r0 + r1) + (r2 + r3)) + ((r4 + r5) + (r6 + r7))
-    while i < n:
-        acc += v[i]
-        i += 1
-    return acc
-
-
-@numba.njit(cache=True)
 def ring_forces(
     q: FloatArray,
     cos_psi: FloatArray,
@@ -897,6 +943,12 @@ def ring_forces(
     \partial P/\partial X\,(\partial g/\partial X)^{-1}\partial g/\partial A` (implicit
     differentiation of the ball balance, complex-step partial derivatives).
 
+    Compiled in two kernels: the ball solve (:func:`_balls`) and the restarts of the balls it
+    left unconverged (:func:`_restart_balls`, compiled only when a run needs them), each
+    ending with the ball states and the Jacobian (:func:`_ring_jacobian`); the five sums of
+    the force are NumPy's (its pairwise order keeps the force bit for bit where it cancels,
+    e.g. the radial force of a purely axial load).
+
     Parameters
     ----------
     q : ndarray, shape (5,)
@@ -931,33 +983,65 @@ def ring_forces(
         :data:`OK`, or :data:`BALLS_DID_NOT_CONVERGE`.
     """
     z = cos_psi.size
-    ri0 = cst[C_RI0]
-    ro0 = cst[C_RO0]
-    rad_i = cst[C_RAD_I]
     a = np.empty((z, 2))
-    for j in range(z):
-        a[j, 0] = cst[C_A1] + q[0] + rad_i * (q[3] * sin_psi[j] - q[4] * cos_psi[j])
-        a[j, 1] = cst[C_A2] + q[1] * cos_psi[j] + q[2] * sin_psi[j]
-        if not have_x:
-            x[j, 0], x[j, 1] = _start(a[j, 0], a[j, 1], ki0[j], ko0[j], ri0, ro0)
-    if not _solve_balls(a, x, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o, speed_on, loaded):
+    x_star = np.empty((z, 2))
+    done = np.empty(z, dtype=np.bool_)
+    parts = np.empty((5, z))
+    hertz = (ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o)
+    speed = bool(speed_on)
+    out = (jac, state, parts)
+    ok = _balls(q, cos_psi, sin_psi, x, bool(have_x), *hertz, speed, a, x_star, loaded, done, *out)
+    if not ok and speed:
+        ok = _restart_balls(a, x, *hertz, speed, x_star, done, cos_psi, sin_psi, loaded, *out)
+    if not ok:
         return BALLS_DID_NOT_CONVERGE
+    force[:] = parts.sum(axis=1)  # each row in NumPy's pairwise order
+    force[4] = -force[4]
+    return OK
+
+
+@register_jitable(no_cfunc_wrapper=True)  # into _balls and _restart_balls (see _balls)
+def _ring_jacobian(
+    a: FloatArray,
+    x: FloatArray,
+    cos_psi: FloatArray,
+    sin_psi: FloatArray,
+    ki0: FloatArray,
+    ki1: FloatArray,
+    ai_c: FloatArray,
+    ko0: FloatArray,
+    ko1: FloatArray,
+    ao_c: FloatArray,
+    cst: FloatArray,
+    lam_i: float,
+    lam_o: float,
+    speed_on: bool,
+    jac: FloatArray,
+    state: FloatArray,
+    loaded: BoolArray,
+    parts: FloatArray,
+) -> None:
+    """Ball states, the Jacobian ``jac`` of the ring force and each ball's part of it in
+    ``parts`` (P_a, P_r cos ψ, P_r sin ψ, P_m sin ψ, P_m cos ψ per ball; rows summed by
+    :func:`ring_forces`), at converged ball centres ``x`` and groove centres ``a``."""
+    z = cos_psi.size
+    rad_i = cst[C_RAD_I]
     lam_fi = lam_i * cst[C_FI]
-    pa = np.zeros(z)
-    prc = np.zeros(z)
-    prs = np.zeros(z)
-    pms = np.zeros(z)
-    pmc = np.zeros(z)
-    jac[:, :] = 0.0
-    dgx = np.empty((2, 2))
-    dga = np.empty((2, 2))
-    dpx = np.empty((3, 2))
-    dpa = np.empty((3, 2))
-    sol = np.empty((2, 2))
-    loc = np.empty((3, 2))
-    b = np.zeros((2, 5))
+    for r in range(5):
+        for c in range(5):
+            jac[r, c] = 0.0
+    # B_j, q -> (A_1, A_2): rows b0, b1; the entries set per ball below, zeros elsewhere
+    b0 = np.empty(5)
+    b1 = np.empty(5)
+    for col in range(5):
+        b0[col] = 1.0 if col == 0 else 0.0
+        b1[col] = 0.0
     for j in range(z):
-        # complex steps in X_1, X_2, A_1, A_2: columns of ∂(g, P)/∂(X, A)
+        # complex steps in X_1, X_2, A_1, A_2: ∂(g_1, g_2, P_a, P_r, M_g)/∂(X, A), as scalars
+        # (small arrays would compile to several times the code)
+        gx00 = gx01 = gx10 = gx11 = ga00 = ga01 = ga10 = ga11 = 0.0
+        px00 = px01 = px10 = px11 = px20 = px21 = 0.0
+        pa00 = pa01 = pa10 = pa11 = pa20 = pa21 = 0.0
         for k in range(4):
             x1 = complex(x[j, 0], _H if k == 0 else 0.0)
             x2 = complex(x[j, 1], _H if k == 1 else 0.0)
@@ -979,59 +1063,61 @@ def ring_forces(
                 lam_o,
                 speed_on,
             )
-            dg = dgx if k < 2 else dga
-            dp = dpx if k < 2 else dpa
-            c = k % 2
-            dg[0, c] = s[0].imag / _H
-            dg[1, c] = s[1].imag / _H
-            dp[0, c] = s[2].imag / _H
-            dp[1, c] = s[3].imag / _H
-            dp[2, c] = s[4].imag / _H
+            d0 = s[0].imag / _H
+            d1 = s[1].imag / _H
+            d2 = s[2].imag / _H
+            d3 = s[3].imag / _H
+            d4 = s[4].imag / _H
             if k == 0:
+                gx00, gx10, px00, px10, px20 = d0, d1, d2, d3, d4
                 for r in range(N_STATE):
                     state[r, j] = s[r].real
+            elif k == 1:
+                gx01, gx11, px01, px11, px21 = d0, d1, d2, d3, d4
+            elif k == 2:
+                ga00, ga10, pa00, pa10, pa20 = d0, d1, d2, d3, d4
+            else:
+                ga01, ga11, pa01, pa11, pa21 = d0, d1, d2, d3, d4
+        for r in range(5):
+            parts[r, j] = 0.0
         if not loaded[j]:  # an unloaded ball exerts nothing on the inner ring
             continue
         st_pa = state[2, j]
         st_pr = state[3, j]
         pm = st_pa * rad_i + lam_fi * state[4, j]
-        pa[j] = st_pa
-        prc[j] = st_pr * cos_psi[j]
-        prs[j] = st_pr * sin_psi[j]
-        pms[j] = pm * sin_psi[j]
-        pmc[j] = pm * cos_psi[j]
-        # (∂g/∂X)^{-1} ∂g/∂A by Cramer's rule (2×2)
-        det = dgx[0, 0] * dgx[1, 1] - dgx[0, 1] * dgx[1, 0]
-        for c in range(2):
-            sol[0, c] = (dgx[1, 1] * dga[0, c] - dgx[0, 1] * dga[1, c]) / det
-            sol[1, c] = (dgx[0, 0] * dga[1, c] - dgx[1, 0] * dga[0, c]) / det
+        parts[0, j] = st_pa
+        parts[1, j] = st_pr * cos_psi[j]
+        parts[2, j] = st_pr * sin_psi[j]
+        parts[3, j] = pm * sin_psi[j]
+        parts[4, j] = pm * cos_psi[j]
+        # (∂g/∂X)^{-1} ∂g/∂A by Cramer's rule (2×2), columns A_1, A_2
+        det = gx00 * gx11 - gx01 * gx10
+        s00 = (gx11 * ga00 - gx01 * ga10) / det
+        s10 = (gx00 * ga10 - gx10 * ga00) / det
+        s01 = (gx11 * ga01 - gx01 * ga11) / det
+        s11 = (gx00 * ga11 - gx10 * ga01) / det
         # local: rows (P_a, P_r, P_m), columns (A_1, A_2)
-        for r in range(3):
-            for c in range(2):
-                loc[r, c] = dpa[r, c] - (dpx[r, 0] * sol[0, c] + dpx[r, 1] * sol[1, c])
-        loc[2, 0] = loc[0, 0] * rad_i + lam_fi * loc[2, 0]
-        loc[2, 1] = loc[0, 1] * rad_i + lam_fi * loc[2, 1]
+        l00 = pa00 - (px00 * s00 + px01 * s10)
+        l01 = pa01 - (px00 * s01 + px01 * s11)
+        l10 = pa10 - (px10 * s00 + px11 * s10)
+        l11 = pa11 - (px10 * s01 + px11 * s11)
+        l20 = pa20 - (px20 * s00 + px21 * s10)
+        l21 = pa21 - (px20 * s01 + px21 * s11)
+        l20 = l00 * rad_i + lam_fi * l20
+        l21 = l01 * rad_i + lam_fi * l21
         cp = cos_psi[j]
         sp = sin_psi[j]
-        # B_j: q -> (A_1, A_2)
-        b[0, 0] = 1.0
-        b[0, 3] = rad_i * sp
-        b[0, 4] = -rad_i * cp
-        b[1, 1] = cp
-        b[1, 2] = sp
+        b0[3] = rad_i * sp
+        b0[4] = -rad_i * cp
+        b1[1] = cp
+        b1[2] = sp
         for col in range(5):
-            la = loc[0, 0] * b[0, col] + loc[0, 1] * b[1, col]
-            lr = loc[1, 0] * b[0, col] + loc[1, 1] * b[1, col]
-            lm = loc[2, 0] * b[0, col] + loc[2, 1] * b[1, col]
+            la = l00 * b0[col] + l01 * b1[col]
+            lr = l10 * b0[col] + l11 * b1[col]
+            lm = l20 * b0[col] + l21 * b1[col]
             # C_j: (P_a, P_r, P_m) -> (F_a, F_x, F_y, M_x, M_y)
             jac[0, col] += la
             jac[1, col] += cp * lr
             jac[2, col] += sp * lr
             jac[3, col] += sp * lm
             jac[4, col] += -cp * lm
-    force[0] = _pairwise_sum(pa)
-    force[1] = _pairwise_sum(prc)
-    force[2] = _pairwise_sum(prs)
-    force[3] = _pairwise_sum(pms)
-    force[4] = -_pairwise_sum(pmc)
-    return OK

@@ -13,7 +13,8 @@ Conventions (both models)
 * The contact point of ball j in its own frame is at :math:`\pm 2\pi f_b t` (spin relative to
   the cage, seed 000 §2.1, seed 001 eq. 9; the sign is :attr:`Kinematics.contact_rate`'s); the
   diameter deviation along the contact line is
-  :meth:`runout.geometry.imperfections.BearingImperfections.evaluate_element_diameters` (seed 002 eq. 26).
+  :meth:`runout.geometry.imperfections.BearingImperfections.evaluate_element_diameters`
+  (seed 002 eq. 26).
 """
 
 from __future__ import annotations
@@ -25,6 +26,7 @@ from typing import Any
 
 import numba
 import numpy as np
+from numba.extending import register_jitable
 from numpy.typing import NDArray
 
 from runout.analysis.decompose import (
@@ -35,10 +37,9 @@ from runout.analysis.decompose import (
     fit_lines,
     split_runout,
 )
-from runout.analysis.lines import Source
 from runout.analysis.result_details import QuasiStaticDetails
-from runout.analysis.results import RunResult
-from runout.base._threads import halves, in_spans
+from runout.analysis.results import RunResult, Source
+from runout.base._threads import halves, in_spans, one_blas_thread
 from runout.base.errors import GeometryError
 from runout.geometry.imperfections import BearingImperfections, Harmonics
 from runout.geometry.kinematics import bearing_frequencies
@@ -52,7 +53,6 @@ __all__ = [
     "contact_advance",
     "contact_anchor",
     "contact_deviations",
-    "contact_rotations",
     "contact_series",
     "contact_sources",
     "contact_state",
@@ -108,10 +108,11 @@ class Kinematics:
         r"""Signed rate of the contact-point angle in each element's own frame [Hz].
 
         Rolling without slip, an element spins against the inner ring's motion relative to the
-        cage (:mod:`runout.geometry.kinematics`): seen from the cage, its contact point then runs over
-        its surface at :math:`+f_b` when the inner ring turns faster than the outer (ball inside
-        a stationary outer race, spinning against its orbit) and at :math:`-f_b` when the outer
-        ring is the faster (ball rolling on a stationary inner race, spinning with its orbit).
+        cage (:mod:`runout.geometry.kinematics`): seen from the cage, its contact point then runs
+        over its surface at :math:`+f_b` when the inner ring turns faster than the outer (ball
+        inside a stationary outer race, spinning against its orbit) and at :math:`-f_b` when the
+        outer ring is the faster (ball rolling on a stationary inner race, spinning with its
+        orbit).
         Seed 002 eq. 6 is the first case; the linear model uses the same signed rate.
         """
         return self.spin if self.inner >= self.outer else -self.spin
@@ -190,24 +191,30 @@ def contact_deviations(
 ANCHOR = 256
 #: Tolerance of the uniform-grid test of :func:`on_grid`, relative to the instant (4 ulp).
 GRID_RTOL = 4.0 * 2.0**-52
+#: Blocks of :data:`ANCHOR` instants per matrix product of :func:`contact_series`.
+_SERIES_BLOCKS = 64
 #: Records of at least this many instants are solved as two halves (:func:`solve_in_halves`).
 SPLIT_MIN = 1 << 17
 
 
 def solve_in_halves(
-    kernel: Callable[..., tuple[int, int]], args: tuple[Any, ...], n: int
+    kernel: Callable[..., tuple[int, int]],
+    args: tuple[Any, ...],
+    n: int,
+    new_state: Callable[[], tuple[NDArray[np.float64], ...]] | None = None,
 ) -> tuple[int, int]:
     """Run a fused quasi-static kernel over instants ``[0, n)``, long records as two halves.
 
-    The kernels take the instants to solve as their last two arguments ``first, last`` and
-    write the global instants of their output arrays, so two halves fill one record. A record
-    of at least :data:`SPLIT_MIN` instants is cut at a multiple of :data:`ANCHOR` (the phasors
-    are anchored at the same instants as in one pass) and its halves run on two threads (the
-    kernels release the GIL) when the caller is the main thread of a machine with two cores
-    or more; elsewhere (a study's worker threads) one after the other. The second half starts
-    Newton's method from rest, as the first instant does: its first solutions agree with one
-    pass to the solver's tolerance, whatever the machine, so a result does not depend on the
-    number of cores.
+    The kernels take the instants to solve as their last two arguments ``first, last``
+    (preceded by their work arrays, ``new_state()``, a fresh set per half, when given: the
+    phasors' :func:`contact_state`), and write the global instants of their output arrays,
+    so two halves fill one record. A record of at least :data:`SPLIT_MIN` instants is cut at
+    a multiple of :data:`ANCHOR` (the phasors are anchored at the same instants as in one
+    pass) and its halves run on two threads (the kernels release the GIL) when the caller is
+    the main thread of a machine with two cores or more; elsewhere (a study's worker threads)
+    one after the other. The second half starts Newton's method from rest, as the first
+    instant does: its first solutions agree with one pass to the solver's tolerance, whatever
+    the machine, so a result does not depend on the number of cores.
 
     Returns
     -------
@@ -215,7 +222,12 @@ def solve_in_halves(
         The kernel's status and failing instant: of the first half that fails, in time order.
     """
     spans = halves(n, SPLIT_MIN, ANCHOR)
-    for status, instant in in_spans(lambda first, last: kernel(*args, first, last), spans):
+    if new_state is not None:
+        make = new_state
+        work = in_spans(lambda first, last: kernel(*args, make(), first, last), spans)
+    else:
+        work = in_spans(lambda first, last: kernel(*args, first, last), spans)
+    for status, instant in work:
         if status != 0:
             return status, instant
     return 0, -1
@@ -325,11 +337,19 @@ def contact_sources(
     )
 
 
-@numba.njit(cache=True)
 def contact_state(
-    z: int, ring: NDArray[np.float64], ball: NDArray[np.float64]
+    h: float,
+    rates: NDArray[np.float64],
+    ring: NDArray[np.float64],
+    n_inner: int,
+    ball: NDArray[np.float64],
+    z: int,
 ) -> tuple[NDArray[np.float64], ...]:
-    """Work arrays of the phasor recurrences (:func:`contact_series`) (compiled).
+    """Work arrays of the phasor recurrences of the compiled kernels, rotations per step set.
+
+    Built here, not in the kernels: allocating them and the few cosines of the rotations over
+    one time step ``h`` [s] is set-up, which compiled would cost the first run of a model
+    compilation time for nothing (the same ``math`` functions, so the same bits).
 
     Returns
     -------
@@ -341,45 +361,35 @@ def contact_state(
     """
     m = ring.shape[1]
     kb = ball.shape[1]
+    wc, wi, wo, wb = (float(w) for w in rates)
+    cage_rot = np.array([math.cos(wc * h), math.sin(wc * h)])
+    ring_rot = np.empty((2, m))
+    for i, order in enumerate(ring[0].tolist()):
+        angle = order * ((wc - (wi if i < n_inner else wo)) * h)
+        ring_rot[0, i] = math.cos(angle)
+        ring_rot[1, i] = math.sin(angle)
+    ball_rot = np.empty((2, kb))
+    for i, order in enumerate(ball[0].tolist()):
+        angle = order * (wb * h)
+        ball_rot[0, i] = math.cos(angle)
+        ball_rot[1, i] = math.sin(angle)
     return (
         np.empty((2, z)),
         np.empty((m, 2, z)),
         np.empty((2, kb)),
         np.empty(2),
         np.empty((2, m)),
-        np.empty(2),
-        np.empty((2, m)),
-        np.empty((2, kb)),
+        cage_rot,
+        ring_rot,
+        ball_rot,
         np.empty((2, z)),
     )
 
 
-@numba.njit(cache=True)
-def contact_rotations(
-    h: float,
-    rates: NDArray[np.float64],
-    ring: NDArray[np.float64],
-    n_inner: int,
-    ball: NDArray[np.float64],
-    state: tuple[NDArray[np.float64], ...],
-) -> None:
-    """Rotations of the phasors over one time step ``h`` [s] (compiled)."""
-    cage_rot, ring_rot, ball_rot = state[5], state[6], state[7]
-    wc = rates[0]
-    cage_rot[0] = math.cos(wc * h)
-    cage_rot[1] = math.sin(wc * h)
-    for m in range(ring.shape[1]):
-        w = rates[1] if m < n_inner else rates[2]
-        angle = ring[0, m] * ((wc - w) * h)
-        ring_rot[0, m] = math.cos(angle)
-        ring_rot[1, m] = math.sin(angle)
-    for m in range(ball.shape[1]):
-        angle = ball[0, m] * (rates[3] * h)
-        ball_rot[0, m] = math.cos(angle)
-        ball_rot[1, m] = math.sin(angle)
-
-
-@numba.njit(cache=True)
+# register_jitable: compiled into its caller, without Python and C entry points of its own
+# (first-run compilation time); a helper that several compiled functions of one run call
+# stays njit (compiled once, not once per caller).
+@register_jitable(no_cfunc_wrapper=True)
 def contact_anchor(
     ti: float,
     rates: NDArray[np.float64],
@@ -392,7 +402,12 @@ def contact_anchor(
 ) -> None:
     """Every phasor evaluated directly at instant ``ti`` [s], from the same rounded arguments
     as :func:`contact_deviations` (compiled)."""
-    cage_q, ring_q, ball_ph, cage_p, ring_p = state[0], state[1], state[2], state[3], state[4]
+    # one name at a time: unpacking a tuple of arrays compiles to far more code
+    cage_q = state[0]
+    ring_q = state[1]
+    ball_ph = state[2]
+    cage_p = state[3]
+    ring_p = state[4]
     z = base.size
     wc, wi, wo = rates[0], rates[1], rates[2]
     for j in range(z):
@@ -420,14 +435,12 @@ def contact_anchor(
 @numba.njit(cache=True, inline="always")
 def contact_advance(state: tuple[NDArray[np.float64], ...]) -> None:
     """Advance the rotations since the anchor, and the element phasors, by one step (compiled)."""
-    ball_ph, cage_p, ring_p, cage_rot, ring_rot, ball_rot = (
-        state[2],
-        state[3],
-        state[4],
-        state[5],
-        state[6],
-        state[7],
-    )
+    ball_ph = state[2]  # one name at a time (see contact_anchor)
+    cage_p = state[3]
+    ring_p = state[4]
+    cage_rot = state[5]
+    ring_rot = state[6]
+    ball_rot = state[7]
     re, im = cage_p[0], cage_p[1]
     cage_p[0] = re * cage_rot[0] - im * cage_rot[1]
     cage_p[1] = re * cage_rot[1] + im * cage_rot[0]
@@ -458,14 +471,12 @@ def contact_values(
     of :func:`contact_deviations` (harmonics in ascending order), then combine as seed 000
     eq. 2 (3-D) or seed 001 eq. 10 (planar), see :class:`ContactSources`.
     """
-    cage_q, ring_q, ball_ph, cage_p, ring_p, acc = (
-        state[0],
-        state[1],
-        state[2],
-        state[3],
-        state[4],
-        state[8],
-    )
+    cage_q = state[0]  # one name at a time (see contact_anchor)
+    ring_q = state[1]
+    ball_ph = state[2]
+    cage_p = state[3]
+    ring_p = state[4]
+    acc = state[8]
     z = c.size
     pr, pi = cage_p[0], cage_p[1]
     for j in range(z):
@@ -496,14 +507,13 @@ def contact_values(
             c[j] = (acc[0, j] - acc[1, j]) * gains[0] + wb + gains[2]
 
 
-@numba.njit(cache=True)
 def time_step(t: NDArray[np.float64]) -> float:
     """Step of a uniform grid, (t[-1] - t[0]) / (n - 1) [s] (0 for fewer than 2 instants)."""
     n = t.size
-    return (t[n - 1] - t[0]) / (n - 1) if n > 1 else 0.0
+    return float((t[n - 1] - t[0]) / (n - 1)) if n > 1 else 0.0
 
 
-@numba.njit(cache=True)
+@register_jitable(no_cfunc_wrapper=True)
 def on_grid(i: int, t: NDArray[np.float64], h: float, anchor: int) -> bool:
     """True when the phasors anchored at instant ``anchor`` may be advanced to instant i by
     one step of ``h`` [s]: i follows within :data:`ANCHOR` instants and ``t[i]`` is the
@@ -520,7 +530,7 @@ def on_grid(i: int, t: NDArray[np.float64], h: float, anchor: int) -> bool:
     return close
 
 
-@numba.njit(cache=True)
+@register_jitable(no_cfunc_wrapper=True)
 def predict(known: int, q: float, p: float, o: float) -> float:
     """Starting point of an instant from the solutions of the instants before it.
 
@@ -541,7 +551,33 @@ def predict(known: int, q: float, p: float, o: float) -> float:
     return q
 
 
-@numba.njit(cache=True)
+def _series_blocks(
+    t: NDArray[np.float64],
+    starts: NDArray[np.int64],
+    phasors: Callable[[NDArray[np.float64]], tuple[NDArray[np.float64], ...]],
+    rot: NDArray[np.float64],
+    rot_cage: NDArray[np.float64],
+    offset: float,
+    c: NDArray[np.float64],
+    cth: NDArray[np.float64],
+    sth: NDArray[np.float64],
+) -> None:
+    """The blocks of :func:`contact_series` on a uniform grid, from their first instants."""
+    n, z = c.shape
+    for b0 in range(0, starts.size, _SERIES_BLOCKS):
+        blocks = starts[b0 : b0 + _SERIES_BLOCKS]
+        cq, sq, pr, pi = phasors(t[blocks])
+        # Re(p e^{iφ}) = Re p cos φ - Im p sin φ: summed over the harmonics by one product
+        vals = rot @ np.concatenate([pr, pi], axis=1)  # (blocks, ANCHOR, z)
+        # e^{i(θ + φ)}: cos = cos θ cos φ - sin θ sin φ, sin = sin θ cos φ + cos θ sin φ
+        cage = rot_cage @ np.stack([np.hstack([cq, sq]), np.hstack([sq, -cq])], axis=1)
+        i0, i1 = blocks[0], min(blocks[-1] + ANCHOR, n)
+        np.add(vals.reshape(-1, z)[: i1 - i0], offset, out=c[i0:i1])
+        cage = cage.reshape(-1, 2 * z)[: i1 - i0]
+        cth[i0:i1] = cage[:, :z]
+        sth[i0:i1] = cage[:, z:]
+
+
 def contact_series(
     t: NDArray[np.float64],
     rates: NDArray[np.float64],
@@ -554,32 +590,79 @@ def contact_series(
     gains: NDArray[np.float64],
     planar: bool,
 ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
-    """Approaches at zero displacement and cos θ_j, sin θ_j at every instant (compiled).
+    """Approaches at zero displacement and cos θ_j, sin θ_j at every instant.
 
-    The fused evaluation the quasi-static kernels run instant by instant, written out in full
-    (for tests and for callers that need the arrays).
+    What the fused quasi-static kernels evaluate instant by instant, written out in full (the
+    spindle model, tests). NumPy and BLAS, not compiled: on a uniform grid the phasors of each
+    block of :data:`ANCHOR` instants are evaluated at the block's first instant exactly as
+    :func:`contact_anchor` does and turned to the block's other instants by exact rotations,
+    every harmonic and ball in one matrix product per block; elsewhere (a grid that is not
+    uniform) every instant is evaluated directly. Same values as the kernels' recurrence to
+    round-off (the rotations are exact here, not repeated products).
 
     Returns
     -------
     c, cos_theta, sin_theta : ndarray, shape (n, Z)
         [m], [-], [-].
     """
-    n = t.size
-    z = base.size
-    state = contact_state(z, ring, ball)
-    h = time_step(t)
-    contact_rotations(h, rates, ring, n_inner, ball, state)
+    t = np.ascontiguousarray(t, dtype=np.float64)
+    n, z = t.size, base.size
+    m = ring.shape[1]
+    wc, wi, wo, wb = (float(w) for w in rates)
+    # each harmonic, the rings' then the balls': its weight in c (amplitude times the gain
+    # and sign of its part), the balls it acts on (a ring's: all; a ball's: its own) and the
+    # rate it turns at relative to the anchor [rad/s]
+    if planar:  # seed 001 eq. 10: c_0 + (W_i + g_b W_b - W_o) / 2
+        w_inner, w_outer, w_ball = 0.5, -0.5, 0.5 * float(gains[1])
+    else:  # seed 000 eq. 2: (W_i - W_o) g_r + W_b + c_0
+        w_inner, w_outer, w_ball = float(gains[0]), -float(gains[0]), 1.0
+    inner = np.arange(m) < n_inner
+    weight = np.concatenate([np.where(inner, w_inner, w_outer) * ring[1], w_ball * ball[1]])
+    ring_rate = np.where(inner, wi, wo)
+    acts = np.zeros((m + ball.shape[1], z))
+    acts[:m] = 1.0
+    for j in range(z):
+        acts[m + ball_offsets[j] : m + ball_offsets[j + 1], j] = 1.0
+    turn = np.concatenate([ring[0] * (wc - ring_rate), ball[0] * wb])  # [rad/s] per harmonic
+
+    def phasors(ta: NDArray[np.float64]) -> tuple[NDArray[np.float64], ...]:
+        """cos, sin of θ_j (k, z) and the weighted harmonic phasors (k, H, z) at times ta,
+        from the same rounded arguments as :func:`contact_anchor`."""
+        th = wc * ta[:, None] + base + pitch
+        psi = th[:, None, :] - ring_rate[:, None] * ta[:, None, None]
+        arg_ring = ring[0][:, None] * psi + ring[2][:, None]
+        arg_ball = (ball[0] * (wb * ta)[:, None] + ball[2])[:, :, None]
+        amp_ring, amp_ball = weight[:m, None] * acts[:m], weight[m:, None] * acts[m:]
+        re = np.concatenate([amp_ring * np.cos(arg_ring), amp_ball * np.cos(arg_ball)], axis=1)
+        im = np.concatenate([amp_ring * np.sin(arg_ring), amp_ball * np.sin(arg_ball)], axis=1)
+        return np.cos(th), np.sin(th), re, im
+
     c = np.empty((n, z))
     cth = np.empty((n, z))
     sth = np.empty((n, z))
-    anchor = -1
-    for i in range(n):
-        if on_grid(i, t, h, anchor):
-            contact_advance(state)
-        else:
-            contact_anchor(t[i], rates, base, pitch, ring, n_inner, ball, state)
-            anchor = i
-        contact_values(state, n_inner, ball_offsets, gains, planar, c[i], cth[i], sth[i])
+    h = time_step(t)
+    uniform = n > 1 and h != 0.0
+    if uniform:  # the kernels' test (on_grid), every instant against its block's first
+        steps = np.arange(n) % ANCHOR
+        first = t[np.arange(n) - steps]
+        uniform = bool(
+            np.all(np.abs(t - (first + steps * h)) <= GRID_RTOL * (np.abs(t) + steps * abs(h)))
+        )
+    if uniform:
+        # rotations over r steps, [cos | -sin], of the harmonics and of the cage
+        angle = np.multiply.outer(np.arange(ANCHOR) * h, np.append(turn, wc))
+        rot = np.concatenate([np.cos(angle[:, :-1]), -np.sin(angle[:, :-1])], axis=1)
+        rot_cage = np.stack([np.cos(angle[:, -1]), -np.sin(angle[:, -1])], axis=1)
+        starts = np.arange(0, n, ANCHOR)
+        with one_blas_thread():  # small products: BLAS threads only wait for each other
+            _series_blocks(t, starts, phasors, rot, rot_cage, float(gains[2]), c, cth, sth)
+    else:
+        chunk = max(1, (1 << 20) // max(1, (m + ball.shape[1]) * z))
+        for i0 in range(0, n, chunk):
+            cq, sq, pr, _ = phasors(t[i0 : i0 + chunk])
+            c[i0 : i0 + chunk] = pr.sum(axis=1) + gains[2]
+            cth[i0 : i0 + chunk] = cq
+            sth[i0 : i0 + chunk] = sq
     return c, cth, sth
 
 
@@ -974,8 +1057,8 @@ def run_quasi_static(
 ) -> RunResult:
     """The run flow shared by the quasi-static models (seeds 000 and 001).
 
-    Solve on the analysis grid, decompose the record (:mod:`runout.analysis.decompose`: the predicted
-    lines, the residual search, RRO/NRRO from the lines), and assemble the result with its
+    Solve on the analysis grid, decompose the record (:mod:`runout.analysis.decompose`: the
+    predicted lines, the residual search, RRO/NRRO from the lines), and assemble the result with its
     notes and the model's details (:class:`~runout.analysis.result_details.QuasiStaticDetails`; the
     files layer draws its ``bearing.gif``).
 

@@ -31,6 +31,7 @@ import math
 
 import numba
 import numpy as np
+from numba.extending import register_jitable
 from numpy.typing import NDArray
 
 FloatArray = NDArray[np.float64]
@@ -52,7 +53,10 @@ _SETTLE_FAIL = 4
 _FAR_CONTACT = 5
 
 
-@numba.njit(cache=True)
+# register_jitable: compiled into its caller, without Python and C entry points of its own
+# (first-run compilation time); a helper that several compiled functions of one run call
+# stays njit (compiled once, not once per caller).
+@register_jitable(no_cfunc_wrapper=True)
 def _profile(
     r0: float, k: FloatArray, a: FloatArray, p: FloatArray, lo: int, hi: int, x: float
 ) -> tuple[float, float, float]:
@@ -69,7 +73,7 @@ def _profile(
     return r, d1, d2
 
 
-@numba.njit(cache=True)
+@register_jitable(no_cfunc_wrapper=True)
 def _support(b: int, bt: Bodies, shift: float, psi: float) -> tuple[float, float, float]:
     """Support value h(ψ), its derivative h'(ψ) and the radius of curvature at the support point."""
     r0, k, a, p, off = bt
@@ -99,7 +103,7 @@ def _support(b: int, bt: Bodies, shift: float, psi: float) -> tuple[float, float
     return h, h1, rc
 
 
-@numba.njit(cache=True)
+@register_jitable(no_cfunc_wrapper=True)
 def _gap(
     ba: int,
     sa: float,
@@ -138,7 +142,7 @@ def _gap(
     return g, psi, rk
 
 
-@numba.njit(cache=True)
+@register_jitable(no_cfunc_wrapper=True)
 def _constraint(
     mode: int,
     j: int,
@@ -149,18 +153,22 @@ def _constraint(
     sh: FloatArray,
     bt: Bodies,
 ) -> tuple[float, float, float]:
-    """Gap C_j(c) between roller j and the loaded ring centred at c, and its gradient in c."""
+    """Gap C_j(c) between roller j and the loaded ring centred at c, and its gradient in c.
+
+    The loaded ring is body ``mode`` (0 the inner raceway, 1 the outer). One call of
+    :func:`_gap` with run-time arguments for both modes: constant ones would compile a
+    specialisation per value.
+    """
     dx = rx[j] - cx
     dy = ry[j] - cy
     inner_body = 2 + j + (bt[0].size - 2 - rx.size)  # seed 004's reading: see _pack
-    if mode == 0:
-        g, psi, _ = _gap(0, sh[0], inner_body, sh[2], dx, dy, bt, False)
-        return g, -math.cos(psi), -math.sin(psi)
-    g, psi, _ = _gap(1, sh[1], 2 + j, sh[2], dx, dy, bt, True)
-    return g, math.cos(psi), math.sin(psi)
+    roller = inner_body if mode == 0 else 2 + j
+    g, psi, _ = _gap(mode, sh[mode], roller, sh[2], dx, dy, bt, mode == 1)
+    sign = -1.0 if mode == 0 else 1.0
+    return g, sign * math.cos(psi), sign * math.sin(psi)
 
 
-@numba.njit(cache=True)
+@register_jitable(no_cfunc_wrapper=True)
 def _vertex(
     mode: int,
     ja: int,
@@ -196,7 +204,7 @@ def _vertex(
     return cx, cy, lam_a, lam_b, False
 
 
-@numba.njit(cache=True)
+@register_jitable(no_cfunc_wrapper=True)
 def _far_bound(
     mode: int,
     j: int,
@@ -223,7 +231,7 @@ def _far_bound(
     return signed
 
 
-@numba.njit(cache=True)
+@register_jitable(no_cfunc_wrapper=True)
 def _worst(
     mode: int,
     skip1: int,
@@ -259,8 +267,9 @@ def _worst(
     return worst, wgap
 
 
-@numba.njit(cache=True)
+@register_jitable(no_cfunc_wrapper=True)
 def _single(
+    ring: int,
     j: int,
     wx: float,
     wy: float,
@@ -272,18 +281,96 @@ def _single(
     """Outer ring hanging on roller j alone: the contact normal points along w = -u.
 
     With ψ_w the angle of w, G = 0 and stationarity in ψ give the roller centre relative to
-    the ring as d = (h_E - h_B) w + (h_E' - h_B') t, t ⊥ w, in closed form.
+    the ring as d = (h_E - h_B) w + (h_E' - h_B') t, t ⊥ w, in closed form. ``ring`` is the
+    outer raceway's body, 1 (passed, not written here: a constant would compile a
+    specialisation of :func:`_support` of its own).
     """
     psi = math.atan2(wy, wx)
     cw = math.cos(psi)
     sw = math.sin(psi)
-    he, h1e, _ = _support(1, bt, sh[1], psi)
+    he, h1e, _ = _support(ring, bt, sh[ring], psi)
     hb, h1b, _ = _support(2 + j, bt, sh[2], psi)
     tx = -sw
     ty = cw
     dx = (he - hb) * wx + (h1e - h1b) * tx
     dy = (he - hb) * wy + (h1e - h1b) * ty
     return rx[j] - dx, ry[j] - dy
+
+
+def deviations(bt: Bodies) -> FloatArray:
+    """Largest deviation of each body from its base radius, Σ|a| of its harmonics [m] (the
+    far-roller bound of :func:`_far_bound`), summed in order."""
+    _, _, a, _, off = bt
+    amplitudes = np.abs(a).tolist()
+    dev = []
+    for b in range(off.size - 1):
+        total = 0.0
+        for v in amplitudes[off[b] : off[b + 1]]:
+            total += v
+        dev.append(total)
+    return np.array(dev)
+
+
+@register_jitable(no_cfunc_wrapper=True)
+def _settle(
+    mode: int, roller: int, s: float, ex: float, ey: float, sh: FloatArray, bt: Bodies
+) -> tuple[float, bool]:
+    """Radius s [m] along (ex, ey) at which body ``roller`` touches the fixed ring (body
+    1 - mode) from s, by Newton's method on the gap; and whether it converged."""
+    fixed = 1 - mode
+    for _ in range(40):
+        g, psi, _ = _gap(fixed, sh[fixed], roller, sh[2], s * ex, s * ey, bt, mode == 0)
+        if mode != 0:
+            g = -g
+        ds = g / (math.cos(psi) * ex + math.sin(psi) * ey)
+        s += ds
+        if abs(ds) <= 1e-10:  # Newton on a nearly linear gap: next step < 1e-18 m
+            return s, True
+    return s, False
+
+
+@register_jitable(no_cfunc_wrapper=True)
+def _gaps_at(
+    mode: int,
+    cx: float,
+    cy: float,
+    rx: FloatArray,
+    ry: FloatArray,
+    far: NDArray[np.bool_],
+    dev: FloatArray,
+    sh: FloatArray,
+    bt: Bodies,
+    kept: FloatArray,
+    out: FloatArray,
+) -> bool:
+    """The gap of every roller at the accepted centre c into ``out``: the bound of a far
+    roller, the gap the search computed there (``kept``) or, where it did not, a new one.
+    False when a far roller's bound is not positive (contact beyond the contact side)."""
+    clear = True
+    for j in range(rx.size):
+        if far[j]:
+            gj = _far_bound(mode, j, cx, cy, rx, ry, bt[0], dev)
+            if gj <= 0.0:
+                clear = False
+            out[j] = gj
+            continue
+        gj = kept[j]
+        if math.isnan(gj):  # else known from the accepted search's last _worst, same c
+            gj, _, _ = _constraint(mode, j, cx, cy, rx, ry, sh, bt)
+        out[j] = gj
+    return clear
+
+
+#: :func:`_support` and :func:`_gap` compiled on their own, for callers in Python (the kernels
+#: compile them in).
+support = numba.njit(cache=True)(_support)
+gap = numba.njit(cache=True)(_gap)
+
+
+def work_arrays(z: int) -> tuple[NDArray[np.bool_], FloatArray, FloatArray, NDArray[np.int64]]:
+    """The work space of :func:`_solve_all` for Z rollers: ``far``, ``sh``, ``fwork``,
+    ``iwork``."""
+    return np.empty(z, dtype=np.bool_), np.empty(3), np.empty((5, z)), np.empty((2, z), np.int64)
 
 
 @numba.njit(cache=True, nogil=True)
@@ -306,35 +393,41 @@ def _solve_all(
     out_gap: FloatArray,
     out_rc: FloatArray,
     out_status: NDArray[np.int64],
+    dev: FloatArray,
+    far: NDArray[np.bool_],
+    sh: FloatArray,
+    fwork: FloatArray,
+    iwork: NDArray[np.int64],
 ) -> None:
+    """Every rotation angle in turn (see the module docstring).
+
+    ``dev`` holds the largest deviation of each body from its base radius
+    (:func:`deviations`); ``far`` (Z,), ``sh`` (3,), ``fwork`` (5, Z) and ``iwork`` (2, Z) are
+    work space (:func:`work_arrays`). Both come from the caller: set-up that, compiled, would
+    only cost compilation time.
+    """
     z = beta0.size
-    r0, _, a, _, off = bt
-    sh = np.empty(3)  # turns χ of the inner ring, the outer ring and the rollers
-    wg = np.empty(z)  # gaps of the last _worst call
-    kept = np.empty(z)  # gaps at the accepted position, NaN where not known
+    r0 = bt[0]
+    # sh: turns χ of the inner ring, the outer ring and the rollers
+    wg = fwork[0]  # gaps of the last _worst call
+    kept = fwork[1]  # gaps at the accepted position, NaN where not known
     shift = r0.size - 2 - z  # Z with seed 004's roller reading (inner contacts: see _pack)
-    rx = np.empty(z)
-    ry = np.empty(z)
-    phi = np.empty(z)
+    rx = fwork[2]
+    ry = fwork[3]
+    phi = fwork[4]
     cx = c0x
     cy = c0y
     # contact side: rollers around +u (inner ring loaded) or around -u (outer ring loaded)
     wx = ux if mode == 0 else -ux
     wy = uy if mode == 0 else -uy
-    cand = np.empty(z, dtype=np.int64)
-    sc = np.empty(z, dtype=np.int64)  # candidates sorted by angle
-    far = np.zeros(z, dtype=np.bool_)
+    cand = iwork[0]
+    sc = iwork[1]  # candidates sorted by angle
     lim = 0.5 * math.pi + 2.0 * math.pi / z
-    # largest deviation of each body from its base radius (for the far-roller bound)
-    nb = r0.size
-    dev = np.zeros(nb)
-    for b in range(nb):
-        for i in range(off[b], off[b + 1]):
-            dev[b] += abs(a[i])
     for n in range(alphas.size):
         alpha = alphas[n]
         # e^{-i shift} of the inner ring, the outer ring and the rollers at this angle
-        kept[:] = math.nan
+        for j in range(z):
+            kept[j] = math.nan
         sh[0] = inner_turns * alpha
         sh[1] = outer_turns * alpha
         sh[2] = spin * alpha
@@ -363,18 +456,7 @@ def _solve_all(
                 s = r0[1] - r0[2 + j]
             else:
                 s = r0[0] + r0[2 + j]
-            ok = False
-            for _ in range(40):
-                if mode == 0:
-                    g, psi, _ = _gap(1, sh[1], 2 + j, sh[2], s * ex, s * ey, bt, True)
-                    ds = g / (math.cos(psi) * ex + math.sin(psi) * ey)
-                else:
-                    g, psi, _ = _gap(0, sh[0], 2 + j + shift, sh[2], s * ex, s * ey, bt, False)
-                    ds = -g / (math.cos(psi) * ex + math.sin(psi) * ey)
-                s += ds
-                if abs(ds) <= 1e-10:  # Newton on a nearly linear gap: next step < 1e-18 m
-                    ok = True
-                    break
+            s, ok = _settle(mode, 2 + j if mode == 0 else 2 + j + shift, s, ex, ey, sh, bt)
             if not ok:
                 status = _SETTLE_FAIL
             rx[j] = s * ex
@@ -425,11 +507,12 @@ def _solve_all(
                 keep = sc[ib] if lam_a < -TOL_MULTIPLIER else sc[ia]
                 if mode == 1:
                     # the hoop may hang on the kept roller alone (convex admissible set)
-                    qx, qy = _single(keep, wx, wy, rx, ry, sh, bt)
+                    qx, qy = _single(mode, keep, wx, wy, rx, ry, sh, bt)
                     wj, _ = _worst(mode, keep, keep, qx, qy, rx, ry, far, dev, sh, bt, wg)
                     if wj < 0:
                         found = True
-                        kept[:] = wg
+                        for jj in range(z):  # a loop: a slice copy compiles NumPy's shape check
+                            kept[jj] = wg[jj]
                         bx, by, la, lb = qx, qy, 1.0, 0.0
                         ia = ib = -1
                         single = keep
@@ -451,7 +534,8 @@ def _solve_all(
                 break
             if worst < 0:
                 found = True
-                kept[:] = wg
+                for jj in range(z):
+                    kept[jj] = wg[jj]
                 bx, by, la, lb = vx, vy, lam_a, lam_b
                 break
             pos = -1
@@ -499,7 +583,7 @@ def _solve_all(
                         found = True
             if mode == 1:
                 for i1 in range(nc):
-                    qx, qy = _single(sc[i1], wx, wy, rx, ry, sh, bt)
+                    qx, qy = _single(mode, sc[i1], wx, wy, rx, ry, sh, bt)
                     wj, _ = _worst(mode, sc[i1], sc[i1], qx, qy, rx, ry, far, dev, sh, bt, wg)
                     if wj < 0 and ux * qx + uy * qy > best:
                         best = ux * qx + uy * qy
@@ -521,14 +605,5 @@ def _solve_all(
             out_pair[n, 1] = sc[ib]
         out_lam[n, 0] = la
         out_lam[n, 1] = lb
-        for j in range(z):
-            if far[j]:
-                gj = _far_bound(mode, j, cx, cy, rx, ry, r0, dev)
-                if gj <= 0.0:
-                    out_status[n] = _FAR_CONTACT
-                out_gap[n, j] = gj
-                continue
-            gj = kept[j]
-            if math.isnan(gj):  # else known from the accepted search's last _worst, same c
-                gj, _, _ = _constraint(mode, j, cx, cy, rx, ry, sh, bt)
-            out_gap[n, j] = gj
+        if not _gaps_at(mode, cx, cy, rx, ry, far, dev, sh, bt, kept, out_gap[n]):
+            out_status[n] = _FAR_CONTACT

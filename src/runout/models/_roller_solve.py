@@ -25,9 +25,11 @@ from runout.models._roller_kernels import (
     _NO_STRADDLE,
     _NO_VERTEX,
     _SETTLE_FAIL,
-    _gap,
     _solve_all,
-    _support,
+    deviations,
+    gap,
+    support,
+    work_arrays,
 )
 from runout.models._roller_setup import (
     ConstraintGeometry,
@@ -216,6 +218,8 @@ def _solve_one(geo: ConstraintGeometry, al: FloatArray) -> Solution:
         out_gap,
         out_rc,
         out_status,
+        deviations(bodies),
+        *work_arrays(z),
     )
     bad = np.flatnonzero(out_status)
     if bad.size:
@@ -245,7 +249,7 @@ def support_function(
         :math:`h(\\psi) = \\max_\\theta \\rho(\\theta)\\cos(\\theta-\\psi)` [m], its derivative
         [m/rad] and the radius of curvature of the profile at the support point [m].
     """
-    return _support(0, _bodies([radius], [harmonics]), float(turned), float(psi))
+    return support(0, _bodies([radius], [harmonics]), float(turned), float(psi))
 
 
 def _pair(
@@ -254,7 +258,7 @@ def _pair(
 ) -> tuple[float, float]:  # fmt: skip
     bodies = _bodies([ra, rb], [ha, hb])
     dx, dy = float(centre_b[0]), float(centre_b[1])
-    g, psi, _ = _gap(0, float(turned_a), 1, float(turned_b), dx, dy, bodies, inside)
+    g, psi, _ = gap(0, float(turned_a), 1, float(turned_b), dx, dy, bodies, inside)
     return g, psi
 
 

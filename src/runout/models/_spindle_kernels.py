@@ -17,13 +17,22 @@ import math
 
 import numba
 import numpy as np
+from numba.extending import register_jitable
 from numpy.typing import NDArray
 
 from runout.models._quasi_static import predict
 
 F64 = NDArray[np.float64]
 
-__all__ = ["NOT_CONVERGED", "OK", "SINGULAR", "TOO_FEW_LOADED", "cholesky_solve", "solve_chunk"]
+__all__ = [
+    "NOT_CONVERGED",
+    "OK",
+    "SINGULAR",
+    "TOO_FEW_LOADED",
+    "cholesky_solve",
+    "scratch_for",
+    "solve_chunk",
+]
 
 OK, TOO_FEW_LOADED, SINGULAR, NOT_CONVERGED = 0, 1, 2, 3
 #: Step tolerance relative to the reference approach (as seed 000's kernel).
@@ -34,7 +43,10 @@ _FLOOR = 64.0 * 2.0**-52
 MAX_DOF = 6
 
 
-@numba.njit(cache=True, inline="always")
+# register_jitable: compiled into its caller, without Python and C entry points of its own
+# (first-run compilation time); a helper that several compiled functions of one run call
+# stays njit (compiled once, not once per caller).
+@register_jitable(no_cfunc_wrapper=True)
 def normal(
     cth: float,
     sth: float,
@@ -65,7 +77,7 @@ def normal(
         g[5] = -ssa if floating else 0.0
 
 
-@numba.njit(cache=True)
+@register_jitable(no_cfunc_wrapper=True)
 def cholesky_solve(h: F64, rhs: F64, out: F64, work: F64) -> bool:
     """Solve the symmetric positive definite system h s = rhs into ``out`` (compiled).
 
@@ -97,32 +109,25 @@ def cholesky_solve(h: F64, rhs: F64, out: F64, work: F64) -> bool:
     return True
 
 
-@numba.njit(cache=True)
-def _potential(
-    c: F64,
-    cth: F64,
-    sth: F64,
-    geo: F64,
-    floating: NDArray[np.bool_],
-    force: F64,
-    q: F64,
-    g: F64,
-) -> float:
+@register_jitable(no_cfunc_wrapper=True)
+def _potential(c: F64, gn: F64, k: F64, force: F64, q: F64) -> float:
+    """Π(q) of the balls with generalised normals ``gn`` (N, m) and stiffnesses ``k``."""
     m = q.size
     e = 0.0
     for a in range(m):
         e -= force[a] * q[a]
     for j in range(c.size):
-        normal(cth[j], sth[j], geo[0, j], geo[1, j], geo[2, j], geo[3, j], floating[j], g)
         d = c[j]
         for a in range(m):
-            d += g[a] * q[a]
+            d += gn[j, a] * q[a]
         if d > 0.0:
-            e += geo[4, j] / 2.5 * d * d * math.sqrt(d)
+            e += k[j] / 2.5 * d * d * math.sqrt(d)
     return e
 
 
-@numba.njit(cache=True)
+# inlined into its one caller, solve_chunk: compiled on its own it would also build the Python
+# and C entry points of its fourteen array arguments (first-run compilation time)
+@numba.njit(cache=True, inline="always")
 def newton(
     c: NDArray[np.float64],
     cth: NDArray[np.float64],
@@ -138,6 +143,7 @@ def newton(
     h: NDArray[np.float64],
     work: NDArray[np.float64],
     vec: NDArray[np.float64],
+    gn: NDArray[np.float64],
 ) -> tuple[int, int]:
     """Newton solve of the spindle balance at one instant, from ``q`` (updated in place).
 
@@ -163,7 +169,9 @@ def newton(
     h, work : ndarray, shape (m, m)
         Work arrays; ``h`` holds the unregularised Hessian of the solution on return.
     vec : ndarray, shape (4, m)
-        Work array (no allocation per instant).
+        Work array (no allocation per instant; rows 1 to 3).
+    gn : ndarray, shape (N, m)
+        Work array: the generalised normals of the balls at this instant.
 
     Returns
     -------
@@ -174,12 +182,17 @@ def newton(
     """
     n = c.size
     m = q.size
-    g = vec[0]
+    # the normals do not depend on q: once per instant, not at every iteration and trial
+    for j in range(n):
+        normal(cth[j], sth[j], geo[0, j], geo[1, j], geo[2, j], geo[3, j], floating[j], gn[j])
+    k = geo[4]
     r = vec[1]
     s = vec[2]
     trial = vec[3]
     tol = RTOL * d_ref
     converged = False
+    balanced = False  # residual at its round-off floor: h and loaded are those of q
+    loaded = 0
     for _ in range(max_iter):
         for a in range(m):
             r[a] = -force[a]
@@ -188,24 +201,22 @@ def newton(
         load_sum = 0.0
         for a in range(m):
             load_sum += abs(force[a]) / scale[a]
-        unloaded = 0
-        for j in range(n):
-            normal(cth[j], sth[j], geo[0, j], geo[1, j], geo[2, j], geo[3, j], floating[j], g)
+        loaded = 0
+        for j in range(n):  # (indexed, not a row view: a view per ball costs reference counts)
             d = c[j]
             for a in range(m):
-                d += g[a] * q[a]
+                d += gn[j, a] * q[a]
             if d > 0.0:
                 sd = math.sqrt(d)
-                qj = geo[4, j] * d * sd
+                qj = k[j] * d * sd
                 load_sum += qj
-                kk = 1.5 * geo[4, j] * sd
+                kk = 1.5 * k[j] * sd
                 for a in range(m):
-                    r[a] += qj * g[a]
-                    ga = kk * g[a]
+                    r[a] += qj * gn[j, a]
+                    ga = kk * gn[j, a]
                     for b in range(a + 1):
-                        h[a, b] += ga * g[b]
-            else:
-                unloaded += 1
+                        h[a, b] += ga * gn[j, b]
+                loaded += 1
         for a in range(m):
             for b in range(a):
                 h[b, a] = h[a, b]
@@ -213,8 +224,8 @@ def newton(
         for a in range(m):
             worst = max(worst, abs(r[a]) / scale[a])
         if worst <= _FLOOR * load_sum:
-            # h and unloaded are those of q: no further pass
-            return _final(h, work, r, s, unloaded, True)
+            converged = balanced = True
+            break
         for a in range(m):
             h[a, a] += reg[a]
         ok = cholesky_solve(h, r, s, work)
@@ -232,11 +243,11 @@ def newton(
         big = step_len > 1e-4 * d_ref
         step = 1.0
         if big:
-            e0 = _potential(c, cth, sth, geo, floating, force, q, g)
+            e0 = _potential(c, gn, k, force, q)
             for _ls in range(40):
                 for a in range(m):
                     trial[a] = q[a] - step * s[a]
-                e1 = _potential(c, cth, sth, geo, floating, force, trial, g)
+                e1 = _potential(c, gn, k, force, trial)
                 if e1 <= e0 + 1e-4 * step * slope or step * step_len < tol:
                     break
                 step *= 0.5
@@ -245,26 +256,28 @@ def newton(
         if step * step_len <= tol:
             converged = True
             break
-    unloaded = 0
-    for a in range(m):
-        for b in range(m):
-            h[a, b] = 0.0
-    for j in range(n):  # the stiffness and contacts of the last step's q
-        normal(cth[j], sth[j], geo[0, j], geo[1, j], geo[2, j], geo[3, j], floating[j], g)
-        d = c[j]
-        for a in range(m):
-            d += g[a] * q[a]
-        if d <= 0.0:
-            unloaded += 1
-            continue
-        kk = 1.5 * geo[4, j] * math.sqrt(d)
+    if not balanced:  # the stiffness and contacts of the last step's q
+        loaded = 0
         for a in range(m):
             for b in range(m):
-                h[a, b] += kk * g[a] * g[b]
-    return _final(h, work, r, s, unloaded, converged)
+                h[a, b] = 0.0
+        for j in range(n):
+            d = c[j]
+            for a in range(m):
+                d += gn[j, a] * q[a]
+            if d <= 0.0:
+                continue
+            loaded += 1
+            kk = 1.5 * k[j] * math.sqrt(d)
+            for a in range(m):
+                for b in range(m):
+                    h[a, b] += kk * gn[j, a] * gn[j, b]
+    # one call, with run-time arguments: literal ones (a constant True, a counter's first 0)
+    # would each compile a specialisation of their own
+    return _final(h, work, r, s, n - loaded, converged)
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")  # one caller, newton (see there)
 def _final(h: F64, work: F64, r: F64, s: F64, unloaded: int, converged: bool) -> tuple[int, int]:
     """Status of a solve whose unregularised stiffness is ``h`` (compiled).
 
@@ -284,6 +297,11 @@ def _final(h: F64, work: F64, r: F64, s: F64, unloaded: int, converged: bool) ->
     return unloaded, OK
 
 
+def scratch_for(n_balls: int, m: int) -> tuple[F64, F64, F64, F64]:
+    """The work arrays of :func:`solve_chunk` for ``n_balls`` balls and m coordinates."""
+    return np.empty((m, m)), np.empty((m, m)), np.empty((4, m)), np.empty((n_balls, m))
+
+
 @numba.njit(cache=True, nogil=True)
 def solve_chunk(
     c: NDArray[np.float64],
@@ -300,6 +318,7 @@ def solve_chunk(
     max_iter: int,
     q_out: NDArray[np.float64],
     unloaded: NDArray[np.int64],
+    scratch: tuple[F64, F64, F64, F64],
 ) -> tuple[int, int, int]:
     """The balance at every instant of a chunk, warm-started (compiled).
 
@@ -317,6 +336,9 @@ def solve_chunk(
         Filled with the solutions.
     unloaded : ndarray, shape (n,)
         Filled with the balls without load.
+    scratch : tuple of ndarray
+        Work arrays of shapes (m, m), (m, m), (4, m) and (N, m) (:func:`scratch_for`): from
+        the caller, so that the kernel allocates nothing (nothing to compile for it).
 
     Returns
     -------
@@ -325,10 +347,11 @@ def solve_chunk(
     """
     n = c.shape[0]
     m = force.size
-    h = np.empty((m, m))
-    work = np.empty((m, m))
-    vec = np.empty((4, m))
-    q = np.empty(m)
+    h = scratch[0]
+    work = scratch[1]
+    vec = scratch[2]
+    gn = scratch[3]
+    q = vec[0]  # newton's own work is rows 1 to 3
     smooth = smooth_in
     for i in range(n):
         status = OK
@@ -352,6 +375,7 @@ def solve_chunk(
                 h,
                 work,
                 vec,
+                gn,
             )
             if status == OK or order < 2:
                 break

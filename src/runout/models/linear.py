@@ -817,10 +817,11 @@ def spectral_lines(terms: Terms, rotation_hz: float, z: int, inner_rotating: boo
 def synthesize(
     lines: SpectralLines, revolutions: float, samples: int
 ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
-    """x(θ), y(θ) from the lines on θ = 2π · revolutions · n / samples (compiled kernel).
+    """x(θ), y(θ) from the lines on θ = 2π · revolutions · n / samples.
 
-    Rotating phasors re-anchored every 256 samples (:mod:`runout.analysis.spectrum`); agrees with
-    :meth:`SpectralLines.evaluate` to about 1e-13 of the largest amplitude.
+    Blocks of 256 samples as matrix products with one table of phasors
+    (:mod:`runout.analysis._line_kernels`); agrees with :meth:`SpectralLines.evaluate` to about
+    1e-13 of the largest amplitude.
 
     Parameters
     ----------

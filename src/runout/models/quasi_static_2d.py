@@ -53,6 +53,7 @@ from typing import TYPE_CHECKING, Any, Literal
 
 import numba
 import numpy as np
+from numba.extending import register_jitable
 from numpy.typing import NDArray
 
 from runout.analysis.results import SOLVER_RTOL, RunResult
@@ -62,11 +63,11 @@ from runout.geometry.contact import ball_race_contacts
 from runout.geometry.kinematics import ball_spin_frequency, cage_frequency
 from runout.geometry.loading import axial_loading, operating_contact_angle
 from runout.models._quasi_static import (
+    ANCHOR,
     Kinematics,
     contact_advance,
     contact_anchor,
     contact_deviations,
-    contact_rotations,
     contact_sources,
     contact_state,
     contact_values,
@@ -231,7 +232,10 @@ def solve_kernel(
     return solve_kernel_loaded(c, theta, k, d_ref, max_iter, np.zeros(2))
 
 
-@numba.njit(cache=True)
+# register_jitable: compiled into its caller, without Python and C entry points of its own
+# (first-run compilation time); a helper that several compiled functions of one run call
+# stays njit (compiled once, not once per caller).
+@register_jitable(no_cfunc_wrapper=True)
 def _newton(
     ci: NDArray[np.float64],
     cth: NDArray[np.float64],
@@ -412,6 +416,8 @@ def solve_fused(
     force: NDArray[np.float64],
     disp: NDArray[np.float64],
     unloaded: NDArray[np.signedinteger[Any]],
+    h: float,
+    state: tuple[NDArray[np.float64], ...],
     first: int,
     last: int,
 ) -> tuple[int, int]:
@@ -432,6 +438,10 @@ def solve_fused(
         Filled with the shaft centre (x, y, 0) [m].
     unloaded : ndarray of int16 or int64, shape (n,)
         Filled with the balls without load at each instant.
+    h : float
+        Step of the time grid, :func:`runout.models._quasi_static.time_step` [s].
+    state : tuple of ndarray
+        Work arrays of the phasors, :func:`runout.models._quasi_static.contact_state`.
     first, last : int
         The instants ``first <= i < last`` are solved (and written at i), Newton's method
         starting from rest at ``first`` (:func:`runout.models._quasi_static.solve_in_halves`).
@@ -444,15 +454,14 @@ def solve_fused(
         Instant of the failure (-1 when status is 0).
     """
     z = base.size
-    state = contact_state(z, ring, ball)
-    h = time_step(t)
-    contact_rotations(h, rates, ring, n_inner, ball, state)
+    # allocated here, not passed in: fresh arrays alias nothing, which the loops need to run
+    # at full speed
     ci = np.empty(z)
     cth = np.empty(z)
     sth = np.empty(z)
     a0 = a1 = b0 = b1 = c0 = c1 = 0.0  # the last three solutions
     smooth = 0  # last instants with every ball loaded (up to 3)
-    anchor = -1
+    anchor = first - ANCHOR  # none yet; a literal -1 would compile on_grid a second time
     for i in range(first, last):
         if on_grid(i, t, h, anchor):
             contact_advance(state)
@@ -728,6 +737,7 @@ def solve(
     unloaded: NDArray[np.integer[Any]] = np.empty(
         t.size, dtype=np.int16 if st.kinematics.n_elements < 2**15 else np.int64
     )
+    h = time_step(t)
     args = (
         t,
         *src.args(),
@@ -737,8 +747,14 @@ def solve(
         st.force,
         disp,
         unloaded,
+        h,
     )
-    status, instant = solve_in_halves(solve_fused, args, t.size)
+    status, instant = solve_in_halves(
+        solve_fused,
+        args,
+        t.size,
+        lambda: contact_state(h, src.rates, src.ring, src.n_inner, src.ball, src.base.size),
+    )
     if status != OK:
         cause, when = CAUSES[int(status)], float(t[int(instant)])
         if status == TOO_FEW_LOADED:

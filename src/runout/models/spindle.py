@@ -98,6 +98,7 @@ from runout.models._spindle_kernels import (
     NOT_CONVERGED,
     OK,
     TOO_FEW_LOADED,
+    scratch_for,
     solve_chunk,
 )
 from runout.models.quasi_static_3d import check_axial_room, preload_approach
@@ -523,6 +524,7 @@ def solve(
     unloaded = np.empty(n, dtype=np.int64)
     history = np.zeros((3, m))
     smooth = 0
+    scratch = scratch_for(st.geo.shape[1], m)
     for first in range(0, n, CHUNK):
         last = min(n, first + CHUNK)
         c, cth, sth = contact_arrays(st, imperfections, t[first:last])
@@ -541,6 +543,7 @@ def solve(
             MAX_ITER,
             q[first:last],
             unloaded[first:last],
+            scratch,
         )
         if status != OK:
             _raise(int(status), first + int(instant), t)
@@ -739,6 +742,7 @@ def static_stiffness(st: Setup) -> tuple[NDArray[np.float64], NDArray[np.float64
         MAX_ITER,
         q_out,
         np.empty(1, dtype=np.int64),
+        scratch_for(st.geo.shape[1], m),
     )
     if status != OK:
         _raise(int(status), 0, np.zeros(1))

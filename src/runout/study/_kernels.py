@@ -149,33 +149,23 @@ def _solve_one(c_base, offset, cth, sth, k, d_ref, max_iter, q_out, unloaded):  
 
 
 @numba.njit(cache=True, nogil=True, parallel=True)
-def _solve_batch_parallel(c_base, offsets, cth, sth, k, d_ref, max_iter):  # pragma: no cover
-    b = offsets.shape[0]
-    n = c_base.shape[0]
-    q = np.zeros((b, n, 2))
-    unloaded = np.zeros((b, n), dtype=np.int64)
-    status = np.zeros(b, dtype=np.int64)
-    instant = np.full(b, -1, dtype=np.int64)
-    for m in numba.prange(b):
+def _solve_batch_parallel(
+    c_base, offsets, cth, sth, k, d_ref, max_iter, q, unloaded, status, instant
+):  # pragma: no cover
+    for m in numba.prange(offsets.shape[0]):
         s, i = _solve_one(c_base, offsets[m], cth, sth, k, d_ref, max_iter, q[m], unloaded[m])
         status[m] = s
         instant[m] = i
-    return q, unloaded, status, instant
 
 
 @numba.njit(cache=True, nogil=True)
-def _solve_batch_serial(c_base, offsets, cth, sth, k, d_ref, max_iter):  # pragma: no cover
-    b = offsets.shape[0]
-    n = c_base.shape[0]
-    q = np.zeros((b, n, 2))
-    unloaded = np.zeros((b, n), dtype=np.int64)
-    status = np.zeros(b, dtype=np.int64)
-    instant = np.full(b, -1, dtype=np.int64)
-    for m in range(b):
+def _solve_batch_serial(
+    c_base, offsets, cth, sth, k, d_ref, max_iter, q, unloaded, status, instant
+):  # pragma: no cover
+    for m in range(offsets.shape[0]):
         s, i = _solve_one(c_base, offsets[m], cth, sth, k, d_ref, max_iter, q[m], unloaded[m])
         status[m] = s
         instant[m] = i
-    return q, unloaded, status, instant
 
 
 def solve_batch(
@@ -229,7 +219,16 @@ def solve_batch(
     cth = np.ascontiguousarray(np.cos(th))
     sth = np.ascontiguousarray(np.sin(th))
     kernel = _solve_batch_parallel if parallel else _solve_batch_serial
-    return kernel(c, o, cth, sth, float(stiffness), float(d_ref), int(max_iter))
+    # the outputs are allocated here: compiled, their allocation would only cost compilation
+    b, n = o.shape[0], c.shape[0]
+    q = np.zeros((b, n, 2))
+    unloaded = np.zeros((b, n), dtype=np.int64)
+    status = np.zeros(b, dtype=np.int64)
+    instant = np.full(b, -1, dtype=np.int64)
+    kernel(
+        c, o, cth, sth, float(stiffness), float(d_ref), int(max_iter), q, unloaded, status, instant
+    )
+    return q, unloaded, status, instant
 
 
 def solve_batch_reference(

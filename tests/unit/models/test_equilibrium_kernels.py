@@ -560,15 +560,6 @@ def test_friction_continuation_matches_numpy() -> None:
     np.testing.assert_allclose(xs, want_x, rtol=1e-13, atol=1e-13 * ring.a)
 
 
-@pytest.mark.parametrize("n", [*range(1, 20), 63, 64, 65, 127, 128, 129, 300])
-def test_pairwise_sum_is_numpy_sum(n: int) -> None:
-    rng = np.random.default_rng(n)
-    v = rng.standard_normal(n) * 10.0 ** rng.uniform(-5, 5, n)
-    assert kern._pairwise_sum(v) == pytest.approx(v.sum(), rel=1e-15, abs=1e-300)
-    if n <= 128:  # NumPy's own order: bit for bit
-        assert kern._pairwise_sum(v) == v.sum()
-
-
 def test_hertz_constants_equal_the_per_angle_solution() -> None:
     b = kim()
     angles = np.array([0.0, 1e-9, 0.2, 0.3268, 0.9, 1.4, 0.5 * math.pi - 1e-6])
