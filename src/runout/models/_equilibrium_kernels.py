@@ -228,7 +228,7 @@ def _atan_cs(z: complex) -> complex:
     return complex(math.atan(x), z.imag / (1.0 + x * x))
 
 
-@register_jitable(no_cfunc_wrapper=True)
+@numba.njit(cache=True)
 def _sqrt_cs(z: complex) -> complex:
     """Square root of a complex-step argument x + i h, x > 0, |h| negligible against x.
 
@@ -249,7 +249,7 @@ def _hertz(delta: complex, k: complex) -> complex:
     return 0.0j
 
 
-@register_jitable(no_cfunc_wrapper=True)
+@numba.njit(cache=True)
 def _ball_state(
     x1: complex,
     x2: complex,
