@@ -19,8 +19,11 @@ ROOT = Path(__file__).resolve().parents[2]
 RUNOUT = [sys.executable, "-m", "runout.cli"]
 
 
-def _runout(args: list[str], cache: Path) -> subprocess.CompletedProcess[str]:
+def _runout(args: list[str], cache: Path, notice: str = "1") -> subprocess.CompletedProcess[str]:
+    # stderr is a pipe here, not a terminal: RUNOUT_COMPILE_NOTICE=1 asks for the notices a
+    # person at a terminal gets
     env = dict(os.environ, NUMBA_CACHE_DIR=str(cache), MPLBACKEND="Agg")
+    env["RUNOUT_COMPILE_NOTICE"] = notice
     return subprocess.run(
         [*RUNOUT, *args], capture_output=True, text=True, env=env, timeout=600, check=False
     )
@@ -40,6 +43,13 @@ def test_first_run_says_it_compiles_and_the_second_does_not(tmp_path: Path) -> N
     assert second.returncode == 0 and second.stderr == "", second.stderr
     # the notice is on stderr only: standard output is the same JSON
     assert json.loads(first.stdout) == json.loads(second.stdout)
+
+
+def test_a_script_reading_stderr_gets_no_progress_lines(tmp_path: Path) -> None:
+    # not a terminal, not asked for: an error or warning stays the only line a script reads
+    case = str(ROOT / "examples" / "seed000_tada_fig7.toml")
+    done = _runout(["run", case, "--json"], tmp_path / "cache", notice="")
+    assert done.returncode == 0 and done.stderr == "", done.stderr
 
 
 def test_commands_that_compile_nothing_say_nothing(tmp_path: Path) -> None:

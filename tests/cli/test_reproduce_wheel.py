@@ -167,7 +167,7 @@ def test_every_command_runs_from_a_plain_install(installed: Path, tmp_path: Path
     first = subprocess.run(
         [str(runout), "run", str(compiled), "--json"],
         cwd=tmp_path,
-        env=_env(),
+        env={**_env(), "RUNOUT_COMPILE_NOTICE": "1"},  # stderr is a pipe here, not a terminal
         capture_output=True,
         text=True,
         timeout=300,

@@ -16,13 +16,14 @@ through a finder on :data:`sys.meta_path` that removes itself after that one imp
 from __future__ import annotations
 
 import importlib.util
+import os
 import sys
 import time
 from collections.abc import Callable, Sequence
 from types import ModuleType
 from typing import Any, TextIO
 
-__all__ = ["finish", "stop", "topic_of", "watch"]
+__all__ = ["ENV", "finish", "stop", "topic_of", "wanted", "watch"]
 
 #: The first message, printed once per process when a kernel starts compiling.
 STARTING = (
@@ -138,15 +139,45 @@ class _AfterNumba:
         return spec
 
 
+#: ``RUNOUT_COMPILE_NOTICE=1`` prints the notices whatever stderr is, ``0`` never.
+ENV = "RUNOUT_COMPILE_NOTICE"
+
+
+def wanted(stream: TextIO) -> bool:
+    """Whether to print the notices on ``stream``: to a person at a terminal, or when asked.
+
+    A script that reads stderr (a test harness, a pipeline expecting one ``error:`` line) gets
+    no progress lines unless ``RUNOUT_COMPILE_NOTICE=1``.
+
+    Parameters
+    ----------
+    stream : text stream
+        The command's standard error.
+
+    Returns
+    -------
+    bool
+    """
+    setting = os.environ.get(ENV, "").strip()
+    if setting in ("0", "1"):
+        return setting == "1"
+    isatty = getattr(stream, "isatty", None)
+    try:
+        return bool(isatty()) if callable(isatty) else False
+    except (OSError, ValueError):
+        return False
+
+
 def watch(stream: TextIO) -> None:
     """Print to ``stream`` when this command compiles a kernel (once per process).
 
     Parameters
     ----------
     stream : text stream
-        Where the notices go (the command's standard error).
+        Where the notices go (the command's standard error); nothing is printed unless
+        :func:`wanted` says so.
     """
-    _State.stream = stream
+    _State.stream = stream if wanted(stream) else None
     _State.seconds = 0.0
     _State.topics = {}
     if _State.registered:

@@ -16,6 +16,7 @@ def _event(module: str) -> dict[str, object]:
 
 @pytest.fixture(autouse=True)
 def _fresh(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setenv(notice.ENV, "1")  # a StringIO is no terminal
     monkeypatch.setattr(notice._State, "announced", False)
     monkeypatch.setattr(notice._State, "depth", 0)
     notice.stop()
@@ -61,3 +62,22 @@ def test_topics_name_the_models() -> None:
     assert notice.topic_of("runout.models._spindle_kernels") == "spindle model"
     assert notice.topic_of("runout.models.quasi_static_3d") == "quasi_static_3d model"
     assert notice.topic_of("runout.something_new") == "something_new"
+
+
+class _Terminal(io.StringIO):
+    def isatty(self) -> bool:
+        return True
+
+
+def test_only_a_terminal_gets_the_notices_unless_asked(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.delenv(notice.ENV)
+    assert notice.wanted(_Terminal())
+    assert not notice.wanted(io.StringIO())
+    monkeypatch.setenv(notice.ENV, "0")
+    assert not notice.wanted(_Terminal())
+    monkeypatch.setenv(notice.ENV, "1")
+    assert notice.wanted(io.StringIO())
+    closed = io.StringIO()
+    closed.close()
+    monkeypatch.delenv(notice.ENV)
+    assert not notice.wanted(closed)
