@@ -30,7 +30,7 @@ import numpy as np
 from _harness import BenchResult, best_time
 from runout.case.model import Case, load_case, parse_case
 from runout.models import quasi_static_2d as qs2
-from runout.study._pool import init_worker, spawn_context
+from runout.study._workers import init_worker, spawn_context
 from runout.study.run import dask_executor, run_study, sample_rng
 
 CASE = Path(__file__).resolve().parents[1] / "examples" / "seed001_kim_table9.toml"
