@@ -9,17 +9,18 @@ vectorised NumPy implementation it replaced, ball by ball and in the same order 
 global stopping rules, the same step limits), so that the results agree to round-off; the unit
 tests keep that NumPy implementation as the reference.
 
-Derivatives are complex-step derivatives (exact to round-off), as in the NumPy code: each
-scalar ball function is evaluated in complex arithmetic with a step of ``1e-30 i``. Square root
-and arctangent take their first-order complex-step forms (:func:`_sqrt_cs`, :func:`_atan_cs`),
-exact to round-off for such steps and far less code to compile than the general complex
-functions.
+Derivatives are forward-mode derivatives written out by the chain rule (:func:`_ball_state`
+carries each quantity with its derivative along one direction of (X, A)), exact to round-off
+like the complex-step derivatives of the NumPy reference; real arithmetic compiles in about
+half the time of the complex arithmetic this kernel used before.
 
-Compilation time (a model's first run on an empty cache, some 3.5 s on the 2-core machine):
+Compilation time (a model's first run on an empty cache, some 3 s on the 2-core machine):
 one entry point per run (:func:`_balls`, which ends with :func:`_ring_jacobian`); the
 restarts (:func:`_restart_balls`) compile only in a run that needs them; helpers with one
 calling kernel are ``register_jitable`` (compiled into it, no Python or C entry points of
-their own), helpers shared by two stay ``njit`` (compiled once).
+their own), helpers shared by two stay ``njit`` (compiled once). Each compiled function costs
+some 40 ms however small, so small helpers (``max``/``min`` of two floats, the residual and
+its Jacobian) are written out where they are used.
 
 The kernels take C-contiguous float64 arrays and plain scalars, are compiled with
 ``cache=True`` and without ``fastmath``. The constants of the bearing travel in one float64
@@ -52,7 +53,6 @@ __all__ = [
 
 #: Iterations of the ball Newton and of the lift-off fixed point.
 BALL_ITER = 50
-_H = 1e-30  # complex step [m]
 _SHRINK = 60  # halvings of a ball Newton step that would open a contact
 # continuation in the gyroscopic friction: each pass advances s by >= 1/1024 or halves ds
 # (at most 10 times in a row), so this bounds the loop with a wide margin
@@ -150,43 +150,11 @@ def constants(
 
 
 # --------------------------------------------------------------------------------------------
-# scalar ball functions (real or complex arguments)
+# scalar ball functions
 # --------------------------------------------------------------------------------------------
 # register_jitable: compiled into its caller, without Python and C entry points of its own
 # (first-run compilation time); a helper that several compiled functions of one run call
 # stays njit (compiled once, not once per caller).
-@register_jitable(no_cfunc_wrapper=True)
-def _speeds_cs(
-    cos_i: complex,
-    sin_i: complex,
-    cos_o: complex,
-    sin_o: complex,
-    gamma: float,
-    inner: float,
-    outer: float,
-    inner_control: bool,
-) -> tuple[complex, complex, complex]:
-    """Orbit and spin speed and sin β (Harris, ``equilibrium.ball_speeds``), complex-step
-    arguments; the spin-axis attitude tan β of inner- or outer-raceway control.
-
-    :func:`_speeds` is the same in real arithmetic.
-    """
-    if inner_control:
-        tb = sin_i / (cos_i - gamma)
-    else:
-        tb = sin_o / (cos_o + gamma)
-    cb = 1.0 / _sqrt_cs(1.0 + tb * tb)
-    sb = tb * cb
-    ci = cos_i + tb * sin_i
-    co = cos_o + tb * sin_o
-    w = inner - outer
-    a = (1.0 - gamma * cos_i) * co
-    b = (1.0 + gamma * cos_o) * ci
-    omega_m = outer + w * a / (a + b)
-    omega_r = w / ((co / (1.0 + gamma * cos_o) + ci / (1.0 - gamma * cos_i)) * gamma * cb)
-    return omega_m, omega_r, sb
-
-
 @register_jitable(no_cfunc_wrapper=True)
 def _speeds(
     cos_i: float,
@@ -198,8 +166,9 @@ def _speeds(
     outer: float,
     inner_control: bool,
 ) -> tuple[float, float, float]:
-    """:func:`_speeds_cs` in real arithmetic, the same operations (lift-off fixed point: the
-    complex version would cost it its complex divisions at every pass)."""
+    """Orbit and spin speed and sin β (Harris, ``equilibrium.ball_speeds``) at the contact
+    angles (cos α_i, sin α_i, cos α_o, sin α_o); the spin-axis attitude tan β of inner- or
+    outer-raceway control (:func:`_ball_state` writes the same out with its derivatives)."""
     if inner_control:
         tb = sin_i / (cos_i - gamma)
     else:
@@ -216,122 +185,16 @@ def _speeds(
     return omega_m, omega_r, sb
 
 
-@register_jitable(no_cfunc_wrapper=True)
-def _atan_cs(z: complex) -> complex:
-    """arctan of a complex-step argument x + i h, |h| negligible against |x| and 1.
-
-    Exact to round-off: arctan(x + i h) = arctan x + i h/(1 + x²) + O(h²), and the
-    arguments here (tangents of contact angles, O(1)) carry imaginary parts of order 1e-27.
-    Much less code than the general complex arctangent (compile time).
-    """
-    x = z.real
-    return complex(math.atan(x), z.imag / (1.0 + x * x))
-
-
-@numba.njit(cache=True)
-def _sqrt_cs(z: complex) -> complex:
-    """Square root of a complex-step argument x + i h, x > 0, |h| negligible against x.
-
-    Exact to round-off: sqrt(x + i h) = sqrt x + i h/(2 sqrt x) · (1 + O(h²/x²)); the
-    arguments here (squared lengths, approaches of loaded contacts, 1 + tan²) carry
-    imaginary parts many orders of magnitude below their real parts (a step of 1e-30 m
-    against approaches of nanometres and more).
-    """
-    r = math.sqrt(z.real)
-    return complex(r, z.imag / (2.0 * r))
-
-
-@register_jitable(no_cfunc_wrapper=True)
-def _hertz(delta: complex, k: complex) -> complex:
-    """K δ^1.5 for Re δ > 0, else 0 (complex step through the load)."""
-    if delta.real > 0.0:
-        return k * delta * _sqrt_cs(delta)
-    return 0.0j
-
-
 @numba.njit(cache=True)
 def _ball_state(
-    x1: complex,
-    x2: complex,
-    a1: complex,
-    a2: complex,
-    ki0: float,
-    ki1: float,
-    ai_c: float,
-    ko0: float,
-    ko1: float,
-    ao_c: float,
-    cst: FloatArray,
-    lam_i: float,
-    lam_o: float,
-    speed_on: bool,
-) -> tuple[
-    complex,
-    complex,
-    complex,
-    complex,
-    complex,
-    complex,
-    complex,
-    complex,
-    complex,
-    complex,
-    complex,
-    complex,
-    complex,
-    complex,
-]:
-    r"""Ball j at centre (x1, x2) and inner groove centre (a1, a2) [m], complex arguments.
-
-    Seed 001 eq. 3-6 (module docstring of :mod:`runout.models.equilibrium`): the residuals
-    g1, g2 [N] of the ball's two equations, the inner-race force components P_a, P_r [N], the
-    gyroscopic moment M_g [N m], F_c, Q_i, Q_o [N], δ_i, δ_o [m], α_i, α_o [rad], ω_m, ω_R
-    [rad/s], in the order of :data:`STATE_NAMES`.
-    """
-    d = cst[C_D]
-    dm = cst[C_DM]
-    ro = _sqrt_cs(x1 * x1 + x2 * x2)
-    e1 = a1 - x1
-    e2 = a2 - x2
-    ri = _sqrt_cs(e1 * e1 + e2 * e2)
-    cos_o = x2 / ro
-    sin_o = x1 / ro
-    cos_i = e2 / ri
-    sin_i = e1 / ri
-    alpha_o = _atan_cs(x1 / x2)
-    alpha_i = _atan_cs(e1 / e2)
-    d_o = ro - cst[C_RO0]
-    d_i = ri - cst[C_RI0]
-    k_i = ki0 + ki1 * (alpha_i - ai_c)
-    k_o = ko0 + ko1 * (alpha_o - ao_c)
-    q_i = _hertz(d_i, k_i)
-    q_o = _hertz(d_o, k_o)
-    if speed_on:
-        gamma = d / dm
-        wm, wr, sb = _speeds_cs(
-            cos_i, sin_i, cos_o, sin_o, gamma, cst[C_INNER], cst[C_OUTER], cst[C_INNER_CONTROL]
-        )
-        fc = 0.5 * cst[C_MASS] * dm * wm * wm
-        mg = cst[C_INERTIA] * wr * wm * sb
-    else:
-        wm = 0.0 * x1
-        wr = 0.0 * x1
-        fc = 0.0 * x1
-        mg = 0.0 * x1
-    md = mg / d
-    g1 = q_i * sin_i - q_o * sin_o - md * (lam_i * cos_i - lam_o * cos_o)
-    g2 = q_i * cos_i - q_o * cos_o + md * (lam_i * sin_i - lam_o * sin_o) + fc
-    pa = q_i * sin_i - lam_i * md * cos_i
-    pr = q_i * cos_i + lam_i * md * sin_i
-    return g1, g2, pa, pr, mg, fc, q_i, q_o, d_i, d_o, alpha_i, alpha_o, wm, wr
-
-
-@numba.njit(cache=True, inline="always")  # into _ball_newton, its one caller: see _balls
-def _residual_jacobian(
     x1: float,
     x2: float,
     a1: float,
     a2: float,
+    tx1: float,
+    tx2: float,
+    ta1: float,
+    ta2: float,
     ki0: float,
     ki1: float,
     ai_c: float,
@@ -342,49 +205,139 @@ def _residual_jacobian(
     lam_i: float,
     lam_o: float,
     speed_on: bool,
-) -> tuple[float, float, float, float, float, float]:
-    """g (2,) and ∂g/∂X (2×2) of one ball by complex step; (g1, g2, j00, j01, j10, j11)."""
-    ca1 = complex(a1, 0.0)
-    ca2 = complex(a2, 0.0)
-    s = _ball_state(
-        complex(x1, _H),
-        complex(x2, 0.0),
-        ca1,
-        ca2,
-        ki0,
-        ki1,
-        ai_c,
-        ko0,
-        ko1,
-        ao_c,
-        cst,
-        lam_i,
-        lam_o,
-        speed_on,
+) -> tuple[float, ...]:
+    r"""Ball j at centre (x1, x2) and inner groove centre (a1, a2) [m], with the derivative of
+    its first five state entries along the direction (tx1, tx2, ta1, ta2).
+
+    Seed 001 eq. 3-6 (module docstring of :mod:`runout.models.equilibrium`): the residuals
+    g1, g2 [N] of the ball's two equations, the inner-race force components P_a, P_r [N], the
+    gyroscopic moment M_g [N m], F_c, Q_i, Q_o [N], δ_i, δ_o [m], α_i, α_o [rad], ω_m, ω_R
+    [rad/s], in the order of :data:`STATE_NAMES`; then the directional derivatives of g1, g2,
+    P_a, P_r and M_g (forward-mode differentiation: each quantity ``v`` carries its derivative
+    ``t_v``, by the chain rule written out). The values are those of the plain evaluation; the
+    derivatives are exact to round-off, as the complex-step derivatives of the NumPy reference.
+    """
+    d = cst[C_D]
+    dm = cst[C_DM]
+    # outer contact: distance from the outer groove centre, angle
+    ro = math.sqrt(x1 * x1 + x2 * x2)
+    t_ro = (x1 * tx1 + x2 * tx2) / ro
+    e1 = a1 - x1
+    e2 = a2 - x2
+    t_e1 = ta1 - tx1
+    t_e2 = ta2 - tx2
+    ri = math.sqrt(e1 * e1 + e2 * e2)
+    t_ri = (e1 * t_e1 + e2 * t_e2) / ri
+    cos_o = x2 / ro
+    sin_o = x1 / ro
+    cos_i = e2 / ri
+    sin_i = e1 / ri
+    t_cos_o = (tx2 - cos_o * t_ro) / ro
+    t_sin_o = (tx1 - sin_o * t_ro) / ro
+    t_cos_i = (t_e2 - cos_i * t_ri) / ri
+    t_sin_i = (t_e1 - sin_i * t_ri) / ri
+    u_o = x1 / x2
+    u_i = e1 / e2
+    alpha_o = math.atan(u_o)
+    alpha_i = math.atan(u_i)
+    t_alpha_o = (tx1 - u_o * tx2) / x2 / (1.0 + u_o * u_o)
+    t_alpha_i = (t_e1 - u_i * t_e2) / e2 / (1.0 + u_i * u_i)
+    d_o = ro - cst[C_RO0]
+    d_i = ri - cst[C_RI0]
+    # Hertz loads K δ^1.5 with K linear in the contact angle
+    k_i = ki0 + ki1 * (alpha_i - ai_c)
+    k_o = ko0 + ko1 * (alpha_o - ao_c)
+    q_i = t_q_i = q_o = t_q_o = 0.0
+    if d_i > 0.0:
+        root = math.sqrt(d_i)
+        q_i = k_i * d_i * root
+        t_q_i = ki1 * t_alpha_i * d_i * root + 1.5 * k_i * root * t_ri
+    if d_o > 0.0:
+        root = math.sqrt(d_o)
+        q_o = k_o * d_o * root
+        t_q_o = ko1 * t_alpha_o * d_o * root + 1.5 * k_o * root * t_ro
+    wm = wr = fc = mg = t_fc = t_mg = 0.0
+    if speed_on:
+        # orbit and spin speeds (Harris; equilibrium.ball_speeds), spin-axis attitude tan β
+        gamma = d / dm
+        inner = cst[C_INNER]
+        if cst[C_INNER_CONTROL]:
+            den = cos_i - gamma
+            tb = sin_i / den
+            t_tb = (t_sin_i - tb * t_cos_i) / den
+        else:
+            den = cos_o + gamma
+            tb = sin_o / den
+            t_tb = (t_sin_o - tb * t_cos_o) / den
+        root = math.sqrt(1.0 + tb * tb)
+        cb = 1.0 / root
+        t_cb = -cb * (tb * t_tb / root) / root
+        sb = tb * cb
+        t_sb = t_tb * cb + tb * t_cb
+        ci = cos_i + tb * sin_i
+        co = cos_o + tb * sin_o
+        t_ci = t_cos_i + t_tb * sin_i + tb * t_sin_i
+        t_co = t_cos_o + t_tb * sin_o + tb * t_sin_o
+        outer = cst[C_OUTER]
+        w = inner - outer
+        fi = 1.0 - gamma * cos_i
+        fo = 1.0 + gamma * cos_o
+        a = fi * co
+        b = fo * ci
+        t_a = -gamma * t_cos_i * co + fi * t_co
+        t_b = gamma * t_cos_o * ci + fo * t_ci
+        ab = a + b
+        wm = outer + w * a / ab
+        t_wm = w * (t_a * b - a * t_b) / (ab * ab)
+        p = co / fo
+        r = ci / fi
+        t_p = (t_co - p * gamma * t_cos_o) / fo
+        t_r = (t_ci + r * gamma * t_cos_i) / fi
+        den = (p + r) * gamma * cb
+        t_den = gamma * ((t_p + t_r) * cb + (p + r) * t_cb)
+        wr = w / den
+        t_wr = -wr * t_den / den
+        fc = 0.5 * cst[C_MASS] * dm * wm * wm
+        t_fc = cst[C_MASS] * dm * wm * t_wm
+        inertia = cst[C_INERTIA]
+        mg = inertia * wr * wm * sb
+        t_mg = inertia * (t_wr * wm * sb + wr * t_wm * sb + wr * wm * t_sb)
+    md = mg / d
+    t_md = t_mg / d
+    lc = lam_i * cos_i - lam_o * cos_o
+    ls = lam_i * sin_i - lam_o * sin_o
+    t_lc = lam_i * t_cos_i - lam_o * t_cos_o
+    t_ls = lam_i * t_sin_i - lam_o * t_sin_o
+    g1 = q_i * sin_i - q_o * sin_o - md * lc
+    g2 = q_i * cos_i - q_o * cos_o + md * ls + fc
+    t_g1 = t_q_i * sin_i + q_i * t_sin_i - t_q_o * sin_o - q_o * t_sin_o - t_md * lc - md * t_lc
+    t_g2 = t_q_i * cos_i + q_i * t_cos_i - t_q_o * cos_o - q_o * t_cos_o + t_md * ls + md * t_ls
+    t_g2 += t_fc
+    pa = q_i * sin_i - lam_i * md * cos_i
+    pr = q_i * cos_i + lam_i * md * sin_i
+    t_pa = t_q_i * sin_i + q_i * t_sin_i - lam_i * (t_md * cos_i + md * t_cos_i)
+    t_pr = t_q_i * cos_i + q_i * t_cos_i + lam_i * (t_md * sin_i + md * t_sin_i)
+    return (
+        g1,
+        g2,
+        pa,
+        pr,
+        mg,
+        fc,
+        q_i,
+        q_o,
+        d_i,
+        d_o,
+        alpha_i,
+        alpha_o,
+        wm,
+        wr,
+        t_g1,
+        t_g2,
+        t_pa,
+        t_pr,
+        t_mg,
     )
-    g1 = s[0].real
-    g2 = s[1].real
-    j00 = s[0].imag / _H
-    j10 = s[1].imag / _H
-    s = _ball_state(
-        complex(x1, 0.0),
-        complex(x2, _H),
-        ca1,
-        ca2,
-        ki0,
-        ki1,
-        ai_c,
-        ko0,
-        ko1,
-        ao_c,
-        cst,
-        lam_i,
-        lam_o,
-        speed_on,
-    )
-    j01 = s[0].imag / _H
-    j11 = s[1].imag / _H
-    return g1, g2, j00, j01, j10, j11
 
 
 @numba.njit(cache=True)
@@ -437,22 +390,12 @@ def _ball_newton(
             x2 = xs[m, 1]
             a1 = aa[m, 0]
             a2 = aa[m, 1]
-            g1, g2, j00, j01, j10, j11 = _residual_jacobian(
-                x1,
-                x2,
-                a1,
-                a2,
-                ki0[j],
-                ki1[j],
-                ai_c[j],
-                ko0[j],
-                ko1[j],
-                ao_c[j],
-                cst,
-                lam_i,
-                lam_o,
-                speed_on,
-            )
+            # g and ∂g/∂X: two directional derivatives of the ball state
+            hz = (ki0[j], ki1[j], ai_c[j], ko0[j], ko1[j], ao_c[j], cst, lam_i, lam_o, speed_on)
+            s = _ball_state(x1, x2, a1, a2, 1.0, 0.0, 0.0, 0.0, *hz)
+            g1, g2, j00, j10 = s[0], s[1], s[14], s[15]  # literal indices (see _ring_jacobian)
+            s = _ball_state(x1, x2, a1, a2, 0.0, 1.0, 0.0, 0.0, *hz)
+            j01, j11 = s[14], s[15]
             det = j00 * j11 - j01 * j10
             ok = abs(det) > 0.0
             if not ok:
@@ -462,8 +405,11 @@ def _ball_newton(
             if not ok:
                 s0 = 0.0
                 s1 = 0.0
-            big = max(abs(s0), abs(s1))
-            factor = min(1.0, limit / max(big, 1e-300))
+            # max/min written out (the builtins compile one function per tuple type): the
+            # builtins' semantics, the first argument kept unless the second is larger/smaller
+            big = abs(s1) if abs(s1) > abs(s0) else abs(s0)
+            factor = limit / (1e-300 if 1e-300 > big else big)
+            factor = factor if factor < 1.0 else 1.0
             d_i, d_o = _approaches(x1, x2, a1, a2, ri0, ro0)
             for _ in range(_SHRINK):
                 ti, to = _approaches(x1 + factor * s0, x2 + factor * s1, a1, a2, ri0, ro0)
@@ -479,7 +425,7 @@ def _ball_newton(
             break
 
 
-@numba.njit(cache=True, inline="always")  # into _balls: see there
+@numba.njit(cache=True, inline="always")  # into _balls, its one caller (tests call it too)
 def _lifted_off(
     a: FloatArray,
     ko0: FloatArray,
@@ -530,7 +476,8 @@ def _lifted_off(
             w = md * (lam_i * si - lam_o * so) + fc
             q_o = math.hypot(v, w)
             ao_new = math.atan2(-v, w)
-            k_o = max(ko0[j] + ko1[j] * (ao_new - ao_c[j]), 1e-300)
+            k_o = ko0[j] + ko1[j] * (ao_new - ao_c[j])
+            k_o = 1e-300 if 1e-300 > k_o else k_o  # max(k_o, 1e-300) (see _ball_newton)
             r = ro0 + (q_o / k_o) ** (2.0 / 3.0)
             x1 = r * math.sin(ao_new)
             x2 = r * math.cos(ao_new)
@@ -540,7 +487,10 @@ def _lifted_off(
             e2 = a[j, 1] - x2
             ai_new = math.atan(e1 / e2)
             d_i[j] = math.hypot(e1, e2) - ri0
-            moved = max(moved, abs(ao_new - ao[j]), abs(ai_new - ai[j]))
+            step_o = abs(ao_new - ao[j])
+            step_i = abs(ai_new - ai[j])
+            moved = step_o if step_o > moved else moved  # max(...) (see _ball_newton)
+            moved = step_i if step_i > moved else moved
             ao[j] = ao_new
             ai[j] = ai_new
         if moved <= 1e-14:
@@ -555,7 +505,8 @@ def _start(
 ) -> tuple[float, float]:
     """Zero-speed ball centre: on the line between the groove centres, Hertz split [m]."""
     dist = math.hypot(a1, a2)
-    s = max(dist - ri0 - ro0, 0.0)
+    s = dist - ri0 - ro0
+    s = 0.0 if 0.0 > s else s  # max(s, 0) (see _ball_newton)
     ci = ki0 ** (-2.0 / 3.0)
     co = ko0 ** (-2.0 / 3.0)
     d_o = s * co / (ci + co)
@@ -941,7 +892,7 @@ def ring_forces(
     -\sum P_m\cos\psi)` with :math:`P_m = P_a\Re_i + \lambda_i f_i M_g`. Its Jacobian is
     :math:`\sum_j C_j\,(dP/dA)_j\,B_j` with :math:`dP/dA = \partial P/\partial A -
     \partial P/\partial X\,(\partial g/\partial X)^{-1}\partial g/\partial A` (implicit
-    differentiation of the ball balance, complex-step partial derivatives).
+    differentiation of the ball balance, forward-mode partial derivatives).
 
     Compiled in two kernels: the ball solve (:func:`_balls`) and the restarts of the balls it
     left unconverged (:func:`_restart_balls`, compiled only when a run needs them), each
@@ -1030,54 +981,24 @@ def _ring_jacobian(
     for r in range(5):
         for c in range(5):
             jac[r, c] = 0.0
-    # B_j, q -> (A_1, A_2): rows b0, b1; the entries set per ball below, zeros elsewhere
-    b0 = np.empty(5)
-    b1 = np.empty(5)
-    for col in range(5):
-        b0[col] = 1.0 if col == 0 else 0.0
-        b1[col] = 0.0
     for j in range(z):
-        # complex steps in X_1, X_2, A_1, A_2: ∂(g_1, g_2, P_a, P_r, M_g)/∂(X, A), as scalars
-        # (small arrays would compile to several times the code)
-        gx00 = gx01 = gx10 = gx11 = ga00 = ga01 = ga10 = ga11 = 0.0
-        px00 = px01 = px10 = px11 = px20 = px21 = 0.0
-        pa00 = pa01 = pa10 = pa11 = pa20 = pa21 = 0.0
-        for k in range(4):
-            x1 = complex(x[j, 0], _H if k == 0 else 0.0)
-            x2 = complex(x[j, 1], _H if k == 1 else 0.0)
-            a1 = complex(a[j, 0], _H if k == 2 else 0.0)
-            a2 = complex(a[j, 1], _H if k == 3 else 0.0)
-            s = _ball_state(
-                x1,
-                x2,
-                a1,
-                a2,
-                ki0[j],
-                ki1[j],
-                ai_c[j],
-                ko0[j],
-                ko1[j],
-                ao_c[j],
-                cst,
-                lam_i,
-                lam_o,
-                speed_on,
-            )
-            d0 = s[0].imag / _H
-            d1 = s[1].imag / _H
-            d2 = s[2].imag / _H
-            d3 = s[3].imag / _H
-            d4 = s[4].imag / _H
-            if k == 0:
-                gx00, gx10, px00, px10, px20 = d0, d1, d2, d3, d4
-                for r in range(N_STATE):
-                    state[r, j] = s[r].real
-            elif k == 1:
-                gx01, gx11, px01, px11, px21 = d0, d1, d2, d3, d4
-            elif k == 2:
-                ga00, ga10, pa00, pa10, pa20 = d0, d1, d2, d3, d4
-            else:
-                ga01, ga11, pa01, pa11, pa21 = d0, d1, d2, d3, d4
+        # derivatives along X_1, X_2, A_1, A_2: ∂(g_1, g_2, P_a, P_r, M_g)/∂(X, A), as scalars
+        # (small arrays would compile to several times the code); entries 14-18 of the ball
+        # state by literal indices: a computed index compiles to a switch over the 19 entries
+        xj0, xj1, aj0, aj1 = x[j, 0], x[j, 1], a[j, 0], a[j, 1]
+        hz = (ki0[j], ki1[j], ai_c[j], ko0[j], ko1[j], ao_c[j], cst, lam_i, lam_o, speed_on)
+        s = _ball_state(xj0, xj1, aj0, aj1, 1.0, 0.0, 0.0, 0.0, *hz)
+        state[0, j], state[1, j], state[2, j], state[3, j] = s[0], s[1], s[2], s[3]
+        state[4, j], state[5, j], state[6, j], state[7, j] = s[4], s[5], s[6], s[7]
+        state[8, j], state[9, j], state[10, j] = s[8], s[9], s[10]
+        state[11, j], state[12, j], state[13, j] = s[11], s[12], s[13]
+        gx00, gx10, px00, px10, px20 = s[14], s[15], s[16], s[17], s[18]
+        s = _ball_state(xj0, xj1, aj0, aj1, 0.0, 1.0, 0.0, 0.0, *hz)
+        gx01, gx11, px01, px11, px21 = s[14], s[15], s[16], s[17], s[18]
+        s = _ball_state(xj0, xj1, aj0, aj1, 0.0, 0.0, 1.0, 0.0, *hz)
+        ga00, ga10, pa00, pa10, pa20 = s[14], s[15], s[16], s[17], s[18]
+        s = _ball_state(xj0, xj1, aj0, aj1, 0.0, 0.0, 0.0, 1.0, *hz)
+        ga01, ga11, pa01, pa11, pa21 = s[14], s[15], s[16], s[17], s[18]
         for r in range(5):
             parts[r, j] = 0.0
         if not loaded[j]:  # an unloaded ball exerts nothing on the inner ring
@@ -1107,14 +1028,21 @@ def _ring_jacobian(
         l21 = l01 * rad_i + lam_fi * l21
         cp = cos_psi[j]
         sp = sin_psi[j]
-        b0[3] = rad_i * sp
-        b0[4] = -rad_i * cp
-        b1[1] = cp
-        b1[2] = sp
         for col in range(5):
-            la = l00 * b0[col] + l01 * b1[col]
-            lr = l10 * b0[col] + l11 * b1[col]
-            lm = l20 * b0[col] + l21 * b1[col]
+            # column col of B_j: ∂A_1/∂q_col, ∂A_2/∂q_col (scalars: no array compiled)
+            if col == 0:
+                b0, b1 = 1.0, 0.0
+            elif col == 1:
+                b0, b1 = 0.0, cp
+            elif col == 2:
+                b0, b1 = 0.0, sp
+            elif col == 3:
+                b0, b1 = rad_i * sp, 0.0
+            else:
+                b0, b1 = -rad_i * cp, 0.0
+            la = l00 * b0 + l01 * b1
+            lr = l10 * b0 + l11 * b1
+            lm = l20 * b0 + l21 * b1
             # C_j: (P_a, P_r, P_m) -> (F_a, F_x, F_y, M_x, M_y)
             jac[0, col] += la
             jac[1, col] += cp * lr

@@ -59,8 +59,8 @@ iteration (eq. 5-6 are eliminated exactly, so the four per-ball unknowns of the 
 two); the ring's five equations are solved by Newton's method whose Jacobian is obtained by
 implicit differentiation of the converged ball states
 (:math:`dP/du = \partial P/\partial u - \partial P/\partial X\,(\partial g/\partial X)^{-1}
-\partial g/\partial u`, partial derivatives by complex-step differentiation, exact to
-round-off). That Jacobian at the solution *is* the bearing stiffness matrix. The ball solve and
+\partial g/\partial u`, partial derivatives by forward-mode differentiation written out
+by the chain rule in the kernel, exact to round-off). That Jacobian at the solution *is* the bearing stiffness matrix. The ball solve and
 the ring force with its Jacobian are one compiled kernel
 (:mod:`runout.models._equilibrium_kernels`); the ring Newton, which needs a handful of them,
 stays here. The speed effects are switched on after the static solution has converged
@@ -879,7 +879,7 @@ class EquilibriumResult(RunResult):
 
 
 #: Stiffness entries below this fraction of the radial block's largest are the derivative's
-#: round-off (complex-step derivatives are exact to ~1e-16) and are reported as 0.
+#: round-off (the analytic derivatives are exact to ~1e-16) and are reported as 0.
 STIFFNESS_ROUNDOFF = 1e-12
 
 

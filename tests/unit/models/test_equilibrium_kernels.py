@@ -519,6 +519,44 @@ def test_ring_forces_match_numpy_near_the_solution(
     _assert_forces_agree(ring, trial, have_x=warm)
 
 
+@pytest.mark.parametrize("name", sorted(CASES))
+def test_ball_state_derivatives_equal_complex_step(name: str) -> None:
+    """The kernel's forward-mode derivatives of (g1, g2, P_a, P_r, M_g) along X_1, X_2, A_1,
+    A_2 equal the reference's complex-step ones, and its values the reference's, per ball."""
+    ring, sol = _ring_at_solution(name)
+    ring.forces(sol.displacement)  # converged ball centres in ring.x
+    a = ring.groove_centres(sol.displacement)
+    x = ring.x.copy()
+    p = ring.p
+    outputs = ("g1", "g2", "pa", "pr", "mg")
+    for k in range(4):
+        seed = np.zeros(4)
+        seed[k] = 1.0
+        step = 1j * _H * seed
+        ref = _ball_state(  # type: ignore[arg-type]
+            x[:, 0] + step[0], x[:, 1] + step[1], a[:, 0] + step[2], a[:, 1] + step[3], p
+        )
+        loads = np.abs(np.real(np.stack([ref["q_i"], ref["q_o"]]))).max()
+        for j in range(x.shape[0]):
+            got = kern._ball_state(
+                x[j, 0], x[j, 1], a[j, 0], a[j, 1], *seed,
+                p.ki0[j], p.ki1[j], p.ai_c[j], p.ko0[j], p.ko1[j], p.ao_c[j],
+                ring.cst, p.lam_i, p.lam_o, p.speed_on,
+            )  # fmt: skip
+            for r, state in enumerate(kern.STATE_NAMES):
+                want = np.real(np.broadcast_to(ref[state], x.shape[:1])[j])
+                # on the bearing's scale of that quantity (the residuals: of the ball loads);
+                # the reference's real parts carry O(step²) terms of the complex products
+                scale = loads if state in ("g1", "g2") else np.abs(np.real(ref[state])).max()
+                assert abs(got[r] - want) <= 1e-12 * scale + 1e-300, (state, j)
+            for r, out in enumerate(outputs):
+                want = np.imag(np.broadcast_to(ref[out], x.shape[:1])[j]) / _H
+                # derivatives of loads [N] along a displacement [m]: relative to the ball's
+                # largest derivative of this direction (round-off of the chain rule)
+                size = max(abs(np.imag(ref[o][j]) / _H) for o in outputs[:4]) + 1e-300
+                assert abs(got[14 + r] - want) <= 1e-9 * size, (out, j, k)
+
+
 def _constants(ring: eq._Ring) -> tuple[Any, ...]:
     p = ring.p
     return (p.ki0, p.ki1, p.ai_c, p.ko0, p.ko1, p.ao_c)
