@@ -122,6 +122,7 @@ __all__ = [
     "BearingSetup",
     "Setup",
     "ball_loads",
+    "linear_phasors",
     "nose_record",
     "run",
     "setup",
