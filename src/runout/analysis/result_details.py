@@ -14,6 +14,7 @@ comparison and JSON, and are None in a result read back from a file.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, Literal, Protocol, TypeAlias
 
@@ -74,6 +75,7 @@ __all__ = [
     "StiffnessMatrix",
     "Verdict",
     "details_from_json",
+    "tool_point_stiffness",
 ]
 
 #: One row of a table of the JSON contract (attribution rows, the per-ball table).
@@ -797,6 +799,40 @@ class SpindleBearingResult:
         )
 
 
+def tool_point_stiffness(
+    matrix: tuple[tuple[float, ...], ...] | NDArray[np.float64],
+) -> tuple[float, float, float]:
+    r"""1/C_ii of the translations of a 5×5 stiffness at a point (x, y, z, θx, θy) [N/m].
+
+    Parameters
+    ----------
+    matrix : array_like, shape (5, 5)
+        Stiffness at the point: rows F_x, F_y, F_z [N], M_x, M_y [N m]; columns per m or per
+        rad.
+
+    Returns
+    -------
+    tuple of float
+        :math:`1/C_{xx}, 1/C_{yy}, 1/C_{zz}` with :math:`C = K^{-1}` [N/m]: the stiffness
+        along each translation with the other coordinates free (0 where K is singular along
+        it: a coordinate nothing holds).
+
+    Notes
+    -----
+    The compliance is solved from K (``numpy.linalg.solve`` against the unit vectors), not
+    read from K's diagonal: :math:`1/C_{ii} \le K_{ii}`, equal only where coordinate i does
+    not couple to the others.
+    """
+    k = np.asarray(matrix, dtype=np.float64)
+    try:
+        compliance = np.linalg.solve(k, np.eye(k.shape[0])[:, :3])
+    except np.linalg.LinAlgError:
+        return (0.0, 0.0, 0.0)
+    diag = np.diag(compliance[:3, :3])
+    out = [float(1.0 / c) if c > 0.0 and math.isfinite(c) else 0.0 for c in diag]
+    return out[0], out[1], out[2]
+
+
 @dataclass(frozen=True)
 class SpindleDetails:
     """What the spindle model adds to its result (the nose's record is the result's own).
@@ -816,7 +852,9 @@ class SpindleDetails:
         Each bearing's figures at its own plane.
     stiffness_matrix : StiffnessMatrix
         5×5 stiffness of the shaft at the nose (x, y, z, tilt_x, tilt_y) [N/m, N/rad, N m/m,
-        N m/rad].
+        N m/rad]: its diagonal is a stiffness with every other coordinate held (a translation
+        of the nose with the tilt held), not the stiffness at the tool
+        (:attr:`tool_point_stiffness_n_per_m`).
     unloaded_balls_max : int
         Largest number of balls (all bearings) out of contact at one instant.
     n_elements : int
@@ -835,15 +873,35 @@ class SpindleDetails:
     n_elements: int
     explained_fraction: float
 
+    @property
+    def tool_point_stiffness_n_per_m(self) -> tuple[float, float, float]:
+        r"""Stiffness at the tool (the nose) along x, y, z with the shaft free to tilt [N/m].
+
+        :math:`k_i = 1 / C_{ii}` with :math:`C = K^{-1}` the nose compliance (the inverse of
+        :attr:`stiffness_matrix`): the force at the nose along i over the displacement it
+        gives there, every other coordinate (the tilts included) settling where the bearings
+        put it. What a machine-tool designer calls the spindle's static stiffness at the tool;
+        the diagonal :math:`K_{ii}` holds the tilt and is larger (much larger for an
+        overhung nose).
+
+        Returns
+        -------
+        tuple of float
+            k_x, k_y, k_z [N/m].
+        """
+        return tool_point_stiffness(self.stiffness_matrix.matrix)
+
     def to_json(self) -> dict[str, Any]:
         """The spindle model's JSON entries.
 
         Returns
         -------
         dict
-            The fields by name (SI values, unit in the key); ``tilt_pp_rad`` [rad] as an ``x``,
-            ``y`` object, ``bearings`` as rows.
+            The fields by name (SI values, unit in the key); ``tilt_pp_rad`` [rad] and
+            ``tool_point_stiffness_n_per_m`` [N/m] as ``x``, ``y`` (``z``) objects,
+            ``bearings`` as rows.
         """
+        kx, ky, kz = self.tool_point_stiffness_n_per_m
         return {
             "arrangement": self.arrangement,
             "nose_position_m": self.nose_position_m,
@@ -851,6 +909,7 @@ class SpindleDetails:
             "static_position": list(self.static_position),
             "bearings": [b.to_json() for b in self.bearings],
             "stiffness_matrix": self.stiffness_matrix.to_json(),
+            "tool_point_stiffness_n_per_m": {"x": kx, "y": ky, "z": kz},
             "unloaded_balls_max": self.unloaded_balls_max,
             "n_elements": self.n_elements,
             "explained_fraction": self.explained_fraction,

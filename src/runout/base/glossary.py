@@ -229,7 +229,16 @@ TERMS: tuple[Term, ...] = (
         ("stiffness_matrix",),
         "K",
         "N/m, N/rad, N m/m, N m/rad",
-        "5×5 tangent stiffness of the equilibrium model over axial, x, y, tilt_x, tilt_y",
+        "5×5 tangent stiffness of the equilibrium model over axial, x, y, tilt_x, tilt_y; of "
+        "the spindle at the nose over x, y, z, tilt_x, tilt_y (each entry holds the other "
+        "coordinates: K_xx with the tilt held)",
+    ),
+    Term(
+        ("tool_point_stiffness_n_per_m",),
+        "1/C_xx, 1/C_yy, 1/C_zz",
+        "N/m",
+        "spindle: stiffness at the tool (the nose) with the shaft free to tilt, 1/C_ii of the "
+        "compliance C = K⁻¹ of `stiffness_matrix`",
     ),
     Term(
         ("radial_stiffness",),

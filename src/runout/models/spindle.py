@@ -60,12 +60,22 @@ position of the preload (q = 0), not from one bearing's rings centred.
 
 Stiffness: :math:`K = \sum_j \tfrac32 K_j\delta_j^{1/2} g_j g_j^T` at the solution without
 imperfections (t = 0), the spring coordinate condensed out, then expressed at the nose,
-:math:`K_n = T^{-T} K T^{-1}` with :math:`q_n = T q`.
+:math:`K_n = T^{-T} K T^{-1}` with :math:`q_n = T q`. Each entry of :math:`K_n` holds the other
+coordinates: :math:`K_{n,xx}` is the force per displacement of the nose with the tilt held. The
+stiffness at the tool, the shaft free to tilt, is :math:`1/C_{ii}` of the compliance
+:math:`C = K_n^{-1}` (``tool_point_stiffness_n_per_m``); for an overhung nose it is far lower.
+
+Shares of a line (which source makes it): the response linearised about the static position
+without imperfections, :math:`K\,\Delta q(t) = -\sum_j k_j\, g_j(t)\, e_j(t)` with
+:math:`k_j = \tfrac32 K_j \delta_j^{1/2}` and :math:`e_j` one source's part of :math:`c_j - c_{0b}`
+(one harmonic of one part of one bearing: its inner or outer raceway, or one ball), is
+evaluated over the run's record for each source alone and fitted at that source's
+first-order lines (:func:`linear_phasors`); each source's phasor at the nose is its predicted
+contribution to the line, shared as in :mod:`runout.analysis.decompose`.
 """
 
 from __future__ import annotations
 
-import cmath
 import dataclasses
 import math
 from dataclasses import dataclass
@@ -74,7 +84,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import NDArray
 
-from runout.analysis.decompose import Candidate, fit_lines, split_runout
+from runout.analysis.decompose import JOINT_FIT, Candidate, fit_lines, split_runout
 from runout.analysis.result_details import SpindleBearingResult, SpindleDetails, StiffnessMatrix
 from runout.analysis.results import RunResult
 from runout.base.errors import ContactLossError, ConvergenceError, GeometryError, NumericalError
@@ -86,6 +96,7 @@ from runout.geometry.loading import operating_contact_angle
 from runout.geometry.spindle_layout import SpindleLayout
 from runout.models._quasi_static import (
     Kinematics,
+    PhasorTable,
     contact_series,
     contact_sources,
     decomposition_kinematic,
@@ -111,6 +122,7 @@ __all__ = [
     "BearingSetup",
     "Setup",
     "ball_loads",
+    "linear_phasors",
     "nose_record",
     "run",
     "setup",
@@ -757,48 +769,217 @@ def static_stiffness(st: Setup) -> tuple[NDArray[np.float64], NDArray[np.float64
     return q, ti.T @ k @ ti
 
 
+#: A source's fitted linear line below this fraction of its contact amplitude is round-off of
+#: a line the linearised model does not produce there (a higher-order line): no prediction.
+PREDICTION_FLOOR = 1e-9
+
+
+def _single_sources(
+    imperfections: BearingImperfections, b: BearingSetup
+) -> list[tuple[str, int | None, int, float, tuple[Any, ...]]]:
+    """Each harmonic of one bearing alone: (part, element, lobes, amplitude [m], the
+    arguments of :func:`contact_series` with only that harmonic)."""
+    src = contact_sources(
+        imperfections,
+        b.kinematics,
+        ring_gain=math.cos(b.contact_angle),
+        element_gain=1.0,
+        offset=b.approach,
+        planar=False,
+    )
+    z = b.kinematics.n_elements
+    no_ring, no_ball = np.zeros((3, 0)), np.zeros((3, 0))
+    out: list[tuple[str, int | None, int, float, tuple[Any, ...]]] = []
+    for h in range(src.ring.shape[1]):
+        amplitude = abs(float(src.ring[1, h]))
+        if amplitude == 0.0:
+            continue
+        inner = h < src.n_inner
+        single = dataclasses.replace(
+            src,
+            ring=np.ascontiguousarray(src.ring[:, h : h + 1]),
+            n_inner=1 if inner else 0,
+            ball=no_ball,
+            ball_offsets=np.zeros(z + 1, dtype=np.int64),
+        )
+        part = "inner" if inner else "outer"
+        out.append((part, None, int(src.ring[0, h]), amplitude, single.args()))
+    for j in range(z):
+        for col in range(int(src.ball_offsets[j]), int(src.ball_offsets[j + 1])):
+            amplitude = abs(float(src.ball[1, col]))
+            if amplitude == 0.0:
+                continue
+            offsets = np.where(np.arange(z + 1) > j, 1, 0).astype(np.int64)
+            single = dataclasses.replace(
+                src,
+                ring=no_ring,
+                n_inner=0,
+                ball=np.ascontiguousarray(src.ball[:, col : col + 1]),
+                ball_offsets=offsets,
+            )
+            out.append(("ball", j + 1, int(src.ball[0, col]), amplitude, single.args()))
+    return out
+
+
+def linear_phasors(
+    st: Setup,
+    imperfections: list[BearingImperfections],
+    time: NDArray[np.float64],
+    q_static: NDArray[np.float64],
+    candidates: list[list[Candidate]],
+) -> list[tuple[PhasorTable, dict[tuple[str, int | None, int | None], float]]]:
+    r"""Each source's predicted phasors (X, Y, Z) at the nose from the linearised spindle.
+
+    About the static position without imperfections :math:`q_0`, one source's part
+    :math:`e_j(t)` of the approaches moves the shaft by
+
+    .. math::
+        \Delta q(t) = -K^{-1} \sum_j k_j(t)\, g_j(t)\, e_j(t), \qquad
+        k_j = 	frac32 K_j ig[c_{0b} + g_j(t)\cdot q_0ig]_+^{1/2},
+
+    K the stiffness at :math:`q_0` (t = 0, the spring coordinate included), :math:`g_j(t)` at
+    the ball's angle at t (module docstring). The nose's record of :math:`\Delta q` over the
+    run's instants is fitted, by least squares, at the frequencies of that source's candidate
+    lines (those the record resolves, at least 0.3/T apart).
+
+    Parameters
+    ----------
+    st : Setup
+        From :func:`setup`.
+    imperfections : list of BearingImperfections
+        Each bearing's deviations [m], in the order of ``st.bearings``.
+    time : ndarray, shape (n,)
+        The run's instants [s] (uniform).
+    q_static : ndarray, shape (m,)
+        Static shaft coordinates without imperfections (:func:`static_stiffness`).
+    candidates : list of list of Candidate
+        Each bearing's predicted lines (their frequencies [Hz] by source).
+
+    Returns
+    -------
+    list of (PhasorTable, dict)
+        Per bearing: the phasors [m] by (part, element, lobes) and frequency, and each
+        source's contact amplitude [m] (the scale of :data:`PREDICTION_FLOOR`).
+
+    Notes
+    -----
+    Tada, "Three-dimensional analysis of non-repeatable runout (NRRO) in ball bearings", Koyo
+    Engineering Journal (2002) (seed 000), eq. 2-5 linearised, on the rigid shaft of this
+    module; the single-bearing counterpart is seed 002's linear model (eq. 33-40,
+    :func:`runout.models._quasi_static.linear_phasors`).
+    """
+    t = np.ascontiguousarray(time, dtype=np.float64)
+    n, m = t.size, st.n_dof
+    cth0, sth0 = _nominal_angles(st)
+    hessian = _hessian(st, _nominal_c(st), cth0, sth0, q_static)
+    pn = st.nose_position
+    nose = np.zeros((3, m))
+    nose[0, 0], nose[0, 4], nose[1, 1], nose[1, 3], nose[2, 2] = 1.0, pn, 1.0, -pn, 1.0
+    gain = -np.linalg.solve(hessian.T, nose.T).T  # (3, m): -T K^{-1}
+    duration = n * float(t[1] - t[0])
+    f_lo, f_hi = 1.0 / duration, 0.5 * n / duration * 0.999
+    sep = JOINT_FIT / duration
+    out: list[tuple[PhasorTable, dict[tuple[str, int | None, int | None], float]]] = []
+    first = 0
+    for b, imp, cands in zip(st.bearings, imperfections, candidates, strict=True):
+        z = b.kinematics.n_elements
+        own = slice(first, first + z)
+        first += z
+        table = PhasorTable()
+        scale: dict[tuple[str, int | None, int | None], float] = {}
+        sources = _single_sources(imp, b)
+        if not sources:
+            out.append((table, scale))
+            continue
+        sub = dataclasses.replace(st, geo=st.geo[:, own], floating=st.floating[own])
+        freqs: list[NDArray[np.float64]] = []
+        for part, element, lobes, _, _ in sources:
+            fs: list[float] = []
+            for f in sorted(
+                {
+                    c.frequency_hz
+                    for c in cands
+                    if (c.source.part, c.source.element, c.source.lobes) == (part, element, lobes)
+                }
+            ):
+                if f_lo < f < f_hi and all(abs(f - g) >= sep for g in fs):
+                    fs.append(f)
+            freqs.append(np.array(fs))
+        normal = [np.zeros((2 * f.size + 1, 2 * f.size + 1)) for f in freqs]
+        rhs = [np.zeros((2 * f.size + 1, 3)) for f in freqs]
+        rates = sources[0][4][0]
+        for i0 in range(0, n, CHUNK):
+            tc = t[i0 : i0 + CHUNK]
+            theta = rates[0] * tc[:, None] + sources[0][4][1] + sources[0][4][2]
+            g = normals(sub, np.cos(theta), np.sin(theta))  # (nc, z, m)
+            d0 = np.maximum(b.approach + g @ q_static, 0.0)
+            w = (1.5 * b.stiffness * np.sqrt(d0))[..., None] * (g @ gain.T)  # (nc, z, 3)
+            for i, (_, _, _, _, args) in enumerate(sources):
+                if not freqs[i].size:
+                    continue
+                c, _, _ = contact_series(tc, *args)
+                r = np.einsum("nj,nja->na", c - b.approach, w)
+                arg = 2.0 * math.pi * np.outer(tc, freqs[i])
+                design = np.hstack([np.ones((tc.size, 1)), np.cos(arg), np.sin(arg)])
+                normal[i] += design.T @ design
+                rhs[i] += design.T @ r
+        for i, (part, element, lobes, amplitude, _) in enumerate(sources):
+            key = (part, element, lobes)
+            scale[key] = max(scale.get(key, 0.0), amplitude)
+            k = freqs[i].size
+            if not k:
+                continue
+            coef = np.linalg.lstsq(normal[i], rhs[i], rcond=None)[0]
+            for f, a, bb in zip(freqs[i], coef[1 : k + 1], coef[k + 1 :], strict=True):
+                ph = a - 1j * bb  # x = a cos ωt + b sin ωt = Re((a - ib) e^{iωt})
+                table.add(part, element, lobes, float(f), (ph[0], ph[1], ph[2]))
+        out.append((table, scale))
+    return out
+
+
 def _bearing_lines(
     st: Setup,
     imperfections: list[BearingImperfections],
     loaded: bool,
-    alone: list[list[Any]] | None = None,
-) -> list[Candidate]:
-    """Every bearing's predicted lines (seed 000 Tables 2-3), their sources naming it.
-
-    With ``alone`` (per bearing, the components fitted at the nose with that bearing's
-    imperfections only), each source carries its bearing's own phasor of the line, split
-    equally among that bearing's sources of the line: the shares of a line several bearings
-    produce then follow each one's contribution (superposition, to first order).
-    """
-    out: list[Candidate] = []
-    for index, (b, imp) in enumerate(zip(st.bearings, imperfections, strict=True)):
+) -> list[list[Candidate]]:
+    """Every bearing's predicted lines (seed 000 Tables 2-3), their sources naming it."""
+    out: list[list[Candidate]] = []
+    for b, imp in zip(st.bearings, imperfections, strict=True):
         candidates = predicted_lines(
             imp, b.kinematics, axial=True, second_order_pairs=True, loaded=loaded
         )
-        for cand in candidates:
-            src = dataclasses.replace(cand.source, term=f"{cand.source.term} ({b.name} bearing)")
-            predicted = None
-            if alone is not None:
-                predicted = _own_phasors(cand, candidates, alone[index])
-            out.append(dataclasses.replace(cand, source=src, predicted=predicted))
+        out.append(
+            [
+                dataclasses.replace(
+                    cand,
+                    source=dataclasses.replace(
+                        cand.source, term=f"{cand.source.term} ({b.name} bearing)"
+                    ),
+                )
+                for cand in candidates
+            ]
+        )
     return out
 
 
-def _own_phasors(
-    cand: Candidate, candidates: list[Candidate], components: list[Any]
-) -> tuple[complex, complex, complex]:
-    """(X, Y, Z) of ``cand``'s line in one bearing's own record, shared among its sources."""
-
-    def same(f: float) -> bool:
-        return abs(f - cand.frequency_hz) <= 1e-9 * cand.frequency_hz
-
-    axes = ("x", "y") if cand.direction == "radial" else ("z",)
-    count = sum(1 for c in candidates if c.direction == cand.direction and same(c.frequency_hz))
-    phasor = {"x": 0j, "y": 0j, "z": 0j}
-    for comp in components:
-        if comp.direction in axes and same(comp.frequency_hz):
-            phasor[comp.direction] = 0.5 * comp.pp_m * cmath.exp(1j * comp.phase_rad) / count
-    return phasor["x"], phasor["y"], phasor["z"]
+def _with_predictions(
+    candidates: list[list[Candidate]],
+    tables: list[tuple[PhasorTable, dict[tuple[str, int | None, int | None], float]]],
+) -> list[Candidate]:
+    """The candidates of every bearing, each carrying its source's linearised phasor at the
+    nose where the linearised model produces that line (else None: no prediction)."""
+    out: list[Candidate] = []
+    for cands, (table, scale) in zip(candidates, tables, strict=True):
+        for cand in cands:
+            s = cand.source
+            key = (s.part, s.element, s.lobes)
+            ph = table.get(s.part, s.element, s.lobes or 0, cand.frequency_hz)
+            floor = PREDICTION_FLOOR * scale.get(key, 0.0)
+            axes = (0, 1) if cand.direction == "radial" else (2,)
+            if ph is not None and max(abs(ph[a]) for a in axes) <= floor:
+                ph = None
+            out.append(dataclasses.replace(cand, predicted=ph))
+    return out
 
 
 def run(case: Case) -> RunResult:
@@ -847,22 +1028,10 @@ def run(case: Case) -> RunResult:
     loaded = op.radial_load > 0.0
     basis = decomposition_kinematic(lead.kinematics, imps[0])
     floor = 1e-9 * st.d_ref
-    alone = None
-    if sum(1 for imp in imps if not imp.is_perfect) > 1:
-        # several bearings may share a line: each one's own contribution, for the shares
-        alone = []
-        for index, imp in enumerate(imps):
-            own = [
-                imp if i == index else BearingImperfections.perfect(other.n_elements)
-                for i, other in enumerate(imps)
-            ]
-            q_own, _ = solve(st, own, t)
-            own_lines = _bearing_lines(st, own, loaded)
-            fit = fit_lines(
-                t, nose_record(st, q_own), own_lines, op.speed, kinematic=basis, floor=floor
-            )
-            alone.append(list(fit.components))
-    lines = _bearing_lines(st, imps, loaded, alone)
+    # each source's share of a line: its contribution in the linearised spindle (docstring)
+    per_bearing = _bearing_lines(st, imps, loaded)
+    tables = linear_phasors(st, imps, t, q_static, per_bearing)
+    lines = _with_predictions(per_bearing, tables)
 
     def decompose(disp: NDArray[np.float64]) -> Any:
         fit = fit_lines(t, disp, lines, op.speed, kinematic=basis, floor=floor)
@@ -914,13 +1083,9 @@ def run(case: Case) -> RunResult:
         "not from one bearing's rings axially centred",
         preload_note,
         "frequencies and residual-line attribution use the first bearing "
-        f"({lead.name}); every bearing's predicted lines are fitted, their sources name it"
-        + (
-            "; a line several bearings produce is shared by each one's contribution alone "
-            "(the shaft solved with each bearing's imperfections only)"
-            if alone is not None
-            else ""
-        ),
+        f"({lead.name}); every bearing's predicted lines are fitted, their sources name it; "
+        "a line's sources share it by their contributions in the linearised spindle "
+        "(each bearing's parts alone; second-order sources share what those leave)",
         *fit.notes,
         *split.notes,
     )

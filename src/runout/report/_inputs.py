@@ -118,11 +118,34 @@ def inputs_section(result: dict[str, Any], summary: dict[str, Any], case: Any) -
             how = "held fixed (bearing.contact_angle)"
         elif model == "equilibrium":
             how = "mean over the balls; each ball's inner and outer angle below"
+        elif model == "spindle":
+            how = "the first bearing's, at the preload it carries (each bearing's: spindle table)"
         elif case is not None and case.operation.axial_load <= 0.0:
-            how = "no axial load: the balls touch at the groove bottoms"
+            # without an axial load the models take the free contact angle (clearance taken up
+            # axially): at the groove bottoms only when that angle is 0
+            how = (
+                "no axial load: the balls touch at the groove bottoms"
+                if abs(angle) < 1e-9
+                else "no axial load: the free contact angle of the clearance"
+            )
         else:
             how = "from the clearance and the axial load"
         row("operating contact angle", f"{angle:.4g} deg", how)
+    layout = getattr(case, "spindle", None) if model == "spindle" else None
+    if layout is not None:
+        names = {"DB": "back-to-back", "DF": "face-to-face", "DT": "tandem"}
+        row("arrangement", layout.arrangement, names.get(layout.arrangement, ""))
+        if layout.preload is not None:
+            how = (
+                "constant-pressure (spring) preload on the shaft (tandem)"
+                if layout.arrangement == "DT"
+                else "constant-pressure (spring) preload, on the -z group's outer rings"
+            )
+            row("preload", f"{fmt_number(layout.preload, 5)} N", how)
+        if layout.preload_displacement is not None:
+            overlap = length(layout.preload_displacement, ("um", 1e6))
+            row("preload", overlap, "position (rigid) preload: axial overlap, outer rings fixed")
+        row("nose position", length(layout.nose_position, mm), "where the runout is reported")
     for key, how in (
         ("preload_approach_m", "elastic approach of the preload, per ball"),
         ("initial_approach_m", "initial (preload) approach δ_0"),
@@ -175,11 +198,17 @@ def inputs_section(result: dict[str, Any], summary: dict[str, Any], case: Any) -
 def _imperfections(case: Any, unused: set[str]) -> list[str]:
     """Short lines for the case's imperfections; harmonics of one part and size share a line."""
     spec = case.spec
+
+    def on(entry: Any) -> str:  # which bearing of a spindle the entry is on
+        name = getattr(entry, "bearing", None)
+        return f" (bearing {name})" if name else ""
+
     groups: dict[tuple[str, str], list[str]] = {}
     for i, entry in enumerate(spec.waviness, start=1):
         if f"waviness[{i}]" in unused:
             continue
         who = entry.part if entry.element is None else f"{entry.part} {entry.element}"
+        who += on(entry)
         if entry.amplitude is not None:
             size = f"{length(entry.amplitude)} (0-p)"
         elif entry.peak_to_peak is not None:
@@ -193,16 +222,19 @@ def _imperfections(case: Any, unused: set[str]) -> list[str]:
     ]
     for i, entry in enumerate(spec.waviness_spectrum, start=1):
         if f"waviness_spectrum[{i}]" not in unused:
-            out.append(f"{entry.part}: spectrum of orders {entry.orders[0]}–{entry.orders[1]}")
+            out.append(
+                f"{entry.part}{on(entry)}: spectrum of orders {entry.orders[0]}–{entry.orders[1]}"
+            )
     for i, entry in enumerate(spec.profile, start=1):
         if f"profile[{i}]" not in unused:
-            out.append(f"{entry.part}: measured profile")
-    elements = spec.elements
-    if elements is not None:
+            out.append(f"{entry.part}{on(entry)}: measured profile")
+    for key, elements in spec.element_tables:
+        where = f" (bearing {key.split('.', 1)[1]})" if "." in key else ""
         if elements.diameter_errors and any(elements.diameter_errors):
-            out.append(f"element diameter errors ({len(elements.diameter_errors)} values)")
+            n = len(elements.diameter_errors)
+            out.append(f"element diameter errors{where} ({n} values)")
         if elements.pitch_errors and any(elements.pitch_errors):
-            out.append(f"element pitch errors ({len(elements.pitch_errors)} values)")
+            out.append(f"element pitch errors{where} ({len(elements.pitch_errors)} values)")
     if len(out) > 8:
         out = [*out[:8], f"… and {len(out) - 8} more (case file below)"]
     return out

@@ -572,6 +572,15 @@ def _spindle_section(result: dict[str, Any]) -> list[str]:
         f"θy {esc(fmt_number(num(tilt.get('y')), 4))} rad; runout reported at the nose, "
         f"z = {esc(length(num(result.get('nose_position_m'))))}</p>"
     )
+    tool = result.get("tool_point_stiffness_n_per_m") or {}
+    if tool:
+        values = ", ".join(
+            f"k_{axis} {fmt_number((num(tool.get(axis)) or 0.0) * 1e-6, 4)}" for axis in "xyz"
+        )
+        parts.append(
+            f"<p><b>tool-point stiffness</b> (at the nose, shaft free to tilt: 1/C_ii of the "
+            f"compliance): {esc(values)} N/um</p>"
+        )
     matrix = (result.get("stiffness_matrix") or {}).get("matrix")
     if isinstance(matrix, list) and matrix:
         dofs = ["x", "y", "z", "θx", "θy"]
@@ -580,7 +589,8 @@ def _spindle_section(result: dict[str, Any]) -> list[str]:
         ]
         parts.append(
             details(
-                "Stiffness of the shaft at the nose (N/m, N/rad, N m/m, N m/rad)",
+                "5×5 stiffness matrix of the shaft at the nose, each entry with the other "
+                "coordinates held (the x, y diagonal: tilt held) (N/m, N/rad, N m/m, N m/rad)",
                 table(["", *dofs], rows, (1, 2, 3, 4, 5)),
             )
         )

@@ -509,9 +509,23 @@ def _spindle_rows(details: SpindleDetails) -> Rows:
             )
         )
     k = details.stiffness_matrix.matrix
-    stiff = f"{k[0][0]:.4g}, {k[1][1]:.4g}, {k[2][2]:.4g}"
-    rows.append(("nose stiffness k_x, k_y, k_z", stiff, "N/m"))
-    rows.append(("nose tilt stiffness k_θx, k_θy", f"{k[3][3]:.4g}, {k[4][4]:.4g}", "N m/rad"))
+    tool = details.tool_point_stiffness_n_per_m
+    rows.append(
+        (
+            "tool-point stiffness k_x, k_y, k_z (at the nose, shaft free to tilt: 1/C_ii)",
+            ", ".join(f"{v * 1e-6:.4g}" for v in tool),
+            "N/µm",
+        )
+    )
+    held = f"{k[0][0] * 1e-6:.4g}, {k[1][1] * 1e-6:.4g}, {k[2][2] * 1e-6:.4g}"
+    rows.append(("5×5 matrix diagonal K_xx, K_yy, K_zz (at the nose, tilt held)", held, "N/µm"))
+    rows.append(
+        (
+            "5×5 matrix diagonal K_θxθx, K_θyθy (translation held)",
+            f"{k[3][3]:.4g}, {k[4][4]:.4g}",
+            "N m/rad",
+        )
+    )
     return rows
 
 
