@@ -108,6 +108,7 @@ CHANGES: dict[str, tuple[Callable[[Data, str], None], Callable[[Data], None]]] =
     "operation.rotating_ring": (_no_patch, _set("operation.rotating_ring", "outer")),
     "operation.other_ring_speed": (_no_patch, _set("operation.other_ring_speed", 3.0)),
     "operation.axial_load": (_no_patch, _set("operation.axial_load", 25.0)),
+    'operation.preload = "position"': (_no_patch, _set("operation.preload", "position")),
     "operation.radial_load": (_no_patch, _radial_load),
     "operation.radial_load_direction": (
         _load_unless_it_is_refused,
