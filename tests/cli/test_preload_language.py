@@ -294,3 +294,19 @@ def test_summary_shows_the_preload_kind(tmp_path: Path, kind: str) -> None:
     result = runner.invoke(app, ["run", str(path), "--out", str(tmp_path / "out")])
     assert result.exit_code == 0, result.stderr
     assert f"{kind} preload" in result.stdout
+
+
+def test_axial_limit_follows_the_preload_kind_in_the_dynamic_model(tmp_path: Path) -> None:
+    # a spring preload moves the rotor axially: an axial-runout limit is judged; a position
+    # preload holds it, and the limit is refused rather than judged on a held z
+    limit = 'limit = "1 um"\nlimit_on = "axial_pp"\n'
+    path = _case(tmp_path, "dynamic", operation='preload = "spring"')
+    path.write_text(
+        path.read_text(encoding="utf-8").replace("[analysis]\n", f"[analysis]\n{limit}")
+    )
+    verdict = _json(path)["verdict"]
+    assert verdict["quantity"] == "axial_pp" and verdict["value_m"] > 0.0
+    held = path.read_text(encoding="utf-8").replace('"spring"', '"position"')
+    path.write_text(held, encoding="utf-8")
+    line = _refused(path)
+    assert "analysis.limit_on" in line
