@@ -12,7 +12,7 @@ from hypothesis import strategies as st
 
 from cases import typed_case
 from runout import Operation, examples
-from runout.base.errors import ContactLossError, GeometryError, NumericalError
+from runout.base.errors import ContactLossError, GeometryError
 from runout.case.model import Case
 from runout.models import quasi_static_3d as qs3
 
@@ -141,7 +141,7 @@ def test_radial_load_beyond_fixed_angle_capacity_raises() -> None:
     case = _case([], axial=10.0, radial=40.0, samples=64)
     alpha = qs3.operating_contact_angle(case.bearing, case.operation)[0]
     assert 40.0 > 10.0 / math.tan(alpha)
-    with pytest.raises(GeometryError, match='tan α.*model = "dynamic"') as info:
+    with pytest.raises(GeometryError, match=r'tan α.*model = "dynamic"') as info:
         qs3.run(case)
     assert info.value.key == "operation.radial_load"
     # just below the cap the model still solves (the cap is no wider than the model's reach)
