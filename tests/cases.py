@@ -7,6 +7,7 @@ conventions and the studies.
 
 from __future__ import annotations
 
+import dataclasses
 from typing import Any
 
 from runout import examples
@@ -113,13 +114,20 @@ def dynamic_case(
     waves = Imperfections(elements=elements)
     for entry in waviness or []:
         waves = waves.waviness(**entry)
+    # the rotor's kind (seed 003: position); an axial_dof of these helpers' callers names the
+    # kind, as it did before the preload key (true: spring, false: position)
+    dynamics = dict(dynamics or {})
+    operation = rotor.operation
+    if "axial_dof" in dynamics:
+        kind = "spring" if dynamics.pop("axial_dof") else "position"
+        operation = dataclasses.replace(operation, preload=kind)
     return Case.from_inputs(
         rotor.bearing,
-        rotor.operation,
+        operation,
         waves,
         title="test rotor",
         analysis={"model": "dynamic", "revolutions": revolutions, "samples": samples},
-        dynamics={"mass": 0.6, "damping": 200.0, **(dynamics or {})},
+        dynamics={"mass": 0.6, "damping": 200.0, **dynamics},
     )
 
 

@@ -97,7 +97,11 @@ def test_dynamic_in_code_equals_the_case_file() -> None:
             radial_clearance=0.2e-6,
         ),
         operation=runout.Operation(
-            rotating_ring="inner", speed=5000 / 60, radial_load=6.0, axial_load=10.0
+            rotating_ring="inner",
+            speed=5000 / 60,
+            radial_load=6.0,
+            axial_load=10.0,
+            preload="position",  # the file's seed 003 rotor, held axially
         ),
         title="Purohit rotor-bearing system (seed 003 Table 2)",
         revolutions=50,

@@ -492,8 +492,9 @@ class DynamicDetails:
         Returns
         -------
         dict
-            The fields by name (SI values, unit in the key); ``mean_axial_displacement_m`` [m]
-            only when set, ``sample_rate_hz`` never.
+            The fields by name (SI values, unit in the key), ``preload`` (``"spring"`` with
+            the axial degree of freedom, else ``"position"``); ``mean_axial_displacement_m``
+            [m] only when set, ``sample_rate_hz`` never.
         """
         out: dict[str, Any] = {
             "natural_frequencies_hz": list(self.natural_frequencies_hz),
@@ -506,6 +507,8 @@ class DynamicDetails:
             "contact_stiffness_n_per_m1_5": self.contact_stiffness_n_per_m1_5,
             "preload_contact_angle_deg": self.preload_contact_angle_deg,
             "axial_dof": self.axial_dof,
+            # the case's preload kind: a spring frees z, a position holds it
+            "preload": "spring" if self.axial_dof else "position",
             "min_loaded_balls": self.min_loaded_balls,
             "solver_resolution_m": self.solver_resolution_m,
             "explained_fraction": self.explained_fraction,

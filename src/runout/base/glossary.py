@@ -136,7 +136,14 @@ TERMS: tuple[Term, ...] = (
         "Hz",
         "rotation frequency of the other ring, signed relative to `speed`",
     ),
-    Term(("axial_load",), "F_a", "N", "axial load or constant-pressure preload"),
+    Term(("axial_load",), "F_a", "N", "axial load on the shaft; the preload force"),
+    Term(
+        ("preload",),
+        "–",
+        "–",
+        '"spring": constant axial force (shaft free axially); "position": rings held at the '
+        "axial offset of the axial load alone",
+    ),
     Term(("radial_load",), "F_r", "N", "radial load on the shaft"),
     Term(
         ("radial_load_direction",),

@@ -275,7 +275,19 @@ class OperationSpec(_Table):
     other_ring_speed: Speed = Field(
         0.0, description="Speed of the other ring [Hz], signed relative to speed."
     )
-    axial_load: Force = Field(0.0, description="Axial load or constant-pressure preload [N].")
+    axial_load: Force = Field(
+        0.0,
+        description="Axial load on the shaft along +z [N]; with preload it is the preload force.",
+    )
+    preload: Literal["spring", "position"] = Field(
+        "spring",
+        description=(
+            'What holds the rings axially. "spring": a constant axial force (the '
+            "constant-pressure preload of seeds 000 and 001); the shaft moves axially under "
+            'the other loads. "position": the rings are held at the axial offset the axial '
+            "load sets alone (no radial load, perfect bearing), whatever the other loads."
+        ),
+    )
     radial_load: Force = Field(0.0, description="Radial load [N].")
     radial_load_direction: AngleQ = Field(
         -math.pi / 2, description="Direction of the radial load from +x [rad]; default -y."
@@ -609,11 +621,11 @@ class DynamicsSpec(_Table):
     damping: Damping = Field(0.0, description="Viscous damping [N s/m] (>= 0).")
     unbalance: Unbalance = Field(0.0, description="Unbalance m e [kg m] (>= 0).")
     time_step: Time | None = Field(None, description="Integration step [s]; default automatic.")
-    axial_dof: bool = Field(
-        False,
+    axial_dof: bool | None = Field(
+        None,
         description=(
-            "Also integrate the axial motion of the rotor under a constant axial force "
-            "(spring preload); false holds it at the preloaded position (seed 003)."
+            'Kept for older case files: true is [operation] preload = "spring", false is '
+            'preload = "position" (the run says so); write preload instead.'
         ),
     )
     contact_law: Literal["exact", "delta_star_table"] = Field(
@@ -953,6 +965,24 @@ class CaseSpec(_Table):
         return self.bearings[0]
 
     @property
+    def preload_kind(self) -> Literal["spring", "position"]:
+        """The preload the case runs with: ``"spring"`` or ``"position"``.
+
+        ``[operation] preload`` when the case names it; else, in a spindle case, the kind of
+        its ``[spindle]`` table (``preload`` is a spring, ``preload_displacement`` a position);
+        else, in a dynamic case, the older ``[dynamics] axial_dof`` (true: spring, false:
+        position), so that an older case file keeps its result; else ``"spring"``.
+        """
+        if "preload" in self.operation.model_fields_set:
+            return self.operation.preload
+        if self.spindle is not None:
+            return "spring" if self.spindle.preload is not None else "position"
+        dof = self.dynamics.axial_dof if self.dynamics is not None else None
+        if dof is not None and self.analysis.model == "dynamic":
+            return "spring" if dof else "position"
+        return "spring"
+
+    @property
     def element_tables(self) -> list[tuple[str, ElementsSpec]]:
         """(key, table) of ``[elements]``, or of each ``[elements.<name>]`` of a spindle."""
         if self.elements is None:
@@ -988,6 +1018,31 @@ class CaseSpec(_Table):
         if isinstance(value, dict):
             return ElementsSpec.model_validate(value)
         return value
+
+    @model_validator(mode="after")
+    def _one_preload_kind(self) -> CaseSpec:
+        # two keys naming two kinds are refused, never resolved one way: each reads as the
+        # other would give another result
+        if "preload" not in self.operation.model_fields_set:
+            return self
+        kind = self.operation.preload
+        dof = self.dynamics.axial_dof if self.dynamics is not None else None
+        if dof is not None and dof != (kind == "spring"):
+            raise _KeyedError(
+                "dynamics.axial_dof",
+                f'{str(dof).lower()} contradicts operation.preload = "{kind}" (axial_dof = '
+                'true is preload = "spring", false is "position"): remove axial_dof',
+            )
+        if self.spindle is not None:
+            own = "spring" if self.spindle.preload is not None else "position"
+            if kind != own:
+                raise _KeyedError(
+                    "operation.preload",
+                    f'"{kind}" contradicts the [spindle] table, whose preload is a {own}: a '
+                    'spindle\'s preload kind is its [spindle] key, preload = "... N" (spring) or '
+                    'preload_displacement = "... um" (position); remove operation.preload',
+                )
+        return self
 
     @model_validator(mode="after")
     def _one_bearing_table(self) -> CaseSpec:

@@ -211,6 +211,16 @@ def _analysis_range(spec: CaseSpec) -> list[str]:
     return [f"analysis.{name}" for name in sorted(given)]
 
 
+def _position_preload(spec: CaseSpec) -> list[str]:
+    # a spindle's [spindle] preload_displacement is its own key; only the case's own
+    # operation.preload is this one there
+    if spec.preload_kind != "position":
+        return []
+    if spec.spindle is not None and "preload" not in spec.operation.model_fields_set:
+        return []
+    return ["operation.preload"]
+
+
 def _axial_limit(spec: CaseSpec) -> list[str]:
     a = spec.analysis
     return ["analysis.limit_on"] if a.limit is not None and a.limit_on == "axial_pp" else []
@@ -228,6 +238,7 @@ _ANGLE_FROM_CLEARANCE = (
     "is bearing.nominal_contact_angle"
 )
 _NO_TILT = "it has no tilt degree of freedom"
+_SPRING_ONLY = "it solves the rings' axial position under a constant axial force (a spring)"
 _SLANT = "it has no raceway slant (seed 002 eq. 34 is a linear-model term)"
 _RING_KINEMATICS = "the rigid constraint model turns one ring and holds the other still"
 
@@ -364,11 +375,36 @@ KEYS: tuple[KeyConvention, ...] = (
     ),
     KeyConvention(
         "operation.axial_load",
-        "Axial load on the shaft along +z, or constant-pressure (spring) preload.",
+        "Axial load on the shaft along +z; the preload force, of the kind operation.preload names.",
         "N",
         (H, H, H, H, H, N, H),
         {"roller_constraint": "a cylindrical roller bearing carries no axial load"},
         _table_key("operation", "axial_load"),
+    ),
+    KeyConvention(
+        'operation.preload = "position"',
+        'What holds the rings axially. "spring" (default): a constant axial force '
+        "(axial_load; the constant-pressure preload of seeds 000 and 001), the shaft free to "
+        'move axially under the other loads. "position": the rings held at the axial offset '
+        "axial_load sets alone (perfect bearing, no radial load), whatever the other loads. "
+        "A spindle's kind is its [spindle] key (preload: spring, preload_displacement: "
+        "position); [dynamics] axial_dof = true / false of older case files reads as spring / "
+        "position.",
+        "-",
+        (N, N, R, R, H, N, N),
+        {
+            "linear": "its radial gains are the same for both kinds (the axial and radial "
+            "motions of a uniform bearing decouple to first order)",
+            "quasi_static_2d": "it is planar: both kinds move the shaft alike while every "
+            "ball stays loaded, and it refuses a radial load that unloads balls",
+            "quasi_static_3d": _SPRING_ONLY + " (seed 000)",
+            "equilibrium": _SPRING_ONLY,
+            "roller_constraint": "a cylindrical roller bearing carries no axial load",
+            "spindle": "its preload kind is its [spindle] key (preload: spring, "
+            "preload_displacement: position), which a contradicting operation.preload is "
+            "refused against",
+        },
+        _position_preload,
     ),
     KeyConvention(
         "operation.radial_load",
@@ -508,11 +544,11 @@ KEYS: tuple[KeyConvention, ...] = (
             "linear": "it gives the radial displacement only",
             "quasi_static_2d": _TWO_D,
             "equilibrium": _NOT_SOLVED,
-            "dynamic": "its rotor is held axially unless [dynamics] axial_dof = true",
+            "dynamic": 'its rotor is held axially with operation.preload = "position"',
             "roller_constraint": _TWO_D,
         },
         _axial_limit,
-        {"dynamic": lambda spec: spec.dynamics is not None and spec.dynamics.axial_dof},
+        {"dynamic": lambda spec: spec.preload_kind == "spring"},
     ),
     KeyConvention(
         "analysis.limit",

@@ -479,7 +479,8 @@ def purohit(
     """Purohit's rotor-bearing system with the preload of Fig. 3 (``seed003_purohit.toml``).
 
     A 0.6 kg rotor with 200 N s/m damping; inner ring at 5000 rpm, 6 N radial load along -y
-    and 10 N axial preload. Model ``dynamic``, 50 revolutions, 8192 samples.
+    and 10 N axial preload, a position preload (the paper's rotor moves in x, y only). Model
+    ``dynamic``, 50 revolutions, 8192 samples.
 
     Parameters
     ----------
@@ -512,6 +513,7 @@ def purohit(
             speed=_si(speed, "speed"),
             radial_load=_si(radial_load, "force"),
             axial_load=_si(axial_load, "force"),
+            preload="position",  # seed 003's rotor moves in x, y only
             **direction,
         ),
         analysis={"model": "dynamic", "revolutions": 50, "samples": 8192},

@@ -37,6 +37,7 @@ from runout.base.errors import GeometryError
 __all__ = ["BallBearing", "Bearing", "Material", "Operation", "RollerBearing"]
 
 RingName = Literal["inner", "outer"]
+PreloadKind = Literal["spring", "position"]
 
 #: Largest ring speed read [Hz] (6e7 rpm, a hundred times the fastest bearings): far beyond it
 #: the centrifugal and unbalance forces overflow (1e300 rpm did in the dynamic model).
@@ -479,7 +480,12 @@ class Operation:
         Rotation frequency of the other ring [Hz], signed relative to ``speed``; 0 for the
         usual case of one stationary ring.
     axial_load : float
-        Axial load or constant-pressure preload [N] (>= 0).
+        Axial load on the shaft along +z [N] (>= 0); with ``preload`` the preload force.
+    preload : {"spring", "position"}
+        What holds the rings axially: ``"spring"`` a constant axial force (the
+        constant-pressure preload of Tada 2002, seed 000, and Kim et al., seed 001), the shaft
+        free to move axially under the other loads; ``"position"`` the rings held at the axial
+        offset ``axial_load`` sets alone (perfect bearing, no radial load).
     radial_load : float
         Radial load magnitude [N] (>= 0).
     radial_load_direction : float
@@ -495,6 +501,7 @@ class Operation:
     speed: float = 0.0
     other_ring_speed: float = 0.0
     axial_load: float = 0.0
+    preload: PreloadKind = "spring"
     radial_load: float = 0.0
     radial_load_direction: float = -math.pi / 2
     moment_load: float = 0.0
@@ -504,6 +511,10 @@ class Operation:
         if self.rotating_ring not in ("inner", "outer"):
             raise GeometryError(
                 "operation.rotating_ring", f'must be "inner" or "outer", got {self.rotating_ring!r}'
+            )
+        if self.preload not in ("spring", "position"):
+            raise GeometryError(
+                "operation.preload", f'must be "spring" or "position", got {self.preload!r}'
             )
         units = {
             "speed": "Hz, revolutions per second",

@@ -241,6 +241,32 @@ def _dyn(case: Any) -> Any:
     return spec
 
 
+def _preload_notes(case: Any, op: Any) -> list[str]:
+    """What the run says about its preload kind: the older key it read, or its default.
+
+    An older case file's ``[dynamics] axial_dof`` keeps its result and is named with what to
+    write instead; a case with an axial load that names neither kind is told that its rotor
+    is free axially (the dynamic model held it by default before ``preload`` existed).
+    """
+    spec = getattr(case, "spec", None)
+    if spec is None:
+        return []
+    dof = spec.dynamics.axial_dof if spec.dynamics is not None else None
+    kind = op.preload
+    if dof is not None:
+        return [
+            f"dynamics.axial_dof = {str(dof).lower()} is read as [operation] preload = "
+            f'"{kind}"; write that instead (axial_dof is kept for older case files)'
+        ]
+    if "preload" not in spec.operation.model_fields_set and op.axial_load > 0.0:
+        return [
+            'operation.preload = "spring" (the default): the rotor moves axially under the '
+            'constant axial load; write preload = "position" to hold it at the rings\' '
+            "preloaded axial offset (the dynamic model's default before the preload key)"
+        ]
+    return []
+
+
 def setup(case: Any) -> DynamicSetup:
     """Derive the rotor, contact and kinematic constants of a case (see module docstring).
 
@@ -262,7 +288,7 @@ def setup(case: Any) -> DynamicSetup:
     GeometryError
         No ``[dynamics]`` table, not a ball bearing, speed <= 0, a fixed
         ``bearing.contact_angle`` (not honoured by this model), an unbalance on a still inner
-        ring, or an axial degree of freedom with nothing to hold the rotor.
+        ring, or no load to hold the rotor.
     """
     bearing = case.bearing
     op = case.operation
@@ -285,7 +311,10 @@ def setup(case: Any) -> DynamicSetup:
     a = bearing.curvature_distance
     alpha0 = bearing.free_contact_angle  # cos α⁰ = 1 - P_d / 2A (Harris)
     law = dyn.contact_law
-    ndof = 3 if dyn.axial_dof else 2
+    # spring: the axial force is constant and z is a degree of freedom; position: z is held
+    # at z_p, the rings' axial offset under the axial load alone (eq. 2.21-2.22)
+    ndof = 3 if op.preload == "spring" else 2
+    notes.extend(_preload_notes(case, op))
     alpha_p, kn = preloaded_contact_angle(bearing, op.axial_load, alpha0, law)
     zp = a * math.cos(alpha0) * math.tan(alpha_p) if op.axial_load > 0.0 else 0.0
     if op.axial_load > 0.0:
@@ -309,11 +338,6 @@ def setup(case: Any) -> DynamicSetup:
             "dynamics.unbalance",
             "the rotor of the dynamic model is the inner ring; it does not turn, so an "
             "unbalance cannot act (seed 003 assumption 2)",
-        )
-    if ndof == 3 and op.axial_load <= 0.0 and op.radial_load <= 0.0:
-        raise GeometryError(
-            "dynamics.axial_dof",
-            "an axial degree of freedom needs an axial or radial load to hold the rotor",
         )
     if op.axial_load <= 0.0 and op.radial_load <= 0.0:
         # no static position: the rotor floats in its play (or touches with zero stiffness)

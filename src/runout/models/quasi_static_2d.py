@@ -58,7 +58,7 @@ from numpy.typing import NDArray
 
 from runout.analysis.results import SOLVER_RTOL, RunResult
 from runout.base.errors import ContactLossError, ConvergenceError, GeometryError, NumericalError
-from runout.geometry.bearing import BallBearing
+from runout.geometry.bearing import BallBearing, Operation
 from runout.geometry.contact import ball_race_contacts
 from runout.geometry.kinematics import ball_spin_frequency, cage_frequency
 from runout.geometry.loading import axial_loading, operating_contact_angle
@@ -765,6 +765,50 @@ def solve(
     return disp, unloaded
 
 
+def check_radial_load_held(
+    op: Operation, unloaded: NDArray[np.integer[Any]], n_elements: int
+) -> None:
+    """Refuse a radial load under which balls lose contact: the planar model cannot be right.
+
+    The planar model keeps the contact angle and the initial approach δ_0 of the axial load
+    alone. While every ball stays loaded, a spring and a position preload move the shaft
+    alike to first order (the axial and radial motions of a uniform bearing decouple).
+    Once the radial load unloads balls they part: a spring preload lets the rings slide
+    axially until the loaded balls reach their groove bottoms, a position preload holds them
+    and the contact angles change ball by ball; the planar model follows neither.
+
+    Parameters
+    ----------
+    op : Operation
+        The loads [N].
+    unloaded : ndarray of int, shape (n,)
+        Balls without load at each instant.
+    n_elements : int
+        Number of balls Z.
+
+    Raises
+    ------
+    GeometryError
+        Naming ``operation.radial_load``, when a radial load is set and a ball lost contact.
+
+    Notes
+    -----
+    Kim, Choi & Yoon, "Vibration analysis of ball bearings with ball geometric
+    imperfections" (seed 001), eq. 10 (planar approach at the preload's contact angle).
+    """
+    worst = int(unloaded.max()) if unloaded.size else 0
+    if op.radial_load <= 0.0 or worst == 0:
+        return
+    raise GeometryError(
+        "operation.radial_load",
+        f"{op.radial_load:.6g} N unloads up to {worst} of {n_elements} balls against the "
+        f"{op.axial_load:.6g} N axial load: the planar model keeps the contact angle and "
+        "approach of the axial load alone, so it cannot follow the rings moving axially "
+        '(preload = "spring") or the contact angles changing (preload = "position"); use '
+        'model = "dynamic" (either preload), or raise operation.axial_load',
+    )
+
+
 def planar_note(contact_angle: float) -> str:
     """What the planar model (seed 001 eq. 10-17) costs against the 3-D one, in words.
 
@@ -808,10 +852,18 @@ def run(case: Case) -> RunResult:
     imperfections" (seed 001), eq. 8-18.
     """
     st = setup(case)
+
+    def solve_held(
+        case: Case, time: NDArray[np.float64], st: Setup
+    ) -> tuple[NDArray[np.float64], NDArray[np.integer[Any]]]:
+        disp, unloaded = solve(case, time, st)
+        check_radial_load_held(case.operation, unloaded, st.kinematics.n_elements)
+        return disp, unloaded
+
     return run_quasi_static(
         case,
         st,
-        solve,
+        solve_held,
         model=MODEL,
         planar=True,
         description=planar_note(st.contact_angle),

@@ -75,7 +75,7 @@ from numpy.typing import NDArray
 from runout.analysis.results import SOLVER_RTOL, RunResult
 from runout.base._linalg import solve_spd3
 from runout.base.errors import ContactLossError, ConvergenceError, GeometryError, NumericalError
-from runout.geometry.bearing import BallBearing
+from runout.geometry.bearing import BallBearing, Operation
 from runout.geometry.contact import ball_race_contacts
 from runout.geometry.kinematics import ball_spin_frequency, cage_frequency
 from runout.geometry.loading import operating_contact_angle
@@ -736,6 +736,47 @@ def check_axial_room(
     )
 
 
+def check_radial_capacity(op: Operation, contact_angle: float) -> None:
+    r"""Refuse a radial load the balls cannot carry at a fixed contact angle.
+
+    At a fixed angle α every contact force has the axial share sin α, so the balls' forces sum
+    to :math:`\sum Q_j = F_a / \sin\alpha` under the constant axial force :math:`F_a`, and
+    their radial resultant is at most :math:`\sum Q_j \cos\alpha = F_a / \tan\alpha` (all
+    of them on the load line). A larger radial load has no solution in this model: in the
+    bearing the loaded balls roll down towards their groove bottoms (their contact angles
+    fall), which the exact contact geometry of the dynamic model follows.
+
+    Parameters
+    ----------
+    op : Operation
+        The loads: ``radial_load`` and ``axial_load`` [N].
+    contact_angle : float
+        The fixed contact angle α [rad], > 0.
+
+    Raises
+    ------
+    GeometryError
+        Naming ``operation.radial_load``, when :math:`F_r \ge F_a / \tan\alpha`.
+
+    Notes
+    -----
+    Tada, "Three-dimensional analysis of non-repeatable runout (NRRO) in ball bearings",
+    Koyo Engineering Journal (2002) (seed 000): the contact angle is held fixed and the
+    x, y, z force balance solved at each instant.
+    """
+    capacity = op.axial_load / math.tan(contact_angle)
+    if op.radial_load < capacity:
+        return
+    raise GeometryError(
+        "operation.radial_load",
+        f"{op.radial_load:.6g} N is more than the balls carry radially at the fixed contact "
+        f"angle {math.degrees(contact_angle):.4g} deg under the {op.axial_load:.6g} N spring "
+        f"preload: F_a / tan α = {capacity:.4g} N; the loaded balls move towards their groove "
+        'bottoms, which this model cannot follow: use model = "dynamic" (exact contact '
+        'geometry, preload = "spring"), or raise operation.axial_load',
+    )
+
+
 def setup(case: Case) -> Setup:
     """Contact angle, K_n, δ_pl, loads and frequencies of a case (see module docstring).
 
@@ -775,6 +816,7 @@ def setup(case: Case) -> Setup:
     alpha, _ = operating_contact_angle(bearing, op)
     if not alpha > 0.0:
         raise GeometryError("contact_angle", "the quasi_static_3d model needs a contact angle > 0")
+    check_radial_capacity(op, alpha)
     kn = ball_race_contacts(bearing, alpha).combined_stiffness
     z = bearing.elements
     dpl = preload_approach(kn, z, alpha, op.axial_load)

@@ -166,7 +166,7 @@ def inputs_section(result: dict[str, Any], summary: dict[str, Any], case: Any) -
         elif model in ("linear", "roller_constraint") or op.radial_load > 0.0:
             row("measuring direction", f"{direction:.4g} deg", "direction of the radial load")
         if op.axial_load > 0.0 and "operation.axial_load" not in unused:
-            row("axial load", f"{fmt_number(op.axial_load, 5)} N", "on the shaft, along +z")
+            row("axial load", f"{fmt_number(op.axial_load, 5)} N", _preload_words(op, model))
         if op.moment_load > 0.0 and "operation.moment_load" not in unused:
             row("moment load", f"{fmt_number(op.moment_load, 5)} N m")
         material = getattr(case.bearing, "material", None)
@@ -326,3 +326,12 @@ def _frequency_name(name: str, roller: bool) -> str:
         "ball_pass_outer": f"{element} pass, outer ring (BPFO)",
     }
     return names.get(name, name.replace("_", " "))
+
+
+def _preload_words(op: Any, model: str) -> str:
+    """How the axial load holds the rings: the case's preload kind, in words."""
+    if model == "spindle":  # its kind is its [spindle] key, shown with the spindle's inputs
+        return "on the shaft, along +z"
+    if op.preload == "position":
+        return "on the shaft, along +z; position preload (rings held at its axial offset)"
+    return "on the shaft, along +z; spring preload (constant force)"

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from runout.analysis.result_details import (
+    DynamicDetails,
     EquilibriumDetails,
     LinearDetails,
     RollerDetails,
@@ -568,6 +569,16 @@ def _run_sections(result: RunResult) -> list[tuple[str, Rows]]:
                 "mean shaft position rel. outer ring (" + ", ".join("xyz"[: len(mean)]) + ")",
                 ", ".join(show(v, mean_unit) for v in mean),
                 mean_unit[0],
+            )
+        )
+    if isinstance(details, DynamicDetails):  # the one model that runs either preload kind
+        rows.append(
+            (
+                "preload",
+                "spring preload (constant axial force, z free)"
+                if details.axial_dof
+                else "position preload (rings held at their preloaded axial offset)",
+                "",
             )
         )
     sections: list[tuple[str, Rows]] = [

@@ -88,6 +88,13 @@ def _moment_for_equilibrium(data: Data, model: str) -> None:
         data["operation"]["moment_load"] = 0.01
 
 
+def _held_axially(data: Data, model: str) -> None:
+    # the dynamic column's cell: its rotor held axially (with the default spring preload it
+    # moves axially and honours the key, condition honoured_when)
+    if model == "dynamic":
+        data["operation"]["preload"] = "position"
+
+
 def _axial_limit(data: Data) -> None:
     data["analysis"]["limit"] = "1 um"
     data["analysis"]["limit_on"] = "axial_pp"
@@ -108,6 +115,7 @@ CHANGES: dict[str, tuple[Callable[[Data, str], None], Callable[[Data], None]]] =
     "operation.rotating_ring": (_no_patch, _set("operation.rotating_ring", "outer")),
     "operation.other_ring_speed": (_no_patch, _set("operation.other_ring_speed", 3.0)),
     "operation.axial_load": (_no_patch, _set("operation.axial_load", 25.0)),
+    'operation.preload = "position"': (_no_patch, _set("operation.preload", "position")),
     "operation.radial_load": (_no_patch, _radial_load),
     "operation.radial_load_direction": (
         _load_unless_it_is_refused,
@@ -141,7 +149,7 @@ CHANGES: dict[str, tuple[Callable[[Data, str], None], Callable[[Data], None]]] =
         lambda d: d.__setitem__("dynamics", {"mass": 0.03, "damping": 20.0}),
     ),
     "analysis.bands": (_no_patch, _set("analysis.bands", "iso15242")),
-    'analysis.limit_on = "axial_pp"': (_no_patch, _axial_limit),
+    'analysis.limit_on = "axial_pp"': (_held_axially, _axial_limit),
     "analysis.limit": (_no_patch, _set("analysis.limit", "1 um")),
     # run on a spindle case: tests/unit/case/test_spindle_conventions.py
     "spindle, bearings": (_no_patch, lambda d: None),

@@ -108,6 +108,12 @@ def _moment_base(data: Data) -> None:
     data["operation"]["moment_load"] = 0.01
 
 
+def _position_base(data: Data) -> None:
+    # a spindle's kind is its [spindle] key: operation.preload agreeing with it is not applied
+    del data["spindle"]["preload"]
+    data["spindle"]["preload_displacement"] = 2e-6
+
+
 def _none(data: Data) -> None:
     return None
 
@@ -127,6 +133,7 @@ CHANGES: dict[str, tuple[Callable[[Data], None], Callable[[Data], None]]] = {
     "operation.rotating_ring": (_none, _set("operation.rotating_ring", "outer")),
     "operation.other_ring_speed": (_none, _set("operation.other_ring_speed", 3.0)),
     "operation.axial_load": (_none, _set("operation.axial_load", 5.0)),
+    'operation.preload = "position"': (_position_base, _set("operation.preload", "position")),
     "operation.radial_load": (_none, _set("operation.radial_load", 2.0)),
     "operation.radial_load_direction": (_load_base, _set("operation.radial_load_direction", -1.0)),
     "operation.moment_load": (_none, _set("operation.moment_load", 0.01)),

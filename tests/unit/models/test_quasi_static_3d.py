@@ -12,7 +12,7 @@ from hypothesis import strategies as st
 
 from cases import typed_case
 from runout import Operation, examples
-from runout.base.errors import ContactLossError, GeometryError, NumericalError
+from runout.base.errors import ContactLossError, GeometryError
 from runout.case.model import Case
 from runout.models import quasi_static_3d as qs3
 
@@ -136,10 +136,17 @@ def test_ring_that_cannot_be_held_raises_with_instant() -> None:
 
 
 def test_radial_load_beyond_fixed_angle_capacity_raises() -> None:
-    # with α fixed, Σ Q sin α = F_a caps the radial load below F_a cot α
-    with pytest.raises(NumericalError) as info:
-        qs3.run(_case([], axial=10.0, radial=40.0, samples=64))
-    assert info.value.instant == 0
+    # with α fixed, Σ Q sin α = F_a caps the radial load below F_a cot α: refused before the
+    # solve, naming the load and the model that follows the contact angles
+    case = _case([], axial=10.0, radial=40.0, samples=64)
+    alpha = qs3.operating_contact_angle(case.bearing, case.operation)[0]
+    assert 40.0 > 10.0 / math.tan(alpha)
+    with pytest.raises(GeometryError, match=r'tan α.*model = "dynamic"') as info:
+        qs3.run(case)
+    assert info.value.key == "operation.radial_load"
+    # just below the cap the model still solves (the cap is no wider than the model's reach)
+    below = 0.5 * 10.0 / math.tan(alpha)
+    assert qs3.run(_case([], axial=10.0, radial=below, samples=64)).runout is not None
 
 
 def test_needs_a_preload() -> None:
