@@ -99,7 +99,7 @@ def test_statistics_equal_a_loop_of_runout_run_over_the_same_draws(tmp_path: Pat
     for i in range(samples):
         # sample i's draw: SeedSequence(seed, spawn_key=(i,)), sigma x N(0, 1) per front ball
         errors = SIGMA * sample_rng(1, i).standard_normal(Z)
-        drawn = [float(rows[i][f"element_diameter_sigma.front[{j + 1}]"]) for j in range(Z)]
+        drawn = [float(rows[i][f"element_diameter_error_front_{j + 1:02d}"]) for j in range(Z)]
         assert drawn == pytest.approx(errors, rel=1e-15, abs=0.0)
         text = case.read_text(encoding="utf-8").split("[study]")[0]
         values = ", ".join(f'"{float(v)!r} m"' for v in errors)
@@ -199,9 +199,9 @@ def test_per_bearing_pitch_errors_and_two_bearings_at_once(tmp_path: Path) -> No
     _study(_case(tmp_path, vary=vary), "--out", str(out))
     header = (out / "samples.csv").read_text(encoding="utf-8").splitlines()[0].split(",")
     for key in (
-        "element_diameter_sigma.front[8]",
-        "element_diameter_sigma.rear[8]",
-        "elements.rear.pitch_errors[8]",
+        "element_diameter_error_front_08",
+        "element_diameter_error_rear_08",
+        "element_pitch_error_rear_08",
     ):
         assert key in header
 

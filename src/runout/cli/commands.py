@@ -478,8 +478,9 @@ def study_command(
         str | None,
         typer.Option(
             "--out",
-            help="Directory for chunk files, manifest, summary, CSV and plots (new, empty or a "
-            "study's; locked while the study writes).",
+            help="Directory for chunk files, manifest, summary, samples.csv (with its units in "
+            "samples_columns.json) and plots (new, empty or a study's; locked while the study "
+            "writes).",
         ),
     ] = None,
     workers: Annotated[
@@ -625,7 +626,7 @@ def _print_study(summary: dict[str, Any], title: str, out: str | None) -> None:
                 highlight=False,
             )
     if out is not None:
-        files = "manifest.json, chunks/, summary.json, samples.csv"
+        files = "manifest.json, chunks/, summary.json, samples.csv, samples_columns.json"
         if (Path(out) / "stiffness.csv").is_file():  # equilibrium: the stiffness of every point
             files += ", stiffness.csv"
         _out.print(f"wrote {escape(out)}/ ({files})")

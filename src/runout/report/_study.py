@@ -13,6 +13,7 @@ import math
 from pathlib import Path
 from typing import Any
 
+from runout.io.study_columns import line_columns, read_columns
 from runout.report._html import (
     QUANTITY_NAMES,
     RUNOUT_KEYS,
@@ -127,14 +128,21 @@ def study_statistics(study: dict[str, Any], directory: Path) -> list[str]:
         if isinstance(stats, dict):
             name = QUANTITY_NAMES.get(key[:-2], key) if key.endswith("_m") else key
             outputs.append((str(name), str(key), stats))
+    # the line columns by samples_columns.json; a study of an earlier version has none and
+    # named a line's column by its direction, frequency and label
+    named = line_columns(directory)
     for c in (study.get("components") or [])[:12]:
         stats = c.get("pp_m")
         if isinstance(stats, dict):
             hz = fmt_number(num(c.get("frequency_hz")), 6)
             name = f"{c.get('direction', '')} {hz} Hz {c.get('label', '')}"
-            column = (
-                f"{c.get('direction')} {_csv_hz(c.get('frequency_hz'))} Hz {c.get('label')} pp_m"
-            )
+            if named is not None:
+                column = named.get((str(c.get("direction")), str(c.get("label"))), "")
+            else:
+                column = (
+                    f"{c.get('direction')} {_csv_hz(c.get('frequency_hz'))} Hz "
+                    f"{c.get('label')} pp_m"
+                )
             outputs.append((name, column, stats))
     if study.get("kind") == "montecarlo":
         for name, column, stats in outputs:
@@ -175,6 +183,8 @@ def _sweep_table(directory: Path) -> list[str]:
     keys = [k for k in records[0] if k not in ("sample",)]
     runout = [k for k in RUNOUT_KEYS if k in keys]
     inputs = [k for k in keys if k not in runout and not k.endswith("pp_m")]
+    described = read_columns(directory)
+    titles = {k: _input_title(k, described) for k in inputs}
     values = [num(_float(r.get(k))) for r in records for k in runout]
     unit = common_unit(values)
     rows = []
@@ -182,11 +192,21 @@ def _sweep_table(directory: Path) -> list[str]:
         cells = [esc(_cell(r.get(k, ""))) for k in inputs]
         cells += [esc(length(_float(r.get(k)), unit).rsplit(" ", 1)[0]) for k in runout]
         rows.append(cells)
-    header = inputs + [f"{QUANTITY_NAMES[k[:-2]]} [{unit[0]}]" for k in runout]
+    header = [titles[k] for k in inputs] + [f"{QUANTITY_NAMES[k[:-2]]} [{unit[0]}]" for k in runout]
     return [
         "<h2>Sweep points</h2>",
         table(header, rows, numeric=tuple(range(len(inputs), len(header)))),
     ]
+
+
+def _input_title(column: str, described: dict[str, Any] | None) -> str:
+    """Heading of an input column of the sweep table: the case key it varies (with the
+    element number of a per-element draw), or the column's name."""
+    info = (described or {}).get("columns", {}).get(column)
+    if not isinstance(info, dict) or "key" not in info:
+        return column
+    element = info.get("element")
+    return f"{info['key']} {element}" if element is not None else str(info["key"])
 
 
 def _cell(text: str) -> str:

@@ -175,6 +175,7 @@ def plan_quantities(case: Case, data: dict[str, Any] | None = None) -> list[Quan
             continue
         assert isinstance(entry, VarySpec)
         path = parse_vary_key(key)
+        _refuse_second_description(case, data, path, where)
         if path[0] == "elements" or path[0].startswith("elements."):
             _bearing_of(case, key, where, path[0].partition(".")[2] or None)
         table, index, _name = path
@@ -233,6 +234,43 @@ def plan_quantities(case: Case, data: dict[str, Any] | None = None) -> list[Quan
             )
         drawn_by[q.path] = q.key
     return out
+
+
+#: The two keys that each describe a ball bearing's play: either one, never both (the
+#: catalogue angle sets P_d = 2A(1 - cos a0)).
+_PLAY_KEYS = ("radial_clearance", "nominal_contact_angle")
+
+
+def _refuse_second_description(
+    case: Case, data: dict[str, Any], path: tuple[str, int | None, str], where: str
+) -> None:
+    """Refuse drawing one of a bearing's play keys when the case gives it by the other.
+
+    Every sample would describe the bearing twice, with a clearance its angle does not set,
+    and be refused: one line now instead of a lot of failed samples.
+    """
+    table, index, name = path
+    if name not in _PLAY_KEYS or table not in ("bearing", "bearings"):
+        return
+    section = data.get(table)
+    if index is not None:
+        section = (
+            section[index - 1] if isinstance(section, list) and index <= len(section) else None
+        )
+    if not isinstance(section, dict):
+        return
+    other = _PLAY_KEYS[1 - _PLAY_KEYS.index(name)]
+    if other not in section:
+        return
+    prefix = table if index is None else f"{table}[{index}]"
+    raise CaseError(
+        case.path,
+        where,
+        f"the case gives the bearing by {prefix}.{other}, which sets its clearance "
+        "(P_d = 2A(1 - cos a0)); a drawn "
+        f"{name} would describe it twice: vary {prefix}.{other} instead, or give "
+        f"{prefix}.{name} in place of {other} in the case",
+    )
 
 
 def _bearing_of(case: Case, key: str, where: str, name: str | None) -> tuple[Any, int]:
@@ -331,7 +369,21 @@ def _study_of(case: Case) -> StudySpec:
 
 
 def _case_data(case: Case) -> dict[str, Any]:
-    """The case document in SI numbers, without ``[study]`` (re-validates to the same case)."""
+    """The case document in SI numbers, without ``[study]`` (re-validates to the same case).
+
+    Only the keys the case gives: every sample is built from the description the user wrote.
+    A dump with the defaults would give keys the user left out (``radial_clearance = 0``
+    beside a ``nominal_contact_angle``, a bearing described twice and refused in every
+    sample) and mark them as given to the checks that ask what a case sets.
+    """
+    return case.spec.model_dump(
+        mode="python", exclude_unset=True, exclude_none=True, exclude={"study"}
+    )
+
+
+def _digest_data(case: Case) -> dict[str, Any]:
+    """The case document a study's digest is taken of: every key with its default, as earlier
+    versions hashed it, so that their output directories still resume and load."""
     return case.spec.model_dump(mode="python", exclude_none=True, exclude={"study"})
 
 

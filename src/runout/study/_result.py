@@ -16,6 +16,8 @@ from typing import Any, TextIO
 import numpy as np
 from numpy.typing import NDArray
 
+from runout.io.study_columns import COLUMNS_FILE, element_column, identifier, line_column
+from runout.io.study_columns import FORMAT as COLUMNS_FORMAT
 from runout.study._chunks import ERRORS_SHOWN
 from runout.study._files import write_atomic
 from runout.study._plan import RUNOUT_KEYS, Quantity
@@ -277,8 +279,10 @@ class StudyResult:
         ``[study.vary]`` key (the case key, e.g. ``operation.speed``; SI values, a list per
         row for a per-element key), the runout figures ``radial_pp_m``, ``rro_pp_m``,
         ``nrro_pp_m``, ``axial_pp_m`` [m] (NaN for a failed sample), one p-p column [m] per
-        line (``"<direction> <frequency> Hz <label> pp_m"``, as in ``samples.csv``; 0 where the
-        line is below the model's reporting floor), ``pass`` when the case gives a spec limit,
+        line (``"<direction>_<label>_pp_m"`` as a plain identifier, e.g.
+        ``x_ball_size_error_f_c_pp_m``, as in ``samples.csv``; 0 where the line is below the
+        model's reporting floor; :meth:`column_descriptions` gives each one's frequency and
+        label), ``pass`` when the case gives a spec limit,
         for a study of the equilibrium model ``kxx_n_per_m``, ``kxy_n_per_m``,
         ``kyx_n_per_m``, ``kyy_n_per_m`` and ``kzz_n_per_m`` [N/m] (as in ``stiffness.csv``;
         NaN for a point of another model or a failed one), and ``error`` (the failure's
@@ -307,8 +311,9 @@ class StudyResult:
         for k in _FRAME_RUNOUT:
             data[k] = np.asarray(self.runout[k], dtype=np.float64)
             units[k] = "m"
-        for d, f, label, pp in self.line_table():
-            name = f"{d} {f:.6g} Hz {label} pp_m"  # unique: lines are keyed by direction|label
+        names = self.line_columns()
+        for d, _f, label, pp in self.line_table():
+            name = names[f"{d}|{label}"]  # as in samples.csv
             data[name] = np.asarray(pp, dtype=np.float64)
             units[name] = "m"
         if self.limit is not None:
@@ -355,13 +360,20 @@ class StudyResult:
 
     # ------------------------------------------------------------ files
     def write(self, directory: Path, plots: bool = True) -> list[Path]:
-        """Write ``summary.json``, ``samples.csv`` and plots into ``directory``."""
+        """Write ``summary.json``, ``samples.csv``, ``samples_columns.json`` and plots into
+        ``directory``.
+
+        ``samples.csv`` has one row per sample, no units row, and plain identifiers as column
+        names (:meth:`columns`); ``samples_columns.json`` gives every column's SI unit and
+        what it is (:meth:`column_descriptions`).
+        """
         directory.mkdir(parents=True, exist_ok=True)
         summary = _nan_to_none(self.summary())  # every sample failed: no statistics, null
         if self.limit is not None and self.kind == "montecarlo":
             summary["yield"] = self.lot_yield()
         written = [_write_text(directory / "summary.json", _dumps(summary, indent=2))]
         written.append(self._write_csv(directory / "samples.csv"))
+        written.append(self._write_columns(directory / COLUMNS_FILE))
         if self.stiffness:
             written.append(self._write_stiffness(directory / "stiffness.csv"))
         if plots:
@@ -377,22 +389,81 @@ class StudyResult:
         return written
 
     def columns(self) -> list[tuple[str, NDArray[Any]]]:
-        """Flat table: (column name, values per sample)."""
-        cols: list[tuple[str, NDArray[Any]]] = [
-            ("sample", np.arange(self.samples)),
-            ("model", np.array(self.model, dtype=object)),
+        """Flat table of ``samples.csv``: (column name, values per sample).
+
+        Every name is a plain identifier (:mod:`runout.io.study_columns`); the units and what
+        each column is are in :meth:`column_descriptions`.
+        """
+        return [(name, values) for name, values, _, _ in self._column_table()]
+
+    def column_descriptions(self) -> dict[str, Any]:
+        """The ``samples_columns.json`` document: the unit and meaning of every column.
+
+        Returns
+        -------
+        dict
+            ``format``; ``units``: column -> SI unit (``"-"`` for a count, text or index),
+            every column of ``samples.csv`` in its order; ``columns``: column -> ``{"key"}``
+            (a varied case key, ``"element"`` too for one element of a per-element draw) or
+            ``{"direction", "frequency_hz", "label"}`` (a line).
+        """
+        table = self._column_table()
+        return {
+            "format": COLUMNS_FORMAT,
+            "units": {name: unit for name, _, unit, _ in table},
+            "columns": {name: info for name, _, _, info in table if info},
+        }
+
+    def _column_table(self) -> list[tuple[str, NDArray[Any], str, dict[str, Any]]]:
+        """(name, values, unit, description) of every column of ``samples.csv``."""
+        cols: list[tuple[str, NDArray[Any], str, dict[str, Any]]] = [
+            ("sample", np.arange(self.samples), "-", {}),
+            ("model", np.array(self.model, dtype=object), "-", {}),
         ]
         for q in self.quantities:
             vals = self.values[q.key]
+            unit = _si_unit(q)
             if q.size > 1:
                 arr = np.array(vals, dtype=np.float64).reshape(self.samples, q.size)
-                cols += [(f"{q.key}[{j + 1}]", arr[:, j]) for j in range(q.size)]
+                table, _, name = q.path
+                bearing = table.partition(".")[2] or None
+                cols += [
+                    (
+                        element_column(name, bearing, j + 1, q.size),
+                        arr[:, j],
+                        unit,
+                        {"key": q.key, "element": j + 1},
+                    )
+                    for j in range(q.size)
+                ]
             else:
-                cols.append((q.key, np.array(vals, dtype=object)))
-        cols += [(k, self.runout[k]) for k in RUNOUT_KEYS]
+                cols.append((identifier(q.key), np.array(vals, dtype=object), unit, {"key": q.key}))
+        cols += [(k, self.runout[k], "m", {}) for k in RUNOUT_KEYS]
+        names = self.line_columns()
         for d, f, label, pp in self.line_table():
-            cols.append((f"{d} {f:.6g} Hz {label} pp_m", pp))
+            info = {"direction": d, "frequency_hz": f, "label": label}
+            cols.append((names[f"{d}|{label}"], pp, "m", info))
         return cols
+
+    def line_columns(self) -> dict[str, str]:
+        """Column name of every line (``"direction|label"`` -> name), unique and stable.
+
+        Names come from the direction and label (:func:`runout.io.study_columns.line_column`);
+        two labels that give one name are numbered in the order of their keys, which does not
+        depend on the samples' values.
+        """
+        names: dict[str, str] = {}
+        taken = set(RUNOUT_KEYS) | {"sample", "model"}
+        for key in sorted(self.lines):
+            direction, _, label = key.partition("|")
+            base = line_column(direction, label)
+            name, n = base, 1
+            while name in taken:
+                n += 1
+                name = f"{base}_{n}"
+            taken.add(name)
+            names[key] = name
+        return names
 
     def stiffness_columns(self) -> list[tuple[str, list[Any]]]:
         """The table of ``stiffness.csv``: one row per equilibrium point that ran.
@@ -431,6 +502,11 @@ class StudyResult:
             writer.writerows(zip(*([_cell(v) for v in col] for _, col in cols), strict=True))
 
         return write_atomic(path, rows)
+
+    def _write_columns(self, path: Path) -> Path:
+        # not sorted: "units" lists the columns in the order of samples.csv
+        text = json.dumps(self.column_descriptions(), indent=2, allow_nan=False) + "\n"
+        return _write_text(path, text)
 
     def _write_csv(self, path: Path) -> Path:
         cols = self.columns()

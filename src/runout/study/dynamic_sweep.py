@@ -43,14 +43,17 @@ __all__ = ["SweepPoint", "exact_number", "point_name", "sweep"]
 # sweeps (seed 003 Figs. 3-4)
 # --------------------------------------------------------------------------------------------
 def _variant(case: Any, elements: int | None, preload: float | None) -> Any:
-    """The case with another number of balls and/or axial preload."""
+    """The case with another number of balls and/or axial preload.
 
-    data = case.spec.model_dump(mode="python", exclude_none=True)
+    Built from the keys the case gives (not their defaults too): a bearing given by its
+    catalogue angle stays given by it, not by the angle and a clearance of 0.
+    """
+    data = case.spec.model_dump(mode="python", exclude_unset=True, exclude_none=True)
     if elements is not None:
         data["bearing"]["elements"] = int(elements)
     if preload is not None:
         data.setdefault("operation", {})["axial_load"] = float(preload)
-    data["analysis"]["model"] = dynamic.MODEL
+    data.setdefault("analysis", {})["model"] = dynamic.MODEL
     base = Path(case.path).parent if case.path and not case.path.startswith("<") else None
     return parse_case(data, f"{case.path} (elements={elements}, preload={preload} N)", base)
 

@@ -107,6 +107,7 @@ from runout.study._plan import (
     Quantity,
     StudyError,
     _case_data,
+    _digest_data,
     _models,
     _study_of,
     plan_quantities,
@@ -136,6 +137,7 @@ __all__ = [
     "output_lock",
     "plan_quantities",
     "refuse_foreign",
+    "refuse_unbuildable",
     "run_study",
     "sample_rng",
     "statistics",
@@ -194,12 +196,17 @@ def dask_executor(address: str | None = None, **cluster: Any) -> Executor:
     return client.get_executor()
 
 
-def _digest(data: dict[str, Any], study: StudySpec, base_dir: str) -> str:
+def _digest(
+    data: dict[str, Any], study: StudySpec, base_dir: str, given: dict[str, Any] | None = None
+) -> str:
     """SHA-256 of what decides a study's numbers: the case (SI), ``[study]``, profile files.
 
     A ``[[profile]]`` names a CSV file; its bytes are part of the case, so a remeasured
     profile makes another study (its chunks are recomputed on resume) even when the case file
-    itself did not change.
+    itself did not change. ``data`` is the case with its defaults (the document earlier
+    versions hashed); ``given``, the keys the case gives, marks a bearing given by its
+    catalogue angle: earlier versions built every sample of it with a clearance of 0 as well
+    and recorded each as failed, so their chunks must not be taken up by a resume.
     """
     files: dict[str, str] = {}
     for entry in data.get("profile", []):
@@ -208,11 +215,19 @@ def _digest(data: dict[str, Any], study: StudySpec, base_dir: str) -> str:
             files[name] = hashlib.sha256((Path(base_dir) / name).read_bytes()).hexdigest()
         except OSError:
             files[name] = "unreadable"  # parse_case reports it when the study runs
-    doc = {"case": data, "study": study.model_dump(mode="json")}
+    doc: dict[str, Any] = {"case": data, "study": study.model_dump(mode="json")}
+    if given is not None and _by_catalogue_angle(given):
+        doc["samples_built_from"] = "the keys the case gives"
     if files:  # studies without profiles keep the digest of earlier versions
         doc["profile_files"] = files
     text = json.dumps(doc, sort_keys=True, default=str)
     return hashlib.sha256(text.encode()).hexdigest()
+
+
+def _by_catalogue_angle(given: dict[str, Any]) -> bool:
+    """Whether a bearing of the case document ``given`` states its nominal contact angle."""
+    tables = [given.get("bearing"), *(given.get("bearings") or [])]
+    return any(isinstance(t, dict) and "nominal_contact_angle" in t for t in tables)
 
 
 def _chunk_path(directory: Path, index: int) -> Path:
@@ -273,7 +288,8 @@ def _plan(case: Case, chunk_size: int | None, parallel: bool = False) -> _Plan:
         )
         for k in range(n_chunks)
     ]
-    return _Plan(study, quantities, models, total, size, tasks, _digest(data, study, base_dir))
+    digest = _digest(_digest_data(case), study, base_dir, data)
+    return _Plan(study, quantities, models, total, size, tasks, digest)
 
 
 _log = logging.getLogger(__name__)
@@ -328,7 +344,8 @@ def run_study(
     Returns
     -------
     StudyResult
-        Failed samples are in ``errors``; the study never stops on one.
+        Failed samples are in ``errors``; the study does not stop on one (unless every one
+        of its first samples is refused for one input: see Raises).
 
     Raises
     ------
@@ -336,6 +353,9 @@ def run_study(
         Bad output directory (:class:`OutputError`: empty path, a file, unwritable, foreign,
         locked by another writer), a corrupted manifest, a resume that does not match the
         case, or a worker process that died.
+    CaseError
+        A key a model refuses, or the first samples all refused for one input
+        (:func:`refuse_unbuildable`), before any sample runs and any file is written.
     """
     in_process = executor is None and workers <= 1
     plan = _plan(
@@ -346,6 +366,7 @@ def run_study(
     for model in plan.models:  # a key a model refuses ends the study before any work
         enforce(case, model)
     _check_analysis_outputs(case, notify or _log.warning)
+    refuse_unbuildable(plan)
     if executor is None and workers > 1 and estimates.batched_study(case):
         # the case's estimate assumed this process; worker processes each hold the shared
         # arrays too (and the chunks in flight): check the budget for them before starting
@@ -370,6 +391,66 @@ def run_study(
         return _run(
             directory, case, plan, executor, workers, resume, force, progress, plots, notify
         )
+
+
+#: Monte Carlo samples built before a study runs: when every one of them is refused for the
+#: same case key, the study stops with that refusal (docs/studies.md, "Failed samples").
+FIRST_SAMPLES = 20
+
+
+def refuse_unbuildable(plan: _Plan) -> None:
+    """Stop a study whose first samples are all refused for the same input, before any runs.
+
+    The first :data:`FIRST_SAMPLES` samples of a Monte Carlo (every point of a sweep) are
+    built as their chunks would build them (drawn values placed, the case validated, the
+    bearing built, the model's refusals) until one is built. Building is milliseconds; a model
+    run is not. When none is built and every one was refused for the same case key, no
+    sample can run: the refusal is raised at once, as ``runout check`` gives it, instead of
+    recording it under every sample of the lot. Samples refused in a tail of a distribution
+    (or points of a sweep that a later value brings back) leave the study running as before.
+
+    Parameters
+    ----------
+    plan : _Plan
+        The study's plan (its first task holds what every sample is drawn and built from).
+
+    Raises
+    ------
+    CaseError
+        The first sample's refusal, naming the case file and key, with how many samples
+        share it.
+    """
+    from runout.case.conventions import enforce
+    from runout.study._chunks import _point, _variant
+
+    if not plan.tasks:
+        return
+    task = plan.tasks[0]  # every task draws and builds sample i the same way
+    count = plan.total if plan.study.kind == "sweep" else min(FIRST_SAMPLES, plan.total)
+    first: CaseError | None = None
+    for i in range(count):
+        model, values = _point(task, i)
+        try:
+            enforce(_variant(task, model, values), model)
+        except CaseError as exc:
+            if first is not None and (exc.file, exc.key) != (first.file, first.key):
+                return  # refused for different reasons: the samples' own errors say which
+            first = first or exc
+            continue
+        except Exception:  # not an input error: the model's run records it per sample
+            return
+        return  # this sample builds: the study runs
+    if first is None:
+        return
+    word = "samples" if plan.study.kind == "montecarlo" else "points"
+    which = f"the first {count} {word}" if count < plan.total else f"all {count} {word}"
+    drawn = ", ".join(q.key for q in plan.quantities)
+    raise CaseError(
+        first.file,
+        first.key,
+        f"{first.message} (in each of {which}, built from study.vary: {drawn}; "
+        "the study stops before running any)",
+    )
 
 
 def _check_analysis_outputs(case: Case, notify: Callable[[str], None]) -> None:
@@ -559,7 +640,8 @@ def _load_chunks(
 
 #: Files a study writes at the top of its output directory (replaced by a fresh run).
 _STUDY_FILES = re.compile(
-    r"^(manifest\.json|summary\.json|samples\.csv|stiffness\.csv|histograms\.png|sweep_.+\.png)$"
+    r"^(manifest\.json|summary\.json|samples\.csv|samples_columns\.json|stiffness\.csv"
+    r"|histograms\.png|sweep_.+\.png)$"
 )
 
 

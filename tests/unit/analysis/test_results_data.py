@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 import sys
 from pathlib import Path
 
@@ -152,12 +153,16 @@ def test_study_dataframe_one_row_per_point(sweep: StudyResult) -> None:
     for k in runout:
         np.testing.assert_array_equal(df[k].to_numpy(), sweep.runout[k])
     assert df["radial_pp_m"].min() > 0.0
-    lines = [c for c in df.columns if c.endswith(" pp_m")]
+    lines = [c for c in df.columns if c.endswith("_pp_m") and c not in runout]
     assert len(lines) == len(sweep.lines) > 0
+    assert all(re.fullmatch(r"[A-Za-z][A-Za-z0-9_]*", c) for c in lines)
+    described = sweep.column_descriptions()["columns"]
+    by_line = {(described[c]["direction"], described[c]["label"]): c for c in lines}
     points = sweep.points()
     for i, point in enumerate(points):  # every non-zero line of a point, at its p-p
         for c in point["components"]:
-            name = f"{c['direction']} {c['frequency_hz']:.6g} Hz {c['label']} pp_m"
+            name = by_line[(c["direction"], c["label"])]
+            assert described[name]["frequency_hz"] == c["frequency_hz"]
             assert df.loc[i, name] == c["pp_m"]
     assert list(df["error"]) == ["", "", ""]
     assert df.attrs["kind"] == "sweep" and df.attrs["units"]["radial_pp_m"] == "m"
@@ -193,7 +198,7 @@ def test_study_dataframe_keeps_errors_lists_and_the_limit() -> None:
     assert df.loc[0, "error"] == ""
     assert np.isnan(df.loc[1, "radial_pp_m"])
     assert list(df["pass"]) == [False, None]  # 3e-8 > 2.5e-8; a failed sample is neither
-    assert list(df["x 50 Hz ball size error: f_c pp_m"]) == [2e-8, 0.0]
+    assert list(df["x_ball_size_error_f_c_pp_m"]) == [2e-8, 0.0]
     assert df.attrs["limit"] == {"quantity": "radial_pp", "limit_m": 2.5e-8}
     assert df.attrs["units"]["elements.diameter_errors"] == "m"
 
