@@ -38,7 +38,6 @@ from numba.extending import register_jitable
 from numpy.typing import NDArray
 
 FloatArray = NDArray[np.float64]
-IntArray = NDArray[np.int64]
 BoolArray = NDArray[np.bool_]
 
 
@@ -355,7 +354,7 @@ def _approaches(
 def _ball_newton(
     xs: FloatArray,
     aa: FloatArray,
-    idx: IntArray,
+    active: BoolArray,
     ki0: FloatArray,
     ki1: FloatArray,
     ai_c: FloatArray,
@@ -369,23 +368,29 @@ def _ball_newton(
     tol: float,
     done: BoolArray,
 ) -> None:
-    """2×2 Newton on eq. 3-4 of the balls ``idx`` (rows of ``xs``, ``aa``), in place.
+    """2×2 Newton on eq. 3-4 of the balls flagged ``active`` (rows of ``xs``, ``aa``), in
+    place.
 
     Every ball takes its Newton step, shortened so that neither approach shrinks by more than
     90 % (the Hertz stiffness vanishes at zero approach) and so that no component exceeds
     0.25 % of the groove radii; all balls iterate until all have converged (a full step at
-    most ``tol`` [m]). ``done`` receives the per-ball convergence.
+    most ``tol`` [m]). ``done`` receives the convergence of the active balls (the other
+    entries are left as they are). A mask rather than a list of positions: no index array
+    to allocate, first-run compile time.
     """
-    n = idx.size
+    z = active.size
     ri0 = cst[C_RI0]
     ro0 = cst[C_RO0]
     limit = 0.25 * (ri0 + ro0) * 0.05
-    for m in range(n):
-        done[m] = False
+    for m in range(z):
+        if active[m]:
+            done[m] = False
     for _ in range(BALL_ITER):
         all_done = True
-        for m in range(n):
-            j = idx[m]
+        for m in range(z):
+            if not active[m]:
+                continue
+            j = m
             x1 = xs[m, 0]
             x2 = xs[m, 1]
             a1 = aa[m, 0]
@@ -548,43 +553,28 @@ def _closed_start(
 # Small loops instead of NumPy array expressions (`.all()`, `~done`, fancy indexing, slice
 # assignment): the same work, but several times less compile time.
 @register_jitable(no_cfunc_wrapper=True)
-def _all(flags: NDArray[np.bool_]) -> bool:
-    """Every entry true."""
+def _all(flags: BoolArray, active: BoolArray) -> bool:
+    """Every active entry true."""
     for m in range(flags.size):
-        if not flags[m]:
+        if active[m] and not flags[m]:
             return False
     return True
 
 
 @register_jitable(no_cfunc_wrapper=True)
-def _copy_rows(dst: NDArray[np.float64], src: NDArray[np.float64]) -> None:
-    """dst[:] = src for arrays of shape (n, 2)."""
+def _copy_rows(dst: FloatArray, src: FloatArray, active: BoolArray) -> None:
+    """dst[m] = src[m] for the active rows of arrays of shape (Z, 2)."""
     for m in range(src.shape[0]):
-        dst[m, 0] = src[m, 0]
-        dst[m, 1] = src[m, 1]
-
-
-@register_jitable(no_cfunc_wrapper=True)
-def _positions(flags: BoolArray) -> IntArray:
-    """Positions m with flags[m] true, int64."""
-    n = 0
-    for m in range(flags.size):
-        if flags[m]:
-            n += 1
-    out = np.empty(n, dtype=np.int64)
-    n = 0
-    for m in range(flags.size):
-        if flags[m]:
-            out[n] = m
-            n += 1
-    return out
+        if active[m]:
+            dst[m, 0] = src[m, 0]
+            dst[m, 1] = src[m, 1]
 
 
 @numba.njit(cache=True)
 def _friction_continuation(
     xs: FloatArray,
     aa: FloatArray,
-    idx: IntArray,
+    active: BoolArray,
     ki0: FloatArray,
     ki1: FloatArray,
     ai_c: FloatArray,
@@ -598,36 +588,38 @@ def _friction_continuation(
     tol: float,
     done: BoolArray,
 ) -> None:
-    """Ball Newton along the gyroscopic friction, λ → s·λ with s from 0 to 1, in place.
+    """Ball Newton along the gyroscopic friction, λ → s·λ with s from 0 to 1, in place, for
+    the balls flagged ``active``.
 
     The last resort of the ball solve (near lift-off under inner-race control): without
     friction (s = 0) the balance is the centrifugal one; each step starts next to its answer
     (step halved on failure, down to 1/1024).
     """
-    n = idx.size
-    _ball_newton(xs, aa, idx, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, 0.0, 0.0, speed_on, tol, done)
-    xt = np.empty((n, 2))
-    ok = np.empty(n, dtype=np.bool_)
+    z = active.size
+    _ball_newton(xs, aa, active, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, 0.0, 0.0, speed_on, tol, done)
+    xt = np.empty((z, 2))
+    ok = np.empty(z, dtype=np.bool_)
     s, ds = 0.0, 0.25
     for _ in range(_CONT_PASSES):
-        if not (_all(done) and s < 1.0):
+        if not (_all(done, active) and s < 1.0):
             return
         t = min(1.0, s + ds)
-        _copy_rows(xt, xs)
+        _copy_rows(xt, xs, active)
         lam_ti = t * lam_i
         lam_to = t * lam_o
         _ball_newton(
-            xt, aa, idx, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_ti, lam_to, speed_on, tol, ok
+            xt, aa, active, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_ti, lam_to, speed_on, tol, ok
         )
-        if _all(ok):
-            _copy_rows(xs, xt)
+        if _all(ok, active):
+            _copy_rows(xs, xt, active)
             s, ds = t, min(2.0 * ds, 0.5)
         elif ds > 1.0 / 1024.0:
             ds *= 0.5
         else:
-            _copy_rows(xs, xt)
-            for m in range(n):
-                done[m] = ok[m]
+            _copy_rows(xs, xt, active)
+            for m in range(z):
+                if active[m]:
+                    done[m] = ok[m]
             return
 
 
@@ -686,49 +678,21 @@ def _balls(
     else:
         for j in range(z):
             loaded[j] = math.hypot(a[j, 0], a[j, 1]) > ri0 + ro0
-    all_done = True
-    idx = _positions(loaded)
-    n = idx.size
-    if n:
-        xs = np.empty((n, 2))
-        aa = np.empty((n, 2))
-        for m in range(n):
-            j = idx[m]
-            xs[m, 0] = x[j, 0]
-            xs[m, 1] = x[j, 1]
-            aa[m, 0] = a[j, 0]
-            aa[m, 1] = a[j, 1]
+    for j in range(z):
+        if loaded[j]:
             # start with both contacts closed (the previous state may have had one open)
-            d_i, d_o = _approaches(xs[m, 0], xs[m, 1], aa[m, 0], aa[m, 1], ri0, ro0)
+            d_i, d_o = _approaches(x[j, 0], x[j, 1], a[j, 0], a[j, 1], ri0, ro0)
             if d_i <= 0.0 or d_o <= 0.0:
                 if speed_on:  # the inner groove overlaps X*: both contacts closed there
-                    xs[m, 0] = x_star[j, 0]
-                    xs[m, 1] = x_star[j, 1]
+                    x[j, 0] = x_star[j, 0]
+                    x[j, 1] = x_star[j, 1]
                 else:
-                    xs[m, 0], xs[m, 1] = _start(a[j, 0], a[j, 1], ki0[j], ko0[j], ri0, ro0)
-        ok = np.empty(n, dtype=np.bool_)
-        _ball_newton(
-            xs,
-            aa,
-            idx,
-            ki0,
-            ki1,
-            ai_c,
-            ko0,
-            ko1,
-            ao_c,
-            cst,
-            lam_i,
-            lam_o,
-            speed_on,
-            1e-13 * cst[C_SCALE],
-            ok,
-        )
-        for m in range(n):
-            x[idx[m], 0] = xs[m, 0]
-            x[idx[m], 1] = xs[m, 1]
-            done[idx[m]] = ok[m]
-            all_done = all_done and ok[m]
+                    x[j, 0], x[j, 1] = _start(a[j, 0], a[j, 1], ki0[j], ko0[j], ri0, ro0)
+    tol = 1e-13 * cst[C_SCALE]
+    _ball_newton(
+        x, a, loaded, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o, speed_on, tol, done
+    )
+    all_done = _all(done, loaded)
     for j in range(z):
         if not loaded[j]:  # on the outer groove bottom
             x[j, 0] = 0.0
@@ -793,43 +757,43 @@ def _restart_balls(
     ri0 = cst[C_RI0]
     ro0 = cst[C_RO0]
     tol = 1e-13 * cst[C_SCALE]
-    redo_flags = np.empty(done.size, dtype=np.bool_)
+    z = done.size
+    redo = np.empty(z, dtype=np.bool_)
+    dr = np.empty(z, dtype=np.bool_)
     for attempt in range(4):
-        for j in range(done.size):
-            redo_flags[j] = not done[j]
-        redo = _positions(redo_flags)
-        k = redo.size
+        k = 0
+        for j in range(z):
+            redo[j] = not done[j]
+            if redo[j]:
+                k = k + 1
         if k == 0:
             break
-        xr = np.empty((k, 2))
-        ar = np.empty((k, 2))
-        for r in range(k):
-            j = redo[r]
-            ar[r, 0] = a[j, 0]
-            ar[r, 1] = a[j, 1]
+        for j in range(z):
+            if not redo[j]:
+                continue
             if attempt == 0:
-                xr[r, 0] = x_star[j, 0]
-                xr[r, 1] = x_star[j, 1]
+                x[j, 0] = x_star[j, 0]
+                x[j, 1] = x_star[j, 1]
             elif attempt == 1:
-                xr[r, 0], xr[r, 1] = _start(ar[r, 0], ar[r, 1], ki0[j], ko0[j], ri0, ro0)
+                x[j, 0], x[j, 1] = _start(a[j, 0], a[j, 1], ki0[j], ko0[j], ri0, ro0)
             else:
                 side = 1.0 if attempt == 2 else -1.0
-                xr[r, 0], xr[r, 1] = _closed_start(ar[r, 0], ar[r, 1], ko0[j], cst, side)
-        dr = np.empty(k, dtype=np.bool_)
+                x[j, 0], x[j, 1] = _closed_start(a[j, 0], a[j, 1], ko0[j], cst, side)
         if attempt != 1:
             _ball_newton(
-                xr, ar, redo, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o, speed_on, tol, dr
+                x, a, redo, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o, speed_on, tol, dr
             )
         else:
             _friction_continuation(
-                xr, ar, redo, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o, speed_on, tol, dr
+                x, a, redo, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o, speed_on, tol, dr
             )
-        for r in range(k):
-            j = redo[r]
-            x[j, 0] = xr[r, 0]
-            x[j, 1] = xr[r, 1]
-            done[j] = dr[r]
-    ok = _all(done)
+        for j in range(z):
+            if redo[j]:
+                done[j] = dr[j]
+    ok = True
+    for j in range(z):
+        if not done[j]:
+            ok = False
     if ok:
         _ring_jacobian(
             a,

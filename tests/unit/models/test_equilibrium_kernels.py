@@ -581,14 +581,14 @@ def test_friction_continuation_matches_numpy() -> None:
     ring, sol = _ring_at_solution("near_lift_off_inner_control")
     p = ring.p
     a = ring.groove_centres(sol.displacement)
-    idx = np.arange(a.shape[0])
+    every = np.ones(a.shape[0], dtype=np.bool_)
     start = _start(a, p)  # type: ignore[arg-type]
     tol = 1e-13 * ring.a
     want_x, want_done = _friction_continuation(start, a, p, tol)  # type: ignore[arg-type]
     xs = start.copy()
-    done = np.empty(idx.size, dtype=np.bool_)
+    done = np.empty(every.size, dtype=np.bool_)
     kern._friction_continuation(
-        xs, a, idx, *_constants(ring), ring.cst, p.lam_i, p.lam_o, True, tol, done
+        xs, a, every, *_constants(ring), ring.cst, p.lam_i, p.lam_o, True, tol, done
     )
     assert np.array_equal(done, want_done)
     # a ball without rest overlap has no loaded state without friction (s = 0): there the
