@@ -339,14 +339,6 @@ def _ball_state(
     )
 
 
-@numba.njit(cache=True)
-def _approaches(
-    x1: float, x2: float, a1: float, a2: float, ri0: float, ro0: float
-) -> tuple[float, float]:
-    """δ_i, δ_o [m] at ball centre (x1, x2) and groove centre (a1, a2) (seed 001 eq. 5-6)."""
-    return math.hypot(a1 - x1, a2 - x2) - ri0, math.hypot(x1, x2) - ro0
-
-
 # --------------------------------------------------------------------------------------------
 # ball equilibrium
 # --------------------------------------------------------------------------------------------
@@ -415,9 +407,14 @@ def _ball_newton(
             big = abs(s1) if abs(s1) > abs(s0) else abs(s0)
             factor = limit / (1e-300 if 1e-300 > big else big)
             factor = factor if factor < 1.0 else 1.0
-            d_i, d_o = _approaches(x1, x2, a1, a2, ri0, ro0)
+            # the approaches δ_i, δ_o now and after the step (seed 001 eq. 5-6)
+            d_i = math.hypot(a1 - x1, a2 - x2) - ri0
+            d_o = math.hypot(x1, x2) - ro0
             for _ in range(_SHRINK):
-                ti, to = _approaches(x1 + factor * s0, x2 + factor * s1, a1, a2, ri0, ro0)
+                y1 = x1 + factor * s0
+                y2 = x2 + factor * s1
+                ti = math.hypot(a1 - y1, a2 - y2) - ri0
+                to = math.hypot(y1, y2) - ro0
                 if not (ti < 0.1 * d_i or to < 0.1 * d_o):
                     break
                 factor = 0.5 * factor
@@ -441,6 +438,7 @@ def _lifted_off(
     lam_o: float,
     x_star: FloatArray,
     lifted: BoolArray,
+    work: FloatArray,
 ) -> None:
     """Balls whose inner contact opens at speed, and their outer-contact-only centres X*.
 
@@ -457,9 +455,10 @@ def _lifted_off(
     inertia = cst[C_INERTIA]
     ri0 = cst[C_RI0]
     ro0 = cst[C_RO0]
-    ao = np.empty(z)
-    ai = np.empty(z)
-    d_i = np.empty(z)  # set for every ball by each pass of the fixed point
+    # rows of the caller's work array (3, Z): an allocation here would compile np.empty
+    ao = work[0]
+    ai = work[1]
+    d_i = work[2]  # set for every ball by each pass of the fixed point
     for j in range(z):
         ao[j] = math.atan(a[j, 0] / a[j, 1])
         ai[j] = ao[j]
@@ -647,6 +646,7 @@ def _balls(
     jac: FloatArray,
     state: FloatArray,
     parts: FloatArray,
+    lift_work: FloatArray,
 ) -> bool:
     """Groove centres ``a`` at ring displacement q and eq. 3-4 for every loaded ball, in place
     in ``x`` (Z, 2) from its current value (or the Hertz split without ``have_x``).
@@ -672,7 +672,7 @@ def _balls(
         if not have_x:
             x[j, 0], x[j, 1] = _start(a[j, 0], a[j, 1], ki0[j], ko0[j], ri0, ro0)
     if speed_on:
-        _lifted_off(a, ko0, ko1, ao_c, cst, lam_i, lam_o, x_star, loaded)
+        _lifted_off(a, ko0, ko1, ao_c, cst, lam_i, lam_o, x_star, loaded, lift_work)
         for j in range(z):
             loaded[j] = not loaded[j]
     else:
@@ -681,7 +681,8 @@ def _balls(
     for j in range(z):
         if loaded[j]:
             # start with both contacts closed (the previous state may have had one open)
-            d_i, d_o = _approaches(x[j, 0], x[j, 1], a[j, 0], a[j, 1], ri0, ro0)
+            d_i = math.hypot(a[j, 0] - x[j, 0], a[j, 1] - x[j, 1]) - ri0  # as _approaches
+            d_o = math.hypot(x[j, 0], x[j, 1]) - ro0
             if d_i <= 0.0 or d_o <= 0.0:
                 if speed_on:  # the inner groove overlaps X*: both contacts closed there
                     x[j, 0] = x_star[j, 0]
@@ -692,7 +693,10 @@ def _balls(
     _ball_newton(
         x, a, loaded, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o, speed_on, tol, done
     )
-    all_done = _all(done, loaded)
+    all_done = True  # every loaded ball converged (a loop: _all would compile apart)
+    for j in range(z):
+        if loaded[j] and not done[j]:
+            all_done = False
     for j in range(z):
         if not loaded[j]:  # on the outer groove bottom
             x[j, 0] = 0.0
@@ -902,10 +906,25 @@ def ring_forces(
     x_star = np.empty((z, 2))
     done = np.empty(z, dtype=np.bool_)
     parts = np.empty((5, z))
+    lift_work = np.empty((3, z))  # the lift-off fixed point's angles and approaches
     hertz = (ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o)
     speed = bool(speed_on)
     out = (jac, state, parts)
-    ok = _balls(q, cos_psi, sin_psi, x, bool(have_x), *hertz, speed, a, x_star, loaded, done, *out)
+    ok = _balls(
+        q,
+        cos_psi,
+        sin_psi,
+        x,
+        bool(have_x),
+        *hertz,
+        speed,
+        a,
+        x_star,
+        loaded,
+        done,
+        *out,
+        lift_work,
+    )
     if not ok and speed:
         ok = _restart_balls(a, x, *hertz, speed, x_star, done, cos_psi, sin_psi, loaded, *out)
     if not ok:

@@ -570,7 +570,9 @@ def test_lift_off_fixed_point_matches_numpy(name: str) -> None:
     got_x = np.empty_like(a)
     got_lifted = np.empty(a.shape[0], dtype=np.bool_)
     _, _, _, ko0, ko1, ao_c = _constants(ring)
-    kern._lifted_off(a, ko0, ko1, ao_c, ring.cst, ring.p.lam_i, ring.p.lam_o, got_x, got_lifted)
+    work = np.empty((3, a.shape[0]))
+    args = (ring.cst, ring.p.lam_i, ring.p.lam_o, got_x, got_lifted, work)
+    kern._lifted_off(a, ko0, ko1, ao_c, *args)
     assert np.array_equal(got_lifted, lifted)
     np.testing.assert_allclose(got_x, x_star, rtol=1e-14, atol=1e-14 * ring.a)
     if name == "lifted_off":
