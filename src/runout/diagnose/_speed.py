@@ -43,7 +43,7 @@ TRACK_LINES = 8
 #: Most samples the tracking fits: a longer record is averaged over blocks of q samples (a
 #: boxcar, which passes the tracked lines with at least sinc(1/4) = 0.90 of their amplitude,
 #: and refers each block to its middle instant).
-TRACK_SAMPLES = 1 << 16
+TRACK_SAMPLES = 1 << 15
 #: Speed ratios searched by :func:`line_speed`.
 RATIO_RANGE = (0.25, 4.0)
 #: Fraction of the peaks' power that must lie on the bearing's lines at a speed before that
@@ -167,16 +167,22 @@ def _peaks(
 
 
 def line_speed(
-    channels: list[FloatArray], sample_rate: float, orders: FloatArray, rotation_hz: float
+    spectra: list[FloatArray],
+    sample_rate: float,
+    samples: int,
+    orders: FloatArray,
+    rotation_hz: float,
 ) -> LineSpeed | None:
     """Speed ratio that puts the record's strongest peaks on the bearing's orders.
 
     Parameters
     ----------
-    channels : list of ndarray
-        The record's channels (uniform samples).
+    spectra : list of ndarray
+        Hann amplitude spectrum of each channel (bins of ``sample_rate / samples``).
     sample_rate : float
         [Hz].
+    samples : int
+        Record length the spectra are of.
     orders : ndarray
         Orders of the bearing's candidate lines (frequency / speed) [-].
     rotation_hz : float
@@ -194,13 +200,7 @@ def line_speed(
     at each ratio is found by sweeping the ratio intervals of every (peak, order) pair; of
     the ratios matching most, the one nearest 1 is returned.
     """
-    from runout.analysis.spectrum import amplitude_spectrum
-
-    n = channels[0].size
-    spectra = [
-        amplitude_spectrum(c - c.mean(), sample_rate=sample_rate).amplitude for c in channels
-    ]
-    resolution = sample_rate / n
+    resolution = sample_rate / samples
     freq, power = _peaks(spectra, resolution, 1.5 * resolution)
     if freq.size < 2:
         return None
@@ -332,6 +332,8 @@ def track_speed(
     cost = float(resid @ resid)
     for _ in range(iterations):
         step, *_ = np.linalg.lstsq(jac, resid, rcond=None)
+        if TWO_PI * float(f.max()) * float(np.abs(step).sum()) * duration < 1e-7:
+            break  # converged: the step moves no line by more than 1e-7 rad
         moved = False
         for _halving in range(8):
             trial = p + step
@@ -342,8 +344,7 @@ def track_speed(
                 moved = True
                 break
             step = 0.5 * step
-        top_phase = TWO_PI * float(f.max()) * float(np.abs(step).sum()) * duration
-        if not moved or top_phase < 1e-9:
+        if not moved:
             break
     dof = max(data.size - 2 - m * (2 * f.size + 1), 1)
     sigma2 = cost / dof

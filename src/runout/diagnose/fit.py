@@ -525,7 +525,8 @@ def diagnose(
     # one candidate per line frequency; the source's term carries the frequency's index
     fidx = {f: i for i, f in enumerate(freqs)}
     inside = [f for f in freqs if f_lo < f < f_hi]
-    present = _screen(record, inside)
+    spectra = _spectra(record)
+    present = _screen(spectra, inside)
     if len(present) < len(inside):
         notes.append(
             f"{len(inside) - len(present)} of {len(inside)} candidate lines stay below "
@@ -556,7 +557,7 @@ def diagnose(
         )
         for f in present
     ]
-    tracking = _check_speed(c, record, freqs, present, f_r, speed_source, notes)
+    tracking = _check_speed(c, record, spectra, freqs, present, f_r, speed_source, notes)
     time_axis = record.time
     speed_ratio = 1.0  # mean speed of the record / f_r, where the lines are tracked
     if tracking is not None and tracking.applied:
@@ -690,6 +691,15 @@ def diagnose(
     ]
     if unexplained:
         notes.append(_unexplained_note(unexplained, f_r, ename, gain_uncertainty))
+    notes.append(
+        "uncertainties (one standard deviation) include the residual's noise near each line, "
+        f"a sensor gain uncertainty of {100 * gain_uncertainty:.3g} % "
+        + (
+            "and the speed tracking's uncertainty (phases)"
+            if tracking is not None
+            else "(the speed was not tracked: no line stands out of the spectrum)"
+        )
+    )
     if len(channels) == 2:
         unattributed += _other_whirls(
             groups,
@@ -917,7 +927,18 @@ def _load_zone(
     )
 
 
-def _screen(record: Record, freqs: list[float]) -> list[float]:
+def _spectra(record: Record) -> list[Any]:
+    """The Hann amplitude spectrum of each channel (x before y), about its mean."""
+    from runout.analysis.spectrum import amplitude_spectrum
+
+    fs = 1.0 / record.step
+    return [
+        amplitude_spectrum(record.channels[ch] - record.channels[ch].mean(), sample_rate=fs)
+        for ch in sorted(record.channels)
+    ]
+
+
+def _screen(spectra: list[Any], freqs: list[float]) -> list[float]:
     """The candidate frequencies whose neighbourhood (±2 bins) in the record's Hann amplitude
     spectrum rises above :data:`SCREEN` × its median level in some channel.
 
@@ -925,15 +946,11 @@ def _screen(record: Record, freqs: list[float]) -> list[float]:
     (:data:`DETECTION` × σ √(2/n) = 7.1 σ/√n) shows at least 6 σ/√n, scalloping included: the
     screen drops only lines the fit would not detect, and spares fitting them jointly (the
     fit's cost grows with the number of lines)."""
-    from runout.analysis.spectrum import amplitude_spectrum
-
     if not freqs:
         return []
     f = np.asarray(freqs)
     keep = np.zeros(f.size, dtype=bool)
-    fs = 1.0 / record.step
-    for values in record.channels.values():
-        spec = amplitude_spectrum(values - values.mean(), sample_rate=fs)
+    for spec in spectra:
         amp = spec.amplitude
         level = SCREEN * float(np.median(amp))
         centre = np.rint(f / spec.resolution).astype(np.int64)
@@ -994,26 +1011,33 @@ def _unexplained_note(
     )
 
 
-def _ranked(record: Record, present: list[float]) -> list[float]:
-    """The candidate frequencies [Hz], strongest in the record's spectrum first."""
-    from runout.analysis.spectrum import amplitude_spectrum
+def _ranked(spectra: list[Any], present: list[float]) -> list[float]:
+    """The candidate frequencies [Hz] that stand :data:`runout.diagnose._speed.PEAK_LEVEL`
+    times above the median level of the record's spectrum, strongest first (the lines worth
+    tracking the speed on)."""
+    from runout.diagnose._speed import PEAK_LEVEL
 
     if not present:
         return []
     f = np.asarray(present)
     level = np.zeros(f.size)
-    for values in record.channels.values():
-        spec = amplitude_spectrum(values - values.mean(), sample_rate=1.0 / record.step)
+    strong = np.zeros(f.size, dtype=bool)
+    for spec in spectra:
         centre = np.rint(f / spec.resolution).astype(np.int64)
+        here = np.zeros(f.size)
         for shift in (-1, 0, 1):
             i = np.clip(centre + shift, 0, spec.amplitude.size - 1)
-            level = np.maximum(level, spec.amplitude[i])
-    return [float(v) for v in f[np.argsort(-level, kind="stable")]]
+            here = np.maximum(here, spec.amplitude[i])
+        strong |= here > PEAK_LEVEL * float(np.median(spec.amplitude))
+        level = np.maximum(level, here)
+    order = np.argsort(-level, kind="stable")
+    return [float(f[i]) for i in order if strong[i]]
 
 
 def _check_speed(
     case: Any,
     record: Record,
+    spectra: list[Any],
     freqs: list[float],
     present: list[float],
     f_r: float,
@@ -1036,9 +1060,10 @@ def _check_speed(
 
     chans = [record.channels[ch] for ch in sorted(record.channels)]
     fs = 1.0 / record.step
+    n = record.samples
     given = "the tachometer" if speed_source == "tachometer" else "the case"
     rpm = f_r * 60.0
-    ls = line_speed(chans, fs, np.asarray(freqs) / f_r, f_r)
+    ls = line_speed([sp.amplitude for sp in spectra], fs, n, np.asarray(freqs) / f_r, f_r)
     ratio = 1.0
     if ls is None:
         notes.append(
@@ -1061,7 +1086,14 @@ def _check_speed(
             )
         if abs(ls.ratio - 1.0) <= SPEED_RTOL:
             ratio = ls.ratio
-    tr = track_speed(record.time, chans, _ranked(record, present), ratio)
+    # a line with a candidate closer than the record resolves beats with it: that slow phase
+    # is no drift, so only isolated lines are tracked
+    near = 1.5 / record.duration
+    inside = np.asarray(freqs)
+    isolated = [
+        f for f in _ranked(spectra, present) if np.count_nonzero(np.abs(inside - f) < near) == 1
+    ]
+    tr = track_speed(record.time, chans, isolated, ratio)
     if tr is None:
         return None
     if abs(tr.mean_ratio - 1.0) > SPEED_RTOL:
