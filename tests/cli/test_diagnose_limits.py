@@ -187,8 +187,10 @@ def test_the_gain_uncertainty_widens_the_amplitude_uncertainty(at_1800):
             "gain": payload["gain_uncertainty"]
         }
 
-    none, default, five = largest("--gain-uncertainty", "0"), largest(), largest(
-        "--gain-uncertainty", "0.05"
+    none, default, five = (
+        largest("--gain-uncertainty", "0"),
+        largest(),
+        largest("--gain-uncertainty", "0.05"),
     )
     assert (none["gain"], default["gain"], five["gain"]) == (0.0, 0.01, 0.05)
     # the 2.5 um eccentricity: its noise part is ~1e-3 of it, the gain part 1 % or 5 %

@@ -24,7 +24,15 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-__all__ = ["PEAK_LEVEL", "SPEED_RTOL", "LineSpeed", "Tracking", "line_speed", "track_speed"]
+__all__ = [
+    "PEAK_FLOOR",
+    "PEAK_LEVEL",
+    "SPEED_RTOL",
+    "LineSpeed",
+    "Tracking",
+    "line_speed",
+    "track_speed",
+]
 
 FloatArray = NDArray[np.float64]
 TWO_PI = 2.0 * math.pi
@@ -36,6 +44,9 @@ SPEED_RTOL = 0.02
 #: A spectral peak used for the speed stands this many times above the spectrum's median
 #: level (white noise's largest bin of 10⁶ stays below 5 times it).
 PEAK_LEVEL = 10.0
+#: ... and this fraction of the largest peak's amplitude: a noise-free record's median level is
+#: its round-off (1e-16 of it), where ripples are no lines.
+PEAK_FLOOR = 1e-6
 #: Strongest peaks used for the speed check.
 MAX_PEAKS = 12
 #: Strongest candidate lines the drift is tracked on.
@@ -151,7 +162,7 @@ def _peaks(
 ) -> tuple[FloatArray, FloatArray]:
     """Frequencies [Hz] and powers of the strongest local maxima of the summed power."""
     power = np.sum([a * a for a in spectra], axis=0)
-    level = float(np.median(power)) * PEAK_LEVEL**2
+    level = max(float(np.median(power)) * PEAK_LEVEL**2, float(power.max()) * PEAK_FLOOR**2)
     inner = power[1:-1]
     is_peak = (inner > power[:-2]) & (inner >= power[2:]) & (inner > level)
     idx = np.flatnonzero(is_peak) + 1
@@ -160,7 +171,9 @@ def _peaks(
         return np.zeros(0), np.zeros(0)
     idx = idx[np.argsort(power[idx])[::-1][:MAX_PEAKS]]
     # the peak's frequency to a fraction of a bin (parabola through the log powers)
-    lp = np.log(np.maximum(power[np.clip(idx[:, None] + np.arange(-1, 2), 0, power.size - 1)], 1e-300))
+    lp = np.log(
+        np.maximum(power[np.clip(idx[:, None] + np.arange(-1, 2), 0, power.size - 1)], 1e-300)
+    )
     den = lp[:, 0] - 2.0 * lp[:, 1] + lp[:, 2]
     shift = np.where(den < 0.0, 0.5 * (lp[:, 0] - lp[:, 2]) / np.where(den < 0, den, -1.0), 0.0)
     return (idx + np.clip(shift, -0.5, 0.5)) * resolution, power[idx]
@@ -284,16 +297,16 @@ def track_speed(
     t0 = float(time[0])
     duration = n * float(time[1] - time[0])
     chosen: list[float] = []
-    for f in frequencies:
-        if all(abs(f - g) > 1.5 / duration for g in chosen):
-            chosen.append(f)
+    for candidate in frequencies:
+        if all(abs(candidate - g) > 1.5 / duration for g in chosen):
+            chosen.append(candidate)
         if len(chosen) == TRACK_LINES:
             break
     if not chosen:
         return None
     f = np.asarray(chosen)
-    step = float(time[1] - time[0])
-    q = min(math.ceil(n / TRACK_SAMPLES), math.floor(0.25 / (float(f.max()) * step)))
+    dt = float(time[1] - time[0])
+    q = min(math.ceil(n / TRACK_SAMPLES), math.floor(0.25 / (float(f.max()) * dt)))
     if q >= 2:
         n = n // q * q
         time = time[:n].reshape(-1, q).mean(axis=1)
@@ -350,7 +363,7 @@ def track_speed(
     sigma2 = cost / dof
     jtj = jac.T @ jac
     try:
-        cov = sigma2 * np.linalg.inv(jtj)
+        cov = np.asarray(sigma2 * np.linalg.inv(jtj), dtype=np.float64)
     except np.linalg.LinAlgError:
         cov = np.full((2, 2), np.inf)
     tr = Tracking(float(p[0]), float(p[1]), cov, duration, t0, False, float(f.max()), f.size)

@@ -1015,7 +1015,7 @@ def _ranked(spectra: list[Any], present: list[float]) -> list[float]:
     """The candidate frequencies [Hz] that stand :data:`runout.diagnose._speed.PEAK_LEVEL`
     times above the median level of the record's spectrum, strongest first (the lines worth
     tracking the speed on)."""
-    from runout.diagnose._speed import PEAK_LEVEL
+    from runout.diagnose._speed import PEAK_FLOOR, PEAK_LEVEL
 
     if not present:
         return []
@@ -1028,7 +1028,9 @@ def _ranked(spectra: list[Any], present: list[float]) -> list[float]:
         for shift in (-1, 0, 1):
             i = np.clip(centre + shift, 0, spec.amplitude.size - 1)
             here = np.maximum(here, spec.amplitude[i])
-        strong |= here > PEAK_LEVEL * float(np.median(spec.amplitude))
+        strong |= here > max(
+            PEAK_LEVEL * float(np.median(spec.amplitude)), PEAK_FLOOR * float(spec.amplitude.max())
+        )
         level = np.maximum(level, here)
     order = np.argsort(-level, kind="stable")
     return [float(f[i]) for i in order if strong[i]]
@@ -1135,7 +1137,7 @@ def _refuse_speed(
         str(case.path),
         "operation.speed",
         f"the record {record.file}'s lines give {seen:.5g} rpm where the case gives "
-        f"{rpm:.5g} rpm, beyond {100 * SPEED_RTOL:g} %{why}: give speed = \"{seen:.5g} rpm\" if "
+        f'{rpm:.5g} rpm, beyond {100 * SPEED_RTOL:g} %{why}: give speed = "{seen:.5g} rpm" if '
         "the record was taken at that speed, or a tachometer column rev in the record",
     )
 

@@ -19,13 +19,13 @@ from runout.validation.seed002_anderon import FIG12, FIG20, W_I1, W_S, waviness
 
 __all__ = [
     "MAINS_HZ",
-    "Truth",
     "Coverage",
+    "Truth",
     "done_when_truth",
-    "uncertainty_coverage",
     "recovery_errors",
     "recovery_table",
     "synthetic_record",
+    "uncertainty_coverage",
 ]
 
 #: The mains line added to synthetic records [Hz].
@@ -227,9 +227,7 @@ def uncertainty_coverage(
                 err = abs(math.remainder(e.phase_rad - p, 2.0 * math.pi))
                 phase_ok += err <= 2.0 * e.phase_uncertainty_rad
         for e in d.estimates:
-            if not any(
-                e.part == part and k in e.lobes for (part, k, _el) in truth.deviations
-            ):
+            if not any(e.part == part and k in e.lobes for (part, k, _el) in truth.deviations):
                 invented += 1
                 worst = max(worst, e.amplitude_m / e.uncertainty_m)
     return Coverage(

@@ -9,8 +9,9 @@ estimates with eq. 43–47; (b) give the deviation scale per band that Fig. 20 i
 Fig. 12; (c) diagnose a record of ``quasi_static_3d`` (seed 000's Table 1 bearing, 20 N
 preload, 20 nm of inner Z+1, outer Z−1 and ball 2-lobe waviness) and report the bias of each
 variant of the inverted linear model; (d) diagnose generated records with noise, a speed drift
-and sensor gain errors and count how often the stated uncertainties cover the truth. The published numbers (:data:`FIG12`, :data:`FIG20`,
-:data:`W_I1`, :data:`W_S`) are those of :mod:`runout.validation.seed002_anderon`.
+and sensor gain errors and count how often the stated uncertainties cover the truth. The
+published numbers (:data:`FIG12`, :data:`FIG20`, :data:`W_I1`, :data:`W_S`) are those of
+:mod:`runout.validation.seed002_anderon`.
 """
 
 from __future__ import annotations
@@ -22,7 +23,7 @@ from runout.validation.cases import load, uses
 from runout.validation.core import Check, bind
 from runout.validation.seed002_anderon import FIG12, FIG20, W_I1, W_S
 
-__all__ = ["COVERAGE_RECORDS", "BIAS_AMPLITUDE", "FIG12", "FIG20", "INTRO", "W_I1", "W_S", "checks"]
+__all__ = ["BIAS_AMPLITUDE", "COVERAGE_RECORDS", "FIG12", "FIG20", "INTRO", "W_I1", "W_S", "checks"]
 
 #: Waviness amplitude of the nonlinear-model record [m] (moderate: 2 % of the 1 um-scale
 #: approach of the 20 N preload).
@@ -32,8 +33,9 @@ COVERAGE_RECORDS = 21
 
 INTRO = """\
 Tests: `tests/unit/validation/test_diagnose_validation.py`, `tests/unit/diagnose/test_diagnose.py`,
-`tests/property/test_diagnose_roundtrip.py`. `runout diagnose` inverts the linear model; the
-rows below diagnose (1) the velocity record the linear model computes from seed 002's
+`tests/property/test_diagnose_roundtrip.py`, `tests/cli/test_diagnose_limits.py`,
+`tests/property/test_diagnose_speed.py`. `runout diagnose` inverts the linear model; the rows
+below diagnose (1) the velocity record the linear model computes from seed 002's
 deviations (eq. 43–47), as the Anderon meter's single channel sees it, (2) Fig. 20's measured
 band values against Fig. 12's, the only published reading of a measurement (the record is not
 published, so the paper's own statement, deviations "near" eq. 43–47, is what is compared),
