@@ -74,6 +74,17 @@ def test_the_right_speed_passes_and_is_reported(at_1800):
     assert inner1["amplitude_m"] == pytest.approx(2.5e-6, abs=2 * inner1["uncertainty_m"])
 
 
+def test_a_speed_within_the_tolerance_is_tracked_to_the_records_and_said(at_1800, tmp_path):
+    # 1830 rpm is 1.7 % off: within the 2 % the record's own speed is used, and said
+    result = _diagnose(_case_at(tmp_path, "1830"), at_1800, "--json")
+    assert result.exit_code == 0, result.stderr
+    payload = json.loads(result.stdout)
+    assert payload["record_speed_hz"] == pytest.approx(30.0, rel=1e-5)
+    assert any("speed tracked" in n and "1830 rpm" in n for n in payload["notes"])
+    found = {(e["part"], tuple(e["lobes"])) for e in payload["estimates"]}
+    assert ("inner", (1,)) in found and ("outer", (6,)) in found
+
+
 def test_a_tachometer_the_lines_contradict_is_refused(tmp_path):
     # the tachometer counts 1234 rpm while the bearing's lines are those of 1800 rpm
     case = load_case(CASE)

@@ -526,7 +526,14 @@ def diagnose(
     fidx = {f: i for i, f in enumerate(freqs)}
     inside = [f for f in freqs if f_lo < f < f_hi]
     spectra = _spectra(record)
-    present = _screen(spectra, inside)
+    tracking = _check_speed(c, record, spectra, freqs, inside, f_r, speed_source, notes)
+    time_axis = record.time
+    speed_ratio = 1.0  # mean speed of the record / f_r, where the lines are tracked
+    if tracking is not None and tracking.applied:
+        time_axis = tracking.warped(record.time)
+        speed_ratio = tracking.mean_ratio
+    # the record's lines lie at the speed it was taken at: screened there
+    present = _screen(spectra, inside, speed_ratio)
     if len(present) < len(inside):
         notes.append(
             f"{len(inside) - len(present)} of {len(inside)} candidate lines stay below "
@@ -557,12 +564,6 @@ def diagnose(
         )
         for f in present
     ]
-    tracking = _check_speed(c, record, spectra, freqs, present, f_r, speed_source, notes)
-    time_axis = record.time
-    speed_ratio = 1.0  # mean speed of the record / f_r, where the lines are tracked
-    if tracking is not None and tracking.applied:
-        time_axis = tracking.warped(record.time)
-        speed_ratio = tracking.mean_ratio
     kin = Kinematic(f_r, r.cage * f_r, abs(r.spin) * f_r, z)
     signal = np.zeros((3, n))
     for ch, channel in record.channels.items():
@@ -938,14 +939,15 @@ def _spectra(record: Record) -> list[Any]:
     ]
 
 
-def _screen(spectra: list[Any], freqs: list[float]) -> list[float]:
+def _screen(spectra: list[Any], freqs: list[float], ratio: float = 1.0) -> list[float]:
     """The candidate frequencies whose neighbourhood (±2 bins) in the record's Hann amplitude
     spectrum rises above :data:`SCREEN` × its median level in some channel.
 
     For white noise the median bin is 1.4 σ/√n and a line at the detection level
     (:data:`DETECTION` × σ √(2/n) = 7.1 σ/√n) shows at least 6 σ/√n, scalloping included: the
     screen drops only lines the fit would not detect, and spares fitting them jointly (the
-    fit's cost grows with the number of lines)."""
+    fit's cost grows with the number of lines). ``ratio``: the record's speed over the one
+    ``freqs`` [Hz] are at (each is looked for at ``ratio`` times itself)."""
     if not freqs:
         return []
     f = np.asarray(freqs)
@@ -953,7 +955,7 @@ def _screen(spectra: list[Any], freqs: list[float]) -> list[float]:
     for spec in spectra:
         amp = spec.amplitude
         level = SCREEN * float(np.median(amp))
-        centre = np.rint(f / spec.resolution).astype(np.int64)
+        centre = np.rint(ratio * f / spec.resolution).astype(np.int64)
         for shift in range(-2, 3):
             i = np.clip(centre + shift, 0, amp.size - 1)
             keep |= amp[i] > level
@@ -1011,10 +1013,10 @@ def _unexplained_note(
     )
 
 
-def _ranked(spectra: list[Any], present: list[float]) -> list[float]:
+def _ranked(spectra: list[Any], present: list[float], ratio: float = 1.0) -> list[float]:
     """The candidate frequencies [Hz] that stand :data:`runout.diagnose._speed.PEAK_LEVEL`
     times above the median level of the record's spectrum, strongest first (the lines worth
-    tracking the speed on)."""
+    tracking the speed on); ``ratio`` as for :func:`_screen`."""
     from runout.diagnose._speed import PEAK_FLOOR, PEAK_LEVEL
 
     if not present:
@@ -1023,7 +1025,7 @@ def _ranked(spectra: list[Any], present: list[float]) -> list[float]:
     level = np.zeros(f.size)
     strong = np.zeros(f.size, dtype=bool)
     for spec in spectra:
-        centre = np.rint(f / spec.resolution).astype(np.int64)
+        centre = np.rint(ratio * f / spec.resolution).astype(np.int64)
         here = np.zeros(f.size)
         for shift in (-1, 0, 1):
             i = np.clip(centre + shift, 0, spec.amplitude.size - 1)
@@ -1041,7 +1043,7 @@ def _check_speed(
     record: Record,
     spectra: list[Any],
     freqs: list[float],
-    present: list[float],
+    inside: list[float],
     f_r: float,
     speed_source: str,
     notes: list[str],
@@ -1079,7 +1081,8 @@ def _check_speed(
             and ls.share_assumed < 0.5
         ):
             _refuse_speed(case, record, f_r, ls.ratio * f_r, speed_source, ls)
-        if ls.share_assumed < 0.5:
+        adopted = abs(ls.ratio - 1.0) <= SPEED_RTOL and ls.share_best >= CONVINCING
+        if ls.share_assumed < 0.5 and not adopted:  # (an adopted speed is tracked, and said)
             notes.append(
                 f"only {100 * ls.share_assumed:.0f} % of the power of the record's "
                 f"{ls.peaks} strongest lines lies on the bearing's lines at {rpm:.6g} rpm "
@@ -1091,9 +1094,12 @@ def _check_speed(
     # a line with a candidate closer than the record resolves beats with it: that slow phase
     # is no drift, so only isolated lines are tracked
     near = 1.5 / record.duration
-    inside = np.asarray(freqs)
+    every = np.asarray(freqs)
+    present = _screen(spectra, inside, ratio)
     isolated = [
-        f for f in _ranked(spectra, present) if np.count_nonzero(np.abs(inside - f) < near) == 1
+        f
+        for f in _ranked(spectra, present, ratio)
+        if np.count_nonzero(np.abs(every - f) < near) == 1
     ]
     tr = track_speed(record.time, chans, isolated, ratio)
     if tr is None:
