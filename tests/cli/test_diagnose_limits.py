@@ -225,3 +225,10 @@ def test_the_help_names_the_speed_check_and_the_gain():
     result = runner.invoke(app, ["diagnose", "--help"], terminal_width=200)
     assert result.exit_code == 0
     assert "--gain-uncertainty" in result.stdout and "speed" in result.stdout
+
+
+def test_a_gain_mismatch_is_no_unattributed_whirl(drifting):
+    # x and y gains 1 % apart put 1 % of each line into its other whirl: the sensor, not a
+    # line no deviation explains
+    for payload in drifting:
+        assert [u for u in payload["unattributed"] if u["channel"] == "xy"] == []

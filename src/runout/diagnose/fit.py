@@ -714,6 +714,7 @@ def diagnose(
             lambda f: _first_order_hint(
                 f, tol, z, r, f_r, (k_ring, m_ball), 1.0 / record.step, ename
             ),
+            gain_uncertainty,
         )
     solution = solve_min_norm(
         [d[0] for d in detected],
@@ -774,6 +775,7 @@ def _other_whirls(
     detected: list[tuple[Equation, complex, float]],
     notes: list[str],
     hint: Callable[[float], str | None],
+    gain: float = 0.0,
 ) -> list[Unattributed]:
     """The whirl of a fitted line that no deviation gives, when it stands above the noise.
 
@@ -781,12 +783,15 @@ def _other_whirls(
     of them. The other is no observation of any deviation, but it is in the record: it is
     reported (channel ``"xy"``), not dropped. When it carries more than the modelled whirls,
     the likeliest cause is a mirrored axis (or the other ring turning), which reverses every
-    whirl: a note says so. ``hint(frequency)`` names first-order deviations outside the fit
+    whirl: a note says so. A whirl within ``gain`` (the relative sensor gain uncertainty) of the
+    line is what a mismatch of the x and y gains gives, g √(|X|² + |Y|²)/2 at most: it must
+    stand 5 standard deviations above that too, and a note counts those that do not. ``hint(frequency)`` names first-order deviations outside the fit
     that give a line there (lobes above the bound, aliases), or None.
     """
     out: list[Unattributed] = []
     sigma = 0.5 * math.hypot(quad["x"], quad["y"])
     wrong = 0.0
+    within_gain = 0
     for head in sorted({h for h, _ in groups}):
         xv, yv = phasor["x"].get(head, 0j), phasor["y"].get(head, 0j)
         for sign, word, other in ((1, "forward", "backward"), (-1, "backward", "forward")):
@@ -794,6 +799,9 @@ def _other_whirls(
                 continue
             w = 0.5 * abs(xv + 1j * yv) if sign > 0 else 0.5 * abs(xv - 1j * yv)
             if w <= DETECTION * sigma:
+                continue
+            if w <= DETECTION * math.hypot(sigma, 0.5 * gain * math.hypot(abs(xv), abs(yv))):
+                within_gain += 1  # an x/y gain mismatch gives it
                 continue
             wrong += (w / sigma) ** 2
             who = ", ".join(members.get(head, [])[:3])
@@ -808,6 +816,12 @@ def _other_whirls(
                     text if more is None else f"{text}; may be {more}",
                 )
             )
+    if within_gain:
+        notes.append(
+            f"{within_gain} whirl(s) at fitted lines that the model does not give stand above "
+            f"the noise but within the {100 * gain:g} % gain uncertainty (a mismatch of the x "
+            "and y gains puts that share of a line into its other whirl): not reported"
+        )
     modelled = sum((abs(v) / s) ** 2 for _, v, s in detected)
     if out and wrong > modelled:
         notes.append(
