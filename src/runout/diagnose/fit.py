@@ -785,7 +785,8 @@ def _other_whirls(
     the likeliest cause is a mirrored axis (or the other ring turning), which reverses every
     whirl: a note says so. A whirl within ``gain`` (the relative sensor gain uncertainty) of the
     line is what a mismatch of the x and y gains gives, g √(|X|² + |Y|²)/2 at most: it must
-    stand 5 standard deviations above that too, and a note counts those that do not. ``hint(frequency)`` names first-order deviations outside the fit
+    stand 5 standard deviations above that too, and a note counts those that do not.
+    ``hint(frequency)`` names first-order deviations outside the fit
     that give a line there (lobes above the bound, aliases), or None.
     """
     out: list[Unattributed] = []
