@@ -18,7 +18,8 @@ force-balance variant) around:
    from the forward model itself. With x and y, the forward and backward whirl of each line are
    two observations; with one channel, one. A line is *detected* when it stands
    :data:`DETECTION` standard deviations above the residual noise (and above the record's
-   numerical resolution, :data:`RESOLUTION`); the deviations are the
+   numerical resolution, :data:`RESOLUTION`; the noise includes the sensor gain and the
+   residual near the line); the deviations are the
    weighted minimum-norm least-squares solution over the detected lines (the smallest
    deviations that give them: the limit of a Tikhonov-regularised fit).
 4. **Observability.** What a line cannot tell apart is reported as a group, never split by a
@@ -27,11 +28,19 @@ force-balance variant) around:
    combinations per order; when both agree with one ball alone, the note names it), and every
    deviation the model maps to no line is listed in ``not_observable``.
 
+Before the fit, the record's own speed is read from its lines and checked against the case's
+(or the tachometer's), and a slow drift is tracked (:mod:`runout.diagnose._speed`): a record
+whose lines give a speed beyond 2 % of it is refused; within, the lines are fitted on the
+tracked shaft angle.
+
 Each estimate's ``amplitude_m`` is the zero-to-peak radius deviation (the case-file
 convention) of one equivalent deviation: the ring harmonic itself, or for a group its first
 member alone (ball 1 for a ball set, the nZ − 1 harmonic for an outer pair), which gives the
-same line. Its ``uncertainty_m`` is one standard deviation from the residual noise, assumed
-white. Phases are referred to the instant t = 0 of the record's time column (θ = 0 there).
+same line. Its ``uncertainty_m`` is one standard deviation: the residual's noise near the line
+(never below its white level) and the sensor gain uncertainty (:data:`GAIN_UNCERTAINTY`) in
+quadrature; ``phase_uncertainty_rad`` adds the speed tracking's. A line the residual near it or
+the gain explains as well as a deviation is not reported (a note names it). Phases are
+referred to the instant t = 0 of the record's time column (θ = 0 there).
 """
 
 from __future__ import annotations
@@ -61,6 +70,7 @@ from runout.diagnose._record import Quantity, Record, RecordError, file_line, re
 
 __all__ = [
     "DETECTION",
+    "GAIN_UNCERTAINTY",
     "MAX_LINES",
     "Diagnosis",
     "Estimate",
@@ -410,7 +420,8 @@ def diagnose(
     Notes
     -----
     The speed check and the order tracking are those of :mod:`runout.diagnose._speed`; the
-    lines are those of the linear model (P. Kim's seed 002, "Anderon vibration", eq. 33-40).
+    lines are those of the linear model (seed 002, "Anderon vibration", an instrument maker's
+    calculation model, eq. 33-40: every line at a fixed order of the rotating ring's speed).
     """
     from runout.analysis.decompose import Candidate, Kinematic, attribute_frequency, fit_lines
     from runout.analysis.lines import Source
