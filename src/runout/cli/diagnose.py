@@ -26,7 +26,16 @@ def _table(diagnosis: Any) -> list[Any]:
         title_justify="left",
         header_style="bold",
     )
-    for name in ("part", "lobes", "amplitude", "± 1σ", "phase [deg]", "line [Hz]", "whirl"):
+    for name in (
+        "part",
+        "lobes",
+        "amplitude",
+        "± 1σ",
+        "phase [deg]",
+        "± 1σ [deg]",
+        "line [Hz]",
+        "whirl",
+    ):
         est.add_column(escape(name), justify="right" if name not in ("part", "whirl") else "left")
     est.add_column("share", justify="right")
     for e in diagnosis.estimates:
@@ -40,12 +49,13 @@ def _table(diagnosis: Any) -> list[Any]:
             escape(format_length(e.uncertainty_m)),
             # a phase a hair below 2 pi is 0: print 0.0, not 360.0
             f"{round(e.phase_rad * 57.29577951308232, 1) % 360.0:.1f}",
+            f"{e.phase_uncertainty_rad * 57.29577951308232:.2g}",
             f"{e.frequency_hz:.6g}",
             e.whirl,
             f"{e.share:.3f}",
         )
     if not diagnosis.estimates:
-        est.add_row("none detected", "", "", "", "", "", "", "")
+        est.add_row("none detected", "", "", "", "", "", "", "", "")
     out.append(est)
     if diagnosis.unattributed:
         un = Table(
@@ -109,6 +119,17 @@ def register(app: typer.Typer) -> None:
                 show_default=False,
             ),
         ] = None,
+        gain_uncertainty: Annotated[
+            float,
+            typer.Option(
+                "--gain-uncertainty",
+                min=0.0,
+                max=0.5,
+                help="Relative standard uncertainty of the sensor's calibration (gain), "
+                "included in every amplitude and phase uncertainty and in the detection: "
+                "0.01 = 1 %, a probe calibration certificate's usual sensitivity tolerance.",
+            ),
+        ] = 0.01,
         as_json: JsonOpt = False,
         out: Annotated[
             str | None,
@@ -125,7 +146,10 @@ def register(app: typer.Typer) -> None:
         CASE gives the bearing and the operation; its imperfection tables are ignored. The
         record is fitted on the lines of the bearing's kinematics and the linear model is
         inverted; what the record cannot tell apart is reported, not guessed
-        (docs/models/diagnosis.md).
+        (docs/models/diagnosis.md). The record's speed is read from its own lines: a record
+        whose lines give a speed more than 2 % from the case's (or the tachometer's) is
+        refused, a slow drift is tracked. Uncertainties include the noise, the sensor gain
+        (--gain-uncertainty) and the speed tracking.
 
         Example: runout diagnose examples/seed002_608.toml --record run.csv --out out/diag
         """
@@ -152,6 +176,7 @@ def register(app: typer.Typer) -> None:
             quantity=quantity,  # type: ignore[arg-type]
             variant=variant,
             max_lobes=max_lobes,
+            gain_uncertainty=gain_uncertainty,
         )
         if as_json:
             _print_json(result.to_json())

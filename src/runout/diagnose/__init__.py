@@ -7,6 +7,7 @@ re-exported here.
 
 from runout.diagnose.fit import (
     DETECTION,
+    GAIN_UNCERTAINTY,
     MAX_LINES,
     Diagnosis,
     Estimate,
@@ -19,6 +20,7 @@ from runout.diagnose.fit import (
 
 __all__ = [
     "DETECTION",
+    "GAIN_UNCERTAINTY",
     "MAX_LINES",
     "Diagnosis",
     "Estimate",

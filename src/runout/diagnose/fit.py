@@ -18,7 +18,8 @@ force-balance variant) around:
    from the forward model itself. With x and y, the forward and backward whirl of each line are
    two observations; with one channel, one. A line is *detected* when it stands
    :data:`DETECTION` standard deviations above the residual noise (and above the record's
-   numerical resolution, :data:`RESOLUTION`); the deviations are the
+   numerical resolution, :data:`RESOLUTION`; the noise includes the sensor gain and the
+   residual near the line); the deviations are the
    weighted minimum-norm least-squares solution over the detected lines (the smallest
    deviations that give them: the limit of a Tikhonov-regularised fit).
 4. **Observability.** What a line cannot tell apart is reported as a group, never split by a
@@ -27,11 +28,19 @@ force-balance variant) around:
    combinations per order; when both agree with one ball alone, the note names it), and every
    deviation the model maps to no line is listed in ``not_observable``.
 
+Before the fit, the record's own speed is read from its lines and checked against the case's
+(or the tachometer's), and a slow drift is tracked (:mod:`runout.diagnose._speed`): a record
+whose lines give a speed beyond 2 % of it is refused; within, the lines are fitted on the
+tracked shaft angle.
+
 Each estimate's ``amplitude_m`` is the zero-to-peak radius deviation (the case-file
 convention) of one equivalent deviation: the ring harmonic itself, or for a group its first
 member alone (ball 1 for a ball set, the nZ − 1 harmonic for an outer pair), which gives the
-same line. Its ``uncertainty_m`` is one standard deviation from the residual noise, assumed
-white. Phases are referred to the instant t = 0 of the record's time column (θ = 0 there).
+same line. Its ``uncertainty_m`` is one standard deviation: the residual's noise near the line
+(never below its white level) and the sensor gain uncertainty (:data:`GAIN_UNCERTAINTY`) in
+quadrature; ``phase_uncertainty_rad`` adds the speed tracking's. A line the residual near it or
+the gain explains as well as a deviation is not reported (a note names it). Phases are
+referred to the instant t = 0 of the record's time column (θ = 0 there).
 """
 
 from __future__ import annotations
@@ -61,6 +70,7 @@ from runout.diagnose._record import Quantity, Record, RecordError, file_line, re
 
 __all__ = [
     "DETECTION",
+    "GAIN_UNCERTAINTY",
     "MAX_LINES",
     "Diagnosis",
     "Estimate",
@@ -87,6 +97,11 @@ MAX_LINES = 240
 MAX_LOBES = 2000
 #: The record must hold this many samples per fitted line.
 SAMPLES_PER_LINE = 8
+#: Default relative standard uncertainty of the sensor's calibration (its gain) [-]: 1 %, the
+#: sensitivity tolerance a displacement probe's calibration certificate typically states.
+GAIN_UNCERTAINTY = 0.01
+#: Half-width [bins] of the residual's spectrum around a line that sets its local noise floor.
+LOCAL_BINS = 16
 #: Numerical resolution of a record relative to its largest value [-]: a model's record
 #: (``runout run``'s history.csv, 12 significant digits) rounds there, and its rounding errors
 #: are periodic, so they land on kinematic lines that the residual's rms alone would call
@@ -121,6 +136,9 @@ class Estimate:
         Fraction of the variance the estimates explain that this line carries [-].
     note : str
         What the equivalent deviation stands for.
+    phase_uncertainty_rad : float
+        One standard deviation of ``phase_rad`` [rad]: the noise, the gain and the speed
+        tracking's uncertainty.
     """
 
     part: str
@@ -133,6 +151,7 @@ class Estimate:
     whirl: str
     share: float
     note: str = ""
+    phase_uncertainty_rad: float = 0.0
 
     def to_json(self) -> dict[str, Any]:
         """JSON-ready dict (units in key names).
@@ -141,7 +160,8 @@ class Estimate:
         -------
         dict of str to Any
             The attributes under their own names (``amplitude_m`` [m], ``phase_rad`` [rad],
-            ``uncertainty_m`` [m], ``frequency_hz`` [Hz]); ``lobes`` as a list.
+            ``uncertainty_m`` [m], ``phase_uncertainty_rad`` [rad], ``frequency_hz`` [Hz]);
+            ``lobes`` as a list.
         """
         return {
             "part": self.part,
@@ -150,6 +170,7 @@ class Estimate:
             "amplitude_m": self.amplitude_m,
             "phase_rad": self.phase_rad,
             "uncertainty_m": self.uncertainty_m,
+            "phase_uncertainty_rad": self.phase_uncertainty_rad,
             "frequency_hz": self.frequency_hz,
             "whirl": self.whirl,
             "share": self.share,
@@ -222,6 +243,14 @@ class Diagnosis:
     spectrum : (ndarray, ndarray, ndarray) or None
         Frequencies [Hz] and Hann amplitude spectra of the record and of the reconstruction,
         first channel [m] or [m/s].
+    record_speed_hz : float or None
+        Mean speed of the rotating ring the record's lines give [Hz] (None: not tracked).
+    speed_drift : float or None
+        Change of that speed from the record's first to its last instant, relative to
+        ``rotation_hz`` [-].
+    gain_uncertainty : float
+        Relative standard uncertainty of the sensor's gain included in every
+        ``uncertainty_m`` [-].
     """
 
     estimates: tuple[Estimate, ...]
@@ -240,6 +269,9 @@ class Diagnosis:
     record: Record
     lobe_bounds: dict[str, int] = field(default_factory=dict)
     spectrum: tuple[FloatArray, FloatArray, FloatArray] | None = None
+    record_speed_hz: float | None = None
+    speed_drift: float | None = None
+    gain_uncertainty: float = GAIN_UNCERTAINTY
 
     def to_json(self) -> dict[str, Any]:
         """JSON-ready dict: finite numbers, units in key names.
@@ -249,7 +281,9 @@ class Diagnosis:
         dict of str to Any
             Estimates, unattributed lines (``pp_m`` [m] or ``pp_m_per_s`` [m/s]), notes, the
             record's description (``duration_s`` [s], ``sample_rate_hz`` [Hz]), the model,
-            ``rotation_hz`` [Hz], the residual noise and ``detection_limit_m`` [m].
+            ``rotation_hz`` [Hz], ``record_speed_hz`` [Hz] and ``speed_drift`` [-] (the speed
+            the record's lines give; null when not tracked), ``gain_uncertainty`` [-], the
+            residual noise and ``detection_limit_m`` [m].
         """
         unit = "m" if self.quantity == "displacement" else "m_per_s"
         return {
@@ -278,6 +312,9 @@ class Diagnosis:
             "model": {"name": "linear", "linear_variant": self.variant},
             "rotation_hz": self.rotation_hz,
             "speed_source": self.speed_source,
+            "record_speed_hz": self.record_speed_hz,
+            "speed_drift": self.speed_drift,
+            "gain_uncertainty": self.gain_uncertainty,
             f"noise_rms_{unit}": dict(self.noise_rms),
             "detection_limit_m": self.detection_limit_m,
             "lobes_searched": dict(self.lobe_bounds),
@@ -345,6 +382,7 @@ def diagnose(
     quantity: Quantity = "displacement",
     variant: str | None = None,
     max_lobes: int | None = None,
+    gain_uncertainty: float = GAIN_UNCERTAINTY,
 ) -> Diagnosis:
     """Estimate the part deviations that produced a measured record (see the module doc).
 
@@ -361,6 +399,10 @@ def diagnose(
     max_lobes : int, optional
         Largest lobe count searched (default: every line below the Nyquist frequency, at most
         :data:`MAX_LINES` lines).
+    gain_uncertainty : float
+        Relative standard uncertainty of the sensor's gain [-] (default
+        :data:`GAIN_UNCERTAINTY`, 1 %): a line of phasor X is uncertain by this times |X| on
+        top of the noise, in its amplitude, its phase and its detection.
 
     Returns
     -------
@@ -369,7 +411,17 @@ def diagnose(
     Raises
     ------
     RecordError
-        A record that cannot be read or fitted (named by file, row and column).
+        A record that cannot be read or fitted (named by file, row and column), or whose lines
+        show a speed beyond :data:`runout.diagnose._speed.SPEED_RTOL` of the tachometer's.
+    CaseError
+        The record's lines show a speed beyond that tolerance of the case's
+        (``operation.speed``).
+
+    Notes
+    -----
+    The speed check and the order tracking are those of :mod:`runout.diagnose._speed`; the
+    lines are those of the linear model (seed 002, "Anderon vibration", an instrument maker's
+    calculation model, eq. 33-40: every line at a fixed order of the rotating ring's speed).
     """
     from runout.analysis.decompose import Candidate, Kinematic, attribute_frequency, fit_lines
     from runout.analysis.lines import Source
@@ -377,6 +429,10 @@ def diagnose(
     from runout.geometry.loading import operating_contact_angle
     from runout.models.linear import rates, variant_gains
 
+    if not (math.isfinite(gain_uncertainty) and 0.0 <= gain_uncertainty < 1.0):
+        raise ValueError(
+            f"gain_uncertainty must be a fraction in [0, 1) (0.01 = 1 %), got {gain_uncertainty!r}"
+        )
     c = _load(case)
     if getattr(c, "spindle", None) is not None:
         from runout.base.errors import CaseError
@@ -480,7 +536,15 @@ def diagnose(
     # one candidate per line frequency; the source's term carries the frequency's index
     fidx = {f: i for i, f in enumerate(freqs)}
     inside = [f for f in freqs if f_lo < f < f_hi]
-    present = _screen(record, inside)
+    spectra = _spectra(record)
+    tracking = _check_speed(c, record, spectra, freqs, inside, f_r, speed_source, notes)
+    time_axis = record.time
+    speed_ratio = 1.0  # mean speed of the record / f_r, where the lines are tracked
+    if tracking is not None and tracking.applied:
+        time_axis = tracking.warped(record.time)
+        speed_ratio = tracking.mean_ratio
+    # the record's lines lie at the speed it was taken at: screened there
+    present = _screen(spectra, inside, speed_ratio)
     if len(present) < len(inside):
         notes.append(
             f"{len(inside) - len(present)} of {len(inside)} candidate lines stay below "
@@ -516,7 +580,7 @@ def diagnose(
     for ch, channel in record.channels.items():
         signal["xy".index(ch)] = channel
     fit = fit_lines(
-        record.time,
+        time_axis,
         signal,
         cands,
         f_r,
@@ -585,16 +649,22 @@ def diagnose(
         sign = 1 if e.omega >= 0 else -1
         groups.setdefault((head, sign if len(channels) == 2 else 1), []).append(e)
     values: list[complex] = []
-    sigmas: list[float] = []
+    sigmas: list[float] = []  # noise (local floor) and gain: the uncertainty and detection
+    weights: list[float] = []  # the white noise alone: the inverse's weights
     kept: list[Equation] = []
-    ends = float(record.time[0] + record.time[-1])
+    ends = float(time_axis[0] + time_axis[-1])
+    local = {
+        ch: _local_floor(fit.residual["xy".index(ch)], record.step, quad[ch]) for ch in channels
+    }
+    unexplained: list[tuple[Equation, complex, float, float]] = []
     for (head, _), group in groups.items():
         e = group[0]
         eq = Equation(e.omega, [c for m in group for c in m.contributions], spread.get(head, 0.0))
         kept.append(eq)
         scale = 1.0
         if record.quantity == "velocity":
-            scale = 1.0 / (TWO_PI * freqs[head])  # displacement = velocity / (i ω)
+            # displacement = velocity / (i ω), ω at the record's own (tracked) speed
+            scale = 1.0 / (TWO_PI * freqs[head] * speed_ratio)
         rot: complex = -1j if record.quantity == "velocity" else 1.0
         own = abs(e.omega) * f_r
         if all(abs(abs(m.omega) * f_r - own) <= 1e-9 * own for m in group):
@@ -604,20 +674,44 @@ def diagnose(
                 math.cos(math.pi * (own - fitted_hz[head]) * ends),
                 -math.sin(math.pi * (own - fitted_hz[head]) * ends),
             )
+        f_line = freqs[head]
         if len(channels) == 2:
             xv = phasor["x"].get(head, 0j) * scale * rot
             yv = phasor["y"].get(head, 0j) * scale * rot
             v = 0.5 * (xv + 1j * yv) if e.omega > 0 else (0.5 * (xv - 1j * yv)).conjugate()
-            s = 0.5 * math.hypot(quad["x"], quad["y"]) * scale
+            white = 0.5 * math.hypot(quad["x"], quad["y"]) * scale
+            s = 0.5 * math.hypot(local["x"](f_line), local["y"](f_line)) * scale
+            # independent gain errors g_x, g_y move C = (X + iY)/2 by (g_x X + i g_y Y)/2
+            s_gain = 0.5 * gain_uncertainty * math.hypot(abs(xv), abs(yv))
         else:
             ch = channels[0]
             v = phasor[ch].get(head, 0j) * scale * rot
-            s = quad[ch] * scale
+            white = quad[ch] * scale
+            s = local[ch](f_line) * scale
+            s_gain = gain_uncertainty * abs(v)
+        s = math.hypot(s, s_gain)
         values.append(v)
         sigmas.append(max(s, 1e-300))
+        weights.append(max(white, 1e-300))
+        if DETECTION * white < abs(v) <= DETECTION * s:
+            unexplained.append((eq, v, white, s))
     detected = [
         (e, v, s) for e, v, s in zip(kept, values, sigmas, strict=True) if abs(v) > DETECTION * s
     ]
+    detected_weights = [
+        w for v, s, w in zip(values, sigmas, weights, strict=True) if abs(v) > DETECTION * s
+    ]
+    if unexplained:
+        notes.append(_unexplained_note(unexplained, f_r, ename, gain_uncertainty))
+    notes.append(
+        "uncertainties (one standard deviation) include the residual's noise near each line, "
+        f"a sensor gain uncertainty of {100 * gain_uncertainty:.3g} % "
+        + (
+            "and the speed tracking's uncertainty (phases)"
+            if tracking is not None
+            else "(the speed was not tracked: no line stands out of the spectrum)"
+        )
+    )
     if len(channels) == 2:
         unattributed += _other_whirls(
             groups,
@@ -631,13 +725,16 @@ def diagnose(
             lambda f: _first_order_hint(
                 f, tol, z, r, f_r, (k_ring, m_ball), 1.0 / record.step, ename
             ),
+            gain_uncertainty,
         )
     solution = solve_min_norm(
         [d[0] for d in detected],
         np.array([d[1] for d in detected], dtype=np.complex128),
-        np.array([d[2] for d in detected]),
+        np.array(detected_weights),
     )
-    estimates, alone = _single_ball(_estimates(detected, f_r, record, ename, z), r, f_r, z, ename)
+    estimates, alone = _single_ball(
+        _estimates(detected, f_r, record, ename, z, tracking), r, f_r, z, ename
+    )
     estimates = _load_zone(c, estimates, notes, ename)
     for u in list(solution):
         if u.part == 2 and u.lobes in alone:
@@ -652,7 +749,9 @@ def diagnose(
         base
     ]
     detection_limit = float(DETECTION * np.median(per_line) / ring_gain)
-    explained, spectrum = _explained(c, operation, alpha, var, imperfections, record, f_r)
+    explained, spectrum = _explained(
+        c, operation, alpha, var, imperfections, record, f_r, time_axis, speed_ratio
+    )
     not_obs = _not_observable(z, channels, terms, k_ring, m_ball, f_hi, ename, r)
     return Diagnosis(
         estimates=estimates,
@@ -671,6 +770,9 @@ def diagnose(
         record=record,
         lobe_bounds={"inner": k_ring, "outer": k_ring, ename: m_ball},
         spectrum=spectrum,
+        record_speed_hz=None if tracking is None else f_r * tracking.mean_ratio,
+        speed_drift=None if tracking is None else tracking.drift,
+        gain_uncertainty=gain_uncertainty,
     )
 
 
@@ -684,6 +786,7 @@ def _other_whirls(
     detected: list[tuple[Equation, complex, float]],
     notes: list[str],
     hint: Callable[[float], str | None],
+    gain: float = 0.0,
 ) -> list[Unattributed]:
     """The whirl of a fitted line that no deviation gives, when it stands above the noise.
 
@@ -691,12 +794,16 @@ def _other_whirls(
     of them. The other is no observation of any deviation, but it is in the record: it is
     reported (channel ``"xy"``), not dropped. When it carries more than the modelled whirls,
     the likeliest cause is a mirrored axis (or the other ring turning), which reverses every
-    whirl: a note says so. ``hint(frequency)`` names first-order deviations outside the fit
+    whirl: a note says so. A whirl within ``gain`` (the relative sensor gain uncertainty) of the
+    line is what a mismatch of the x and y gains gives, g √(|X|² + |Y|²)/2 at most: it must
+    stand 5 standard deviations above that too, and a note counts those that do not.
+    ``hint(frequency)`` names first-order deviations outside the fit
     that give a line there (lobes above the bound, aliases), or None.
     """
     out: list[Unattributed] = []
     sigma = 0.5 * math.hypot(quad["x"], quad["y"])
     wrong = 0.0
+    within_gain = 0
     for head in sorted({h for h, _ in groups}):
         xv, yv = phasor["x"].get(head, 0j), phasor["y"].get(head, 0j)
         for sign, word, other in ((1, "forward", "backward"), (-1, "backward", "forward")):
@@ -704,6 +811,9 @@ def _other_whirls(
                 continue
             w = 0.5 * abs(xv + 1j * yv) if sign > 0 else 0.5 * abs(xv - 1j * yv)
             if w <= DETECTION * sigma:
+                continue
+            if w <= DETECTION * math.hypot(sigma, 0.5 * gain * math.hypot(abs(xv), abs(yv))):
+                within_gain += 1  # an x/y gain mismatch gives it
                 continue
             wrong += (w / sigma) ** 2
             who = ", ".join(members.get(head, [])[:3])
@@ -718,6 +828,12 @@ def _other_whirls(
                     text if more is None else f"{text}; may be {more}",
                 )
             )
+    if within_gain:
+        notes.append(
+            f"{within_gain} whirl(s) at fitted lines that the model does not give stand above "
+            f"the noise but within the {100 * gain:g} % gain uncertainty (a mismatch of the x "
+            "and y gains puts that share of a line into its other whirl): not reported"
+        )
     modelled = sum((abs(v) / s) ** 2 for _, v, s in detected)
     if out and wrong > modelled:
         notes.append(
@@ -838,30 +954,224 @@ def _load_zone(
     )
 
 
-def _screen(record: Record, freqs: list[float]) -> list[float]:
+def _spectra(record: Record) -> list[Any]:
+    """The Hann amplitude spectrum of each channel (x before y), about its mean."""
+    from runout.analysis.spectrum import amplitude_spectrum
+
+    fs = 1.0 / record.step
+    return [
+        amplitude_spectrum(record.channels[ch] - record.channels[ch].mean(), sample_rate=fs)
+        for ch in sorted(record.channels)
+    ]
+
+
+def _screen(spectra: list[Any], freqs: list[float], ratio: float = 1.0) -> list[float]:
     """The candidate frequencies whose neighbourhood (±2 bins) in the record's Hann amplitude
     spectrum rises above :data:`SCREEN` × its median level in some channel.
 
     For white noise the median bin is 1.4 σ/√n and a line at the detection level
     (:data:`DETECTION` × σ √(2/n) = 7.1 σ/√n) shows at least 6 σ/√n, scalloping included: the
     screen drops only lines the fit would not detect, and spares fitting them jointly (the
-    fit's cost grows with the number of lines)."""
-    from runout.analysis.spectrum import amplitude_spectrum
-
+    fit's cost grows with the number of lines). ``ratio``: the record's speed over the one
+    ``freqs`` [Hz] are at (each is looked for at ``ratio`` times itself)."""
     if not freqs:
         return []
     f = np.asarray(freqs)
     keep = np.zeros(f.size, dtype=bool)
-    fs = 1.0 / record.step
-    for values in record.channels.values():
-        spec = amplitude_spectrum(values - values.mean(), sample_rate=fs)
+    for spec in spectra:
         amp = spec.amplitude
         level = SCREEN * float(np.median(amp))
-        centre = np.rint(f / spec.resolution).astype(np.int64)
+        centre = np.rint(ratio * f / spec.resolution).astype(np.int64)
         for shift in range(-2, 3):
             i = np.clip(centre + shift, 0, amp.size - 1)
             keep |= amp[i] > level
     return [float(v) for v in f[keep]]
+
+
+def _local_floor(residual: FloatArray, step: float, white: float) -> Callable[[float], float]:
+    """σ_line at a frequency [Hz] from the residual's spectrum around it (±:data:`LOCAL_BINS`
+    bins, the line's own ±1 bins left out: the fit removed it there), never below ``white``.
+
+    For white noise of rms σ, E|R_k|² = n σ², so √(2 mean|R_k|²)/n is σ √(2/n), the standard
+    deviation of a fitted line's phasor. Near a line smeared by what the model does not hold
+    (a drift not tracked, sidebands) the residual rises, and so does this floor: a line the
+    residual around it explains as well is not a detection.
+    """
+    n = residual.size
+    power = np.abs(np.fft.rfft(residual - residual.mean())) ** 2
+
+    def at(frequency: float) -> float:
+        k0 = round(frequency * n * step)
+        lo, hi = max(1, k0 - LOCAL_BINS), min(power.size, k0 + LOCAL_BINS + 1)
+        near = np.concatenate([power[lo : max(lo, k0 - 1)], power[min(hi, k0 + 2) : hi]])
+        if near.size == 0:
+            return white
+        return max(white, math.sqrt(2.0 * float(near.mean())) / n)
+
+    return at
+
+
+def _unexplained_note(
+    dropped: list[tuple[Equation, complex, float, float]], f_r: float, ename: str, gain: float
+) -> str:
+    """The lines above the white noise that the residual near them (or the gain) explains."""
+    items = []
+    for e, v, white, s in dropped[:6]:
+        names = sorted(
+            {
+                f"{ename if c.unknown.part == 2 else PART_NAMES[c.unknown.part]} "
+                f"{c.unknown.lobes} lobes"
+                for c in e.contributions
+            }
+        )
+        items.append(
+            f"{' or '.join(names[:2])} at {abs(e.omega) * f_r:.6g} Hz ({abs(v):.3g} m: "
+            f"{abs(v) / white:.3g} sigma of the white noise, {abs(v) / s:.3g} sigma with the "
+            "residual near it and the gain)"
+        )
+    more = f" and {len(dropped) - 6} more" if len(dropped) > 6 else ""
+    return (
+        f"{len(dropped)} line(s) stand above {DETECTION:g} sigma of the residual's white level "
+        f"but not above the residual near them and the {100 * gain:g} % gain uncertainty: "
+        "not reported as deviations (the residual explains them as well): "
+        + "; ".join(items)
+        + more
+    )
+
+
+def _ranked(spectra: list[Any], present: list[float], ratio: float = 1.0) -> list[float]:
+    """The candidate frequencies [Hz] that stand :data:`runout.diagnose._speed.PEAK_LEVEL`
+    times above the median level of the record's spectrum, strongest first (the lines worth
+    tracking the speed on); ``ratio`` as for :func:`_screen`."""
+    from runout.diagnose._speed import PEAK_FLOOR, PEAK_LEVEL
+
+    if not present:
+        return []
+    f = np.asarray(present)
+    level = np.zeros(f.size)
+    strong = np.zeros(f.size, dtype=bool)
+    for spec in spectra:
+        centre = np.rint(ratio * f / spec.resolution).astype(np.int64)
+        here = np.zeros(f.size)
+        for shift in (-1, 0, 1):
+            i = np.clip(centre + shift, 0, spec.amplitude.size - 1)
+            here = np.maximum(here, spec.amplitude[i])
+        strong |= here > max(
+            PEAK_LEVEL * float(np.median(spec.amplitude)), PEAK_FLOOR * float(spec.amplitude.max())
+        )
+        level = np.maximum(level, here)
+    order = np.argsort(-level, kind="stable")
+    return [float(f[i]) for i in order if strong[i]]
+
+
+def _check_speed(
+    case: Any,
+    record: Record,
+    spectra: list[Any],
+    freqs: list[float],
+    inside: list[float],
+    f_r: float,
+    speed_source: str,
+    notes: list[str],
+) -> Any:
+    """Check the speed against the record's lines, then track its drift on them.
+
+    Refuses a record whose lines give a speed beyond :data:`runout.diagnose._speed.SPEED_RTOL`
+    of ``f_r`` [Hz] (naming ``operation.speed``, or the tachometer column); says in ``notes``
+    when the lines do not show the speed, and when the tracking is applied. Returns the
+    :class:`runout.diagnose._speed.Tracking`, or None without a line to track.
+    """
+    from runout.diagnose._speed import (
+        CONVINCING,
+        SPEED_RTOL,
+        line_speed,
+        track_speed,
+    )
+
+    chans = [record.channels[ch] for ch in sorted(record.channels)]
+    fs = 1.0 / record.step
+    n = record.samples
+    given = "the tachometer" if speed_source == "tachometer" else "the case"
+    rpm = f_r * 60.0
+    ls = line_speed([sp.amplitude for sp in spectra], fs, n, np.asarray(freqs) / f_r, f_r)
+    ratio = 1.0
+    if ls is None:
+        notes.append(
+            f"the speed is not checked against the record's lines: fewer than two lines stand "
+            f"out of its spectrum (one line fits any speed); the speed is {given}'s"
+        )
+    else:
+        if (
+            abs(ls.ratio - 1.0) > SPEED_RTOL
+            and ls.share_best >= CONVINCING
+            and ls.share_assumed < 0.5
+        ):
+            _refuse_speed(case, record, f_r, ls.ratio * f_r, speed_source, ls)
+        adopted = abs(ls.ratio - 1.0) <= SPEED_RTOL and ls.share_best >= CONVINCING
+        if ls.share_assumed < 0.5 and not adopted:  # (an adopted speed is tracked, and said)
+            notes.append(
+                f"only {100 * ls.share_assumed:.0f} % of the power of the record's "
+                f"{ls.peaks} strongest lines lies on the bearing's lines at {rpm:.6g} rpm "
+                f"({given}'s speed): the rest is no line of the bearing's kinematics at that "
+                "speed (check the speed, and the unattributed lines)"
+            )
+        if abs(ls.ratio - 1.0) <= SPEED_RTOL:
+            ratio = ls.ratio
+    # a line with a candidate closer than the record resolves beats with it: that slow phase
+    # is no drift, so only isolated lines are tracked
+    near = 1.5 / record.duration
+    every = np.asarray(freqs)
+    present = _screen(spectra, inside, ratio)
+    isolated = [
+        f
+        for f in _ranked(spectra, present, ratio)
+        if np.count_nonzero(np.abs(every - f) < near) == 1
+    ]
+    tr = track_speed(record.time, chans, isolated, ratio)
+    if tr is None:
+        return None
+    if abs(tr.mean_ratio - 1.0) > SPEED_RTOL:
+        _refuse_speed(case, record, f_r, tr.mean_ratio * f_r, speed_source, ls)
+    if tr.applied:
+        notes.append(
+            f"speed tracked on the record's {tr.lines} strongest lines: mean "
+            f"{rpm * tr.mean_ratio:.6g} rpm ({given} gives {rpm:.6g} rpm), changing by "
+            f"{100 * tr.drift:+.3g} % from the first instant to the last; the lines are fitted "
+            "on the tracked shaft angle (order tracking) and their phase uncertainties include "
+            "the tracking's"
+        )
+    return tr
+
+
+def _refuse_speed(
+    case: Any, record: Record, f_r: float, f_lines: float, speed_source: str, ls: Any
+) -> None:
+    """Refuse a record whose lines give another speed (one line: the file and the key)."""
+    from runout.base.errors import CaseError
+    from runout.diagnose._speed import SPEED_RTOL
+
+    rpm, seen = f_r * 60.0, f_lines * 60.0
+    why = (
+        ""
+        if ls is None
+        else f" ({100 * ls.share_best:.0f} % of its strongest lines' power lies on the "
+        f"bearing's lines at {seen:.5g} rpm, {100 * ls.share_assumed:.0f} % at {rpm:.5g} rpm)"
+    )
+    if speed_source == "tachometer":
+        raise RecordError(
+            record.file,
+            "column 'rev'",
+            f"the record's lines give {seen:.5g} rpm where the tachometer gives {rpm:.5g} rpm, "
+            f"beyond {100 * SPEED_RTOL:g} %{why}: check that the tachometer counts revolutions "
+            "of the rotating ring (one pulse per revolution)",
+        )
+    raise CaseError(
+        str(case.path),
+        "operation.speed",
+        f"the record {record.file}'s lines give {seen:.5g} rpm where the case gives "
+        f'{rpm:.5g} rpm, beyond {100 * SPEED_RTOL:g} %{why}: give speed = "{seen:.5g} rpm" if '
+        "the record was taken at that speed, or a tachometer column rev in the record",
+    )
 
 
 def _one_per_frequency(lines: list[Unattributed], tol: float) -> tuple[Unattributed, ...]:
@@ -999,6 +1309,7 @@ def _estimates(
     record: Record,
     ename: str,
     z: int,
+    tracking: Any = None,
 ) -> tuple[Estimate, ...]:
     rows = []
     total = 0.0
@@ -1050,6 +1361,13 @@ def _estimates(
         note = "; ".join(notes)
         power = abs(v) ** 2 * (2.0 if two else 1.0)  # both whirls over two channels
         total += power
+        f_line = abs(e.omega) * f_r
+        phase_sigma = s / abs(v) if abs(v) > 0.0 else math.pi
+        if tracking is not None:
+            # the warp's own uncertainty, and the correction itself where it was not applied
+            phase_sigma = math.hypot(phase_sigma, tracking.phase_sigma(f_line))
+            if not tracking.applied:
+                phase_sigma = math.hypot(phase_sigma, tracking.phase_shift(f_line))
         rows.append(
             (
                 power,
@@ -1059,9 +1377,10 @@ def _estimates(
                 amp,
                 float(np.angle(a)) % TWO_PI,
                 s / gain,
-                abs(e.omega) * f_r,
+                f_line,
                 ("forward" if e.omega > 0 else "backward") if two else "both",
                 note,
+                min(phase_sigma, math.pi),
             )
         )
     out = [
@@ -1076,8 +1395,9 @@ def _estimates(
             whirl=w,
             share=float(pw / total) if total > 0 else 0.0,
             note=note,
+            phase_uncertainty_rad=float(sph),
         )
-        for pw, p, lo, el, amp, ph, unc, f, w, note in rows
+        for pw, p, lo, el, amp, ph, unc, f, w, note, sph in rows
     ]
     return tuple(sorted(out, key=lambda e: -e.share))
 
@@ -1090,8 +1410,14 @@ def _explained(
     imperfections: Any,
     record: Record,
     f_r: float,
+    time_axis: FloatArray | None = None,
+    speed_ratio: float = 1.0,
 ) -> tuple[float, tuple[FloatArray, FloatArray, FloatArray] | None]:
-    """Explained variance of the record by the forward model of the estimated deviations."""
+    """Explained variance of the record by the forward model of the estimated deviations.
+
+    ``time_axis``: the tracked instants τ(t) (the shaft at θ = 2π f_r τ), when the lines were
+    fitted on them; ``speed_ratio`` the record's mean speed over f_r (velocity scale).
+    """
     from runout.analysis.spectrum import amplitude_spectrum
     from runout.models.linear import (
         SpectralLines,
@@ -1107,7 +1433,7 @@ def _explained(
     lines = lines.select(lines.order > 0)
     if record.quantity == "velocity":
         lines = lines.derivative()
-        factor = TWO_PI * f_r  # du/dt = 2π f_r du/dθ
+        factor = TWO_PI * f_r * speed_ratio  # du/dt = 2π f_r du/dθ
     else:
         factor = 1.0
     # the compiled synthesis runs from θ = 0: turn each line to the record's first instant
@@ -1115,7 +1441,11 @@ def _explained(
     lines = SpectralLines(
         lines.order, lines.c_plus * shift, lines.c_minus / shift, lines.labels, f_r
     )
-    _, x, y = synthesize(lines, f_r * record.step * record.samples, record.samples)
+    if time_axis is not None and time_axis is not record.time:
+        # the shaft angle the lines were fitted on (order tracking)
+        x, y = lines.evaluate(TWO_PI * f_r * (time_axis - float(record.time[0])))
+    else:
+        _, x, y = synthesize(lines, f_r * record.step * record.samples, record.samples)
     num = den = 0.0
     recon: dict[str, FloatArray] = {"x": x * factor, "y": y * factor}
     for ch, values in record.channels.items():

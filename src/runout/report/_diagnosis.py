@@ -106,6 +106,7 @@ def _page(diagnosis: Any, figures: list[Path], directory: Path) -> str:
             esc(length(e.uncertainty_m, unit)),
             # a phase a hair below 2 pi is 0, not 360
             esc(fmt_number(round(math.degrees(e.phase_rad), 1) % 360.0, 4)),
+            esc(fmt_number(math.degrees(e.phase_uncertainty_rad), 2)),
             esc(fmt_number(e.frequency_hz)),
             esc(e.whirl),
             esc(fmt_number(e.share, 3)),
@@ -130,13 +131,14 @@ def _page(diagnosis: Any, figures: list[Path], directory: Path) -> str:
                 "amplitude",
                 "± 1σ",
                 "phase [deg]",
+                "± 1σ [deg]",
                 "line [Hz]",
                 "whirl",
                 "share",
                 "note",
             ],
             rows,
-            numeric=(2, 3, 4, 5, 7),
+            numeric=(2, 3, 4, 5, 6, 8),
         )
         if rows
         else "<p>No deviation stands above the noise.</p>",

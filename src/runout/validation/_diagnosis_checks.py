@@ -19,11 +19,13 @@ from runout.validation.seed002_anderon import FIG12, FIG20, W_I1, W_S, waviness
 
 __all__ = [
     "MAINS_HZ",
+    "Coverage",
     "Truth",
     "done_when_truth",
     "recovery_errors",
     "recovery_table",
     "synthetic_record",
+    "uncertainty_coverage",
 ]
 
 #: The mains line added to synthetic records [Hz].
@@ -84,11 +86,17 @@ def synthetic_record(
     channels: str = "xy",
     variant: str = "radial_spring",
     start: float = 0.0,
+    drift: float = 0.0,
+    gains: tuple[float, float] = (1.0, 1.0),
 ) -> tuple[Record, NDArray[np.float64], NDArray[np.float64]]:
     """A record of ``truth`` through the linear model, with white noise and a mains line.
 
     ``noise`` and ``mains`` are fractions of the clean signal's rms (noise rms, mains
-    amplitude). Returns the record and the clean x and y waveforms [m].
+    amplitude). ``drift`` is the change of the speed from the first instant to the last,
+    relative to the case's speed, which is the mean (the shaft angle
+    θ = 2π f_r (t + drift (t'²/2T − t'/2)), t' the time from the first instant, T the
+    record's length); ``gains`` multiply the x and y motion (a sensor calibration error).
+    Returns the record and the clean x and y waveforms [m] (without the gains).
     """
     from runout.geometry.loading import operating_contact_angle
     from runout.models.linear import closed_form_terms, rates, spectral_lines
@@ -101,16 +109,20 @@ def synthetic_record(
         closed_form_terms(imp, r, alpha, variant), r.rotation_hz, b.elements, True
     )
     t = start + np.arange(samples) / sample_rate
-    x, y = lines.evaluate(2.0 * math.pi * r.rotation_hz * t)
+    tp = t - start
+    span = samples / sample_rate
+    x, y = lines.evaluate(
+        2.0 * math.pi * r.rotation_hz * (t + drift * (tp * tp / (2.0 * span) - 0.5 * tp))
+    )
     rng = np.random.default_rng(seed)
     rms = math.sqrt(float(np.var(x) + np.var(y)) / 2.0)
     xs = (
-        x
+        gains[0] * x
         + noise * rms * rng.standard_normal(samples)
         + mains * rms * np.sin(2 * math.pi * MAINS_HZ * t)
     )
     ys = (
-        y
+        gains[1] * y
         + noise * rms * rng.standard_normal(samples)
         + mains * rms * np.sin(2 * math.pi * MAINS_HZ * t + 1.0)
     )
@@ -133,6 +145,94 @@ def recovery_errors(diagnosis: Any, truth: Truth) -> dict[tuple[str, int, int | 
             continue
         out[(part, k, el)] = max(abs(e.amplitude_m - a) / a for e in found)
     return out
+
+
+@dataclass(frozen=True)
+class Coverage:
+    """How often a diagnosis's uncertainties cover the truth over a set of records.
+
+    Attributes
+    ----------
+    amplitude : float
+        Fraction of the true deviations found with |amplitude − true| ≤ 2 uncertainty_m [-].
+    phase : float
+        Fraction with |phase − true| ≤ 2 phase_uncertainty_rad (modulo 2π) [-].
+    found : int
+        True deviations found (each estimate of a true deviation counts: a ball's two lines
+        are two).
+    missed : int
+        True deviations of the records without an estimate.
+    invented : int
+        Estimates of no true deviation.
+    invented_sigma : float
+        Largest amplitude_m / uncertainty_m of those (0 when none) [-].
+    records : int
+    """
+
+    amplitude: float
+    phase: float
+    found: int
+    missed: int
+    invented: int
+    invented_sigma: float
+    records: int
+
+
+def uncertainty_coverage(
+    case: Any,
+    *,
+    records: int = 21,
+    noise: float = 0.05,
+    drift: float = 0.003,
+    gain: float = 0.01,
+    revolutions: float = 13.0,
+    sample_rate: float = 4000.0,
+    channels: str = "xy",
+) -> Coverage:
+    """Diagnose ``records`` synthetic records of :func:`done_when_truth` and count how often
+    the uncertainties (2 σ) cover the true amplitudes and phases, and what is invented.
+
+    Record ``seed`` (0, 1, ...) has its own noise draw and sensor gains 1 ± ``gain`` on x and
+    on y, each sign drawn with the seed; ``drift`` is the speed change over the record (see
+    :func:`synthetic_record`), 5 % mains as there.
+    """
+    from runout.diagnose.fit import diagnose
+
+    z = int(case.bearing.elements)
+    truth = done_when_truth(z)
+    f_r = abs(case.operation.speed)
+    n = round(revolutions / f_r * sample_rate)
+    amp_ok = phase_ok = found = missed = invented = 0
+    worst = 0.0
+    for seed in range(records):
+        signs = np.random.default_rng(1000 + seed).choice([-1.0, 1.0], size=2)
+        rec, _, _ = synthetic_record(
+            case,
+            truth,
+            sample_rate=sample_rate,
+            samples=n,
+            noise=noise,
+            seed=seed,
+            channels=channels,
+            drift=drift,
+            gains=(1.0 + gain * signs[0], 1.0 + gain * signs[1]),
+        )
+        d = diagnose(case, rec, max_lobes=4 * z)
+        for (part, k, _el), (a, p) in truth.deviations.items():
+            hits = [e for e in d.estimates if e.part == part and e.lobes == (k,)]
+            missed += not hits
+            for e in hits:
+                found += 1
+                amp_ok += abs(e.amplitude_m - a) <= 2.0 * e.uncertainty_m
+                err = abs(math.remainder(e.phase_rad - p, 2.0 * math.pi))
+                phase_ok += err <= 2.0 * e.phase_uncertainty_rad
+        for e in d.estimates:
+            if not any(e.part == part and k in e.lobes for (part, k, _el) in truth.deviations):
+                invented += 1
+                worst = max(worst, e.amplitude_m / e.uncertainty_m)
+    return Coverage(
+        amp_ok / max(found, 1), phase_ok / max(found, 1), found, missed, invented, worst, records
+    )
 
 
 def recovery_table(
