@@ -388,11 +388,22 @@ def _ball_newton(
             a1 = aa[m, 0]
             a2 = aa[m, 1]
             # g and ∂g/∂X: two directional derivatives of the ball state
-            hz = (ki0[j], ki1[j], ai_c[j], ko0[j], ko1[j], ao_c[j], cst, lam_i, lam_o, speed_on)
-            s = _ball_state(x1, x2, a1, a2, 1.0, 0.0, 0.0, 0.0, *hz)
-            g1, g2, j00, j10 = s[0], s[1], s[14], s[15]  # literal indices (see _ring_jacobian)
-            s = _ball_state(x1, x2, a1, a2, 0.0, 1.0, 0.0, 0.0, *hz)
-            j01, j11 = s[14], s[15]
+            k0, k1, kc = ki0[j], ki1[j], ai_c[j]
+            o0, o1, oc = ko0[j], ko1[j], ao_c[j]
+            s = _ball_state(
+                x1, x2, a1, a2, 1.0, 0.0, 0.0, 0.0, k0, k1, kc, o0, o1, oc, cst, lam_i, lam_o,
+                speed_on,
+            )  # fmt: skip
+            g1 = s[0]
+            g2 = s[1]
+            j00 = s[14]  # literal indices (see _ring_jacobian)
+            j10 = s[15]
+            s = _ball_state(
+                x1, x2, a1, a2, 0.0, 1.0, 0.0, 0.0, k0, k1, kc, o0, o1, oc, cst, lam_i, lam_o,
+                speed_on,
+            )  # fmt: skip
+            j01 = s[14]
+            j11 = s[15]
             det = j00 * j11 - j01 * j10
             ok = abs(det) > 0.0
             if not ok:
@@ -969,19 +980,58 @@ def _ring_jacobian(
         # (small arrays would compile to several times the code); entries 14-18 of the ball
         # state by literal indices: a computed index compiles to a switch over the 19 entries
         xj0, xj1, aj0, aj1 = x[j, 0], x[j, 1], a[j, 0], a[j, 1]
-        hz = (ki0[j], ki1[j], ai_c[j], ko0[j], ko1[j], ao_c[j], cst, lam_i, lam_o, speed_on)
-        s = _ball_state(xj0, xj1, aj0, aj1, 1.0, 0.0, 0.0, 0.0, *hz)
-        state[0, j], state[1, j], state[2, j], state[3, j] = s[0], s[1], s[2], s[3]
-        state[4, j], state[5, j], state[6, j], state[7, j] = s[4], s[5], s[6], s[7]
-        state[8, j], state[9, j], state[10, j] = s[8], s[9], s[10]
-        state[11, j], state[12, j], state[13, j] = s[11], s[12], s[13]
-        gx00, gx10, px00, px10, px20 = s[14], s[15], s[16], s[17], s[18]
-        s = _ball_state(xj0, xj1, aj0, aj1, 0.0, 1.0, 0.0, 0.0, *hz)
-        gx01, gx11, px01, px11, px21 = s[14], s[15], s[16], s[17], s[18]
-        s = _ball_state(xj0, xj1, aj0, aj1, 0.0, 0.0, 1.0, 0.0, *hz)
-        ga00, ga10, pa00, pa10, pa20 = s[14], s[15], s[16], s[17], s[18]
-        s = _ball_state(xj0, xj1, aj0, aj1, 0.0, 0.0, 0.0, 1.0, *hz)
-        ga01, ga11, pa01, pa11, pa21 = s[14], s[15], s[16], s[17], s[18]
+        k0, k1, kc = ki0[j], ki1[j], ai_c[j]
+        o0, o1, oc = ko0[j], ko1[j], ao_c[j]
+        s = _ball_state(
+            xj0, xj1, aj0, aj1, 1.0, 0.0, 0.0, 0.0, k0, k1, kc, o0, o1, oc, cst, lam_i, lam_o,
+            speed_on,
+        )  # fmt: skip
+        state[0, j] = s[0]
+        state[1, j] = s[1]
+        state[2, j] = s[2]
+        state[3, j] = s[3]
+        state[4, j] = s[4]
+        state[5, j] = s[5]
+        state[6, j] = s[6]
+        state[7, j] = s[7]
+        state[8, j] = s[8]
+        state[9, j] = s[9]
+        state[10, j] = s[10]
+        state[11, j] = s[11]
+        state[12, j] = s[12]
+        state[13, j] = s[13]
+        gx00 = s[14]
+        gx10 = s[15]
+        px00 = s[16]
+        px10 = s[17]
+        px20 = s[18]
+        s = _ball_state(
+            xj0, xj1, aj0, aj1, 0.0, 1.0, 0.0, 0.0, k0, k1, kc, o0, o1, oc, cst, lam_i, lam_o,
+            speed_on,
+        )  # fmt: skip
+        gx01 = s[14]
+        gx11 = s[15]
+        px01 = s[16]
+        px11 = s[17]
+        px21 = s[18]
+        s = _ball_state(
+            xj0, xj1, aj0, aj1, 0.0, 0.0, 1.0, 0.0, k0, k1, kc, o0, o1, oc, cst, lam_i, lam_o,
+            speed_on,
+        )  # fmt: skip
+        ga00 = s[14]
+        ga10 = s[15]
+        pa00 = s[16]
+        pa10 = s[17]
+        pa20 = s[18]
+        s = _ball_state(
+            xj0, xj1, aj0, aj1, 0.0, 0.0, 0.0, 1.0, k0, k1, kc, o0, o1, oc, cst, lam_i, lam_o,
+            speed_on,
+        )  # fmt: skip
+        ga01 = s[14]
+        ga11 = s[15]
+        pa01 = s[16]
+        pa11 = s[17]
+        pa21 = s[18]
         for r in range(5):
             parts[r, j] = 0.0
         if not loaded[j]:  # an unloaded ball exerts nothing on the inner ring
