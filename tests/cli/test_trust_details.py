@@ -1,0 +1,108 @@
+"""Small things that erode trust (issue 29, items 5 and 7), each through the real command line.
+
+Every test here failed before its fix: the linear model named the ball-waviness line at
+2 f_b + f_c "2n f_b - f_c" with the outer ring turning, ...
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from pathlib import Path
+from typing import Any
+
+import pytest
+from typer.testing import CliRunner
+
+from runout.cli.commands import app
+
+runner = CliRunner()
+
+BEARING = """\
+[bearing]
+type = "ball"
+elements = 8
+element_diameter = "1 mm"
+pitch_diameter = "7 mm"
+inner_conformity = 0.52
+outer_conformity = 0.53
+radial_clearance = "10 um"
+"""
+
+BALL_WAVINESS = """
+[[waviness]]
+part = "ball"
+element = 1
+order = 2
+amplitude = "20 nm"
+[[waviness]]
+part = "ball"
+element = 3
+order = 4
+amplitude = "5 nm"
+phase = "40 deg"
+"""
+
+
+def _case(
+    tmp_path: Path,
+    model: str,
+    *,
+    operation: str = 'speed = "5400 rpm"\naxial_load = "20 N"\n',
+    extra: str = "",
+    revolutions: float = 16,
+    samples: int = 4096,
+) -> Path:
+    text = (
+        f'title = "{model}"\n{BEARING}[operation]\n{operation}{extra}\n'
+        f'[analysis]\nmodel = "{model}"\nrevolutions = {revolutions}\nsamples = {samples}\n'
+    )
+    if model == "dynamic":
+        text += '[dynamics]\nmass = "0.1 kg"\ndamping = "50 N*s/m"\n'
+    path = tmp_path / f"{model}.toml"
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def _json(path: Path) -> dict[str, Any]:
+    result = runner.invoke(app, ["run", str(path), "--json"])
+    assert result.exit_code == 0, result.stderr + result.stdout
+    out: dict[str, Any] = json.loads(result.stdout)
+    return out
+
+
+# 5 -------------------------------------------------------------------------------------------
+BALL_LINE = re.compile(r"^(\d+) f_b ([+-]) f_c$")
+
+
+@pytest.mark.parametrize("ring", ["inner", "outer"])
+def test_every_model_names_a_ball_line_by_the_frequency_it_sits_at(
+    tmp_path: Path, ring: str
+) -> None:
+    op = f'rotating_ring = "{ring}"\nspeed = "5400 rpm"\naxial_load = "20 N"\n'
+    named: dict[str, dict[tuple[int | None, int | None, str], tuple[str, str, str]]] = {}
+    for model in ("linear", "quasi_static_2d", "quasi_static_3d", "dynamic"):
+        out = _json(_case(tmp_path, model, operation=op, extra=BALL_WAVINESS))
+        f = out["frequencies_hz"]
+        spin, cage = f["ball_spin"], f["cage"]
+        lines = named.setdefault(model, {})
+        for c in out["components"]:
+            top = c["sources"][0]
+            if c["direction"] == "z" or top["part"] != "ball" or "order" in top["term"]:
+                continue
+            match = BALL_LINE.match(top["formula"])
+            if match is None:
+                continue
+            k, sign = int(match[1]), match[2]
+            expected = k * spin + cage if sign == "+" else abs(k * spin - cage)
+            # the sign in the formula is the frequency's: the line sits where it says
+            assert c["frequency_hz"] == pytest.approx(expected, rel=1e-6), (model, c)
+            assert top["term"] == f"2n f_b {sign} f_c", (model, top)
+            # a nonlinear model may add a second source (ball 1's order-2 line at 4 f_b ± f_c)
+            label = re.sub(r" \+\d+ more$", "", c["label"])
+            lines[(top["element"], top["lobes"], sign)] = (top["term"], top["formula"], label)
+    # the first-order lines of both balls, both signs, in every model, named alike
+    assert all(len(lines) == 4 for lines in named.values()), named
+    reference = named["quasi_static_3d"]
+    for model, lines in named.items():
+        assert lines == reference, model
