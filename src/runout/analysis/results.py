@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import importlib
 import math
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, cast
@@ -41,6 +42,7 @@ __all__ = [
     "Source",
     "displacement_of",
     "frequencies_json",
+    "lines_dataframe",
 ]
 
 #: The one displacement convention of every model's output (JSON ``displacement_of``).
@@ -577,6 +579,61 @@ LINE_COLUMNS: dict[str, str] = {
     "label": "-",
     "top_source": "-",
 }
+
+
+def lines_dataframe(
+    results: Mapping[str, RunResult] | Sequence[RunResult], key: str = "run"
+) -> Any:
+    """The lines of several results in one :class:`pandas.DataFrame`, units kept.
+
+    ``pandas.concat`` keeps ``attrs`` only where every frame has the same ones, and the
+    ``model`` and ``title`` of two runs differ: concatenated, the units were lost. Here the
+    rows of each result get a column ``key`` naming the run, and ``attrs`` keeps ``units``
+    (column -> unit, ``key`` included) and, under ``runs``, each run's ``model``, ``title`` and
+    ``displacement_of``.
+
+    Parameters
+    ----------
+    results : mapping of str to RunResult, or sequence of RunResult
+        The runs, by name; a sequence names each run by its model (which must then differ).
+    key : str
+        Name of the column that says which run a row comes from.
+
+    Returns
+    -------
+    pandas.DataFrame
+        The columns of :meth:`RunResult.to_dataframe` plus ``key``, one row per line
+        (``pp_m`` [m], ``frequency_hz`` [Hz], ``phase_rad`` [rad]).
+
+    Raises
+    ------
+    ValueError
+        Two results of a sequence share a model, ``key`` is a column already, or no result.
+    ImportError
+        pandas is not installed (``pip install "runout[data]"``).
+    """
+    pd = _optional("pandas")
+    named = dict(results) if isinstance(results, Mapping) else {r.model: r for r in results}
+    if not isinstance(results, Mapping) and len(named) != len(results):
+        raise ValueError("two results of the same model: pass them as a mapping name -> result")
+    if not named:
+        raise ValueError("no result to put in the table")
+    if key in LINE_COLUMNS:
+        raise ValueError(f"key {key!r} is a column of the lines already")
+    frames = [r.to_dataframe().assign(**{key: name}) for name, r in named.items()]
+    df = pd.concat(frames, ignore_index=True)
+    df.attrs = {
+        "units": {**LINE_COLUMNS, key: "-"},
+        "runs": {
+            name: {
+                "model": r.model,
+                "title": r.title,
+                "displacement_of": displacement_of(r.model),
+            }
+            for name, r in named.items()
+        },
+    }
+    return df
 
 
 def _optional(module: str) -> Any:
