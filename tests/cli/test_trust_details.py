@@ -106,3 +106,33 @@ def test_every_model_names_a_ball_line_by_the_frequency_it_sits_at(
     reference = named["quasi_static_3d"]
     for model, lines in named.items():
         assert lines == reference, model
+
+
+# 7b ------------------------------------------------------------------------------------------
+INNER_WAVINESS = '\n[[waviness]]\npart = "inner"\norder = 9\namplitude = "10 nm"\n'
+
+
+@pytest.mark.parametrize("model", ["linear", "quasi_static_2d", "roller_constraint"])
+def test_a_model_without_axial_freedom_says_na_not_zero(tmp_path: Path, model: str) -> None:
+    path = _case(tmp_path, model, extra=INNER_WAVINESS, revolutions=2, samples=1024)
+    out = _json(path)
+    assert "axial_pp_m" in out["runout"] and out["runout"]["axial_pp_m"] is None
+    text = runner.invoke(app, ["run", str(path)])
+    assert text.exit_code == 0, text.stderr
+    row = next(line for line in text.stdout.splitlines() if "axial p-p" in line)
+    assert "n/a" in row and not re.search(r"\b0\b", row), row
+
+
+def test_a_model_with_axial_freedom_gives_its_axial_runout(tmp_path: Path) -> None:
+    out = _json(_case(tmp_path, "quasi_static_3d", extra=INNER_WAVINESS, revolutions=2))
+    assert isinstance(out["runout"]["axial_pp_m"], float)
+
+
+def test_the_report_says_na_for_the_axial_runout_of_a_radial_model(tmp_path: Path) -> None:
+    path = _case(tmp_path, "linear", extra=INNER_WAVINESS, revolutions=2, samples=1024)
+    out = tmp_path / "out"
+    result = runner.invoke(app, ["run", str(path), "--out", str(out), "--report"])
+    assert result.exit_code == 0, result.stderr
+    page = (out / "report.html").read_text(encoding="utf-8")
+    card = re.search(r"axial p-p</[^>]+>\s*<[^>]+>([^<]*)<", page)
+    assert card is not None and card[1].strip() == "n/a", card

@@ -205,6 +205,18 @@ class RunResult:
         return u[0] * self.displacement[0] + u[1] * self.displacement[1]
 
     @property
+    def has_axial_freedom(self) -> bool:
+        """True when the model has an axial degree of freedom (an axial runout to report).
+
+        ``linear``, ``quasi_static_2d`` and ``roller_constraint`` are radial models, and
+        ``dynamic`` is one unless ``[dynamics] axial_dof`` is set: their axial p-p is not zero
+        but not a quantity they compute, so the JSON gives ``null`` and the text ``n/a``.
+        """
+        if self.model == "dynamic":
+            return bool(getattr(self.details, "axial_dof", False))
+        return self.model in AXIAL_MODELS
+
+    @property
     def axial_motion(self) -> bool:
         """True when the model moves the rings axially (z is part of the output)."""
         return bool(np.any(self.displacement[2] != 0.0))
@@ -394,7 +406,11 @@ class RunResult:
                 if self.stated_contact_angle_deg is None
                 else self.stated_contact_angle_deg
             ),
-            "runout": self.runout.to_json(),
+            "runout": {
+                **self.runout.to_json(),
+                # a model without axial freedom has no axial runout: null, not 0
+                "axial_pp_m": self.runout.axial_pp_m if self.has_axial_freedom else None,
+            },
             "components": [c.to_json() for c in self.lines()],
             "displacement_of": displacement_of(self.model),
             "mean_displacement_m": (
@@ -476,7 +492,8 @@ class RunResult:
             time=t,
             displacement=disp,
             components=tuple(_component_from_json(c) for c in doc["components"]),
-            runout=Runout(**{k: float(v) for k, v in doc["runout"].items()}),
+            # null: a quantity the model does not have (read back as 0, shown as n/a)
+            runout=Runout(**{k: 0.0 if v is None else float(v) for k, v in doc["runout"].items()}),
             measuring_direction=_measuring_direction_from(doc),
             anderon=None if anderon is None else {k: float(v) for k, v in anderon.items()},
             details=details_from_json(model, doc),
@@ -567,6 +584,10 @@ def _measuring_direction_from(doc: dict[str, Any]) -> NDArray[np.float64]:
         return np.array([float(u[0]), float(u[1])])
     return np.array([1.0, 0.0])
 
+
+#: Models with an axial degree of freedom (``dynamic`` has one with ``axial_dof``):
+#: :attr:`RunResult.has_axial_freedom`.
+AXIAL_MODELS = frozenset({"quasi_static_3d", "spindle", "equilibrium"})
 
 #: Columns of :meth:`RunResult.to_dataframe` and their units.
 LINE_COLUMNS: dict[str, str] = {

@@ -544,7 +544,10 @@ def _run_sections(result: RunResult) -> list[tuple[str, Rows]]:
     # larger) has its own, so that a nm-size runout is not shown as 0.01 um
     unit = length_unit(v for _, values in figures for v in values)
     rows: Rows = [
-        (name, ", ".join(show(v, unit) for v in values), unit[0]) for name, values in figures
+        (name, ", ".join(show(v, unit) for v in values), unit[0])
+        if name != "axial p-p" or result.has_axial_freedom
+        else (name, "n/a (no axial freedom)", "")  # not computed by this model: not 0
+        for name, values in figures
     ]
     if result.time.size or result.record_mean is not None:
         mean = result.mean_displacement()
