@@ -11,6 +11,7 @@ from pathlib import Path
 
 import pytest
 
+from runout import BallBearing
 from runout.geometry.contact import ball_race_contacts
 from runout.models import dynamic as dy
 from runout.validation.cases import load
@@ -28,6 +29,7 @@ def test_eq_2_15_row_names_the_constant_and_both_contacts() -> None:
     found = re.search(r"inner ([0-9.e+]+), outer ([0-9.e+]+) N/mm\^1\.5", as_computed)
     assert found, as_computed
     case = load("seed003_purohit.toml")
+    assert isinstance(case.bearing, BallBearing)
     contacts = ball_race_contacts(case.bearing, dy.setup(case).contact_angle)
     per_mm = 1000.0**1.5
     k_inner = float(contacts.inner.stiffness) / per_mm

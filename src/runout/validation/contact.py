@@ -170,11 +170,14 @@ def _purohit_k_n_mm() -> float:
 
 def _purohit_contacts_mm() -> tuple[float, float]:
     """The inner and outer contacts' own constants K_i, K_o [N/mm^1.5] of the seed 003 case."""
+    from runout import BallBearing
     from runout.geometry.contact import ball_race_contacts
     from runout.models import dynamic as dy
 
     case = load("seed003_purohit.toml")
     st = dy.setup(case)
+    if not isinstance(case.bearing, BallBearing):
+        raise TypeError("seed003_purohit.toml describes a ball bearing")
     contacts = ball_race_contacts(case.bearing, st.contact_angle)
     per_mm = 1000.0**1.5
     return float(contacts.inner.stiffness) / per_mm, float(contacts.outer.stiffness) / per_mm
