@@ -284,7 +284,8 @@ def test_headline_numbers_are_resolved(stored: dict[str, Any]) -> None:
     # the largest runout figure, every characteristic frequency and the largest line are among
     # the numbers a 1e-6 change of which fails (above): the floors do not swallow them
     resolved = {golden._text(p) for p, _ in _resolved_floats(stored)}
-    runout = stored["runout"]
+    # null: a quantity the model does not have (axial runout of a radial model)
+    runout = {k: v for k, v in stored["runout"].items() if v is not None}
     largest = max(runout, key=lambda k: runout[k])
     if runout[largest] > 10.0 * stored.get("solver_resolution_m", 0.0):
         assert f"$.runout.{largest}" in resolved
