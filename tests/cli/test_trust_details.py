@@ -136,3 +136,72 @@ def test_the_report_says_na_for_the_axial_runout_of_a_radial_model(tmp_path: Pat
     page = (out / "report.html").read_text(encoding="utf-8")
     card = re.search(r"axial p-p</[^>]+>\s*<[^>]+>([^<]*)<", page)
     assert card is not None and card[1].strip() == "n/a", card
+
+
+# 7b, the rest: the typed result, studies, equilibrium ----------------------------------------
+@pytest.mark.parametrize("model", ["linear", "quasi_static_2d", "roller_constraint", "dynamic"])
+def test_the_typed_result_of_a_radial_model_has_no_axial_runout(tmp_path: Path, model: str) -> None:
+    from runout.analysis.results import RunResult
+
+    path = _case(tmp_path, model, extra=INNER_WAVINESS, revolutions=2, samples=1024)
+    back = RunResult.from_json(_json(path))  # what `runout run --json` wrote, read back
+    assert back.runout.axial_pp_m is None and not back.has_axial_freedom
+    assert back.to_json()["runout"]["axial_pp_m"] is None
+    from runout.case.model import load_case
+    from runout.runner import run_model
+
+    assert run_model(load_case(path)).runout.axial_pp_m is None  # the model's own result
+
+
+def test_an_old_result_file_with_a_zero_axial_runout_reads_as_none(tmp_path: Path) -> None:
+    from runout.io.result_files import read_result
+
+    path = _case(tmp_path, "linear", extra=INNER_WAVINESS, revolutions=2, samples=1024)
+    out = tmp_path / "out"
+    assert runner.invoke(app, ["run", str(path), "--out", str(out)]).exit_code == 0
+    doc = json.loads((out / "result.json").read_text(encoding="utf-8"))
+    doc["runout"]["axial_pp_m"] = 0.0  # what the files written before this change hold
+    (out / "result.json").write_text(json.dumps(doc), encoding="utf-8")
+    assert read_result(out).runout.axial_pp_m is None
+
+
+def _study_case(tmp_path: Path, model: str) -> Path:
+    path = _case(tmp_path, model, extra=INNER_WAVINESS, revolutions=2, samples=1024)
+    text = path.read_text(encoding="utf-8")
+    text += (
+        '[study]\nkind = "montecarlo"\nsamples = 4\nseed = 3\n'
+        '[study.vary]\nelement_diameter_sigma = "0.1 um"\n'
+    )
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+@pytest.mark.parametrize("model", ["linear", "quasi_static_2d"])  # a run each; the batched path
+def test_a_study_of_a_radial_model_reports_no_axial_statistics(tmp_path: Path, model: str) -> None:
+    out = tmp_path / "study"
+    done = runner.invoke(app, ["study", str(_study_case(tmp_path, model)), "--out", str(out)])
+    assert done.exit_code == 0, done.stderr + done.stdout
+    stats = json.loads((out / "summary.json").read_text(encoding="utf-8"))["runout"]
+    assert all(v is None for k, v in stats["axial_pp_m"].items() if k != "histogram")
+    assert stats["axial_pp_m"]["histogram"]["counts"] == []
+    assert stats["radial_pp_m"]["mean"] > 0.0
+    rows = (out / "samples.csv").read_text(encoding="utf-8").splitlines()
+    column = rows[0].split(",").index("axial_pp_m")
+    assert [row.split(",")[column] for row in rows[1:]] == [""] * 4  # empty: no value, not 0
+    row = next(line for line in done.stdout.splitlines() if "axial_pp_m" in line)
+    assert "n/a" in row and not re.search(r"\b0\b", row), row
+    page = runner.invoke(app, ["report", str(out)])
+    assert page.exit_code == 0, page.stderr
+    html = (out / "report.html").read_text(encoding="utf-8")
+    cells = re.search(r"axial p-p</td>(.*?)</tr>", html, re.S)
+    assert cells is None or not re.search(r">\s*0(\.0+)?\s*<", cells[1]), cells
+
+
+def test_equilibrium_has_no_runout_figures_only_a_position(tmp_path: Path) -> None:
+    path = _case(tmp_path, "equilibrium", revolutions=2, samples=1024)
+    out = _json(path)
+    assert out["runout"] == dict.fromkeys(("radial_pp_m", "axial_pp_m", "rro_pp_m", "nrro_pp_m"))
+    assert any("no runout" in note for note in out["notes"])
+    text = runner.invoke(app, ["run", str(path)])
+    assert text.exit_code == 0, text.stderr
+    assert not re.search(r"p-p\s*│\s*0\b", text.stdout), text.stdout

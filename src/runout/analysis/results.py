@@ -210,7 +210,8 @@ class RunResult:
 
         ``linear``, ``quasi_static_2d`` and ``roller_constraint`` are radial models, and
         ``dynamic`` is one unless ``[dynamics] axial_dof`` is set: their axial p-p is not zero
-        but not a quantity they compute, so the JSON gives ``null`` and the text ``n/a``.
+        but not a quantity they compute, so ``runout.axial_pp_m`` is None, the JSON gives
+        ``null`` and the text ``n/a``.
         """
         if self.model == "dynamic":
             return bool(getattr(self.details, "axial_dof", False))
@@ -406,11 +407,8 @@ class RunResult:
                 if self.stated_contact_angle_deg is None
                 else self.stated_contact_angle_deg
             ),
-            "runout": {
-                **self.runout.to_json(),
-                # a model without axial freedom has no axial runout: null, not 0
-                "axial_pp_m": self.runout.axial_pp_m if self.has_axial_freedom else None,
-            },
+            # null for a figure the model does not have (Runout): never 0
+            "runout": self.runout.to_json(),
             "components": [c.to_json() for c in self.lines()],
             "displacement_of": displacement_of(self.model),
             "mean_displacement_m": (
@@ -492,8 +490,7 @@ class RunResult:
             time=t,
             displacement=disp,
             components=tuple(_component_from_json(c) for c in doc["components"]),
-            # null: a quantity the model does not have (read back as 0, shown as n/a)
-            runout=Runout(**{k: 0.0 if v is None else float(v) for k, v in doc["runout"].items()}),
+            runout=_runout_from(model, doc),
             measuring_direction=_measuring_direction_from(doc),
             anderon=None if anderon is None else {k: float(v) for k, v in anderon.items()},
             details=details_from_json(model, doc),
@@ -583,6 +580,25 @@ def _measuring_direction_from(doc: dict[str, Any]) -> NDArray[np.float64]:
         u = iso["measuring_direction"]
         return np.array([float(u[0]), float(u[1])])
     return np.array([1.0, 0.0])
+
+
+def _runout_from(model: str, doc: dict[str, Any]) -> Runout:
+    """The ``runout`` object of a result JSON; null stays None (a figure the model lacks).
+
+    Files written before these figures were null hold 0.0 where the model had no figure: an
+    equilibrium result's four zeros and a radial model's axial 0.0 read back as None too.
+    """
+    figures: dict[str, float | None] = {
+        k: None if v is None else float(v) for k, v in doc["runout"].items()
+    }
+    if model == "equilibrium":  # a static position, never a runout record
+        figures = dict.fromkeys(figures)
+    radial_model = model not in AXIAL_MODELS and not (
+        model == "dynamic" and bool(doc.get("axial_dof", False))
+    )
+    if radial_model:
+        figures["axial_pp_m"] = None
+    return Runout(**figures)
 
 
 #: Models with an axial degree of freedom (``dynamic`` has one with ``axial_dof``):

@@ -1108,7 +1108,14 @@ def run_quasi_static(
         t, disp, lines, op.speed, directions=directions, kinematic=basis, floor=1e-9 * approach
     )
     split = split_runout(
-        t, disp, u, fit.components, op.speed, fit.residual, synchronous=basis.synchronous_sources
+        t,
+        disp,
+        u,
+        fit.components,
+        op.speed,
+        fit.residual,
+        synchronous=basis.synchronous_sources,
+        axial=not planar,  # the planar model has no axial degree of freedom
     )
     notes = (
         loss_note,

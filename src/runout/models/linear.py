@@ -1285,6 +1285,7 @@ def run(case: Any) -> LinearResult:
         rt.rotation_hz,
         residual,
         synchronous=synchronous,
+        axial=False,  # a radial model: no axial degree of freedom
     )
     notes += split.notes
     variance = float(np.sum(np.var(displacement[:2], axis=1)))
