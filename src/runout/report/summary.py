@@ -692,9 +692,7 @@ def _equilibrium_sections(result: RunResult, details: EquilibriumDetails) -> lis
     return sections
 
 
-def _length_number(
-    value: float | None, unit: tuple[str, float], resolution: float | None
-) -> str:
+def _length_number(value: float | None, unit: tuple[str, float], resolution: float | None) -> str:
     """The number of :func:`runout.base.display.format_length`, without the unit; ``n/a``
     for None (a figure the model does not have, never shown as 0)."""
     from runout.base.display import format_length
