@@ -112,12 +112,17 @@ def test_checker_finds_what_it_is_for(tmp_path: Path) -> None:
     assert "link leaves the site" in found and "broken link" in found
 
 
-#: Theory pages whose mathematics is written in the site's math syntax; the others still carry
-#: plain-text equations (listed by ``check_theory_source``) and join this list when converted.
-MATH_MARKED_THEORY_PAGES = ["models/quasi_static.md", "models/spindle.md"]
+#: Every theory page (a model's page, diagnosis included): a new one is checked as it appears.
+THEORY_PAGES = sorted(
+    p.relative_to(ROOT / "docs").as_posix() for p in (ROOT / "docs").glob("models/*.md")
+)
 
 
-@pytest.mark.parametrize("page", MATH_MARKED_THEORY_PAGES)
+def test_every_model_has_a_checked_theory_page() -> None:
+    assert len(THEORY_PAGES) >= 7 and "models/linear.md" in THEORY_PAGES
+
+
+@pytest.mark.parametrize("page", THEORY_PAGES)
 def test_theory_page_has_no_plain_text_mathematics_or_collapsed_list(page: str) -> None:
     text = (ROOT / "docs" / page).read_text(encoding="utf-8")
     assert check_theory_source(text, page) == []
