@@ -8,6 +8,10 @@ Used by ``make docs`` (after the build) and by ``tests/docs/test_site.py``:
 * every relative link and resource resolves to a file inside the site, and no page points to
   files a user of the project does not have (the papers' folder, design notes);
 * the KaTeX copy the pages load is in the site.
+
+:func:`check_theory_source` reads a theory page's markdown itself for what the built page hides:
+an equation written as plain text (it renders, but as ``W_ij(t) = Σ_k ...`` with underscores)
+and a list without a blank line before it (Python-Markdown folds it into the paragraph above).
 """
 
 from __future__ import annotations
@@ -24,6 +28,17 @@ RAW_ROLE = re.compile(
 RAW_TEX = re.compile(r"\^\{|_\{|\\(?:frac|sum|alpha|beta|gamma|delta|theta|varphi|phi|sqrt|cdot)\b")
 RST_TABLE = re.compile(r"={3,}[ \t]+={3,}")
 OUTSIDE = re.compile(r"\.\./shared|DESIGN\.md|seeds/[0-9]{3}_")
+#: A list item (``*``, ``-``, ``+`` or ``1.``) at the start of a line.
+LIST_ITEM = re.compile(r"^ {0,3}(?:[*+-]|\d+[.)])\s+\S")
+#: An equation as plain text: a subscripted or Greek symbol (optionally with arguments) set
+#: equal to, or compared with, something; or a sum, root, integral or partial derivative sign.
+PLAIN_EQUATION = re.compile(
+    r"(?<![\w\\])(?:[A-Za-zα-ωΑ-Ω]+_\w+|[α-ωΑ-ΩΣ]\w*)(?:\([^)]*\))?\s*[=≈≤≥]\s*[^\s=]"
+    r"|[Σ∑√∫∂]"
+)
+#: Inline code, inline mathematics and link targets: not prose to check.
+NOT_PROSE = re.compile(r"`[^`]*`|\$\$.*?\$\$|\$[^$]*\$|\]\([^)]*\)")
+
 #: Text inside these is not prose: code, scripts, and the mathematics KaTeX renders.
 SKIP_TAGS = {"code", "pre", "script", "style", "kbd", "samp", "textarea"}
 
@@ -90,6 +105,49 @@ def check_page(site: Path, page: Path) -> list[str]:
             problems.append(f"{name}: link leaves the site: {link}")
         elif not (target.is_file() or (target / "index.html").is_file()):
             problems.append(f"{name}: broken link: {link}")
+    return problems
+
+
+def check_theory_source(text: str, name: str) -> list[str]:
+    """Plain-text equations and collapsed lists in one theory page's markdown source.
+
+    Parameters
+    ----------
+    text : str
+        The page's markdown.
+    name : str
+        The page's name in the messages.
+
+    Returns
+    -------
+    list of str
+        ``"name:line: what: text"`` for each finding (empty when the page is clean).
+    """
+    problems: list[str] = []
+    previous = ""
+    fenced = display = False
+    for number, line in enumerate(text.splitlines(), start=1):
+        stripped = line.strip()
+        if stripped.startswith(("```", "~~~")):
+            fenced = not fenced
+        elif fenced:
+            pass
+        elif display or (stripped.startswith("$$") and stripped.count("$$") == 1):
+            # a display block: from a line opening $$ to the line that closes it
+            display = not (display and "$$" in stripped)
+        else:
+            if (
+                LIST_ITEM.match(line)
+                and previous.strip()
+                and not LIST_ITEM.match(previous)
+                and not previous.startswith((" ", "\t", "#", "|"))
+            ):
+                problems.append(f"{name}:{number}: list without a blank line before it")
+            prose = NOT_PROSE.sub("", line)
+            match = PLAIN_EQUATION.search(prose)
+            if match:
+                problems.append(f"{name}:{number}: plain-text mathematics: {prose.strip()[:72]}")
+        previous = line
     return problems
 
 

@@ -56,6 +56,10 @@ def test_every_python_block_runs_in_order(
     printed = capsys.readouterr().out
     assert "radial runout p-p" in printed and "nm at 30 N" in printed
     assert "analysis.samples: must be >= 16" in printed  # the error block printed the error
+    # the two runs' lines in one table keep their units (issue 29: pd.concat dropped them)
+    lines = namespace["lines"]
+    assert lines.attrs["units"]["pp_m"] == "m" and lines.attrs["units"]["frequency_hz"] == "Hz"
+    assert set(lines["model"]) == {"quasi_static_3d", "quasi_static_2d"}
     assert (tmp_path / "lines.png").stat().st_size > 0
     assert (tmp_path / "spindle.toml").is_file()
 

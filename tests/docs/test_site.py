@@ -22,7 +22,7 @@ sys.path.insert(0, str(ROOT / "docs_hooks"))
 
 from build import build  # noqa: E402
 from griffe_rst import rst_to_markdown  # noqa: E402
-from site_check import check_page  # noqa: E402
+from site_check import check_page, check_theory_source  # noqa: E402
 
 #: Modules that are tools of the project, not API (the CLI, the generators of docs pages).
 NOT_API = {"runout.validation.reproduce", "runout.case.schema_doc"}
@@ -110,3 +110,46 @@ def test_checker_finds_what_it_is_for(tmp_path: Path) -> None:
     assert found.count("raw TeX") == 1  # the one outside math and code
     assert "reST table" in found
     assert "link leaves the site" in found and "broken link" in found
+
+
+#: Every theory page (a model's page, diagnosis included): a new one is checked as it appears.
+THEORY_PAGES = sorted(
+    p.relative_to(ROOT / "docs").as_posix() for p in (ROOT / "docs").glob("models/*.md")
+)
+
+
+def test_every_model_has_a_checked_theory_page() -> None:
+    assert len(THEORY_PAGES) >= 7 and "models/linear.md" in THEORY_PAGES
+
+
+@pytest.mark.parametrize("page", THEORY_PAGES)
+def test_theory_page_has_no_plain_text_mathematics_or_collapsed_list(page: str) -> None:
+    text = (ROOT / "docs" / page).read_text(encoding="utf-8")
+    assert check_theory_source(text, page) == []
+
+
+def test_theory_checker_flags_plain_equations_and_collapsed_lists() -> None:
+    # the quasi-static page as it was (issue 29): a list glued to its paragraph, equations as text
+    old = (
+        "With the signed ring speeds f_in, f_out [Hz], ball j at θ_j(t) = 2π f_c t + 2πj/Z:\n"
+        "* inner raceway radius deviation met by ball j: W_ij(t) = Σ_k a_ik cos(kθ_j)\n"
+        "* outer: W_oj(t) = Σ_k a_ok cos(kθ_j);\n"
+        "\n"
+        "(eq. 3–4), balance Σ Q_j n_j = F (eq. 5) with δ_pl = x\n"
+    )
+    found = check_theory_source(old, "old.md")
+    assert sum("list without a blank line" in f for f in found) == 1
+    assert {int(f.split(":")[1]) for f in found if "plain-text mathematics" in f} == {1, 2, 3, 5}
+    new = (
+        "With $f_{in}$, ball j at $\\theta_j(t) = 2\\pi f_c t$:\n"
+        "\n"
+        "* inner: $W_{ij}(t) = \\sum_k a_{ik} \\cos(k\\theta_j)$ (`f_c = x` in code is fine)\n"
+        "\n"
+        "$$\n"
+        "Q = K_n \\delta^{1.5}\n"
+        "$$\n"
+        "```\n"
+        "W_ij(t) = Σ\n"
+        "```\n"
+    )
+    assert check_theory_source(new, "new.md") == []

@@ -154,9 +154,8 @@ def test_the_floor_covers_the_solvers_resolution(stored: dict[str, Any]) -> None
 
 def _record_pp(doc: dict[str, Any]) -> float:
     runout = doc["runout"]
-    return max(
-        [runout["radial_pp_m"], runout["axial_pp_m"], *(c["pp_m"] for c in doc["components"])]
-    )
+    values = [runout["radial_pp_m"], runout["axial_pp_m"], *(c["pp_m"] for c in doc["components"])]
+    return max(v for v in values if v is not None)  # null: a quantity the model does not have
 
 
 @pytest.mark.parametrize("seed", [0, 1, 2])
@@ -285,7 +284,8 @@ def test_headline_numbers_are_resolved(stored: dict[str, Any]) -> None:
     # the largest runout figure, every characteristic frequency and the largest line are among
     # the numbers a 1e-6 change of which fails (above): the floors do not swallow them
     resolved = {golden._text(p) for p, _ in _resolved_floats(stored)}
-    runout = stored["runout"]
+    # null: a quantity the model does not have (axial runout of a radial model)
+    runout = {k: v for k, v in stored["runout"].items() if v is not None}
     largest = max(runout, key=lambda k: runout[k])
     if runout[largest] > 10.0 * stored.get("solver_resolution_m", 0.0):
         assert f"$.runout.{largest}" in resolved

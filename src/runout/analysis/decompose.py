@@ -780,6 +780,7 @@ def split_runout(
     residual: FloatArray | None = None,
     *,
     synchronous: bool = True,
+    axial: bool = True,
 ) -> RunoutSplit:
     """Radial, axial, RRO and NRRO p-p from the fitted lines (see module docstring).
 
@@ -802,6 +803,9 @@ def split_runout(
     synchronous : bool
         Whether anything turns with the rotating ring (:attr:`Kinematic.synchronous_sources`);
         without it RRO is 0 by construction.
+    axial : bool
+        Whether the model has an axial degree of freedom; without one the axial p-p is None
+        (not a quantity of the model), not the p-p of a z held at 0.
 
     Returns
     -------
@@ -811,7 +815,7 @@ def split_runout(
     u = np.asarray(direction, dtype=float)
     radial = u[0] * displacement[0] + u[1] * displacement[1]
     radial_pp = float(np.ptp(radial)) if radial.size else 0.0
-    axial_pp = float(np.ptp(displacement[2])) if displacement.shape[1] else 0.0
+    axial_pp = (float(np.ptp(displacement[2])) if displacement.shape[1] else 0.0) if axial else None
     rep = [c for c in components if c.repeatable and c.direction in ("x", "y")]
     one_rev = np.linspace(0.0, 1.0 / rotation_hz, 4097)[:-1] if rotation_hz > 0 else np.zeros(1)
 

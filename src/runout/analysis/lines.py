@@ -245,32 +245,37 @@ class Component:
 
 @dataclass(frozen=True)
 class Runout:
-    """Runout figures [m], all peak-to-peak.
+    """Runout figures [m], all peak-to-peak; None for a figure the model does not compute.
 
     Attributes
     ----------
-    radial_pp_m : float
-        Radial runout along the measuring direction [m].
-    axial_pp_m : float
-        Axial runout [m].
-    rro_pp_m : float
-        Repeatable runout (lines at integer orders of the rotating ring) [m].
-    nrro_pp_m : float
-        Non-repeatable runout (the radial record minus its RRO waveform) [m].
+    radial_pp_m : float or None
+        Radial runout along the measuring direction [m]. None for a model without a record
+        (``equilibrium``: a static position, no runout).
+    axial_pp_m : float or None
+        Axial runout [m]. None for a model without an axial degree of freedom (``linear``,
+        ``quasi_static_2d``, ``roller_constraint``, ``dynamic`` without ``axial_dof``) or
+        without a record: not a zero runout, a quantity the model does not have.
+    rro_pp_m : float or None
+        Repeatable runout (lines at integer orders of the rotating ring) [m]; None without a
+        record.
+    nrro_pp_m : float or None
+        Non-repeatable runout (the radial record minus its RRO waveform) [m]; None without a
+        record.
     """
 
-    radial_pp_m: float
-    axial_pp_m: float
-    rro_pp_m: float
-    nrro_pp_m: float
+    radial_pp_m: float | None
+    axial_pp_m: float | None
+    rro_pp_m: float | None
+    nrro_pp_m: float | None
 
-    def to_json(self) -> dict[str, float]:
+    def to_json(self) -> dict[str, float | None]:
         """The JSON contract's ``runout`` object.
 
         Returns
         -------
-        dict of str to float
-            The four p-p figures by name [m].
+        dict of str to float or None
+            The four p-p figures by name [m]; ``null`` for a figure the model does not have.
         """
         return {
             "radial_pp_m": self.radial_pp_m,

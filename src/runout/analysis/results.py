@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import importlib
 import math
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, cast
@@ -41,6 +42,7 @@ __all__ = [
     "Source",
     "displacement_of",
     "frequencies_json",
+    "lines_dataframe",
 ]
 
 #: The one displacement convention of every model's output (JSON ``displacement_of``).
@@ -201,6 +203,19 @@ class RunResult:
         """
         u = self.measuring_direction
         return u[0] * self.displacement[0] + u[1] * self.displacement[1]
+
+    @property
+    def has_axial_freedom(self) -> bool:
+        """True when the model has an axial degree of freedom (an axial runout to report).
+
+        ``linear``, ``quasi_static_2d`` and ``roller_constraint`` are radial models, and
+        ``dynamic`` is one unless ``[dynamics] axial_dof`` is set: their axial p-p is not zero
+        but not a quantity they compute, so ``runout.axial_pp_m`` is None, the JSON gives
+        ``null`` and the text ``n/a``.
+        """
+        if self.model == "dynamic":
+            return bool(getattr(self.details, "axial_dof", False))
+        return self.model in AXIAL_MODELS
 
     @property
     def axial_motion(self) -> bool:
@@ -392,6 +407,7 @@ class RunResult:
                 if self.stated_contact_angle_deg is None
                 else self.stated_contact_angle_deg
             ),
+            # null for a figure the model does not have (Runout): never 0
             "runout": self.runout.to_json(),
             "components": [c.to_json() for c in self.lines()],
             "displacement_of": displacement_of(self.model),
@@ -474,7 +490,7 @@ class RunResult:
             time=t,
             displacement=disp,
             components=tuple(_component_from_json(c) for c in doc["components"]),
-            runout=Runout(**{k: float(v) for k, v in doc["runout"].items()}),
+            runout=_runout_from(model, doc),
             measuring_direction=_measuring_direction_from(doc),
             anderon=None if anderon is None else {k: float(v) for k, v in anderon.items()},
             details=details_from_json(model, doc),
@@ -566,6 +582,29 @@ def _measuring_direction_from(doc: dict[str, Any]) -> NDArray[np.float64]:
     return np.array([1.0, 0.0])
 
 
+def _runout_from(model: str, doc: dict[str, Any]) -> Runout:
+    """The ``runout`` object of a result JSON; null stays None (a figure the model lacks).
+
+    Files written before these figures were null hold 0.0 where the model had no figure: an
+    equilibrium result's four zeros and a radial model's axial 0.0 read back as None too.
+    """
+    figures: dict[str, float | None] = {
+        k: None if v is None else float(v) for k, v in doc["runout"].items()
+    }
+    if model == "equilibrium":  # a static position, never a runout record
+        figures = dict.fromkeys(figures)
+    radial_model = model not in AXIAL_MODELS and not (
+        model == "dynamic" and bool(doc.get("axial_dof", False))
+    )
+    if radial_model:
+        figures["axial_pp_m"] = None
+    return Runout(**figures)
+
+
+#: Models with an axial degree of freedom (``dynamic`` has one with ``axial_dof``):
+#: :attr:`RunResult.has_axial_freedom`.
+AXIAL_MODELS = frozenset({"quasi_static_3d", "spindle", "equilibrium"})
+
 #: Columns of :meth:`RunResult.to_dataframe` and their units.
 LINE_COLUMNS: dict[str, str] = {
     "direction": "-",
@@ -577,6 +616,61 @@ LINE_COLUMNS: dict[str, str] = {
     "label": "-",
     "top_source": "-",
 }
+
+
+def lines_dataframe(
+    results: Mapping[str, RunResult] | Sequence[RunResult], key: str = "run"
+) -> Any:
+    """The lines of several results in one :class:`pandas.DataFrame`, units kept.
+
+    ``pandas.concat`` keeps ``attrs`` only where every frame has the same ones, and the
+    ``model`` and ``title`` of two runs differ: concatenated, the units were lost. Here the
+    rows of each result get a column ``key`` naming the run, and ``attrs`` keeps ``units``
+    (column -> unit, ``key`` included) and, under ``runs``, each run's ``model``, ``title`` and
+    ``displacement_of``.
+
+    Parameters
+    ----------
+    results : mapping of str to RunResult, or sequence of RunResult
+        The runs, by name; a sequence names each run by its model (which must then differ).
+    key : str
+        Name of the column that says which run a row comes from.
+
+    Returns
+    -------
+    pandas.DataFrame
+        The columns of :meth:`RunResult.to_dataframe` plus ``key``, one row per line
+        (``pp_m`` [m], ``frequency_hz`` [Hz], ``phase_rad`` [rad]).
+
+    Raises
+    ------
+    ValueError
+        Two results of a sequence share a model, ``key`` is a column already, or no result.
+    ImportError
+        pandas is not installed (``pip install "runout[data]"``).
+    """
+    pd = _optional("pandas")
+    named = dict(results) if isinstance(results, Mapping) else {r.model: r for r in results}
+    if not isinstance(results, Mapping) and len(named) != len(results):
+        raise ValueError("two results of the same model: pass them as a mapping name -> result")
+    if not named:
+        raise ValueError("no result to put in the table")
+    if key in LINE_COLUMNS:
+        raise ValueError(f"key {key!r} is a column of the lines already")
+    frames = [r.to_dataframe().assign(**{key: name}) for name, r in named.items()]
+    df = pd.concat(frames, ignore_index=True)
+    df.attrs = {
+        "units": {**LINE_COLUMNS, key: "-"},
+        "runs": {
+            name: {
+                "model": r.model,
+                "title": r.title,
+                "displacement_of": displacement_of(r.model),
+            }
+            for name, r in named.items()
+        },
+    }
+    return df
 
 
 def _optional(module: str) -> Any:

@@ -600,7 +600,8 @@ def _print_study(summary: dict[str, Any], title: str, out: str | None) -> None:
         table.add_column(escape(col), justify="left" if col == "quantity" else "right")
 
     def fmt(value: float | None) -> str:
-        return "-" if value is None else format_length(value, unit).rsplit(" ", 1)[0]
+        # None: no sample gave the figure (failed, or not a quantity of the model): not 0
+        return "n/a" if value is None else format_length(value, unit).rsplit(" ", 1)[0]
 
     for name, stats in summary["runout"].items():
         table.add_row(escape(name), "", *(fmt(stats[k]) for k in stat_keys))

@@ -37,7 +37,60 @@ from __future__ import annotations
 import math
 from typing import Any
 
-__all__ = ["attribution_rows", "attribution_table_rows"]
+__all__ = ["attribution_rows", "attribution_table_rows", "ball_size_line", "ball_waviness_line"]
+
+
+def ball_waviness_line(lobes: int, sign: int, harmonic: int = 1) -> tuple[str, str]:
+    """Term and formula of the line of an element's ``lobes`` at ``harmonic`` × lobes f_b ± f_c.
+
+    Every model labels the ball-waviness lines through this one function, so that a line has
+    the same name in every model and its sign follows the frequency it sits at.
+
+    Parameters
+    ----------
+    lobes : int
+        2n, the lobe count of the element's diameter deviation (≥ 1) [-].
+    sign : {1, -1}
+        +1 for the line at ``harmonic·lobes·f_b + f_c``, -1 for ``|harmonic·lobes·f_b - f_c|``,
+        with f_b (element spin relative to the cage) and f_c (cage) both taken ≥ 0 [-].
+    harmonic : int
+        l, the power of the harmonic (1: the first-order line of seed 002 eq. 39) [-].
+
+    Returns
+    -------
+    term, formula : str
+        ``"2n f_b + f_c"`` (with ``", order l"`` for l > 1) and the frequency with the lobe
+        count written out, e.g. ``"4 f_b - f_c"``.
+
+    Notes
+    -----
+    Seed 002 (Anderon model) eq. 39 writes the two lines as 2n ν_b ± ν_c for the inner ring
+    rotating; with the outer ring rotating the element spins the other way relative to the
+    cage, so the same exponential lands on the other line. The sign here is the frequency's,
+    never the exponential's.
+    """
+    if sign not in (1, -1):
+        raise ValueError(f"sign must be +1 or -1, got {sign!r}")
+    if lobes < 1 or harmonic < 1:
+        raise ValueError(f"need lobes >= 1 and harmonic >= 1, got {lobes}, {harmonic}")
+    pm = "+" if sign > 0 else "-"
+    suffix = "" if harmonic == 1 else f", order {harmonic}"
+    return f"2n f_b {pm} f_c{suffix}", f"{harmonic * lobes} f_b {pm} f_c"
+
+
+def ball_size_line() -> tuple[str, str]:
+    """Term and formula of the line of an element's size error: the cage frequency.
+
+    Returns
+    -------
+    term, formula : str
+        ``("f_c", "f_c")``.
+
+    Notes
+    -----
+    Seed 002 (Anderon model) eq. 40 (B_A0): a larger element turns with the cage.
+    """
+    return "f_c", "f_c"
 
 
 def attribution_rows(
@@ -147,11 +200,12 @@ def attribution_rows(
     spin = "(d_m/2D)(1-γ²)"
     for n in range(1, n_max + 1):
         for s in (-1, 1):
+            term, _ = ball_waviness_line(2 * n, s)
             add(
                 "ball",
                 "waviness",
                 f"2n = {2 * n} (n={n})",
-                f"2n{spin} {'+' if s > 0 else '-'} {cage} (eq. 39)",
+                f"{term}: 2n{spin} {'+' if s > 0 else '-'} {cage} (eq. 39)",
                 2 * n * nu_b + s * nu_c,
             )
     add("ball", "flaw", "-", f"2{spin} (eq. 58)", 2 * nu_b)

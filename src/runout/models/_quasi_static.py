@@ -41,6 +41,7 @@ from runout.analysis.result_details import QuasiStaticDetails
 from runout.analysis.results import RunResult, Source
 from runout.base._threads import halves, in_spans, one_blas_thread
 from runout.base.errors import GeometryError
+from runout.geometry.attribution import ball_size_line, ball_waviness_line
 from runout.geometry.imperfections import BearingImperfections, Harmonics
 from runout.geometry.kinematics import bearing_frequencies
 
@@ -740,7 +741,8 @@ def _element_lines(
         k = int(k)
         if k == 0:
             pred = phasors.get("ball", j, 0, fc)
-            out.append(Candidate(fc, "radial", _src("ball", j, 0, "f_c", "f_c"), predicted=pred))
+            src = _src("ball", j, 0, *ball_size_line())
+            out.append(Candidate(fc, "radial", src, predicted=pred))
             if loaded:
                 for m in (2, 3):
                     src = _src("ball", j, 0, f"{m} f_c, load zone", f"{m} f_c")
@@ -756,10 +758,11 @@ def _element_lines(
                 freq = abs(kk * fb + sign * fc)
                 if freq <= 0.0:
                     continue
-                term = f"2n f_b {'+' if sign > 0 else '-'} f_c{kind}"
+                # the shared table (runout.geometry.attribution) names it as every model does
+                term, formula = ball_waviness_line(k, sign, order)
                 pred = phasors.get("ball", j, k, freq) if order == 1 else None
                 out.append(
-                    Candidate(freq, "radial", _src("ball", j, k, term, term), predicted=pred)
+                    Candidate(freq, "radial", _src("ball", j, k, term, formula), predicted=pred)
                 )
             if axial:
                 pred = phasors.get("ball", j, k, kk * fb) if order == 1 else None
@@ -1105,7 +1108,14 @@ def run_quasi_static(
         t, disp, lines, op.speed, directions=directions, kinematic=basis, floor=1e-9 * approach
     )
     split = split_runout(
-        t, disp, u, fit.components, op.speed, fit.residual, synchronous=basis.synchronous_sources
+        t,
+        disp,
+        u,
+        fit.components,
+        op.speed,
+        fit.residual,
+        synchronous=basis.synchronous_sources,
+        axial=not planar,  # the planar model has no axial degree of freedom
     )
     notes = (
         loss_note,

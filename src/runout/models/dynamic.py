@@ -336,7 +336,14 @@ def run(case: Any, progress: Callable[[float], None] | None = None) -> RunResult
     )
     comps = fit.components
     split = split_runout(
-        integ.time, disp, u, comps, op.speed, fit.residual, synchronous=basis.synchronous_sources
+        integ.time,
+        disp,
+        u,
+        comps,
+        op.speed,
+        fit.residual,
+        synchronous=basis.synchronous_sources,
+        axial=st.ndof == 3,  # the rotor is held axially unless [dynamics] axial_dof
     )
     notes = list(st.notes) + notes + list(fit.notes) + list(split.notes)
     fn = integ.natural_frequencies

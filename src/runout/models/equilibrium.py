@@ -966,7 +966,8 @@ def run(case: Case) -> RunResult:
     q = sol.displacement
     notes = [
         "static equilibrium of the perfect bearing at one instant: no runout history "
-        "(components empty); displacement = inner ring relative to the outer ring "
+        "(components empty, runout figures null: a position, not a runout); displacement = "
+        "inner ring relative to the outer ring "
         "(mean_displacement_m from the rings centred; ring_displacement.axial_m from the "
         "contact on one groove flank, as in seed 001)",
     ]
@@ -1017,7 +1018,8 @@ def run(case: Case) -> RunResult:
             ]
         ),
         components=(),
-        runout=Runout(0.0, 0.0, 0.0, 0.0),
+        # one instant of the perfect bearing: no record, so no runout figure (null, not 0)
+        runout=Runout(None, None, None, None),
         details=details,
         notes=tuple(notes),
         solution=sol,

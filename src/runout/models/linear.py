@@ -77,7 +77,7 @@ from runout.analysis.spectrum import (
     anderon_bands_from_waveform,
 )
 from runout.base.errors import GeometryError
-from runout.geometry.attribution import attribution_rows
+from runout.geometry.attribution import attribution_rows, ball_size_line, ball_waviness_line
 from runout.geometry.bearing import Bearing, Operation
 from runout.geometry.imperfections import BearingImperfections, Harmonics
 from runout.geometry.kinematics import Frequencies, bearing_frequencies, pitch_ratio
@@ -253,8 +253,11 @@ class Terms:
     lobes : ndarray of int
         Order of the source harmonic (slant: 2; element size error: 0).
     kind : ndarray of int
-        Which exponential: 0 = ``e^{+ik...}`` (k+1 ≡ 0 mod Z for rings; ball "A"),
-        1 = ``e^{-ik...}`` (k-1 ≡ 0; ball "B"), 2 = element size error, 3 = slant.
+        Which exponential: 0 = ``e^{+ik...}`` (k+1 ≡ 0 mod Z for rings; for balls the line at
+        2n f_b + f_c, seed 002's "A"), 1 = ``e^{-ik...}`` (k-1 ≡ 0; for balls the line at
+        |2n f_b - f_c|, "B"), 2 = element size error, 3 = slant. A ball's kind names the
+        frequency, not the exponential: with the outer ring turning, ν_b < 0 and
+        ``e^{i(ν_c + mν_b)θ}`` sits at |2n f_b - f_c| (kind 1).
     element : ndarray of int
         0-based element for ball terms, -1 otherwise.
     """
@@ -419,7 +422,10 @@ def closed_form_terms(
         ]
         lo += [m[zero], m[pos], m[pos]]
         npos = int(pos.sum())
-        ki += [np.full(int(zero.sum()), 2), np.zeros(npos, np.int64), np.ones(npos, np.int64)]
+        # kind 0 is the line at 2n f_b + f_c: ν_c + mν_b when spin and cage turn the same way
+        same_sense = r.spin * r.cage >= 0.0
+        plus, minus = np.zeros(npos, np.int64), np.ones(npos, np.int64)
+        ki += [np.full(int(zero.sum()), 2), *((plus, minus) if same_sense else (minus, plus))]
         el += [np.full(int(zero.sum()) + 2 * npos, j)]
     if om:
         omega = np.concatenate(om)
@@ -487,14 +493,11 @@ def _term_source(
     if part == 3:
         return Source("slant", None, None, "2 per rev of the inner ring (eq. 35)", "2 f_i")
     if part == 2:
+        # the shared table names ball lines alike in every model (seed 002 eq. 39-40)
         if kind == 2:
-            sym = "B_A0, eq. 40" if inner_rotating else "eq. 40"
-            return Source("ball", element + 1, 0, f"f_c ({sym})", "f_c")
-        n = lobes // 2
-        sign = "+" if kind == 0 else "-"
-        sym = f"B_{'A' if kind == 0 else 'B'}{n}, eq. 39" if inner_rotating else "eq. 39"
+            return Source("ball", element + 1, 0, *ball_size_line())
         return Source(
-            "ball", element + 1, lobes, f"2n f_b {sign} f_c ({sym})", f"{lobes} f_b {sign} f_c"
+            "ball", element + 1, lobes, *ball_waviness_line(lobes, 1 if kind == 0 else -1)
         )
     name = "inner" if part == 0 else "outer"
     ring = "i" if part == 0 else "o"
@@ -713,9 +716,9 @@ def _term_label(part: int, lobes: int, kind: int, z: int, inner_rotating: bool) 
             sym = "B_A0 = f_c/f" if inner_rotating else "f_c/f"
             return f"ball size error (order 0): {sym} (eq. 40)"
         n = lobes // 2
-        sign = "+" if kind == 0 else "-"
         sym = f"B_{'A' if kind == 0 else 'B'}{n} = " if inner_rotating else ""
-        return f"ball waviness {lobes} lobes: {sym}{lobes} f_b/f {sign} f_c/f (eq. 39)"
+        _, formula = ball_waviness_line(lobes, 1 if kind == 0 else -1)
+        return f"ball waviness {lobes} lobes: {sym}{formula} (eq. 39)"
     ring = "i" if part == 0 else "o"
     k = lobes
     if kind == 0:
@@ -1282,6 +1285,7 @@ def run(case: Any) -> LinearResult:
         rt.rotation_hz,
         residual,
         synchronous=synchronous,
+        axial=False,  # a radial model: no axial degree of freedom
     )
     notes += split.notes
     variance = float(np.sum(np.var(displacement[:2], axis=1)))

@@ -353,7 +353,7 @@ def run(case: Case) -> RunResult:
         )
         residual = None if residual is None else -residual
     u_shaft = shaft * geo.load_direction
-    split = split_runout(time, disp, u_shaft, comps, f_rot, residual)
+    split = split_runout(time, disp, u_shaft, comps, f_rot, residual, axial=False)
     notes.extend(split.notes)
     pairs, counts = np.unique(np.sort(sol.pair, axis=1), axis=0, return_counts=True)
     touching = sol.touching.sum(axis=1)
@@ -395,7 +395,7 @@ def run(case: Case) -> RunResult:
         components=comps,
         runout=Runout(
             radial_pp_m=sol.runout,
-            axial_pp_m=0.0,
+            axial_pp_m=None,  # a planar model: no axial degree of freedom
             rro_pp_m=split.runout.rro_pp_m,
             nrro_pp_m=split.runout.nrro_pp_m,
         ),

@@ -233,7 +233,9 @@ def _montecarlo_panels(
     candidates: list[tuple[str, str, np.ndarray, str, str | None]] = [
         (name, name, np.asarray(result.runout[key])[ok], "normal", key)
         for key, name in _RUNOUT_NAMES.items()
-        if key in result.runout and (key != "axial_pp_m" or np.any(result.runout[key][ok]))
+        # the axial p-p of a planar lot is NaN (not a figure of the model): no panel
+        if key in result.runout
+        and (key != "axial_pp_m" or np.any(np.nan_to_num(result.runout[key][ok])))
     ]
     rows = [row for row in result.line_table() if row[0] in ("x", "z")][:top]
     names = _unique_names([(d, label) for d, _f, label, _pp in rows])

@@ -385,6 +385,9 @@ def _run_first_screen(
         elif key == "nrro_pp_m":
             sub = "non-repeatable"
         cards.append(card(name, length(runout[key], unit, resolution), sub))
+    if "axial_pp_m" in runout and runout["axial_pp_m"] is None and model != "equilibrium":
+        # null in the JSON: the model has no axial degree of freedom (not a zero runout)
+        cards.append(card(QUANTITY_NAMES["axial_pp"], "n/a", "no axial freedom"))
     if isinstance(result.get("verdict"), dict):
         cards.append(_verdict_card(result["verdict"], unit))
     iso = result.get("iso15242")

@@ -482,7 +482,7 @@ def _spindle_rows(details: SpindleDetails) -> Rows:
     """Tilt, each bearing's runout at its plane and the nose stiffness of a spindle run."""
     from runout.base.display import length_unit
 
-    unit = length_unit(b.runout.radial_pp_m for b in details.bearings)
+    unit = length_unit(b.runout.radial_pp_m or 0.0 for b in details.bearings)
     tilt = details.tilt_pp_rad
     rows: Rows = [
         (
@@ -530,6 +530,10 @@ def _spindle_rows(details: SpindleDetails) -> Rows:
     return rows
 
 
+#: The axial p-p of a model without an axial degree of freedom.
+NOT_AXIAL = "n/a (no axial freedom)"
+
+
 def _run_sections(result: RunResult) -> list[tuple[str, Rows]]:
     """The tables every model with a record shows (:func:`result_sections`)."""
     from runout.base.display import length_unit
@@ -538,7 +542,9 @@ def _run_sections(result: RunResult) -> list[tuple[str, Rows]]:
     resolution = result.resolution_m()
     zeroed: list[float] = []  # figures shown as 0 for being below the resolution
 
-    def show(value: float, unit: tuple[str, float]) -> str:
+    def show(value: float | None, unit: tuple[str, float], absent: str = "n/a") -> str:
+        if value is None:  # not a figure of this model (Runout): n/a, never 0
+            return absent
         if resolution is not None and 0.0 < abs(value) < resolution:
             zeroed.append(value)
         return _length_number(value, unit, resolution)
@@ -547,7 +553,7 @@ def _run_sections(result: RunResult) -> list[tuple[str, Rows]]:
     label = "radial p-p (measuring direction)"
     if isinstance(details, RollerDetails):  # the rigid model: Kia or Kea
         label += f" = {details.iso492.quantity} (ISO 492)"
-    figures: list[tuple[str, list[float]]] = [(label, [r.radial_pp_m])]
+    figures: list[tuple[str, list[float | None]]] = [(label, [r.radial_pp_m])]
     if isinstance(details, RollerDetails):  # it moves freely across the load
         figures.append(("radial p-p across the load", [details.horizontal_pp_m]))
     figures += [
@@ -557,9 +563,14 @@ def _run_sections(result: RunResult) -> list[tuple[str, Rows]]:
     ]
     # the p-p figures share one unit; the mean position (play, approaches: often far
     # larger) has its own, so that a nm-size runout is not shown as 0.01 um
-    unit = length_unit(v for _, values in figures for v in values)
+    unit = length_unit(v for _, values in figures for v in values if v is not None)
     rows: Rows = [
-        (name, ", ".join(show(v, unit) for v in values), unit[0]) for name, values in figures
+        (
+            name,
+            ", ".join(show(v, unit, NOT_AXIAL if name == "axial p-p" else "n/a") for v in values),
+            unit[0] if None not in values else "",
+        )
+        for name, values in figures
     ]
     if result.time.size or result.record_mean is not None:
         mean = result.mean_displacement()
@@ -706,10 +717,13 @@ def _equilibrium_sections(result: RunResult, details: EquilibriumDetails) -> lis
     return sections
 
 
-def _length_number(value: float, unit: tuple[str, float], resolution: float | None) -> str:
-    """The number of :func:`runout.base.display.format_length`, without the unit."""
+def _length_number(value: float | None, unit: tuple[str, float], resolution: float | None) -> str:
+    """The number of :func:`runout.base.display.format_length`, without the unit; ``n/a``
+    for None (a figure the model does not have, never shown as 0)."""
     from runout.base.display import format_length
 
+    if value is None:
+        return "n/a"
     return format_length(value, unit, resolution_m=resolution).rsplit(" ", 1)[0]
 
 

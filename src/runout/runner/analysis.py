@@ -155,7 +155,10 @@ def verdict_of(result: RunResult, limit: float, quantity: str) -> Verdict:
         value = float(result.iso15242.bands[quantity.split(".", 1)[1]].rms_um_per_s)
         limit_um = limit * 1e6
         return Verdict(quantity, limit_um, value, bool(value <= limit_um), "um/s")
-    value_m = float(getattr(result.runout, f"{quantity}_m"))
+    figure = getattr(result.runout, f"{quantity}_m")
+    if figure is None:  # the case conventions refuse such a limit first
+        raise ValueError(f"{quantity}: the {result.model} model does not compute it")
+    value_m = float(figure)
     return Verdict(quantity, limit, value_m, bool(value_m <= limit), "m")
 
 

@@ -182,7 +182,8 @@ def evaluate_chunk(task: ChunkTask) -> dict[str, Any]:
         try:
             result = run_model(_variant(task, model, values))
             figures = result.runout.to_json()
-            runout = [float(figures[k]) for k in RUNOUT_KEYS]
+            # None: a figure the model does not have (a radial model's axial p-p), not 0
+            runout = [None if (v := figures[k]) is None else float(v) for k in RUNOUT_KEYS]
             comps = [
                 (c.direction, c.frequency_hz, study_key(c.sources) or c.label, c.pp_m)
                 for c in result.components
@@ -327,7 +328,7 @@ def _evaluate_batched(
 
     runout = chunk["runout"]
     runout["radial_pp_m"] = column(rows.radial)
-    runout["axial_pp_m"] = column(np.zeros(len(points)))
+    runout["axial_pp_m"] = [None] * len(points)  # the planar model: no axial freedom
     runout["rro_pp_m"] = column(rows.rro)
     runout["nrro_pp_m"] = column(rows.nrro)
     if not ok.any():

@@ -138,7 +138,7 @@ def _point(case: Any, result: RunResult) -> SweepPoint:
         contact_angle_deg=math.degrees(result.contact_angle),
         ball_passage_hz=fbp,
         natural_frequencies_hz=list(details.natural_frequencies_hz),
-        radial_pp_m=result.runout.radial_pp_m,
+        radial_pp_m=float(result.runout.radial_pp_m or 0.0),  # the dynamic model has a record
         ball_passage_pp_m=radial_bp,
         mean_displacement_m=result.mean_displacement()[:2],
         spectrum_hz=[float(f) for f in spec.frequencies[keep]],

@@ -217,3 +217,19 @@ def test_study_plot(sweep: StudyResult) -> None:
         sweep.plot(kind="histograms")
     with pytest.raises(ValueError, match="not a drawn swept key"):
         sweep.plot(quantity="operation.speed")
+
+
+def test_lines_dataframe_keeps_units_and_names_each_run(tada: RunResult, linear: RunResult) -> None:
+    from runout.analysis.results import lines_dataframe
+
+    both = lines_dataframe([tada, linear], key="model")
+    assert both.attrs["units"]["pp_m"] == "m" and both.attrs["units"]["model"] == "-"
+    assert set(both.attrs["runs"]) == {tada.model, linear.model}
+    assert len(both) == len(tada.to_dataframe()) + len(linear.to_dataframe())
+    assert (both["model"] == tada.model).sum() == len(tada.to_dataframe())
+    with pytest.raises(ValueError, match="same model"):
+        lines_dataframe([linear, linear])
+    with pytest.raises(ValueError, match="already"):
+        lines_dataframe({"a": linear}, key="pp_m")
+    named = lines_dataframe({"a": linear, "b": linear})
+    assert set(named["run"]) == {"a", "b"}

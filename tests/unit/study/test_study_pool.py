@@ -141,9 +141,10 @@ def _per_row_reference(
             for k in st_mod.RUNOUT_KEYS:
                 chunk["runout"][k].append(None)
             continue
-        figures = (rows.radial[row], 0.0, rows.rro[row], rows.nrro[row])
+        # the planar model has no axial freedom: its axial p-p is None, not 0
+        figures = (rows.radial[row], None, rows.rro[row], rows.nrro[row])
         for k, v in zip(st_mod.RUNOUT_KEYS, figures, strict=True):
-            chunk["runout"][k].append(float(v))
+            chunk["runout"][k].append(None if v is None else float(v))
         chunks_mod._add_lines(
             chunk,
             row,
