@@ -10,7 +10,9 @@ key and the models that honour it; none gives a number of the other kind.
 The reference solutions below are static force balances of the inner ring on the Z balls with
 the exact curvature-centre geometry (Harris, *Rolling Bearing Analysis*: curvature centres
 A = (f_i + f_o - 1) D apart, Q = K_n δ^1.5), tilt held, averaged over the cage positions of one
-ball pitch; they share only K_n and the preloaded angle with the product.
+ball pitch; they share only K_n and the preloaded angle with the product. The equilibrium
+model's inner ring is free to tilt by default, a different problem; with ``[analysis] ring_tilt
+= "held"`` it solves the reference's, at its one instant (the reference at its balls' azimuths).
 """
 
 from __future__ import annotations
@@ -89,9 +91,7 @@ def _refused(path: Path, *extra: str) -> str:
     return lines[0]
 
 
-def _reference(
-    kn: float, alpha_p: float, *, held: bool, cages: np.ndarray | None = None
-) -> float:
+def _reference(kn: float, alpha_p: float, *, held: bool, cages: np.ndarray | None = None) -> float:
     """Mean y [m] of the static shaft, spring (``held=False``) or position preload.
 
     Averaged over the cage positions ``cages`` [rad] (ball 1's azimuth), by default eight
