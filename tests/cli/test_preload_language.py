@@ -10,7 +10,9 @@ key and the models that honour it; none gives a number of the other kind.
 The reference solutions below are static force balances of the inner ring on the Z balls with
 the exact curvature-centre geometry (Harris, *Rolling Bearing Analysis*: curvature centres
 A = (f_i + f_o - 1) D apart, Q = K_n δ^1.5), tilt held, averaged over the cage positions of one
-ball pitch; they share only K_n and the preloaded angle with the product.
+ball pitch; they share only K_n and the preloaded angle with the product. The equilibrium
+model's inner ring is free to tilt by default, a different problem; with ``[analysis] ring_tilt
+= "held"`` it solves the reference's, at its one instant (the reference at its balls' azimuths).
 """
 
 from __future__ import annotations
@@ -42,7 +44,9 @@ RADIAL = 200.0
 AXIAL = 20.0
 
 
-def _case(tmp_path: Path, model: str, *, operation: str = "", dynamics: str = "") -> Path:
+def _case(
+    tmp_path: Path, model: str, *, operation: str = "", dynamics: str = "", analysis: str = ""
+) -> Path:
     text = f"""title = "6204, 10 um play, 200 N radial, 20 N axial"
 [bearing]
 type = "ball"
@@ -61,6 +65,7 @@ axial_load = "{AXIAL} N"
 model = "{model}"
 revolutions = 1
 samples = 256
+{analysis}
 """
     if model == "dynamic":
         text += f'[dynamics]\nmass = "0.5 kg"\ndamping = "3000 N*s/m"\n{dynamics}'
@@ -86,13 +91,19 @@ def _refused(path: Path, *extra: str) -> str:
     return lines[0]
 
 
-def _reference(kn: float, alpha_p: float, *, held: bool) -> float:
-    """Mean y [m] of the static shaft, spring (``held=False``) or position preload."""
+def _reference(kn: float, alpha_p: float, *, held: bool, cages: np.ndarray | None = None) -> float:
+    """Mean y [m] of the static shaft, spring (``held=False``) or position preload.
+
+    Averaged over the cage positions ``cages`` [rad] (ball 1's azimuth), by default eight
+    across one ball pitch.
+    """
     a = (F_I + F_O - 1.0) * D
     cos0 = 1.0 - PLAY / (2.0 * a)  # Harris: P_d = 2A(1 - cos α⁰)
     zp = a * cos0 * math.tan(alpha_p)  # the rings' axial offset under the axial load alone
     ys = []
-    for cage in np.linspace(0.0, 2.0 * math.pi / Z, 8, endpoint=False):
+    if cages is None:
+        cages = np.linspace(0.0, 2.0 * math.pi / Z, 8, endpoint=False)
+    for cage in cages:
         theta = cage + 2.0 * math.pi * np.arange(Z) / Z
 
         def residual(q_um: np.ndarray, theta: np.ndarray = theta) -> np.ndarray:
@@ -133,6 +144,88 @@ def test_dynamic_spring_preload_gives_the_exact_spring_solution(
     assert out["mean_displacement_m"][1] == pytest.approx(exact, rel=0.01)
     assert out["preload"] == "spring"
     assert len(out["mean_displacement_m"]) == 3  # z is a degree of freedom
+
+
+def _equilibrium_reference(tmp_path: Path, out: dict[str, Any]) -> float:
+    """The spring solution at the equilibrium model's one instant (its balls' azimuths)."""
+    kn = _json(_case(tmp_path, "dynamic"))["contact_stiffness_n_per_m1_5"]
+    azimuth = np.radians([row["azimuth_deg"] for row in out["balls"]])
+    assert azimuth == pytest.approx(azimuth[0] + 2.0 * math.pi * np.arange(Z) / Z, abs=1e-12)
+    return _reference(kn, 0.0, held=False, cages=azimuth[:1])
+
+
+def test_equilibrium_with_the_tilt_held_gives_the_exact_spring_solution(tmp_path: Path) -> None:
+    # the reference holds the tilt, as quasi_static_3d and dynamic do: so must equilibrium
+    out = _json(_case(tmp_path, "equilibrium", analysis='ring_tilt = "held"'))
+    exact = _equilibrium_reference(tmp_path, out)
+    assert out["mean_displacement_m"][1] == pytest.approx(exact, rel=0.01)
+    # and the cage-averaged solution of the other models, the ball under the load or not
+    averaged = _dynamic_reference(_json(_case(tmp_path, "dynamic")), held=False)
+    assert out["mean_displacement_m"][1] == pytest.approx(averaged, rel=0.01)
+    assert out["ring_tilt"] == "held" and out["held_dofs"] == ["tilt_x", "tilt_y"]
+    assert out["ring_displacement"]["tilt_x_rad"] == 0.0
+    assert out["ring_displacement"]["tilt_y_rad"] == 0.0
+    # the balls' moment is now a reaction: the radial load's offset from the ball plane
+    # about x (the load along -y), none about y
+    mx, my = out["reaction_moment_n_m"]
+    assert abs(mx) > 1e-3 * RADIAL * DM / 2 and abs(my) < 1e-9 * abs(mx)
+    assert len(out["stiffness_matrix"]["matrix"]) == 5
+    assert any("ring_tilt" in n and "reaction" in n for n in out["notes"])
+
+
+def test_equilibrium_with_the_tilt_free_answers_another_problem(tmp_path: Path) -> None:
+    out = _json(_case(tmp_path, "equilibrium"))
+    held = _json(_case(tmp_path, "equilibrium", analysis='ring_tilt = "held"'))
+    exact = _equilibrium_reference(tmp_path, out)
+    # the ring tilts into the load: it drops by more than the tilt-held answer
+    assert out["mean_displacement_m"][1] < exact * 1.05
+    assert abs(out["mean_displacement_m"][1] - held["mean_displacement_m"][1]) > 0.05 * abs(exact)
+    assert out["ring_tilt"] == "free" and out["held_dofs"] == []
+    assert out["reaction_moment_n_m"] == [0.0, 0.0]
+    notes = [n for n in out["notes"] if "free to tilt" in n]
+    assert len(notes) == 1 and 'ring_tilt = "held"' in notes[0]
+
+
+def test_equilibrium_reaction_moment_applied_holds_the_free_ring_untilted(
+    tmp_path: Path,
+) -> None:
+    # the reaction moment is the moment load that holds a free ring at zero tilt: applied as
+    # moment_load, the free ring stays where the held one is
+    held = _json(_case(tmp_path, "equilibrium", analysis='ring_tilt = "held"'))
+    mx, my = held["reaction_moment_n_m"]
+    moment = f"moment_load = {math.hypot(mx, my)!r}\nmoment_load_direction = {math.atan2(my, mx)!r}"
+    free = _json(_case(tmp_path, "equilibrium", operation=moment))
+    tilt = free["ring_displacement"]
+    scale = abs(held["mean_displacement_m"][1]) / (DM / 2)  # a tilt of this size would matter
+    assert abs(tilt["tilt_x_rad"]) < 1e-6 * scale and abs(tilt["tilt_y_rad"]) < 1e-6 * scale
+    assert free["mean_displacement_m"] == pytest.approx(held["mean_displacement_m"], abs=1e-12)
+
+
+def test_equilibrium_refuses_a_moment_on_a_ring_held_against_tilt(tmp_path: Path) -> None:
+    path = _case(
+        tmp_path,
+        "equilibrium",
+        operation="moment_load = 0.1",
+        analysis='ring_tilt = "held"',
+    )
+    line = _refused(path)
+    assert "analysis.ring_tilt" in line and "moment_load" in line
+
+
+@pytest.mark.parametrize("model", ["quasi_static_3d", "dynamic"])
+@pytest.mark.parametrize("tilt", ["held", "free"])
+def test_ring_tilt_is_refused_outside_the_equilibrium_model(
+    tmp_path: Path, model: str, tilt: str
+) -> None:
+    line = _refused(_case(tmp_path, model, analysis=f'ring_tilt = "{tilt}"'))
+    assert "analysis.ring_tilt" in line and '"equilibrium"' in line
+
+
+def test_equilibrium_summary_names_the_reaction_moment(tmp_path: Path) -> None:
+    path = _case(tmp_path, "equilibrium", analysis='ring_tilt = "held"')
+    result = runner.invoke(app, ["run", str(path), "--out", str(tmp_path / "out")])
+    assert result.exit_code == 0, result.stderr
+    assert "reaction moment" in result.stdout and "tilt held" in result.stdout
 
 
 def test_dynamic_default_says_the_preload_is_a_spring(tmp_path: Path) -> None:

@@ -372,6 +372,15 @@ class EquilibriumDetails:
         Per-ball table (SI values, unit in the key; ``ball`` 1-based).
     newton_iterations : int
         Newton iterations of the ring solve.
+    ring_tilt : {"free", "held"}
+        The inner ring's tilts free, or held at 0 (``[analysis] ring_tilt``).
+    held_dofs : tuple of str
+        Degrees of freedom held at 0 instead of solved (``("tilt_x", "tilt_y")`` when the
+        tilt is held, else empty); the stiffness matrix is over all five either way.
+    reaction_moment_n_m : tuple of float
+        (M_x, M_y) [N m]: the moment the tilt restraint exerts on the inner ring to hold it
+        untilted, in the sense of ``moment_load`` (the moment load that would hold a free
+        ring at zero tilt); (0, 0) when the tilt is free.
     """
 
     race_control: str
@@ -382,6 +391,9 @@ class EquilibriumDetails:
     outer_contact_angle_deg: tuple[float, ...]
     balls: tuple[Row, ...]
     newton_iterations: int
+    ring_tilt: str = "free"
+    held_dofs: tuple[str, ...] = ()
+    reaction_moment_n_m: tuple[float, float] = (0.0, 0.0)
 
     def to_json(self) -> dict[str, Any]:
         """The equilibrium model's JSON entries.
@@ -389,12 +401,16 @@ class EquilibriumDetails:
         Returns
         -------
         dict
-            Race control, ring displacement [m, rad], stiffness matrices, contact angles [deg],
-            per-ball table and Newton iterations.
+            Race control, ring tilt (free or held), ring displacement [m, rad], held degrees of
+            freedom, reaction moment [N m], stiffness matrices, contact angles [deg], per-ball
+            table and Newton iterations.
         """
         return {
             "race_control": self.race_control,
+            "ring_tilt": self.ring_tilt,
             "ring_displacement": self.ring_displacement.to_json(),
+            "held_dofs": list(self.held_dofs),
+            "reaction_moment_n_m": list(self.reaction_moment_n_m),
             "stiffness_matrix": self.stiffness_matrix.to_json(),
             "radial_stiffness": self.radial_stiffness.to_json(),
             "inner_contact_angle_deg": list(self.inner_contact_angle_deg),
@@ -416,6 +432,7 @@ class EquilibriumDetails:
         -------
         EquilibriumDetails
         """
+        moment = doc.get("reaction_moment_n_m", (0.0, 0.0))
         return cls(
             race_control=str(doc["race_control"]),
             ring_displacement=RingDisplacement(**doc["ring_displacement"]),
@@ -425,6 +442,10 @@ class EquilibriumDetails:
             outer_contact_angle_deg=tuple(float(v) for v in doc["outer_contact_angle_deg"]),
             balls=tuple(dict(row) for row in doc["balls"]),
             newton_iterations=int(doc["newton_iterations"]),
+            # results written before ring_tilt existed: the ring was free to tilt
+            ring_tilt=str(doc.get("ring_tilt", "free")),
+            held_dofs=tuple(str(d) for d in doc.get("held_dofs", ())),
+            reaction_moment_n_m=(float(moment[0]), float(moment[1])),
         )
 
 

@@ -231,6 +231,28 @@ TERMS: tuple[Term, ...] = (
         "–",
         "fraction of a Monte Carlo lot within the limit, Clopper–Pearson 95 % interval",
     ),
+    # ------------------------------------------------------------------ ring tilt
+    Term(
+        ("ring_tilt",),
+        "–",
+        "–",
+        '`[analysis]` key and JSON entry of the equilibrium model: "free" (the balls\' '
+        'moment balances moment_load) or "held" (θ_x = θ_y = 0 imposed)',
+    ),
+    Term(
+        ("held_dofs",),
+        "–",
+        "–",
+        "equilibrium: the degrees of freedom held at 0 instead of solved (tilt_x, tilt_y "
+        "when ring_tilt is held); `stiffness_matrix` stays over all five",
+    ),
+    Term(
+        ("reaction_moment_n_m",),
+        "M_x, M_y",
+        "N m",
+        "equilibrium with the tilt held: the moment the restraint exerts on the inner ring to "
+        "hold it untilted, in the sense of moment_load (0 when the tilt is free)",
+    ),
     # ------------------------------------------------------------------ stiffness
     Term(
         ("stiffness_matrix",),

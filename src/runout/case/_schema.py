@@ -572,6 +572,15 @@ class AnalysisSpec(_Table):
             "gyroscopic moment in the ball balance; seed 001 eq. 3-4)."
         ),
     )
+    ring_tilt: Literal["free", "held"] | None = Field(
+        None,
+        description=(
+            'model = "equilibrium" only: "free" (default): the inner ring tilts until the '
+            'balls\' moment balances moment_load; "held": its tilts are held at 0 (as the 3-DOF '
+            "models hold them), the balls' moment on it is a reaction (JSON "
+            "reaction_moment_n_m); refused with a moment_load."
+        ),
+    )
     bands: Literal["anderon", "iso15242"] | None = Field(
         None,
         description=(

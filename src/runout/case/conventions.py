@@ -238,6 +238,7 @@ _ANGLE_FROM_CLEARANCE = (
     "is bearing.nominal_contact_angle"
 )
 _NO_TILT = "it has no tilt degree of freedom"
+_TILT_HELD = "it always holds the ring's tilt at 0 (it has no tilt degree of freedom)"
 _SPRING_ONLY = "it solves the rings' axial position under a constant axial force (a spring)"
 _SLANT = "it has no raceway slant (seed 002 eq. 34 is a linear-model term)"
 _RING_KINEMATICS = "the rigid constraint model turns one ring and holds the other still"
@@ -524,6 +525,24 @@ KEYS: tuple[KeyConvention, ...] = (
         "-",
         "it is an equilibrium-model option",
         _table_key("analysis", "race_control"),
+    ),
+    KeyConvention(
+        "analysis.ring_tilt",
+        "The inner ring's tilts in the equilibrium model: \"free\" (default; the balls' moment "
+        'balances moment_load) or "held" at 0, the balls\' moment then a reaction (JSON '
+        "reaction_moment_n_m); held with a moment_load is refused.",
+        "-",
+        (R, R, R, H, R, R, R),
+        {
+            "linear": _NO_TILT,
+            "quasi_static_2d": _TWO_D + ": " + _NO_TILT,
+            "quasi_static_3d": _TILT_HELD,
+            "dynamic": _TILT_HELD,
+            "roller_constraint": _TWO_D + ": " + _NO_TILT,
+            "spindle": "the tilt of its shaft follows from the bearing set and the shaft, not "
+            "from this key",
+        },
+        _table_key("analysis", "ring_tilt"),
     ),
     KeyConvention(
         "analysis.bands",

@@ -201,6 +201,9 @@ class Analysis:
         Contact model of the linear model.
     race_control : {"outer", "inner", "none"}
         Raceway that resists the gyroscopic moment (equilibrium model).
+    ring_tilt : {"free", "held"}
+        The inner ring's tilts free (the balls' moment balances the moment load) or held at
+        0 (equilibrium model).
     bands : {"anderon", "iso15242"} or None
         Band values formed from the lines, if any.
     limit : float or None
@@ -215,6 +218,7 @@ class Analysis:
     samples: int = 4096
     linear_variant: str = "radial_spring"
     race_control: str = "outer"
+    ring_tilt: str = "free"
     bands: str | None = None
     limit: float | None = None
     limit_on: str = "radial_pp"
@@ -555,6 +559,8 @@ def parse_case(
         samples=spec.analysis.samples,
         linear_variant=spec.analysis.linear_variant,
         race_control=spec.analysis.race_control,
+        # unset: the model's own (free; the case re-serialised for a study keeps it unset)
+        ring_tilt=spec.analysis.ring_tilt or "free",
         bands=spec.analysis.bands,
         limit=(
             None

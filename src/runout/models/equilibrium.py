@@ -53,6 +53,14 @@ moment arm :math:`P_{mj} = P_{aj}\Re_i + \lambda_{ij} f_i M_{gj}`:
     \sum_j P_{aj} = F_a,\quad \sum_j P_{rj}(\cos\psi_j, \sin\psi_j) = (F_x, F_y),\quad
     \sum_j P_{mj}(\sin\psi_j, -\cos\psi_j) = (M_x, M_y).
 
+Tilt held (``[analysis] ring_tilt = "held"``). The ring's two moment equations are replaced by
+:math:`\theta_x = \theta_y = 0`: the ring Newton solves the three force equations for
+:math:`(\delta_a, \delta_x, \delta_y)` and the balls' moment at the solution,
+:math:`\sum_j P_{mj}(\sin\psi_j, -\cos\psi_j)`, is the reaction of the restraint that holds the
+ring untilted (the moment load that would hold a free ring there). This is the problem the
+three-degree-of-freedom models (``quasi_static_3d``, ``dynamic``) solve; the stiffness matrix is
+still the full 5×5 at that solution.
+
 Solution (seed 001 Fig. 2: ring Newton outside, ball Newton inside). For given ring
 displacements each ball's two equations are solved for :math:`(X_{1j}, X_{2j})` by a 2×2 Newton
 iteration (eq. 5-6 are eliminated exactly, so the four per-ball unknowns of the paper reduce to
@@ -60,8 +68,9 @@ two); the ring's five equations are solved by Newton's method whose Jacobian is 
 implicit differentiation of the converged ball states
 (:math:`dP/du = \partial P/\partial u - \partial P/\partial X\,(\partial g/\partial X)^{-1}
 \partial g/\partial u`, partial derivatives by forward-mode differentiation written out
-by the chain rule in the kernel, exact to round-off). That Jacobian at the solution *is* the bearing stiffness matrix. The ball solve and
-the ring force with its Jacobian are one compiled kernel
+by the chain rule in the kernel, exact to round-off). That Jacobian at the solution *is* the
+bearing stiffness matrix. The ball solve and the ring force with its Jacobian are one compiled
+kernel
 (:mod:`runout.models._equilibrium_kernels`); the ring Newton, which needs a handful of them,
 stays here. The speed effects are switched on after the static solution has converged
 (Newton–Raphson from the low-speed solution). The Hertz constants depend on the contact angles;
@@ -137,6 +146,7 @@ if TYPE_CHECKING:
 
 __all__ = [
     "DOF_NAMES",
+    "RING_TILTS",
     "EquilibriumResult",
     "EquilibriumSolution",
     "ball_speeds",
@@ -149,6 +159,10 @@ MODEL = "equilibrium"
 TWO_PI = 2.0 * math.pi
 #: Order of the ring degrees of freedom in displacements and stiffness matrices.
 DOF_NAMES = ("axial", "x", "y", "tilt_x", "tilt_y")
+#: Values of ``[analysis] ring_tilt``: the inner ring's tilts solved, or held at 0.
+RING_TILTS = ("free", "held")
+#: The degrees of freedom (indices into :data:`DOF_NAMES`) the ring Newton solves.
+_SOLVED = {"free": np.arange(5), "held": np.arange(3)}
 _LAMBDA = {"outer": (0.0, 2.0), "inner": (2.0, 0.0), "none": (0.0, 0.0)}
 _RING_ITER = 80
 _ANGLE_LOOPS = 12
@@ -285,7 +299,13 @@ class EquilibriumSolution:
     iterations : int
         Ring Newton iterations (all stages).
     residual : float
-        Largest ring-force residual at the solution [N or N m].
+        Largest residual of the solved ring equations at the solution [N or N m].
+    held_dofs : tuple of str
+        Degrees of freedom held at 0 instead of solved (:data:`DOF_NAMES`; the tilts when
+        ``ring_tilt = "held"``).
+    reaction_moment : ndarray, shape (2,)
+        (M_x, M_y) [N m] the tilt restraint exerts on the inner ring, in the sense of the
+        moment load: the balls' moment at the held solution; zero when the tilt is free.
     """
 
     displacement: NDArray[np.float64]
@@ -304,6 +324,8 @@ class EquilibriumSolution:
     loaded: NDArray[np.bool_]
     iterations: int
     residual: float
+    held_dofs: tuple[str, ...] = ()
+    reaction_moment: NDArray[np.float64] = field(default_factory=lambda: np.zeros(2))
 
     def ball_table(self) -> list[dict[str, float]]:
         """One row per ball, SI values with the unit in the key.
@@ -541,32 +563,41 @@ _Forces = tuple[NDArray[np.float64], NDArray[np.float64], dict[str, Any], NDArra
 
 
 def _newton(
-    ring: _Ring, q: NDArray[np.float64], load: NDArray[np.float64], stage: str
+    ring: _Ring,
+    q: NDArray[np.float64],
+    load: NDArray[np.float64],
+    stage: str,
+    solved: NDArray[np.int64],
 ) -> tuple[NDArray[np.float64], int, _Forces]:
-    """Damped Newton on the ring equations.
+    """Damped Newton on the ring equations of the degrees of freedom ``solved``.
 
-    Returns q, the iteration count and :meth:`_Ring.forces` at q. The evaluation that accepts
-    a step (the last of its line search) is the next iteration's force and Jacobian, so each
-    iteration costs one ring-force evaluation unless the step has to be shortened.
+    The others keep their value in q (the tilts held at 0) and their equations are not
+    imposed (their residual is the restraint's reaction). Returns q, the iteration count and
+    :meth:`_Ring.forces` at q. The evaluation that accepts a step (the last of its line
+    search) is the next iteration's force and Jacobian, so each iteration costs one
+    ring-force evaluation unless the step has to be shortened.
     """
     a = ring.a
     f_scale = max(float(np.abs(load[:3]).max()), float(np.abs(load[3:]).max()) / ring.rad_i, 1e-3)
     m_scale = f_scale * ring.rad_i
-    scales = np.array([f_scale, f_scale, f_scale, m_scale, m_scale])
+    scales = np.array([f_scale, f_scale, f_scale, m_scale, m_scale])[solved]
     lin = np.array([1.0, 1.0, 1.0, ring.rad_i, ring.rad_i])
     step_max = 0.05 * a
     ev = ring.forces(q)
     for it in range(1, _RING_ITER + 1):
         force, jac, _, loaded = ev
-        res = force - load
+        res = (force - load)[solved]
         if np.count_nonzero(loaded) < 3:
+            free = "free to tilt and to move axially" if solved.size == 5 else "free axially"
             raise NumericalError(
-                f"{stage}: fewer than 3 balls carry load; the ring (free to tilt and to move "
-                f"axially) cannot be held (loads {load.tolist()}); a bearing with play under a "
-                'radial load alone runs in model = "dynamic", or here with an axial load too'
+                f"{stage}: fewer than 3 balls carry load; the ring ({free}) cannot be held "
+                f"(loads {load.tolist()}); a bearing with play under a radial load alone runs "
+                'in model = "dynamic", or here with an axial load too'
             )
+        sub = jac[np.ix_(solved, solved)]
+        dq = np.zeros(5)
         try:
-            dq = -np.linalg.solve(jac + 1e-12 * np.diag(np.abs(np.diag(jac)) + 1.0), res)
+            dq[solved] = -np.linalg.solve(sub + 1e-12 * np.diag(np.abs(np.diag(sub)) + 1.0), res)
         except np.linalg.LinAlgError:
             raise NumericalError(f"{stage}: singular bearing stiffness matrix") from None
         big = float(np.abs(dq * lin).max())
@@ -578,7 +609,8 @@ def _newton(
         for _ in range(30):  # t < 1e-6 stops it after 21 halvings
             trial = q + t * dq
             ev = ring.forces(trial)
-            if float(np.abs((ev[0] - load) / scales).max()) <= max(norm0, 1e-14) or t < 1e-6:
+            trial_res = float(np.abs((ev[0] - load)[solved] / scales).max())
+            if trial_res <= max(norm0, 1e-14) or t < 1e-6:
                 break
             t *= 0.5
         q = trial
@@ -747,7 +779,8 @@ def setup(case: Case) -> None:
     Raises
     ------
     GeometryError
-        Not a ball bearing, an unknown race control, or no load to hold the inner ring.
+        Not a ball bearing, an unknown race control or ring tilt, no load to hold the inner
+        ring, or a moment load on a ring held against tilt.
     """
     bearing = case.bearing
     op = case.operation
@@ -759,10 +792,25 @@ def setup(case: Case) -> None:
             "analysis.race_control", f'must be "outer", "inner" or "none", got {control!r}'
         )
     _check_loads(op)
+    _check_ring_tilt(case.analysis.ring_tilt, op)
+
+
+def _check_ring_tilt(ring_tilt: str, op: Operation) -> None:
+    """Refuse an unknown ``ring_tilt``, and a moment load on a ring held against tilt."""
+    if ring_tilt not in RING_TILTS:
+        raise GeometryError("analysis.ring_tilt", f'must be "free" or "held", got {ring_tilt!r}')
+    if ring_tilt == "held" and op.moment_load != 0.0:
+        # the restraint would carry any moment: the moment load would change nothing
+        raise GeometryError(
+            "analysis.ring_tilt",
+            f'"held" with operation.moment_load = {op.moment_load:.6g} N m: the restraint '
+            "that holds the ring untilted carries any moment, so the moment load would change "
+            'nothing; remove moment_load, or write ring_tilt = "free" to have the balls carry it',
+        )
 
 
 def solve_equilibrium(
-    bearing: BallBearing, op: Operation, *, race_control: str = "outer"
+    bearing: BallBearing, op: Operation, *, race_control: str = "outer", ring_tilt: str = "free"
 ) -> EquilibriumSolution:
     """Jones–Harris equilibrium of ``bearing`` at the loads and speed of ``op``.
 
@@ -774,17 +822,21 @@ def solve_equilibrium(
         Ring speeds [Hz], axial load, radial load and its direction, moment and its direction.
     race_control : {"outer", "inner", "none"}
         Raceway whose friction resists the gyroscopic moment (module docstring).
+    ring_tilt : {"free", "held"}
+        "free": the five ring equations are solved; "held": θ_x = θ_y = 0 and the three force
+        equations are solved, the balls' moment being the restraint's reaction.
 
     Returns
     -------
     EquilibriumSolution
-        The converged ring displacement [m, rad], the 5×5 stiffness matrix and the per-ball
-        contact angles [rad], loads [N], approaches [m] and speeds [rad/s].
+        The converged ring displacement [m, rad], the 5×5 stiffness matrix, the reaction
+        moment [N m] of a held tilt and the per-ball contact angles [rad], loads [N],
+        approaches [m] and speeds [rad/s].
 
     Raises
     ------
     GeometryError
-        No load, or an unknown race control.
+        No load, an unknown race control or ring tilt, or a moment load with the tilt held.
     NumericalError, ConvergenceError
         When the ring cannot be held; the message names the stage (static or at speed).
     """
@@ -794,6 +846,8 @@ def solve_equilibrium(
         raise GeometryError(
             "analysis.race_control", f'must be "outer", "inner" or "none", got {race_control!r}'
         )
+    _check_ring_tilt(ring_tilt, op)
+    solved = _SOLVED[ring_tilt]
     load = _external(op)
     q, alpha = _initial_displacement(bearing, op)
     total = 0
@@ -813,7 +867,7 @@ def solve_equilibrium(
     for stage in stages:
         ring.p.speed_on = stage == "at speed"
         for _ in range(_ANGLE_LOOPS):
-            q, it, (_, _, state, loaded) = _newton(ring, q, load, stage)
+            q, it, (_, _, state, loaded) = _newton(ring, q, load, stage, solved)
             total += it
             ai = np.where(loaded, state["alpha_i"], ring.p.ai_c)
             ao = np.where(loaded, state["alpha_o"], ring.p.ao_c)
@@ -836,6 +890,12 @@ def solve_equilibrium(
     fc: NDArray[np.float64] = state["fc"]
     q_o = np.where(unl, fc, state["q_o"])
     d_o = np.where(unl, (np.abs(fc) / ring.p.ko0) ** (2.0 / 3.0), state["d_o"])
+    # the moment equations' residual is what the restraint supplies (moment_load is 0)
+    reaction = (force - load)[3:] if ring_tilt == "held" else np.zeros(2)
+    # below 1e-12 of the loads' moment scale it is round-off (a load symmetric about that
+    # axis), not a moment; as the displacement components above
+    tiny = 1e-12 * float(np.abs(load[:3]).max()) * ring.rad_i
+    reaction = np.where(np.abs(reaction) <= tiny, 0.0, reaction)
     return EquilibriumSolution(
         displacement=q,
         stiffness=jac,
@@ -852,7 +912,9 @@ def solve_equilibrium(
         spin_speed=np.broadcast_to(state["omega_r"], (z,)).copy(),
         loaded=loaded,
         iterations=total,
-        residual=float(np.abs(force - load).max()),
+        residual=float(np.abs((force - load)[solved]).max()),
+        held_dofs=tuple(DOF_NAMES[i] for i in range(5) if i not in solved),
+        reaction_moment=reaction,
     )
 
 
@@ -940,7 +1002,8 @@ def run(case: Case) -> RunResult:
     Raises
     ------
     GeometryError
-        Not a ball bearing, an unknown race control, or no load.
+        Not a ball bearing, an unknown race control or ring tilt, no load, or a moment load
+        with the tilt held.
 
     Notes
     -----
@@ -953,7 +1016,8 @@ def run(case: Case) -> RunResult:
     if not isinstance(bearing, BallBearing):
         raise GeometryError("bearing.type", "the equilibrium model needs a ball bearing")
     control = case.analysis.race_control
-    sol = solve_equilibrium(bearing, op, race_control=control)
+    ring_tilt = case.analysis.ring_tilt
+    sol = solve_equilibrium(bearing, op, race_control=control, ring_tilt=ring_tilt)
     loaded = sol.loaded
     # |α|: under a moment some balls press on the other flank (negative angles)
     mean_alpha = float(
@@ -973,9 +1037,19 @@ def run(case: Case) -> RunResult:
     ]
     if abs(q[3]) + abs(q[4]) > 0.0 and op.moment_load == 0.0:
         notes.append(
-            f"the inner ring tilts by ({q[3] * 1e3:.4g}, {q[4] * 1e3:.4g}) mrad about x, y: a "
-            "single bearing has no moment restraint but its balls, so its radial displacement "
-            "includes the tilt coupling (quasi_static_3d and dynamic hold the tilt at 0)"
+            f'the inner ring is free to tilt (analysis.ring_tilt = "free", the default) and '
+            f"tilts by ({q[3] * 1e3:.4g}, {q[4] * 1e3:.4g}) mrad about x, y: a single bearing "
+            "has no moment restraint but its balls, so its radial displacement includes the "
+            'tilt coupling; ring_tilt = "held" holds the tilt at 0, as quasi_static_3d and '
+            "dynamic do"
+        )
+    reaction = sol.reaction_moment
+    if sol.held_dofs:
+        notes.append(
+            'analysis.ring_tilt = "held": the inner ring\'s tilts are held at 0 (δ_a, δ_x, δ_y '
+            "solved); the balls' moment on it is a reaction of the restraint, reaction_moment_n_m "
+            f"= ({reaction[0]:.6g}, {reaction[1]:.6g}) N m about x, y; stiffness_matrix is the "
+            "5×5 at this solution, tilt rows and columns included"
         )
     if not loaded.all():
         notes.append(
@@ -984,6 +1058,9 @@ def run(case: Case) -> RunResult:
         )
     details = EquilibriumDetails(
         race_control=control,
+        ring_tilt=ring_tilt,
+        held_dofs=sol.held_dofs,
+        reaction_moment_n_m=(float(reaction[0]), float(reaction[1])),
         ring_displacement=RingDisplacement(
             axial_m=float(q[0]),
             x_m=float(q[1]),

@@ -677,6 +677,18 @@ def _linear_sections(result: RunResult, details: LinearDetails) -> list[tuple[st
     return sections
 
 
+def _tilt_rows(q: tuple[float, ...], details: EquilibriumDetails) -> Rows:
+    """The ring's tilts, or, held at 0, the restraint's reaction moment."""
+    if details.ring_tilt == "held":
+        m = details.reaction_moment_n_m
+        return [
+            ("tilt θ_x, θ_y", "0 (held)", "mrad"),
+            ("reaction moment M_x (restraint on the ring)", f"{m[0]:.6g}", "N m"),
+            ("reaction moment M_y (restraint on the ring)", f"{m[1]:.6g}", "N m"),
+        ]
+    return [("tilt θ_x", f"{q[3] * 1e3:.6g}", "mrad"), ("tilt θ_y", f"{q[4] * 1e3:.6g}", "mrad")]
+
+
 def _equilibrium_sections(result: RunResult, details: EquilibriumDetails) -> list[tuple[str, Rows]]:
     """Ring displacements, stiffness diagonal, per-ball angles and loads (one instant)."""
     q = details.ring_displacement.as_tuple()
@@ -684,13 +696,12 @@ def _equilibrium_sections(result: RunResult, details: EquilibriumDetails) -> lis
     sections: list[tuple[str, Rows]] = [
         (
             f"{result.title or result.model}: Jones-Harris equilibrium "
-            f"({details.race_control} race control)",
+            f"({details.race_control} race control, tilt {details.ring_tilt})",
             [
                 ("axial displacement δ_a", f"{q[0] * 1e6:.6g}", "µm"),
                 ("radial displacement δ_x", f"{q[1] * 1e6:.6g}", "µm"),
                 ("radial displacement δ_y", f"{q[2] * 1e6:.6g}", "µm"),
-                ("tilt θ_x", f"{q[3] * 1e3:.6g}", "mrad"),
-                ("tilt θ_y", f"{q[4] * 1e3:.6g}", "mrad"),
+                *_tilt_rows(q, details),
                 ("axial stiffness K_aa", f"{k[0][0] * 1e-6:.6g}", "N/µm"),
                 ("radial stiffness K_xx", f"{k[1][1] * 1e-6:.6g}", "N/µm"),
                 ("radial stiffness K_yy", f"{k[2][2] * 1e-6:.6g}", "N/µm"),

@@ -88,6 +88,12 @@ def _moment_for_equilibrium(data: Data, model: str) -> None:
         data["operation"]["moment_load"] = 0.01
 
 
+def _radial_load_for_equilibrium(data: Data, model: str) -> None:
+    # under an axial load alone the free ring does not tilt: holding it would change nothing
+    if model == "equilibrium":
+        data["operation"]["radial_load"] = 2.0
+
+
 def _held_axially(data: Data, model: str) -> None:
     # the dynamic column's cell: its rotor held axially (with the default spring preload it
     # moves axially and honours the key, condition honoured_when)
@@ -144,6 +150,7 @@ CHANGES: dict[str, tuple[Callable[[Data, str], None], Callable[[Data], None]]] =
     "analysis.revolutions, samples": (_no_patch, _set("analysis.revolutions", 3)),
     "analysis.linear_variant": (_no_patch, _set("analysis.linear_variant", "force_balance")),
     "analysis.race_control": (_no_patch, _set("analysis.race_control", "inner")),
+    "analysis.ring_tilt": (_radial_load_for_equilibrium, _set("analysis.ring_tilt", "held")),
     "dynamics": (
         _no_patch,
         lambda d: d.__setitem__("dynamics", {"mass": 0.03, "damping": 20.0}),

@@ -435,3 +435,70 @@ def test_inner_race_control_ball_near_lift_off_converges() -> None:
     assert np.abs(_ring_balance(b, op, sol, "inner")[3:]).max() <= 1e-8 * op.axial_load * 5e-3
     assert np.abs(_ball_balance(b, sol, "inner")).max() <= 1e-8 * op.axial_load
     assert np.abs(_compatibility(b, sol)).max() <= 1e-15
+
+
+# the ring's tilt held (analysis.ring_tilt = "held") ----------------------------------------
+@settings(max_examples=20, deadline=None)
+@given(
+    axial=st.floats(20.0, 150.0),
+    radial=st.floats(0.0, 60.0),
+    direction=st.floats(0.0, 6.28),
+    speed=st.floats(0.0, 1500.0),
+    rotating=st.sampled_from(["inner", "outer"]),
+    control=st.sampled_from(["outer", "inner", "none"]),
+)
+def test_held_tilt_balances_the_forces_and_reports_the_balls_moment_as_the_reaction(
+    axial: float, radial: float, direction: float, speed: float, rotating: str, control: str
+) -> None:
+    b = bearing()
+    op = Operation(
+        rotating,  # type: ignore[arg-type]
+        speed,
+        axial_load=axial,
+        radial_load=radial,
+        radial_load_direction=direction,
+    )
+    sol = eq.solve_equilibrium(b, op, race_control=control, ring_tilt="held")
+    loaded = sol.loaded
+    assert sol.displacement[3] == 0.0 and sol.displacement[4] == 0.0
+    assert sol.held_dofs == ("tilt_x", "tilt_y")
+    balance = _ring_balance(b, op, sol, control)
+    assert np.abs(balance[:3]).max() <= 1e-8 * axial
+    # the moment equations are not imposed: their imbalance is the restraint's reaction,
+    # recomputed here from the per-ball outputs (the moment load is 0)
+    rad = 0.5 * b.pitch_diameter
+    np.testing.assert_allclose(balance[3:], sol.reaction_moment, rtol=0, atol=1e-9 * axial * rad)
+    assert np.abs(_ball_balance(b, sol, control)[:, loaded]).max() <= 1e-8 * axial
+    assert np.abs(_compatibility(b, sol).reshape(2, -1)[:, loaded]).max() <= 1e-15
+    assert sol.stiffness.shape == (5, 5) and np.all(np.isfinite(sol.stiffness))
+
+
+def test_held_tilt_under_a_pure_axial_load_is_the_free_solution() -> None:
+    # nothing tilts a uniformly loaded ring: holding it changes nothing and reacts nothing
+    b = bearing()
+    op = Operation("inner", 1200.0, axial_load=60.68)
+    free = eq.solve_equilibrium(b, op)
+    held = eq.solve_equilibrium(b, op, ring_tilt="held")
+    np.testing.assert_allclose(held.displacement, free.displacement, rtol=1e-12, atol=1e-18)
+    # entries ~1e-16 of the largest are the derivatives' round-off (STIFFNESS_ROUNDOFF)
+    scale = np.abs(free.stiffness).max()
+    np.testing.assert_allclose(held.stiffness, free.stiffness, rtol=1e-9, atol=1e-12 * scale)
+    assert np.all(held.reaction_moment == 0.0) and free.held_dofs == ()
+
+
+def test_held_tilt_with_balls_lifted_off_at_speed_converges() -> None:
+    # the heavy radial load of test_heavy_radial_load_unloads_balls_without_nan, tilt held
+    b = bearing()
+    op = Operation("inner", 300.0, radial_load=60.0)
+    sol = eq.solve_equilibrium(b, op, ring_tilt="held")
+    assert 0 < np.count_nonzero(~sol.loaded) < 10
+    assert np.abs(_ring_balance(b, op, sol)[:3]).max() <= 1e-8 * op.radial_load
+    assert sol.displacement[3] == 0.0 and sol.displacement[4] == 0.0
+
+
+def test_held_tilt_refuses_a_moment_and_an_unknown_value() -> None:
+    op = Operation("inner", 0.0, axial_load=10.0, moment_load=0.01)
+    with pytest.raises(GeometryError, match="moment_load"):
+        eq.solve_equilibrium(bearing(), op, ring_tilt="held")
+    with pytest.raises(GeometryError, match="ring_tilt"):
+        eq.solve_equilibrium(bearing(), Operation("inner", 0.0, axial_load=10.0), ring_tilt="x")
