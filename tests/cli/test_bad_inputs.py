@@ -201,6 +201,11 @@ BAD = {
         VALID + '[[waviness]]\npart = "inner"\norder = 3\namplitude = "1 nm"\n' * 1001,
         "waviness: has 1001 entries, at most 1000",
     ),
+    # a record of one revolution at 1e-308 Hz overflows float64 time (found by the fuzzer)
+    "speed_too_small": (
+        _replace('speed = "1800 rpm"', "speed = 1e-308"),
+        "operation.speed: must be 0 (at rest) or at least 1e-06 Hz, got 1e-308 Hz",
+    ),
     "too_many_elements": (
         _replace("elements = 7", "elements = 20000"),
         "bearing.elements: must be at most 10000",

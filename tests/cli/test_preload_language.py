@@ -339,6 +339,29 @@ def test_two_d_refuses_a_radial_load_that_unloads_balls(tmp_path: Path) -> None:
     assert "operation.radial_load" in line and '"dynamic"' in line
 
 
+def test_check_refuses_what_run_refuses_for_the_loads_alone(tmp_path: Path) -> None:
+    """`check` refuses the 2-D model's radial load as `run` does: the loads alone unload balls
+    of the perfect bearing (before, `check` accepted the case and only `run` refused)."""
+    result = runner.invoke(app, ["check", str(_case(tmp_path, "quasi_static_2d"))])
+    assert result.exit_code == 2, result.stdout
+    line = result.stderr.strip()
+    assert len(line.splitlines()) == 1 and "operation.radial_load" in line
+
+
+def test_two_d_refuses_balls_the_waviness_unloads_as_a_state_not_an_input(tmp_path: Path) -> None:
+    """Every ball of the perfect bearing carries load; a large waviness unloads some at some
+    instants: the model cannot follow that state (a lost contact at an instant, exit 2), but
+    the loads are valid input (`check` accepts them)."""
+    path = _case(tmp_path, "quasi_static_2d")
+    text = path.read_text(encoding="utf-8").replace(f'"{RADIAL} N"', '"2 N"')
+    path.write_text(text + '[[waviness]]\npart = "inner"\norder = 10\namplitude = "5 um"\n')
+    assert runner.invoke(app, ["check", str(path)]).exit_code == 0
+    line = _refused(path)
+    rest = line.split(f"{path}: ", 1)[1]
+    assert not rest.startswith("operation."), line
+    assert "with the imperfections unloads" in line and "at instant" in line
+
+
 def test_two_d_runs_a_radial_load_that_keeps_every_ball_loaded(tmp_path: Path) -> None:
     path = _case(tmp_path, "quasi_static_2d")
     light = path.read_text(encoding="utf-8").replace(f'"{RADIAL} N"', '"2 N"')

@@ -258,6 +258,10 @@ class MaterialSpec(_Table):
     density: Density = Field(7850.0, description="Density [kg/m^3].")
 
 
+#: Smallest nonzero speed of a case [Hz] (one revolution in about 11.6 days).
+MIN_SPEED_HZ = 1e-6
+
+
 class OperationSpec(_Table):
     """``[operation]``: which ring turns, how fast, and the loads."""
 
@@ -317,6 +321,12 @@ class OperationSpec(_Table):
                 f"must be >= 0, got {value!r} Hz: the sense of rotation is not a sign of the "
                 "speed; name the turning ring with rotating_ring (other_ring_speed is signed "
                 "relative to it)"
+            )
+        if 0.0 < value < MIN_SPEED_HZ:
+            # a record of even one revolution would last longer than float64 time can hold
+            # with any resolution (and than any bearing runs): not a speed, a typing slip
+            raise ValueError(
+                f"must be 0 (at rest) or at least {MIN_SPEED_HZ:g} Hz, got {value!r} Hz"
             )
         return value
 

@@ -609,7 +609,8 @@ def setup(case: Case) -> Setup:
     Raises
     ------
     GeometryError
-        Not a ball bearing, or no axial preload.
+        Not a ball bearing, no axial preload, or a radial load that unloads balls of the
+        perfect bearing (:func:`check_static_load_held`).
 
     Notes
     -----
@@ -644,7 +645,9 @@ def setup(case: Case) -> Setup:
     )
     beta = op.radial_load_direction
     force = np.array([op.radial_load * math.cos(beta), op.radial_load * math.sin(beta)])
-    return Setup(alpha, kn, d0, kin, force)
+    st = Setup(alpha, kn, d0, kin, force)
+    check_static_load_held(case, st)
+    return st
 
 
 def approaches(
@@ -765,17 +768,79 @@ def solve(
     return disp, unloaded
 
 
+#: Positions of the balls across one ball pitch at which :func:`check_static_load_held` solves.
+_CAGE_POSITIONS = 8
+
+
+def _unloading_text(op: Operation, worst: int, n_elements: int, cause: str) -> str:
+    """Why the planar model refuses a record where balls lose contact (see below)."""
+    return (
+        f"{op.radial_load:.6g} N {cause} up to {worst} of {n_elements} balls against the "
+        f"{op.axial_load:.6g} N axial load: the planar model keeps the contact angle and "
+        "approach of the axial load alone, so it cannot follow the rings moving axially "
+        '(preload = "spring") or the contact angles changing (preload = "position"); use '
+        'model = "dynamic" (either preload)'
+    )
+
+
+def check_static_load_held(case: Case, st: Setup) -> None:
+    """Refuse a radial load that unloads balls of the perfect bearing (an input the planar
+    model cannot represent; part of :func:`setup`, so ``runout check`` says it too).
+
+    The perfect bearing's shaft position under the radial load is solved in NumPy
+    (:func:`solve_reference`, no compiled kernel: ``check`` stays quick) at
+    :data:`_CAGE_POSITIONS` positions of the balls across one ball pitch; when a ball carries
+    no load at one of them, the loads alone put the case outside the model
+    (:func:`check_radial_load_held` explains why).
+
+    Parameters
+    ----------
+    case : Case
+        The case (its bearing and loads; its imperfections are left out).
+    st : Setup
+        From :func:`setup`.
+
+    Raises
+    ------
+    GeometryError
+        Naming ``operation.radial_load``.
+    """
+    op = case.operation
+    if op.radial_load <= 0.0:
+        return
+    n_elements = st.kinematics.n_elements
+    pitch = 2.0 * math.pi / n_elements
+    shift = np.arange(_CAGE_POSITIONS) / _CAGE_POSITIONS
+    theta = pitch * (np.arange(n_elements)[None, :] + shift[:, None])
+    c = np.full(theta.shape, st.initial_approach)
+    try:
+        q = solve_reference(
+            c, theta, tol=RTOL * st.initial_approach, force=st.force, stiffness=st.stiffness
+        )
+    except ConvergenceError:  # no static position at all: the run says so, naming the instant
+        return
+    approach = 2.0 * c + np.cos(theta) * q[:, :1] + np.sin(theta) * q[:, 1:]
+    worst = int((approach <= 0.0).sum(axis=1).max())
+    if worst:
+        text = _unloading_text(op, worst, n_elements, "unloads")
+        raise GeometryError("operation.radial_load", text + ", or raise operation.axial_load")
+
+
 def check_radial_load_held(
     op: Operation, unloaded: NDArray[np.integer[Any]], n_elements: int
 ) -> None:
-    """Refuse a radial load under which balls lose contact: the planar model cannot be right.
+    """Refuse a record under which balls lose contact: the planar model cannot be right.
 
     The planar model keeps the contact angle and the initial approach δ_0 of the axial load
     alone. While every ball stays loaded, a spring and a position preload move the shaft
     alike to first order (the axial and radial motions of a uniform bearing decouple).
-    Once the radial load unloads balls they part: a spring preload lets the rings slide
-    axially until the loaded balls reach their groove bottoms, a position preload holds them
-    and the contact angles change ball by ball; the planar model follows neither.
+    Once balls unload they part: a spring preload lets the rings slide axially until the
+    loaded balls reach their groove bottoms, a position preload holds them and the contact
+    angles change ball by ball; the planar model follows neither. The loads alone unloading
+    a ball is an input the model cannot represent (:func:`check_static_load_held`, in
+    :func:`setup`); here the imperfections unload balls at some instants of the record: the
+    model cannot follow that state (a :class:`ContactLossError`, as a lost contact of the
+    other quasi-static models).
 
     Parameters
     ----------
@@ -788,8 +853,8 @@ def check_radial_load_held(
 
     Raises
     ------
-    GeometryError
-        Naming ``operation.radial_load``, when a radial load is set and a ball lost contact.
+    ContactLossError
+        When a radial load is set and a ball lost contact at some instant.
 
     Notes
     -----
@@ -799,14 +864,9 @@ def check_radial_load_held(
     worst = int(unloaded.max()) if unloaded.size else 0
     if op.radial_load <= 0.0 or worst == 0:
         return
-    raise GeometryError(
-        "operation.radial_load",
-        f"{op.radial_load:.6g} N unloads up to {worst} of {n_elements} balls against the "
-        f"{op.axial_load:.6g} N axial load: the planar model keeps the contact angle and "
-        "approach of the axial load alone, so it cannot follow the rings moving axially "
-        '(preload = "spring") or the contact angles changing (preload = "position"); use '
-        'model = "dynamic" (either preload), or raise operation.axial_load',
-    )
+    instant = int(np.argmax(unloaded))
+    cause = _unloading_text(op, worst, n_elements, "with the imperfections unloads")
+    raise ContactLossError(cause, instant)
 
 
 def planar_note(contact_angle: float) -> str:
