@@ -143,7 +143,11 @@ def test_the_report_says_na_for_the_axial_runout_of_a_radial_model(tmp_path: Pat
 def test_the_typed_result_of_a_radial_model_has_no_axial_runout(tmp_path: Path, model: str) -> None:
     from runout.analysis.results import RunResult
 
-    path = _case(tmp_path, model, extra=INNER_WAVINESS, revolutions=2, samples=1024)
+    # the dynamic model is radial with its rings held axially (a position preload; its
+    # default, a spring preload, frees z)
+    op = 'speed = "5400 rpm"\naxial_load = "20 N"\n'
+    op += 'preload = "position"\n' if model == "dynamic" else ""
+    path = _case(tmp_path, model, operation=op, extra=INNER_WAVINESS, revolutions=2, samples=1024)
     back = RunResult.from_json(_json(path))  # what `runout run --json` wrote, read back
     assert back.runout.axial_pp_m is None and not back.has_axial_freedom
     assert back.to_json()["runout"]["axial_pp_m"] is None

@@ -43,6 +43,8 @@ __all__ = [
     "displacement_of",
     "frequencies_json",
     "lines_dataframe",
+    "record_resolution",
+    "stated_resolution",
 ]
 
 #: The one displacement convention of every model's output (JSON ``displacement_of``).
@@ -153,6 +155,11 @@ class RunResult:
         Mean position of a result read back (:meth:`from_json`) as its JSON states it [m]:
         what :meth:`mean_displacement` returns (the record read back from ``history.csv``
         carries 12 digits, the JSON the full mean). None for a model's result.
+    solver_resolution_m : float or None
+        The resolution the model states for this record [m] (:meth:`resolution_m`): the
+        floor below which its line fit calls a line round-off, at least the solver
+        tolerance's bound; None for a model that states none (the bound is then derived
+        from the record), and as the JSON states it for a result read back.
     stated_contact_angle_deg : float or None
         Contact angle of a result read back, as its JSON states it [deg] (``to_json`` writes
         it again: not every value in degrees is ``math.degrees`` of a float). None for a
@@ -175,6 +182,7 @@ class RunResult:
     iso15242: Iso15242 | None = None
     verdict: Verdict | None = None
     record_mean: tuple[float, ...] | None = None
+    solver_resolution_m: float | None = None
     stated_contact_angle_deg: float | None = None
 
     # ---------------------------------------------------------------- analysis
@@ -240,27 +248,18 @@ class RunResult:
     def resolution_m(self) -> float | None:
         """The solver's resolution of this record [m]: smaller figures are numerical noise.
 
-        How it is chosen: every model solves the position of the inner ring's centre, whose
-        magnitude is at most ``scale`` = max |displacement| over the record (approaches,
-        play and offsets included). The quasi-static models stop their Newton iterations at a
-        step of ``RTOL`` (1e-11) times the reference approach, and the dynamic model at
-        ``NEWTON_RTOL`` (1e-12) times it; the reference approach is below ``scale`` and the
-        gain from a contact approach to the centre's motion is of order one, so the relative
-        tolerance times ``scale`` bounds the error of each instant. The linear and roller
-        models evaluate closed forms or exact constraints: their floor is the float64
-        round-off of positions of size ``scale``, bounded generously by
-        :data:`ROUND_OFF` (1e-13, about 450 ulp) times ``scale``. Time-integration error
-        (dynamic model) is not included: it is a modelling accuracy, not a resolution.
+        What the model states (:attr:`solver_resolution_m`) when it states one, else the
+        bound :func:`record_resolution` derives from the record. Every display (summary,
+        report, study tables) and the JSON's ``solver_resolution_m`` use this one number.
 
         Returns
         -------
         float or None
-            [m]; None for a record that is all zero (nothing to resolve).
+            [m]; None for a record that is all zero and a model that states nothing.
         """
-        scale = float(np.max(np.abs(self.displacement))) if self.displacement.size else 0.0
-        if not (scale > 0.0 and math.isfinite(scale)):
-            return None
-        return _relative_resolution(self.model) * scale
+        if self.solver_resolution_m is not None:
+            return self.solver_resolution_m
+        return record_resolution(self.model, self.displacement)
 
     def lines(self, direction: str | None = None, top: int | None = None) -> list[Component]:
         """Components, optionally of one direction, largest first, at most ``top`` of them.
@@ -415,6 +414,10 @@ class RunResult:
                 self.mean_displacement() if self.time.size or self.record_mean else None
             ),
         }
+        resolution = self.resolution_m()
+        if resolution is not None:
+            # below it a figure is not a result (the summary and report print it as 0)
+            out["solver_resolution_m"] = resolution
         if self.anderon is not None:
             out["anderon"] = dict(self.anderon)
         if self.details is not None:
@@ -499,6 +502,7 @@ class RunResult:
             iso15242=None if iso is None else Iso15242.from_json(iso),
             verdict=None if verdict is None else Verdict.from_json(verdict),
             record_mean=record_mean,
+            solver_resolution_m=_optional_float(doc.get("solver_resolution_m")),
             stated_contact_angle_deg=float(doc["contact_angle_deg"]),
         )
         if model == "linear" and cls is RunResult:
@@ -700,9 +704,75 @@ SOLVER_RTOL: dict[str, float] = {
     "quasi_static_2d": 1e-11,
     "quasi_static_3d": 1e-11,
     "dynamic": 1e-12,
+    "spindle": 1e-11,
 }
 
 
 def _relative_resolution(model: str) -> float:
-    """Relative tolerance of ``model``'s solved positions [-] (:meth:`RunResult.resolution_m`)."""
+    """Relative tolerance of ``model``'s solved positions [-] (:func:`record_resolution`)."""
     return max(SOLVER_RTOL.get(model, 0.0), ROUND_OFF)
+
+
+def _optional_float(value: Any) -> float | None:
+    return None if value is None else float(value)
+
+
+def record_resolution(model: str, displacement: NDArray[np.float64]) -> float | None:
+    """The solver tolerance's bound on the error of a record's positions [m].
+
+    Every model solves the position of the inner ring's centre, whose magnitude is at most
+    ``scale`` = max |displacement| over the record (approaches, play and offsets included).
+    The iterative models stop their Newton iterations at a step of :data:`SOLVER_RTOL` times
+    their reference approach, which is below ``scale``, with a gain of order one from an
+    approach to the centre's motion: the relative tolerance times ``scale`` bounds the
+    error of each instant. The linear and roller models evaluate closed forms or exact
+    constraints: their floor is the float64 round-off of positions of size ``scale``,
+    bounded generously by :data:`ROUND_OFF` (1e-13, about 450 ulp) times ``scale``.
+    Time-integration error (dynamic model) is not included: a modelling accuracy, not a
+    resolution.
+
+    Parameters
+    ----------
+    model : str
+        Model id.
+    displacement : ndarray, shape (3, n)
+        The record [m].
+
+    Returns
+    -------
+    float or None
+        [m]; None for a record that is empty or all zero (nothing to resolve).
+    """
+    scale = float(np.max(np.abs(displacement))) if displacement.size else 0.0
+    if not (scale > 0.0 and math.isfinite(scale)):
+        return None
+    return _relative_resolution(model) * scale
+
+
+def stated_resolution(
+    model: str, displacement: NDArray[np.float64], line_floor_m: float
+) -> float | None:
+    """The resolution a model states for its record [m] (:attr:`RunResult.solver_resolution_m`).
+
+    The larger of the floor below which the model's line fit calls a line its solver's
+    round-off (``line_floor_m``, e.g. 1e-9 of the reference approach for a solver that stops
+    at 1e-11 of it) and the tolerance's bound on the positions (:func:`record_resolution`):
+    one number below which no figure is a result, for the lines and the p-p figures alike.
+
+    Parameters
+    ----------
+    model : str
+        Model id.
+    displacement : ndarray, shape (3, n)
+        The record [m].
+    line_floor_m : float
+        The line fit's floor [m].
+
+    Returns
+    -------
+    float or None
+        [m]; None when both are 0 (nothing to resolve).
+    """
+    bound = record_resolution(model, displacement) or 0.0
+    resolution = max(float(line_floor_m), bound)
+    return resolution if resolution > 0.0 else None

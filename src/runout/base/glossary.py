@@ -253,6 +253,14 @@ TERMS: tuple[Term, ...] = (
         "equilibrium with the tilt held: the moment the restraint exerts on the inner ring to "
         "hold it untilted, in the sense of moment_load (0 when the tilt is free)",
     ),
+    Term(
+        ("solver_resolution_m",),
+        "–",
+        "m",
+        "the resolution the model states for its record: below it a figure is numerical "
+        "noise, not a result (printed as 0); the line fit's floor of an iterative model, a "
+        "round-off bound of a closed-form one",
+    ),
     # ------------------------------------------------------------------ stiffness
     Term(
         ("stiffness_matrix",),

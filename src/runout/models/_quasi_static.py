@@ -38,7 +38,7 @@ from runout.analysis.decompose import (
     split_runout,
 )
 from runout.analysis.result_details import QuasiStaticDetails
-from runout.analysis.results import RunResult, Source
+from runout.analysis.results import RunResult, Source, stated_resolution
 from runout.base._threads import halves, in_spans, one_blas_thread
 from runout.base.errors import GeometryError
 from runout.geometry.attribution import ball_size_line, ball_waviness_line
@@ -1133,6 +1133,7 @@ def run_quasi_static(
         components=fit.components,
         runout=split.runout,
         measuring_direction=u,
+        solver_resolution_m=stated_resolution(model, disp, 1e-9 * approach),
         details=QuasiStaticDetails(
             planar=planar,
             approach_m=approach_m,

@@ -20,6 +20,7 @@ import numpy as np
 from numba.extending import register_jitable
 from numpy.typing import NDArray
 
+from runout.analysis.results import SOLVER_RTOL
 from runout.models._quasi_static import predict
 
 F64 = NDArray[np.float64]
@@ -36,7 +37,7 @@ __all__ = [
 
 OK, TOO_FEW_LOADED, SINGULAR, NOT_CONVERGED = 0, 1, 2, 3
 #: Step tolerance relative to the reference approach (as seed 000's kernel).
-RTOL = 1e-11
+RTOL = SOLVER_RTOL["spindle"]
 #: Residual round-off floor relative to the sum of the load magnitudes (64 ulp).
 _FLOOR = 64.0 * 2.0**-52
 #: Largest number of generalised coordinates (x, y, z, θx, θy and the spring-loaded ring).

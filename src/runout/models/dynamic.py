@@ -413,6 +413,7 @@ def run(case: Any, progress: Callable[[float], None] | None = None) -> RunResult
         components=comps,
         runout=split.runout,
         measuring_direction=u,
+        solver_resolution_m=noise,  # the floor its line fit uses: 1000 Newton tolerances
         details=details,
         notes=tuple(notes),
     )

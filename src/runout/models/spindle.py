@@ -86,7 +86,7 @@ from numpy.typing import NDArray
 
 from runout.analysis.decompose import JOINT_FIT, Candidate, fit_lines, split_runout
 from runout.analysis.result_details import SpindleBearingResult, SpindleDetails, StiffnessMatrix
-from runout.analysis.results import RunResult
+from runout.analysis.results import RunResult, stated_resolution
 from runout.base.errors import ContactLossError, ConvergenceError, GeometryError, NumericalError
 from runout.geometry.bearing import BallBearing
 from runout.geometry.contact import ball_race_contacts
@@ -1114,6 +1114,7 @@ def run(case: Case) -> RunResult:
         components=fit.components,
         runout=split.runout,
         measuring_direction=u,
+        solver_resolution_m=stated_resolution(MODEL, disp, floor),
         details=details,
         notes=tuple(n for n in notes if n),
     )
