@@ -513,7 +513,11 @@ class OrderSweep:
     amplitude : float
         Zero-to-peak amplitude used for every run [m].
     runout : ndarray, shape (len(parts), m)
-        Radial runout p-p along the load [m], perfect-bearing runout included.
+        Radial runout p-p along the load [m], perfect-bearing runout included; where
+        ``solved`` is false the entry is 0 and means nothing (no stable position).
+    solved : ndarray of bool, shape (len(parts), m)
+        Whether the bearing with that harmonic has a stable position at every angle: a
+        harmonic as large as the clearance can jam the rollers (:func:`order_sweep`).
     baseline : float
         Runout of the same bearing with perfect parts (roller passage alone) [m].
     n_elements : int
@@ -524,19 +528,21 @@ class OrderSweep:
     parts: tuple[str, ...]
     amplitude: float
     runout: FloatArray
+    solved: NDArray[np.bool_]
     baseline: float
     n_elements: int
 
-    def rows(self) -> list[dict[str, float | int]]:
-        """One row per order: ``order``, ``order_over_z`` and ``<part>_pp_m`` for each part."""
-        out: list[dict[str, float | int]] = []
+    def rows(self) -> list[dict[str, float | int | None]]:
+        """One row per order: ``order``, ``order_over_z`` and ``<part>_pp_m`` for each part
+        (None where that harmonic jams the rollers: no runout to state)."""
+        out: list[dict[str, float | int | None]] = []
         for i, kk in enumerate(self.orders):
-            row: dict[str, float | int] = {
+            row: dict[str, float | int | None] = {
                 "order": int(kk),
                 "order_over_z": float(kk) / self.n_elements,
             }
             for j, part in enumerate(self.parts):
-                row[f"{part}_pp_m"] = float(self.runout[j, i])
+                row[f"{part}_pp_m"] = float(self.runout[j, i]) if self.solved[j, i] else None
             out.append(row)
         return out
 
@@ -564,6 +570,19 @@ def order_sweep(
     parts : sequence of {"inner", "outer", "roller"}
         A "roller" harmonic is the same on every roller in its cage frame (phase 0 at its outer
         contact at α = 0), like a ``[[waviness]] part = "roller"`` entry of a case.
+
+    Returns
+    -------
+    OrderSweep
+        A harmonic under which the rollers have no stable position at some angle (an
+        amplitude comparable with the clearance jams them) is marked unsolved
+        (:attr:`OrderSweep.solved`) rather than failing the sweep: the sweep is an aid to read
+        the run's bearing, whose own solution stands.
+
+    Raises
+    ------
+    NumericalError, ConvergenceError
+        When the perfect bearing itself has no stable position.
     """
     z = geo.n_elements
     ks = np.arange(2, 3 * z + 1) if orders is None else np.asarray(orders, dtype=np.int64)
@@ -589,6 +608,31 @@ def order_sweep(
             else:
                 raise GeometryError("order_sweep.parts", f"unknown part {part!r}")
             geos.append(g)
-    runouts = np.array([sol.runout for sol in solve_many(geos, alpha)])
+    solutions = _solve_many_or_none(geos, alpha)
+    if solutions[0] is None:  # the perfect bearing: the failure is the bearing's, say it
+        solve(perfect, alpha)
+    runouts = np.array([0.0 if sol is None else sol.runout for sol in solutions])
+    solved = np.array([sol is not None for sol in solutions[1:]]).reshape(len(parts), ks.size)
     table = runouts[1:].reshape(len(parts), ks.size)
-    return OrderSweep(ks, tuple(parts), amplitude, table, float(runouts[0]), z)
+    return OrderSweep(ks, tuple(parts), amplitude, table, solved, float(runouts[0]), z)
+
+
+def _solve_many_or_none(
+    geometries: Sequence[ConstraintGeometry], alpha: FloatArray
+) -> list[Solution | None]:
+    """:func:`solve_many`, None for a geometry without a stable position at some angle."""
+    al = _angles(alpha)
+
+    def one(g: ConstraintGeometry) -> Solution | None:
+        try:
+            return _solve_one(g, al)
+        except NumericalError:  # ConvergenceError included: jammed or unsettled
+            return None
+
+    threads = min(len(geometries), max(1, numba.get_num_threads()))
+    if threads <= 1:
+        return [one(g) for g in geometries]
+    from concurrent.futures import ThreadPoolExecutor
+
+    with ThreadPoolExecutor(max_workers=threads) as pool:
+        return list(pool.map(one, geometries))

@@ -1147,11 +1147,13 @@ def plot_order_sweep(
     baseline: float,
     n_elements: int,
     ax: Any = None,
+    solved: np.ndarray | None = None,
 ) -> Any:
     """Runout against the harmonic order of each part, with multiples of Z marked.
 
     One curve per part, the perfect bearing's runout as a dotted line and the multiples of Z as
-    dashed ones.
+    dashed ones; an order whose harmonic jams the rollers (``solved`` false) is a gap in its
+    curve, marked by an x on the axis.
 
     Parameters
     ----------
@@ -1167,6 +1169,8 @@ def plot_order_sweep(
         Number of rollers Z [-].
     ax : matplotlib Axes, optional
         Where to draw (a new figure by default).
+    solved : ndarray of bool, shape (len(parts), m), optional
+        Where the bearing has a stable position (default: everywhere).
 
     Returns
     -------
@@ -1175,8 +1179,16 @@ def plot_order_sweep(
     plt = pyplot()
     if ax is None:
         _, ax = plt.subplots(figsize=(8, 3.5))
+    ok = np.ones(runout.shape, dtype=bool) if solved is None else np.asarray(solved, dtype=bool)
     for j, part in enumerate(parts):
-        ax.plot(orders, runout[j] * 1e6, marker="o", ms=3, lw=0.8, label=part)
+        shown = np.ma.masked_where(~ok[j], runout[j] * 1e6)  # a jammed order: a gap
+        (curve,) = ax.plot(orders, shown, marker="o", ms=3, lw=0.8, label=part)
+        jammed = orders[~ok[j]]
+        if jammed.size:
+            ax.plot(
+                jammed, np.zeros(jammed.size), "x", color=curve.get_color(), ms=5,
+                label=f"{part}: jams the rollers",
+            )  # fmt: skip
     ax.axhline(baseline * 1e6, color="k", lw=0.6, ls=":", label="perfect parts")
     for m in range(1, int(orders.max()) // n_elements + 1):
         ax.axvline(m * n_elements, color="grey", lw=0.6, ls="--")

@@ -253,7 +253,12 @@ def _roller_files(sol: Solution, directory: Path) -> list[Path]:
     written.append(
         plotting.save_figure(
             plotting.plot_order_sweep(
-                sweep.orders, sweep.runout, sweep.parts, sweep.baseline, sweep.n_elements
+                sweep.orders,
+                sweep.runout,
+                sweep.parts,
+                sweep.baseline,
+                sweep.n_elements,
+                solved=sweep.solved,
             ),
             directory / "order_sweep.png",
         )
@@ -267,7 +272,8 @@ def _write_order_sweep(sweep: OrderSweep, path: Path) -> Path:
         fh.write(
             f"# radial runout p-p [m] with one harmonic of {sweep.amplitude:.6g} m "
             f"(zero-to-peak) on one part; perfect bearing: {sweep.baseline:.6g} m; "
-            f"Z = {sweep.n_elements}\n"
+            f"Z = {sweep.n_elements}; an empty cell: that harmonic jams the rollers (no stable "
+            "position)\n"
         )
         w = csv.writer(fh)
         w.writerow(["order", "order_over_z", *(f"{p}_pp_m" for p in sweep.parts)])
