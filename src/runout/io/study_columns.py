@@ -127,7 +127,22 @@ def line_column(direction: str, label: str) -> str:
 
 
 def old_line_column(direction: str, frequency_hz: float, label: str) -> str:
-    """The column name earlier versions gave a line: ``"<dir> <frequency> Hz <label> pp_m"``."""
+    """The column name earlier versions gave a line: ``"<dir> <frequency> Hz <label> pp_m"``.
+
+    Parameters
+    ----------
+    direction : str
+        ``"x"``, ``"y"`` or ``"z"``.
+    frequency_hz : float
+        The line's frequency [Hz].
+    label : str
+        The line's label.
+
+    Returns
+    -------
+    str
+        The name (spaces, colons and a float included: read old files only).
+    """
     return f"{direction} {frequency_hz:.6g} Hz {label} pp_m"
 
 
@@ -160,8 +175,18 @@ def read_columns(directory: Path) -> dict[str, Any] | None:
 
 def line_columns(directory: Path) -> dict[tuple[str, str], str] | None:
     """The line columns of a study's ``samples.csv`` by (direction, label), from its
-    ``samples_columns.json``; None for a study without one (earlier versions: the column is
-    :func:`old_line_column`).
+    ``samples_columns.json``.
+
+    Parameters
+    ----------
+    directory : Path
+        The study's output directory.
+
+    Returns
+    -------
+    dict or None
+        ``{(direction, label): column}``; None for a study without ``samples_columns.json``
+        (earlier versions: the column is :func:`old_line_column`).
     """
     doc = read_columns(directory)
     if doc is None:
