@@ -152,6 +152,13 @@ def output_directory(out: Path | str, option: str = "--out") -> Path:
 def writable(directory: Path, option: str = "--out") -> None:
     """Refuse ``directory`` when the file system will not let runout create files in it.
 
+    Parameters
+    ----------
+    directory : Path
+        An existing directory.
+    option : str
+        Name of the option in messages.
+
     Raises
     ------
     OutputError
@@ -215,10 +222,20 @@ def _legacy_kind(directory: Path) -> re.Pattern[str] | None:
 
 
 def owned(directory: Path, name: str) -> bool:
-    """Whether runout wrote ``directory / name`` (``name`` relative, ``/``-separated).
+    """Whether runout wrote ``directory / name``.
 
-    Listed in the directory's :data:`MARKER`; in a directory an earlier version wrote (no
-    marker), a name of the files that version wrote there.
+    Parameters
+    ----------
+    directory : Path
+        The output directory.
+    name : str
+        Relative, ``/``-separated name of a file in it.
+
+    Returns
+    -------
+    bool
+        Listed in the directory's :data:`MARKER`; in a directory an earlier version wrote (no
+        marker), a name of the files that version wrote there.
     """
     names = _read_marker(directory)
     if names is not None:
@@ -228,7 +245,18 @@ def owned(directory: Path, name: str) -> bool:
 
 
 def is_ours(directory: Path) -> bool:
-    """Whether ``directory`` is runout's: it holds :data:`MARKER` or an earlier version's files."""
+    """Whether ``directory`` is runout's.
+
+    Parameters
+    ----------
+    directory : Path
+        An existing directory.
+
+    Returns
+    -------
+    bool
+        It holds :data:`MARKER`, or the files of an earlier version's run or study.
+    """
     return _read_marker(directory) is not None or _legacy_kind(directory) is not None
 
 
@@ -320,6 +348,13 @@ def check_target(directory: Path, name: str) -> Path:
 
 def record(directory: Path, names: list[str]) -> None:
     """Add ``names`` to the directory's :data:`MARKER` (written atomically).
+
+    Parameters
+    ----------
+    directory : Path
+        The output directory.
+    names : list of str
+        Relative, ``/``-separated names of the files runout writes there.
 
     Raises
     ------
@@ -432,6 +467,18 @@ def staged(directory: Path, option: str = "--out") -> Iterator[Staging]:
     :data:`MARKER` lists them; a refusal or a failure leaves ``directory`` as it was and
     removes the staging directory.
 
+    Parameters
+    ----------
+    directory : Path
+        The output directory (existing, checked by :func:`output_directory`).
+    option : str
+        Name of the option in messages.
+
+    Yields
+    ------
+    Staging
+        Write into its ``path``; its ``written`` lists the final files after the block.
+
     Raises
     ------
     OutputError
@@ -481,11 +528,33 @@ class Staging:
         self.written: list[Path] = []
 
     def final(self, staged_path: Path) -> Path:
-        """Where a file written at ``staged_path`` ends (in the output directory)."""
+        """Where a file written at ``staged_path`` ends.
+
+        Parameters
+        ----------
+        staged_path : Path
+            A file written under :attr:`path`.
+
+        Returns
+        -------
+        Path
+            The same name in the output directory.
+        """
         return self.directory / Path(staged_path).relative_to(self.path)
 
     def commit(self) -> list[Path]:
-        """Check every staged file's target, then move them all; record them in the marker."""
+        """Check every staged file's target, then move them all; record them in the marker.
+
+        Returns
+        -------
+        list of Path
+            The files now in the output directory.
+
+        Raises
+        ------
+        OutputError
+            A target is refused (nothing moved) or cannot be written.
+        """
         names = sorted(
             p.relative_to(self.path).as_posix()
             for p in self.path.rglob("*")

@@ -169,6 +169,9 @@ def _refuse_collisions(directory: Path, entries: list[Path]) -> None:
             return  # a corrupted manifest of a study: --force starts it afresh
         if isinstance(doc, dict) and doc.get("format") == FORMAT:
             return
+        chunks = directory / "chunks"
+        if chunks.is_dir() and not chunks.is_symlink() and any(chunks.glob("chunk_*.json")):
+            return  # a study's manifest damaged beside its chunks: --force starts afresh
     for p in entries:
         if STUDY_NAMES.match(p.name) and (
             p.is_symlink() or not _policy.owned(directory, p.name) or p.name == "chunks"
