@@ -341,6 +341,11 @@ def test_foreign_directory_is_refused_unless_force(tmp_path: Path) -> None:
     assert str(foreign) in err and "--force" in err
     assert sorted(p.name for p in foreign.iterdir()) == ["notes.txt", "summary.json"]
     assert (foreign / "summary.json").read_text() == "my summary"
+    # even --force never replaces a file of the user's that shares a study's name (issue 30)
+    err = one_line_error(invoke("study", str(case), "--out", str(foreign), "--force"))
+    assert str(foreign / "summary.json") in err
+    assert (foreign / "summary.json").read_text() == "my summary"
+    (foreign / "summary.json").rename(tmp_path / "my_summary.json")
     result = invoke("study", str(case), "--out", str(foreign), "--force")
     assert result.exit_code == 0, result.stderr
     assert (foreign / "notes.txt").read_text() == "my notes"  # --force replaces only our files
@@ -362,17 +367,25 @@ def test_run_never_overwrites_another_case_toml(tmp_path: Path) -> None:
     out = tmp_path / "out"
     out.mkdir()
     (out / "case.toml").write_text("# the user's other case\n")
+    # a directory of the user's (issue 30: not runout's, so refused before case.toml is read)
     err = one_line_error(invoke("run", str(case), "--out", str(out)))
-    assert str(out / "case.toml") in err and "--force" in err
+    assert str(out) in err and "--force" in err
+    # even --force never replaces a case.toml runout did not write
+    err = one_line_error(invoke("run", str(case), "--out", str(out), "--force"))
+    assert str(out / "case.toml") in err
     assert (out / "case.toml").read_text() == "# the user's other case\n"
     assert sorted(p.name for p in out.iterdir()) == ["case.toml"]  # nothing else written
-    # the same case again: its own directory, rewritten
-    (out / "case.toml").write_text(case.read_text())
-    assert invoke("run", str(case), "--out", str(out)).exit_code == 0
-    (out / "case.toml").write_text("# stale\n")
-    result = invoke("run", str(case), "--out", str(out), "--force")
+    # runout's own directory: the same case again is rewritten in place
+    own = tmp_path / "own"
+    assert invoke("run", str(case), "--out", str(own)).exit_code == 0
+    assert invoke("run", str(case), "--out", str(own)).exit_code == 0
+    # its case.toml now another case: refused, --force replaces runout's files
+    (own / "case.toml").write_text("# stale\n")
+    err = one_line_error(invoke("run", str(case), "--out", str(own)))
+    assert str(own / "case.toml") in err and "--force" in err
+    result = invoke("run", str(case), "--out", str(own), "--force")
     assert result.exit_code == 0, result.stderr
-    assert (out / "case.toml").read_text() == case.read_text()
+    assert (own / "case.toml").read_text() == case.read_text()
 
 
 # ------------------------------------------------------------------ failures

@@ -239,7 +239,9 @@ def run(
         str | None,
         typer.Option(
             "--out",
-            help="Directory for plots and data files, with a copy of the case (case.toml).",
+            help="Directory for plots and data files, with a copy of the case (case.toml): "
+            "new, empty or runout's; files are written whole or not at all, never over a file "
+            "runout did not write, never through a link.",
         ),
     ] = None,
     report: Annotated[
@@ -251,7 +253,9 @@ def run(
     force: Annotated[
         bool,
         typer.Option(
-            "--force", help="Replace the results of another case in --out (its case.toml differs)."
+            "--force",
+            help="Write into a non-empty --out that is not runout's, or over the results of "
+            "another case (its case.toml differs); only runout's own files are replaced.",
         ),
     ] = False,
     model: ModelOpt = None,
@@ -273,12 +277,12 @@ def run(
     --model NAME runs another model on the same case; --set KEY=VALUE changes one case key
     (validated like the file). With either, --out's case.toml is the case as run.
 
-    --out DIR refuses a DIR whose case.toml is another case, unless --force.
+    --out DIR refuses a DIR whose case.toml is another case, or a non-empty DIR that is not
+    runout's, unless --force; even --force replaces only files runout wrote (docs/outputs.md).
 
     Example: runout run examples/seed000_tada_fig7.toml --out out/tada --report
     """
-    from runout.report.run_files import write_result
-    from runout.report.summary import bearing_summary, result_sections
+    from runout.report.summary import result_sections
     from runout.runner import run_model
 
     case = _load(case_file, model, sets)
@@ -293,44 +297,71 @@ def run(
     else:
         _print_sections(result_sections(result))
     if directory is not None:
-        try:
-            written = write_result(result, directory, history_revolutions=history_revolutions)
-            # The inputs travel with the results, so a report can be rebuilt from the directory.
-            summary = bearing_summary(case.bearing, case.operation)
-            (directory / "summary.json").write_text(
-                json.dumps({"title": case.title, **summary.to_json()}, indent=2, allow_nan=False)
-                + "\n"
-            )
-            (directory / "case.toml").write_text(case_text, encoding="utf-8")
-            written += [directory / "summary.json", directory / "case.toml"]
-            written += _copy_profiles(case_file, case, directory)
-            if report:
-                from runout.report.page import build_report
-
-                written.append(build_report(directory))
-        except OSError as exc:  # read-only directory, disk full: one line, not a traceback
-            _fail(f"{exc.filename or directory}: cannot write ({exc.strerror or exc})")
+        written = _write_run(
+            result, case, case_file, case_text, directory, report, history_revolutions
+        )
         if not as_json:
             for path in written:
                 _out.print(f"wrote {escape(str(path))}")
 
 
-def _copy_profiles(case_file: Path, case: Any, directory: Path) -> list[Path]:
-    """Copy the profile CSVs the case names by a relative path into ``--out``.
+def _write_run(
+    result: Any,
+    case: Any,
+    case_file: Path,
+    case_text: str,
+    directory: Path,
+    report: bool,
+    history_revolutions: float,
+) -> list[Path]:
+    """Write the files of ``run --out``: all of them, or none (docs/outputs.md).
+
+    The files are written into a staging directory inside ``directory`` and moved into place
+    together once every one is written and none would replace a file runout did not write:
+    a full disk or a refused name leaves ``directory`` as it was.
+    """
+    from runout.io.output_dir import staged
+    from runout.report.run_files import write_result
+    from runout.report.summary import bearing_summary
+
+    with staged(directory) as stage:
+        written = write_result(result, stage.path, history_revolutions=history_revolutions)
+        # The inputs travel with the results, so a report can be rebuilt from the directory.
+        summary = bearing_summary(case.bearing, case.operation)
+        (stage.path / "summary.json").write_text(
+            json.dumps({"title": case.title, **summary.to_json()}, indent=2, allow_nan=False) + "\n"
+        )
+        (stage.path / "case.toml").write_text(case_text, encoding="utf-8")
+        written += [stage.path / "summary.json", stage.path / "case.toml"]
+        written += _copy_profiles(case_file, case, directory, stage.path)
+        written = [stage.final(p) for p in written]
+    if report:
+        from runout.io.output_dir import write_owned
+        from runout.report.page import report_html
+
+        text = report_html(directory)
+        written.append(write_owned(directory, "report.html", lambda fh: fh.write(text)))
+    return written
+
+
+def _copy_profiles(case_file: Path, case: Any, directory: Path, stage: Path) -> list[Path]:
+    """Copy the profile CSVs the case names by a relative path into ``stage`` (for ``--out``).
 
     DIR/case.toml names them relative to itself, as the case file did: without the copies
     ``runout run DIR/case.toml`` and ``runout report DIR`` could not read the case. A profile
     must lie inside the case file's directory (or a ``RUNOUT_PROFILE_DIRS`` directory, named
-    by an absolute path, which the copy of the case reaches as it is).
+    by an absolute path, which the copy of the case reaches as it is). A profile that already
+    is the file in ``directory`` (``--out`` is the case's directory) is not copied.
     """
     copied: list[Path] = []
     for entry in case.spec.profile:
         name = Path(entry.file)
         if name.is_absolute() or ".." in name.parts:
             continue  # read from where it is, by the same absolute name
-        source, target = case_file.parent / name, directory / name
-        if target.exists() and target.samefile(source):
+        source, final = case_file.parent / name, directory / name
+        if final.exists() and not final.is_symlink() and final.samefile(source):
             continue
+        target = stage / name
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.copyfile(source, target)
         copied.append(target)
@@ -356,9 +387,10 @@ def _run_directory(out: str, case_file: Path, force: bool, case_text: str) -> Pa
     mix the two, so another case is refused (``--force`` replaces it). The same text again is
     a rerun of the same case and is rewritten in place.
     """
-    from runout.study.run import OutputError, output_directory
+    from runout.io.output_dir import OutputError, claim, output_directory
 
     directory = output_directory(out)
+    claim(directory, force=force)
     target = directory / "case.toml"
     if force or not (target.exists() or target.is_symlink()):
         return directory
@@ -383,11 +415,16 @@ def report_command(
 ) -> None:
     """Write DIR/report.html: one self-contained page with inputs, results and figures.
 
+    DIR/report.html is replaced only when runout wrote it; a link there is refused.
+
     Example: runout report out/tada
     """
-    from runout.report.page import build_report
+    from runout.io.output_dir import output_directory, write_owned
+    from runout.report.page import report_html
 
-    path = build_report(directory)
+    text = report_html(directory)  # refuses a directory that is not a run's or a study's
+    output_directory(directory, option="report")
+    path = write_owned(directory, "report.html", lambda fh: fh.write(text))
     _out.print(f"wrote {escape(str(path))}")
 
 

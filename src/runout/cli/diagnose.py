@@ -136,10 +136,20 @@ def register(app: typer.Typer) -> None:
             typer.Option(
                 "--out",
                 help="Directory for report.html, diagnosis.json, the estimated case file "
-                "(estimated.toml, runs with `runout run`) and the figures.",
+                "(estimated.toml, runs with `runout run`) and the figures: new, empty or "
+                "runout's; files are written whole or not at all, never over a file runout "
+                "did not write, never through a link.",
                 show_default=False,
             ),
         ] = None,
+        force: Annotated[
+            bool,
+            typer.Option(
+                "--force",
+                help="Write into a non-empty --out that is not runout's (only runout's own "
+                "files are replaced).",
+            ),
+        ] = False,
     ) -> None:
         r"""Estimate which part deviations produced a measured runout or vibration record.
 
@@ -166,10 +176,11 @@ def register(app: typer.Typer) -> None:
             )
         case = _load(case_file)
         directory = None
-        if out is not None:
-            from runout.study.run import output_directory
+        if out is not None:  # checked before the fit: a refused directory costs nothing
+            from runout.io.output_dir import claim, output_directory
 
             directory = output_directory(out)
+            claim(directory, force=force)
         result = diagnose(
             case,
             record,
@@ -200,12 +211,12 @@ def register(app: typer.Typer) -> None:
                 for text in items:
                     _out.print(f"- {escape(text)}", highlight=False, soft_wrap=True, emoji=False)
         if directory is not None:
+            from runout.io.output_dir import staged
             from runout.report._diagnosis import write_diagnosis
 
-            try:
-                written = write_diagnosis(result, directory)
-            except OSError as exc:
-                _fail(f"{exc.filename or directory}: cannot write ({exc.strerror or exc})")
+            # all the files or none, never over a file runout did not write (docs/outputs.md)
+            with staged(directory) as stage:
+                written = [stage.final(p) for p in write_diagnosis(result, stage.path)]
             if not as_json:
                 for path in written:
                     _out.print(f"wrote {escape(str(path))}")

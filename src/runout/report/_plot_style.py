@@ -14,6 +14,7 @@ from typing import Any, TypeVar
 import numpy as np
 
 from runout.base.display import format_length
+from runout.io.output_dir import write_atomic
 
 __all__ = [
     "ANNOTATION_SIZE",
@@ -199,9 +200,15 @@ def _save(fig: Any, path: Path, dpi: int = 100) -> Path:
     100 dpi: a 9 in figure is 900 pixels, the width the report shows it at.
     """
     plt = pyplot()
-    # zlib level 1: a third of the encoding time for files about 5 % larger
-    _finish(fig).savefig(path, dpi=dpi, pil_kwargs={"compress_level": 1})
-    plt.close(fig)
+    _finish(fig)
+    try:
+        # through a temporary renamed over ``path``: a full disk leaves no truncated figure;
+        # zlib level 1: a third of the encoding time for files about 5 % larger
+        kind = path.suffix.lstrip(".").lower() or "png"
+        extra = {"pil_kwargs": {"compress_level": 1}} if kind == "png" else {}
+        write_atomic(path, lambda fh: fig.savefig(fh, format=kind, dpi=dpi, **extra), binary=True)
+    finally:
+        plt.close(fig)
     return path
 
 

@@ -21,6 +21,7 @@ from typing import Any
 
 from runout.base.display import resolution_note
 from runout.base.errors import RunoutError
+from runout.io.output_dir import write_atomic
 from runout.io.result_files import read_result_json
 from runout.report._html import (
     QUANTITY_NAMES,
@@ -41,7 +42,7 @@ from runout.report._html import (
 from runout.report._inputs import inputs_section, speed_words, unused_keys
 from runout.report._study import study_first_screen, study_statistics
 
-__all__ = ["build_combined_report", "build_report"]
+__all__ = ["build_combined_report", "build_report", "report_html"]
 
 #: Spectral lines listed in the lines table (all of them are in lines.csv).
 MAX_LINES = 40
@@ -89,10 +90,31 @@ def build_report(directory: Path, output: Path | None = None) -> Path:
     RunoutError
         If the directory holds no ``result.json`` or study manifest.
     """
-    title, body = _report_body(Path(directory))
+    text = report_html(directory)
     target = output or Path(directory) / "report.html"
-    target.write_text(_page(title, body), encoding="utf-8")
-    return target
+    return write_atomic(target, lambda fh: fh.write(text))
+
+
+def report_html(directory: Path) -> str:
+    """The text of ``report.html`` for a run or study directory (nothing written).
+
+    Parameters
+    ----------
+    directory : Path
+        A directory written by ``runout run CASE --out DIR`` (or ``runout study``).
+
+    Returns
+    -------
+    str
+        The self-contained page.
+
+    Raises
+    ------
+    RunoutError
+        If the directory holds no ``result.json`` or study manifest.
+    """
+    title, body = _report_body(Path(directory))
+    return _page(title, body)
 
 
 def build_combined_report(
@@ -124,8 +146,8 @@ def build_combined_report(
         )
     body = f"<h1>{esc(title)}</h1><ol class='meta'>{''.join(toc)}</ol>" + "".join(sections)
     output.parent.mkdir(parents=True, exist_ok=True)
-    output.write_text(_page(title, body), encoding="utf-8")
-    return output
+    text = _page(title, body)
+    return write_atomic(output, lambda fh: fh.write(text))
 
 
 def _page(title: str, body: str) -> str:

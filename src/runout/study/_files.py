@@ -10,12 +10,12 @@ import json
 import math
 import os
 import re
-import secrets
 import sys
 from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any, TextIO
 
+from runout.io import output_dir as _policy
 from runout.study._chunks import ChunkTask
 from runout.study._plan import FORMAT, RUNOUT_KEYS, StudyError
 
@@ -36,76 +36,46 @@ _TEMP = re.compile(r"^\..+\.[0-9a-f]{12}\.tmp$")
 _SWEEP_DYNAMIC = re.compile(r"^(points|sweep\.csv|trend\.png|spectra_.+\.png)$")
 
 
-class OutputError(StudyError):
+class OutputError(StudyError, _policy.OutputError):
     """An output directory that cannot be used: not a directory, unwritable, foreign, locked."""
 
 
 def write_atomic(path: Path, write: Callable[[TextIO], Any]) -> Path:
     """Write ``path`` through a uniquely named temporary file in the same directory.
 
-    ``os.replace`` within one directory is atomic: a reader, or a study resumed after a kill,
-    sees the old file or the new one, never half of one. The temporary name is unique
-    (``.<name>.<random>.tmp``, created with O_EXCL), so two writers can never truncate or
-    rename each other's temporary file, and a leftover of a killed run is recognised and
-    removed by the next run (:func:`_remove_leftovers`). Created with mode 0o666 minus the
-    umask, like any file the user writes (``mkstemp`` would make it private).
+    :func:`runout.io.output_dir.write_atomic`, text mode: a reader, or a study resumed after
+    a kill, sees the old file or the new one, never half of one; two writers never share a
+    temporary name (``.<name>.<random>.tmp``, O_EXCL), and a leftover of a killed run is
+    removed by the next run (:func:`_remove_leftovers`). A symbolic link at ``path`` is
+    refused, never written through.
 
     Raises
     ------
     OutputError
-        Naming ``path`` when the file system refuses (read-only, full, permissions).
+        Naming ``path`` when it is a link or the file system refuses (read-only, full,
+        permissions).
     """
     try:
-        for _ in range(100):
-            tmp = path.with_name(f".{path.name}.{secrets.token_hex(6)}.tmp")
-            try:
-                fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
-            except FileExistsError:
-                continue
-            break
-        else:  # pragma: no cover - 100 collisions of 48 random bits
-            raise FileExistsError(f"no free temporary name next to {path}")
-        try:
-            with os.fdopen(fd, "w", encoding="utf-8", newline="") as fh:
-                write(fh)
-            os.replace(tmp, path)
-        except BaseException:
-            tmp.unlink(missing_ok=True)
-            raise
-    except OSError as exc:
-        raise OutputError(f"{path}: cannot write ({exc.strerror or exc})") from None
-    return path
+        return _policy.write_atomic(path, write)  # type: ignore[arg-type]  # opened in text mode
+    except _policy.OutputError as exc:
+        raise OutputError(str(exc)) from None
 
 
 def output_directory(out: Path | str, option: str = "--out") -> Path:
     """Check ``out`` can be an output directory and create it (with its parents).
 
-    Parameters
-    ----------
-    out : path or str
-        As the user gave it. An empty string is refused: ``Path("")`` is the current
-        directory, and writing a study there by accident would replace its files.
-    option : str
-        Name of the option in messages.
+    :func:`runout.io.output_dir.output_directory`: an empty string, an existing file, a
+    system or home directory, or a directory that cannot be created or written is refused.
 
     Raises
     ------
     OutputError
-        One line naming the path: empty, an existing file (``/dev/null`` too), or a directory
-        that cannot be created.
+        One line naming the path.
     """
-    if isinstance(out, str) and not out.strip():
-        raise OutputError(f"{option}: empty path; give a directory (use {option} . for this one)")
-    path = Path(out)
-    if path.exists() and not path.is_dir():
-        raise OutputError(f"{option} {path}: exists and is not a directory")
     try:
-        path.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        raise OutputError(
-            f"{option} {path}: cannot create the directory ({exc.strerror or exc})"
-        ) from None
-    return path
+        return _policy.output_directory(out, option)
+    except _policy.OutputError as exc:
+        raise OutputError(str(exc)) from None
 
 
 def _own_lock_file(path: Path) -> bool:
@@ -150,13 +120,15 @@ def refuse_foreign(directory: Path, kind: str, force: bool, option: str = "--out
     StudyError
         A study directory whose manifest is corrupted (naming the file).
     """
-    if force:
-        return
     try:
         entries = _entries(directory)
     except OSError as exc:
         raise OutputError(f"{option} {directory}: cannot list ({exc.strerror or exc})") from None
     if not entries:
+        return
+    if force:
+        if kind == "study":
+            _refuse_collisions(directory, entries)
         return
     if kind == "study":
         manifest = directory / "manifest.json"
@@ -172,6 +144,42 @@ def refuse_foreign(directory: Path, kind: str, force: bool, option: str = "--out
         f"{option} {directory}: not empty and not a runout {kind} output (it holds "
         f"{foreign.name!r}); choose an empty directory or pass --force to write into it"
     )
+
+
+#: The names a study writes (and a fresh study deletes) in its output directory.
+STUDY_NAMES = re.compile(
+    r"^(manifest\.json|summary\.json|samples\.csv|samples_columns\.json|stiffness\.csv"
+    r"|histograms\.png|sweep_.+\.png|chunks)$"
+)
+
+
+def _refuse_collisions(directory: Path, entries: list[Path]) -> None:
+    """Refuse (even with ``--force``) a study over a file of the user's that it would replace.
+
+    In a study's own directory (a ``manifest.json`` of a study, or one too damaged to read)
+    every study name is the study's;
+    elsewhere a study name is runout's only when the directory's list of runout's files
+    (:data:`runout.io.output_dir.MARKER`) holds it.
+    """
+    manifest = directory / "manifest.json"
+    if manifest.is_file() and not manifest.is_symlink():
+        try:
+            doc = json.loads(manifest.read_text(encoding="utf-8"))
+        except (OSError, ValueError):
+            return  # a corrupted manifest of a study: --force starts it afresh
+        if isinstance(doc, dict) and doc.get("format") == FORMAT:
+            return
+        chunks = directory / "chunks"
+        if chunks.is_dir() and not chunks.is_symlink() and any(chunks.glob("chunk_*.json")):
+            return  # a study's manifest damaged beside its chunks: --force starts afresh
+    for p in entries:
+        if STUDY_NAMES.match(p.name) and (
+            p.is_symlink() or not _policy.owned(directory, p.name) or p.name == "chunks"
+        ):
+            raise OutputError(
+                f"{p}: exists and was not written by runout; a study replaces only its own "
+                "files, even with --force (move it away or choose an empty directory)"
+            )
 
 
 def _remove_leftovers(directory: Path) -> None:

@@ -699,9 +699,16 @@ def _prepare_directory(
                     f"({shown})"
                 )
     try:
+        ours = [p for p in directory.iterdir() if _STUDY_FILES.match(p.name) or p.name == "chunks"]
+        link = next((p for p in ours if p.is_symlink()), None)
+        if link is not None:  # the user's link, never written or deleted through
+            raise OutputError(
+                f"{link}: a symbolic link; runout does not write through links (remove it or "
+                "choose another directory)"
+            )
         if fresh:
-            for p in directory.iterdir():
-                if p.is_file() and _STUDY_FILES.match(p.name):
+            for p in ours:
+                if p.is_file():
                     p.unlink()
             if (directory / "chunks").is_dir():
                 for p in (directory / "chunks").glob("chunk_*.json"):
