@@ -59,6 +59,7 @@ __all__ = [
     "format_seconds",
     "harmonics_memory",
     "max_profile_bytes",
+    "max_profile_points",
     "max_record_bytes",
     "profile_allowed",
 ]
@@ -422,6 +423,28 @@ def max_profile_bytes(limits: Budget) -> int:
         Largest profile file size [B].
     """
     return int(limits.memory // BYTES_PER_PROFILE_BYTE)
+
+
+#: Bytes of a CSV row of a profile (``"359.75,0.0123\\n"`` and longer): a profile given as
+#: arrays is held to the points of the largest profile file, since saving the case writes it as
+#: one.
+PROFILE_ROW_BYTES = 16
+
+
+def max_profile_points(limits: Budget) -> int:
+    """Most points of a profile given as arrays (Python API) within the memory budget.
+
+    Parameters
+    ----------
+    limits : Budget
+        The budget; :func:`max_profile_bytes` divided by :data:`PROFILE_ROW_BYTES`.
+
+    Returns
+    -------
+    int
+        Largest number of angles (and of deviations) [-].
+    """
+    return max_profile_bytes(limits) // PROFILE_ROW_BYTES
 
 
 def max_record_bytes(limits: Budget) -> int:
