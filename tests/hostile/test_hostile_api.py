@@ -263,3 +263,27 @@ def test_a_spindle_layout_refuses_bearings_closer_than_their_rings_allow() -> No
         assert refused.value.key == "bearings[2].position"
     assert layout(1e-3).bearings[1].position == 1e-3
     assert layout(np.float32(0.012)).bearings[1].position == float(np.float32(0.012))
+
+
+@pytest.mark.parametrize(
+    ("call", "key"),
+    [
+        ("BearingImperfections.perfect(10**9)", "n_elements"),
+        ("spectral_law((1, 10**9), 1e-9, -1.0, phase=0.0)", "waviness_spectrum.orders"),
+        ("single_harmonic(9, 1e-9 + 1j, 0.0)", "waviness.amplitude"),
+        ("spectral_law((2, 30), 1e-9, -1.0, phase=1j)", "waviness_spectrum.phase"),
+        (
+            "BearingImperfections.perfect(8).with_element_errors("
+            "diameter_errors=np.zeros(8, complex))",
+            "imperfections.diameter_errors",
+        ),
+    ],
+)
+def test_the_harmonics_constructors_bound_sizes_and_refuse_complex(call: str, key: str) -> None:
+    # 10^9 elements or orders were allocated (MemoryError), complex element errors cast to real
+    got, took = _api(
+        "from runout.geometry.imperfections import BearingImperfections, single_harmonic, "
+        f"spectral_law\nreport(lambda: {call})"
+    )
+    assert got["error"] == "ImperfectionError" and got["key"] == key, got
+    assert took < 30.0

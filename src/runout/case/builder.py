@@ -286,6 +286,14 @@ class Imperfections:
         -------
         Imperfections
             A new builder with the entry added.
+
+        Raises
+        ------
+        CaseError
+            Naming ``profile[i].angles`` or ``profile[i].deviations``: arrays with more points
+            than any memory budget of this machine reads (counted before they are copied; the
+            case's own budget is checked when the case is built), complex values (never cast
+            to real) or values that are not numbers.
         """
         from_arrays = angles is not None or deviations is not None
         if from_arrays == (file is not None):

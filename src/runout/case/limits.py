@@ -39,6 +39,10 @@ from typing import Any
 
 from runout.base.errors import GeometryError
 
+# the physical bounds live with the harmonics (the constructors in code check them too)
+from runout.geometry._harmonics import MAX_ELEMENTS as MAX_ELEMENTS
+from runout.geometry._harmonics import MAX_ORDER as MAX_ORDER
+
 __all__ = [
     "DEFAULT_MAX_MEMORY",
     "DEFAULT_MAX_TIME",
@@ -80,16 +84,10 @@ ENV_PROFILE_DIRS = "RUNOUT_PROFILE_DIRS"
 MAX_CASE_FILE_BYTES = 4 * MiB
 #: Deepest nesting of TOML tables and arrays in a case file (the schema needs 4).
 MAX_TOML_DEPTH = 32
-#: Largest waviness order. A wave of 10^6 lobes is 3 µm long even on a 1 m raceway, shorter
-#: than the contact ellipse of any loaded ball or roller, which filters it out.
-MAX_ORDER = 1_000_000
 #: Largest number of histogram bins of a Monte Carlo summary.
 MAX_BINS = 10_000
 #: Most entries of an array table ([[waviness]], [[waviness_spectrum]], [[profile]]).
 MAX_ENTRIES = 1000
-#: Most rolling elements. The largest slewing bearings have a few hundred; every element is an
-#: object of its own while the case is built, so 10 000 keep that under a second.
-MAX_ELEMENTS = 10_000
 
 # --- measured costs (2-core x86-64, numba kernels compiled) ---------------------------------
 #: Seconds per instant × contact × harmonic of the quasi-static solves (deviations + Newton).

@@ -323,7 +323,11 @@ class Case:
         Raises
         ------
         CaseError
-            Naming ``<python>`` and the case key, with the message a case file would give.
+            Naming ``<python>`` and the case key, with the message a case file would give
+            (profile arrays beyond the memory budget's points included).
+        ArgumentTypeError
+            A ``bearing``, ``operation`` or ``imperfections`` of the wrong type: a
+            :class:`CaseError` whose key is the argument, and a :class:`TypeError`.
         """
         if operation is not None and not isinstance(operation, Operation):
             raise ArgumentTypeError(

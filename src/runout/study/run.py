@@ -189,7 +189,7 @@ def dask_executor(address: str | None = None, **cluster: Any) -> Executor:
     except ImportError:  # pragma: no cover - depends on the installation
         raise StudyError("--scheduler needs Dask distributed: pip install 'runout[dask]'") from None
     if remote is not None:
-        return connect_client(remote).get_executor()  # type: ignore[no-any-return]
+        return connect_client(remote).get_executor()
     try:
         cluster.setdefault("dashboard_address", None)
         # Dask's nannies trim malloc at 64 KiB by default (MALLOC_TRIM_THRESHOLD_), which
