@@ -21,6 +21,8 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 CASE = Path(__file__).resolve().parents[2] / "examples" / "seed001_kim_table9.toml"
 #: Seconds a command may take: the refusals are immediate, the timeouts below are 1 s.
@@ -125,3 +127,46 @@ def test_a_timeout_that_is_not_a_positive_time_names_its_variable(value: str) ->
     assert done.returncode == 2, done.stderr
     lines = done.stderr.splitlines()
     assert len(lines) == 1 and "RUNOUT_SCHEDULER_CONNECT_TIMEOUT" in lines[0], done.stderr
+
+
+@pytest.mark.parametrize(
+    ("text", "uri"),
+    [
+        ("local", None),
+        (" local ", None),
+        ("tcp://127.0.0.1:8786", "tcp://127.0.0.1:8786"),
+        ("scheduler.example.org:8786", "tcp://scheduler.example.org:8786"),
+        ("tls://scheduler:443", "tls://scheduler:443"),
+        ("tcp://[::1]:8786", "tcp://[::1]:8786"),
+        ("tcp://[fe80::1%eth0]:1", "tcp://[fe80::1%eth0]:1"),
+    ],
+)
+def test_the_accepted_forms_parse(text: str, uri: str | None) -> None:
+    from runout.study.scheduler import scheduler_address
+
+    parsed = scheduler_address(text)
+    assert (parsed.uri if parsed is not None else None) == uri
+
+
+@given(
+    host=st.ip_addresses(),
+    port=st.integers(1, 65535),
+    scheme=st.sampled_from(["tcp", "tls"]),
+)
+def test_every_ip_address_and_port_round_trips(host: object, port: int, scheme: str) -> None:
+    from runout.study.scheduler import scheduler_address
+
+    shown = f"[{host}]" if ":" in str(host) else str(host)
+    parsed = scheduler_address(f"{scheme}://{shown}:{port}")
+    assert parsed is not None
+    assert (parsed.scheme, parsed.host, parsed.port) == (scheme, str(host), port)
+    assert scheduler_address(parsed.uri) == parsed
+
+
+@given(port=st.one_of(st.integers(max_value=0), st.integers(min_value=65536)))
+def test_a_port_outside_the_range_is_refused(port: int) -> None:
+    from runout.study._plan import StudyError
+    from runout.study.scheduler import scheduler_address
+
+    with pytest.raises(StudyError, match=r"^--scheduler: .*PORT 1 to 65535"):
+        scheduler_address(f"tcp://127.0.0.1:{port}")

@@ -260,7 +260,7 @@ def thrust_signs(positions: list[float], arrangement: str) -> list[int]:
     front = [p <= mean + 1e-12 * max(1.0, abs(mean)) for p in positions]
     if all(front):
         raise GeometryError(
-            "bearings.position",
+            f"bearings[{len(positions)}].position",
             f"arrangement {arrangement} opposes the bearings before and after the mean "
             "position, but they all sit at one position: give distinct positions",
         )
