@@ -74,6 +74,11 @@ def _doc_hint(key: str) -> str:
     return f" (see docs/case-file.md#{table})"
 
 
+class ArgumentTypeError(CaseError, TypeError):
+    """A Python argument of the wrong type (a bearing that is not one): a :class:`CaseError`
+    naming the argument as its key, and a :class:`TypeError` as Python code expects."""
+
+
 class ModelNotAvailableError(RunoutError):
     """The case asks for a model this version does not provide."""
 
@@ -89,18 +94,32 @@ class NumericalError(RunoutError):
         Index of the time instant (or rotation angle) where it happened.
     time : float or None
         Time [s] or angle [rad] of that instant, when known.
+    key : str or None
+        The case key that decides whether the solver can succeed (``"spindle.preload"``),
+        when one does; the message starts with it.
+    hint : str or None
+        What to change, at the end of the message.
     """
 
-    def __init__(self, cause: str, instant: int | None = None, time: float | None = None) -> None:
+    def __init__(
+        self,
+        cause: str,
+        instant: int | None = None,
+        time: float | None = None,
+        key: str | None = None,
+        hint: str | None = None,
+    ) -> None:
         self.cause = cause
         self.instant = instant
         self.time = time
+        self.key = key
         where = ""
         if instant is not None:
             where = f" at instant {instant}"
             if time is not None:
                 where += f" (t = {time:.6g})"
-        super().__init__(f"{cause}{where}")
+        end = f"; {hint}" if hint else ""
+        super().__init__(f"{key + ': ' if key else ''}{cause}{where}{end}")
 
 
 class ConvergenceError(NumericalError):

@@ -27,6 +27,7 @@ from runout.case._schema import (
 from runout.case.limits import (
     BYTES_PER_PROFILE_BYTE,
     ENV_PROFILE_DIRS,
+    PROFILE_ROW_BYTES,
     Budget,
     LimitError,
     ResourceEstimate,
@@ -34,6 +35,7 @@ from runout.case.limits import (
     format_bytes,
     harmonics_memory,
     max_profile_bytes,
+    max_profile_points,
     profile_allowed,
 )
 from runout.case.limits import check as check_estimate
@@ -288,6 +290,21 @@ def _read_profile(
     """
     if data is not None and p.file in data:
         angles, deviations = data[p.file]
+        most = max_profile_points(limits)
+        for name, values in (("angles", angles), ("deviations", deviations)):
+            count = int(np.size(values)) if isinstance(values, np.ndarray) else len(values)
+            if count > most:  # before the arrays are copied and fitted
+                raise LimitError(
+                    f"{key}.{name}",
+                    f"has {count} points; reading it would need about "
+                    f"{format_bytes(count * PROFILE_ROW_BYTES * BYTES_PER_PROFILE_BYTE)} of "
+                    f"memory (profiles up to {most} points); resample the profile "
+                    f"{limits.raise_hint('memory')}",
+                )
+            if np.iscomplexobj(values):
+                raise _CaseKeyError(
+                    f"{key}.{name}", "must be real numbers, got complex values (never cast to real)"
+                )
         try:
             # the conversions of read_profile_csv, so that saving it as CSV changes nothing
             ang = np.array(angles, dtype=np.float64)

@@ -194,7 +194,9 @@ class SpindleBearingSpec(BearingSpec):
         description="Name the imperfection tables use (bearing = ...) and the outputs show."
     )
     position: Length = Field(
-        description="Axial coordinate of the bearing's ball-set plane along the shaft [m]."
+        description="Axial coordinate of the bearing's ball-set plane along the shaft [m]; two "
+        "bearings lie at least half the sum of their ball diameters apart (their rings are at "
+        "least as wide as their balls)."
     )
 
     @field_validator("name")

@@ -21,7 +21,8 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from pydantic import ValidationError
 
-from runout.base.errors import CaseError
+from runout.base.errors import ArgumentTypeError, CaseError
+from runout.case import limits
 from runout.case.model import (
     PYTHON_PATH,
     AnalysisSpec,
@@ -98,14 +99,20 @@ class Imperfections:
     def __init__(self, elements: int | None = None, **unexpected: Any) -> None:
         if unexpected:
             name = next(iter(unexpected))
-            raise TypeError(
+            raise ArgumentTypeError(
+                PYTHON_PATH,
+                name,
                 f"Imperfections() takes only elements=Z, not {name}=; add imperfections with "
                 ".waviness(part, order=..., amplitude=...), .spectrum(...), .profile(...), "
                 ".slant(...), .diameter_errors([...]) and .pitch_errors([...]) (the harmonics "
-                "themselves: runout.geometry.imperfections.Imperfections)"
+                "themselves: runout.geometry.imperfections.Imperfections)",
             )
+        if isinstance(elements, np.ndarray) and elements.ndim == 0:
+            elements = elements[()]  # a 0-d array is the number it holds
         if elements is not None and (
-            isinstance(elements, bool) or not isinstance(elements, numbers.Integral) or elements < 3
+            isinstance(elements, bool | np.bool_)
+            or not isinstance(elements, numbers.Integral)
+            or elements < 3
         ):
             raise CaseError(
                 PYTHON_PATH, "bearing.elements", f"must be an integer >= 3, got {elements!r}"
@@ -279,6 +286,14 @@ class Imperfections:
         -------
         Imperfections
             A new builder with the entry added.
+
+        Raises
+        ------
+        CaseError
+            Naming ``profile[i].angles`` or ``profile[i].deviations``: arrays with more points
+            than any memory budget of this machine reads (counted before they are copied; the
+            case's own budget is checked when the case is built), complex values (never cast
+            to real) or values that are not numbers.
         """
         from_arrays = angles is not None or deviations is not None
         if from_arrays == (file is not None):
@@ -295,8 +310,10 @@ class Imperfections:
                     f"profile[{sum(t == 'profile' for t, _ in self.entries) + 1}].file",
                     "a profile from arrays needs both angles and deviations",
                 )
-            a = np.array(angles, dtype=np.float64).ravel()
-            d = np.array(deviations, dtype=np.float64).ravel()
+            index = sum(t == "profile" for t, _ in self.entries) + 1
+            # sizes first: 5e7 points were copied, then ran out of memory in the fit
+            a = _real_array(angles, f"profile[{index}].angles", _most_profile_points())
+            d = _real_array(deviations, f"profile[{index}].deviations", _most_profile_points())
             finite = a[np.isfinite(a)]
             span = float(np.ptp(finite)) if finite.size else 0.0
             if angle_unit is None and span > 2.0 * np.pi * (1.0 + 1e-9):
@@ -404,13 +421,27 @@ class Imperfections:
         return self._with("elements", {"phase_frame": frame})
 
     def _per_element(self, values: Any, what: str) -> list[Any]:
-        listed = _plain(values if isinstance(values, np.ndarray | list | tuple) else list(values))
-        if self.elements is not None and len(listed) != self.elements:
+        key = f"elements.{what}_errors"
+        # the length first: 10^7 entries were converted one by one for minutes before it
+        count = _length(values, key)
+        if self.elements is not None and count != self.elements:
+            raise CaseError(
+                PYTHON_PATH, key, f"has {count} entries; the bearing has {self.elements} elements"
+            )
+        if count > limits.MAX_ELEMENTS:
             raise CaseError(
                 PYTHON_PATH,
-                f"elements.{what}_errors",
-                f"has {len(listed)} entries; the bearing has {self.elements} elements",
+                key,
+                f"has {count} entries, more than the {limits.MAX_ELEMENTS} elements a bearing "
+                "may have",
             )
+        if np.iscomplexobj(values) or any(
+            isinstance(v, numbers.Complex) and not isinstance(v, numbers.Real) for v in values
+        ):
+            raise CaseError(
+                PYTHON_PATH, key, "must be real numbers, got complex values (never cast to real)"
+            )
+        listed = _plain(values if isinstance(values, np.ndarray | list | tuple) else list(values))
         return list(listed)
 
     # --- reading it back ----------------------------------------------------------------------
@@ -461,6 +492,61 @@ class Imperfections:
         return f"Imperfections(elements={self.elements}{': ' if tables else ''}{tables})"
 
 
+def _length(values: Any, key: str) -> int:
+    """Number of values of an array or sequence, found without copying it."""
+    if isinstance(values, np.ndarray):
+        return int(values.size)
+    if isinstance(values, str | bytes) or not hasattr(values, "__len__"):
+        raise CaseError(
+            PYTHON_PATH,
+            key,
+            f"must be a sequence or an array of numbers, got {type(values).__name__}",
+        )
+    return len(values)
+
+
+def _most_profile_points() -> int:
+    """Most points of a profile given as arrays that any budget on this machine can read.
+
+    The case's own budget (``max_memory``) is checked when the case is built
+    (:func:`runout.case.limits.max_profile_points`); here only what no budget allows, so that
+    arrays beyond it are refused before they are copied.
+    """
+    installed = limits.physical_memory() or float(limits.DEFAULT_MAX_MEMORY)
+    machine = limits.Budget(installed, limits.DEFAULT_MAX_TIME, "this machine", "default")
+    return limits.max_profile_points(machine)
+
+
+def _real_array(values: Any, key: str, most: int) -> np.ndarray:
+    """``values`` as a flat float64 array: at most ``most`` of them, real, checked first."""
+    count = _length(values, key)
+    if count > most:
+        raise CaseError(
+            PYTHON_PATH,
+            key,
+            f"has {count} points, more than the {most} a profile may have on this machine; "
+            "resample the profile",
+        )
+    array = np.asarray(values)
+    if array.size > most:  # nested sequences: len() counted the outer one only
+        raise CaseError(
+            PYTHON_PATH,
+            key,
+            f"has {array.size} points, more than the {most} a profile may have on this "
+            "machine; resample the profile",
+        )
+    if array.dtype.kind == "c":
+        raise CaseError(
+            PYTHON_PATH, key, "must be real numbers, got complex values (never cast to real)"
+        )
+    try:
+        return np.array(array, dtype=np.float64).ravel()
+    except (TypeError, ValueError):
+        raise CaseError(
+            PYTHON_PATH, key, f"must be numbers, got values of type {array.dtype}"
+        ) from None
+
+
 def _counts(entries: tuple[tuple[str, dict[str, Any]], ...]) -> dict[str, int]:
     out: dict[str, int] = {}
     for table, _ in entries:
@@ -502,10 +588,12 @@ def build_case(
         Validated as a case file would be (``<python>`` names the file in errors).
     """
     if imperfections is not None and not isinstance(imperfections, Imperfections):
-        raise TypeError(
-            "imperfections must be a runout.Imperfections builder (e.g. "
+        raise ArgumentTypeError(
+            PYTHON_PATH,
+            "imperfections",
+            "must be a runout.Imperfections builder (e.g. "
             "runout.Imperfections(elements=8).waviness('inner', order=9, amplitude=10e-9)), "
-            f"got {type(imperfections).__name__}"
+            f"got {type(imperfections).__name__}",
         )
     return Case.from_inputs(
         bearing,

@@ -39,6 +39,10 @@ from typing import Any
 
 from runout.base.errors import GeometryError
 
+# the physical bounds live with the harmonics (the constructors in code check them too)
+from runout.geometry._harmonics import MAX_ELEMENTS as MAX_ELEMENTS
+from runout.geometry._harmonics import MAX_ORDER as MAX_ORDER
+
 __all__ = [
     "DEFAULT_MAX_MEMORY",
     "DEFAULT_MAX_TIME",
@@ -59,6 +63,7 @@ __all__ = [
     "format_seconds",
     "harmonics_memory",
     "max_profile_bytes",
+    "max_profile_points",
     "max_record_bytes",
     "profile_allowed",
 ]
@@ -79,16 +84,10 @@ ENV_PROFILE_DIRS = "RUNOUT_PROFILE_DIRS"
 MAX_CASE_FILE_BYTES = 4 * MiB
 #: Deepest nesting of TOML tables and arrays in a case file (the schema needs 4).
 MAX_TOML_DEPTH = 32
-#: Largest waviness order. A wave of 10^6 lobes is 3 µm long even on a 1 m raceway, shorter
-#: than the contact ellipse of any loaded ball or roller, which filters it out.
-MAX_ORDER = 1_000_000
 #: Largest number of histogram bins of a Monte Carlo summary.
 MAX_BINS = 10_000
 #: Most entries of an array table ([[waviness]], [[waviness_spectrum]], [[profile]]).
 MAX_ENTRIES = 1000
-#: Most rolling elements. The largest slewing bearings have a few hundred; every element is an
-#: object of its own while the case is built, so 10 000 keep that under a second.
-MAX_ELEMENTS = 10_000
 
 # --- measured costs (2-core x86-64, numba kernels compiled) ---------------------------------
 #: Seconds per instant × contact × harmonic of the quasi-static solves (deviations + Newton).
@@ -422,6 +421,28 @@ def max_profile_bytes(limits: Budget) -> int:
         Largest profile file size [B].
     """
     return int(limits.memory // BYTES_PER_PROFILE_BYTE)
+
+
+#: Bytes of a CSV row of a profile (``"359.75,0.0123\\n"`` and longer): a profile given as
+#: arrays is held to the points of the largest profile file, since saving the case writes it as
+#: one.
+PROFILE_ROW_BYTES = 16
+
+
+def max_profile_points(limits: Budget) -> int:
+    """Most points of a profile given as arrays (Python API) within the memory budget.
+
+    Parameters
+    ----------
+    limits : Budget
+        The budget; :func:`max_profile_bytes` divided by :data:`PROFILE_ROW_BYTES`.
+
+    Returns
+    -------
+    int
+        Largest number of angles (and of deviations) [-].
+    """
+    return max_profile_bytes(limits) // PROFILE_ROW_BYTES
 
 
 def max_record_bytes(limits: Budget) -> int:

@@ -23,7 +23,7 @@ from typing import Any
 import numpy as np
 from pydantic import ValidationError
 
-from runout.base.errors import CaseError, GeometryError
+from runout.base.errors import ArgumentTypeError, CaseError, GeometryError
 from runout.case._build import (
     _GEOMETRY_KEYS,
     ProfileData,
@@ -107,8 +107,12 @@ PYTHON_PATH = "<python>"
 
 def _plain(value: Any) -> Any:
     """A case-file value: numpy numbers as Python numbers, sequences as lists."""
+    if isinstance(value, np.ndarray) and value.ndim == 0:
+        value = value[()]  # a 0-d array is the number it holds
     if isinstance(value, bool | str) or value is None:
         return value
+    if isinstance(value, np.bool_):
+        return bool(value)
     if isinstance(value, numbers.Integral):
         return int(value)
     if isinstance(value, numbers.Real):
@@ -152,9 +156,10 @@ def _bearing_tables(bearing: Any) -> dict[str, Any]:
             "roller_length",
         )
     else:
-        raise TypeError(
-            f"bearing must be a runout.BallBearing or runout.RollerBearing, got "
-            f"{type(bearing).__name__}"
+        raise ArgumentTypeError(
+            PYTHON_PATH,
+            "bearing",
+            f"must be a runout.BallBearing or runout.RollerBearing, got {type(bearing).__name__}",
         )
     for name in names:
         value = getattr(bearing, name)
@@ -318,15 +323,25 @@ class Case:
         Raises
         ------
         CaseError
-            Naming ``<python>`` and the case key, with the message a case file would give.
+            Naming ``<python>`` and the case key, with the message a case file would give
+            (profile arrays beyond the memory budget's points included).
+        ArgumentTypeError
+            A ``bearing``, ``operation`` or ``imperfections`` of the wrong type: a
+            :class:`CaseError` whose key is the argument, and a :class:`TypeError`.
         """
         if operation is not None and not isinstance(operation, Operation):
-            raise TypeError(f"operation must be a runout.Operation, got {type(operation).__name__}")
+            raise ArgumentTypeError(
+                PYTHON_PATH,
+                "operation",
+                f"must be a runout.Operation, got {type(operation).__name__}",
+            )
         if imperfections is not None and not hasattr(imperfections, "tables"):
-            raise TypeError(
-                "imperfections must be a runout.Imperfections builder (e.g. "
+            raise ArgumentTypeError(
+                PYTHON_PATH,
+                "imperfections",
+                "must be a runout.Imperfections builder (e.g. "
                 "runout.Imperfections(elements=8).waviness('inner', order=9, amplitude=10e-9)), "
-                f"got {type(imperfections).__name__}"
+                f"got {type(imperfections).__name__}",
             )
         data: dict[str, Any] = {}
         if title:
@@ -924,11 +939,14 @@ def build_layout(
             raise CaseError(path, _remap(exc.key, b.name, index, entries), exc.message) from None
         bearings.append(SpindleBearing(b.name, b.position, case.bearing, case.imperfections))
         cases.append(case)
-    layout = SpindleLayout(
-        bearings=tuple(bearings),
-        arrangement=spec.spindle.arrangement,
-        preload=spec.spindle.preload,
-        preload_displacement=spec.spindle.preload_displacement,
-        nose_position=spec.spindle.nose_position,
-    )
+    try:
+        layout = SpindleLayout(
+            bearings=tuple(bearings),
+            arrangement=spec.spindle.arrangement,
+            preload=spec.spindle.preload,
+            preload_displacement=spec.spindle.preload_displacement,
+            nose_position=spec.spindle.nose_position,
+        )
+    except GeometryError as exc:
+        raise CaseError(path, exc.key, exc.message) from None
     return layout, cases

@@ -526,7 +526,10 @@ def study_command(
     scheduler: Annotated[
         str | None,
         typer.Option(
-            "--scheduler", help="Dask scheduler tcp://HOST:PORT (or 'local' for a local cluster)."
+            "--scheduler",
+            help="Dask scheduler tcp://HOST:PORT (or 'local' for a local cluster); connecting "
+            "waits at most RUNOUT_SCHEDULER_CONNECT_TIMEOUT (10 s), an answer "
+            "RUNOUT_SCHEDULER_RESPONSE_TIMEOUT (30 s).",
         ),
     ] = None,
     resume: Annotated[
@@ -560,6 +563,10 @@ def study_command(
 
     if resume and out is None:
         _fail("--resume needs --out DIR (the directory of the interrupted run)")
+    if scheduler is not None:  # a malformed address is refused before anything is read
+        from runout.study.scheduler import scheduler_address
+
+        scheduler_address(scheduler)
     case = _load(case_file, model, sets)
     if case.study is None:
         _fail(f"{case_file}: study: the case has no [study] table (see docs/studies.md)")

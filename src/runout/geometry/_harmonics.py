@@ -6,6 +6,7 @@ Part of :mod:`runout.geometry.imperfections` (its module docstring gives the con
 from __future__ import annotations
 
 import math
+import numbers
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any, Literal
@@ -68,7 +69,28 @@ def _wrap_phase(phi: NDArray[np.float64]) -> NDArray[np.float64]:
     return out
 
 
+#: Largest waviness order. A wave of 10^6 lobes is 3 µm long even on a 1 m raceway, shorter
+#: than the contact ellipse of any loaded ball or roller, which filters it out.
+MAX_ORDER = 1_000_000
+#: Most rolling elements. The largest slewing bearings have a few hundred; every element is an
+#: object of its own, so 10 000 keep a bearing's imperfections under a second to build.
+MAX_ELEMENTS = 10_000
+
+
+def _real_scalar(name: str, value: Any) -> Any:
+    """``value`` unchanged unless complex, which is refused naming ``name`` (never cast)."""
+    if isinstance(value, np.ndarray) and value.ndim == 0:
+        value = value[()]
+    if isinstance(value, numbers.Complex) and not isinstance(value, numbers.Real):
+        raise ImperfectionError(
+            name, f"must be a real number, got the complex {value!r} (never cast to real)"
+        )
+    return value
+
+
 def _as_float_vector(name: str, values: ArrayLike) -> NDArray[np.float64]:
+    if np.iscomplexobj(values):  # a cast would drop the imaginary part without a word
+        raise ImperfectionError(name, "must be real numbers, got complex values (never cast)")
     try:
         arr = np.asarray(values, dtype=np.float64)
     except (TypeError, ValueError) as exc:
@@ -418,6 +440,10 @@ def single_harmonic(
         raise ImperfectionError(
             "waviness", "give exactly one of amplitude (zero-to-peak) and peak_to_peak"
         )
+    order = _real_scalar("waviness.order", order)
+    amplitude = _real_scalar("waviness.amplitude", amplitude)
+    peak_to_peak = _real_scalar("waviness.peak_to_peak", peak_to_peak)
+    phase = _real_scalar("waviness.phase", phase)
     if isinstance(order, bool) or not float(order).is_integer():
         raise ImperfectionError("waviness.order", f"must be a whole number, got {order!r}")
     if peak_to_peak is not None:
@@ -511,6 +537,16 @@ def spectral_law(
             "waviness_spectrum.orders",
             f"need 1 <= k1 <= k2 (order 0 is a size error, not a spectrum), got [{k1}, {k2}]",
         )
+    if k2 > MAX_ORDER:  # before k2 - k1 + 1 orders are allocated
+        raise ImperfectionError(
+            "waviness_spectrum.orders",
+            f"order {k2} is beyond {MAX_ORDER}: a wave that short is shorter than any contact "
+            "and is filtered out by it",
+        )
+    amplitude = _real_scalar("waviness_spectrum.amplitude", amplitude)
+    exponent = _real_scalar("waviness_spectrum.exponent", exponent)
+    if not isinstance(phase, str):
+        phase = _real_scalar("waviness_spectrum.phase", phase)
     if not (math.isfinite(amplitude) and amplitude >= 0.0):
         raise ImperfectionError(
             "waviness_spectrum.amplitude", f"must be a finite value >= 0, got {amplitude!r}"

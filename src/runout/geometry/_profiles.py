@@ -154,6 +154,8 @@ def from_profile(
 
 
 def _profile_vector(name: str, values: ArrayLike) -> NDArray[np.float64]:
+    if np.iscomplexobj(values):  # a cast would drop the imaginary part without a word
+        raise ProfileError("", None, f"{name} must be real numbers, got complex values")
     try:
         arr = np.asarray(values, dtype=np.float64).reshape(-1)
     except (TypeError, ValueError) as exc:

@@ -32,6 +32,8 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, Literal, TypeVar
 
+import numpy as np
+
 from runout.base.errors import GeometryError
 
 __all__ = ["BallBearing", "Bearing", "Material", "Operation", "RollerBearing"]
@@ -169,14 +171,44 @@ def _alternative_inputs(cls: type[_T]) -> type[_T]:
 def _check_elements(bearing: Any) -> None:
     """``bearing.elements`` an integer >= 3 (numpy integers too, stored as ``int``)."""
     z = bearing.elements
-    if isinstance(z, bool) or not isinstance(z, numbers.Integral):
+    if isinstance(z, np.ndarray) and z.ndim == 0:  # a 0-d array is the number it holds
+        z = z[()]
+    if isinstance(z, bool | np.bool_) or not isinstance(z, numbers.Integral):
         raise GeometryError("elements", f"must be an integer, got {z!r}")
     object.__setattr__(bearing, "elements", int(z))
     if z < 3:
         raise GeometryError("elements", f"must be an integer >= 3, got {z}")
 
 
+def _as_real(name: str, value: Any) -> Any:
+    """``value`` as a Python float when it is a real number of any kind; complex refused.
+
+    NumPy scalars (``np.float32(1e-3)``, ``np.int64(8)``) and 0-d arrays are the numbers a
+    computation hands over and are taken as Python numbers are. A complex value is refused,
+    naming ``name``: casting it would silently drop its imaginary part. Anything else (None,
+    bool, a string) is returned unchanged for the caller's own check.
+    """
+    if isinstance(value, np.ndarray) and value.ndim == 0:
+        value = value[()]
+    if isinstance(value, bool | np.bool_ | str) or value is None:
+        return value
+    if isinstance(value, numbers.Real):
+        return float(value)
+    if isinstance(value, numbers.Complex):
+        raise GeometryError(
+            name, f"must be a real number, got the complex {value!r} (never cast to real)"
+        )
+    return value
+
+
+def _real_fields(obj: Any, names: tuple[str, ...], prefix: str = "") -> None:
+    """Store ``obj``'s numeric fields ``names`` as Python floats (:func:`_as_real`)."""
+    for name in names:
+        object.__setattr__(obj, name, _as_real(prefix + name, getattr(obj, name)))
+
+
 def _positive(name: str, value: float) -> None:
+    value = _as_real(name, value)
     if not (isinstance(value, int | float) and math.isfinite(value) and value > 0.0):
         raise GeometryError(name, f"must be a positive finite number, got {value!r}")
 
@@ -200,6 +232,7 @@ class Material:
     density: float = 7850.0
 
     def __post_init__(self) -> None:
+        _real_fields(self, ("youngs_modulus", "poisson_ratio", "density"), "material.")
         _positive("material.youngs_modulus", self.youngs_modulus)
         _positive("material.density", self.density)
         if not (-1.0 < self.poisson_ratio < 0.5):
@@ -279,6 +312,17 @@ class BallBearing:
 
     def __post_init__(self) -> None:
         _check_elements(self)
+        _real_fields(
+            self,
+            (
+                "element_diameter",
+                "pitch_diameter",
+                "inner_conformity",
+                "outer_conformity",
+                "radial_clearance",
+                "contact_angle",
+            ),
+        )
         _positive("element_diameter", self.element_diameter)
         _positive("pitch_diameter", self.pitch_diameter)
         if self.element_diameter >= self.pitch_diameter:
@@ -417,6 +461,15 @@ class RollerBearing:
 
     def __post_init__(self) -> None:
         _check_elements(self)
+        _real_fields(
+            self,
+            (
+                "element_diameter",
+                "inner_raceway_diameter",
+                "outer_raceway_diameter",
+                "roller_length",
+            ),
+        )
         _positive("element_diameter", self.element_diameter)
         _positive("inner_raceway_diameter", self.inner_raceway_diameter)
         _positive("outer_raceway_diameter", self.outer_raceway_diameter)
@@ -525,6 +578,7 @@ class Operation:
             "radial_load": "N",
             "moment_load": "N m",
         }
+        _real_fields(self, tuple(units), "operation.")
         for name, unit in units.items():
             value = getattr(self, name)
             if isinstance(value, bool) or not isinstance(value, int | float):

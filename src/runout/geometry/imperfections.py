@@ -81,6 +81,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from runout.geometry._harmonics import (
+    MAX_ELEMENTS,
     TWO_PI,
     Harmonics,
     ImperfectionError,
@@ -474,6 +475,10 @@ class BearingImperfections:
             raise ImperfectionError("n_elements", f"must be an integer, got {n_elements!r}")
         if n_elements < 1:
             raise ImperfectionError("n_elements", f"must be >= 1, got {n_elements}")
+        if n_elements > MAX_ELEMENTS:  # before one object per element is made
+            raise ImperfectionError(
+                "n_elements", f"must be at most {MAX_ELEMENTS}, got {n_elements}"
+            )
         return cls(elements=(Harmonics.empty(),) * int(n_elements))
 
     # --- queries ------------------------------------------------------------------------------

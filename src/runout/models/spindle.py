@@ -142,6 +142,8 @@ CAUSES = {
     NOT_CONVERGED: "Newton iteration did not converge",
 }
 DOFS = ("x", "y", "z", "tilt_x", "tilt_y")
+#: The end of a solver's refusal: the preload holds the shaft against the loads.
+HINT = "raise the preload or lower the loads"
 
 
 @dataclass(frozen=True)
@@ -211,6 +213,9 @@ class Setup:
         Newton's regularisation of the Hessian's diagonal.
     d_ref : float
         Smallest preload approach [m].
+    preload_key : str
+        The case key of the preload (``spindle.preload`` or ``spindle.preload_displacement``):
+        a shaft the contacts cannot hold is a preload too small for the loads.
     """
 
     bearings: tuple[BearingSetup, ...]
@@ -221,6 +226,7 @@ class Setup:
     scale: NDArray[np.float64]
     reg: NDArray[np.float64]
     d_ref: float
+    preload_key: str = "spindle.preload"
 
     @property
     def n_dof(self) -> int:
@@ -254,7 +260,7 @@ def thrust_signs(positions: list[float], arrangement: str) -> list[int]:
     front = [p <= mean + 1e-12 * max(1.0, abs(mean)) for p in positions]
     if all(front):
         raise GeometryError(
-            "bearings.position",
+            f"bearings[{len(positions)}].position",
             f"arrangement {arrangement} opposes the bearings before and after the mean "
             "position, but they all sit at one position: give distinct positions",
         )
@@ -393,6 +399,7 @@ def setup(layout: SpindleLayout, operation: Operation) -> Setup:
         scale,
         np.zeros(m),
         d_ref,
+        "spindle.preload" if layout.preload is not None else "spindle.preload_displacement",
     )
     # the regularisation: 1e-9 of the preloaded stiffness's diagonal, coordinate by coordinate
     hess = _hessian(st, _nominal_c(st), *_nominal_angles(st), np.zeros(m))
@@ -448,14 +455,15 @@ def _hessian(
     return np.asarray(np.einsum("j,ja,jb->ab", kk, g, g))
 
 
-def _raise(status: int, instant: int, time: NDArray[np.float64]) -> None:
+def _raise(status: int, instant: int, time: NDArray[np.float64], key: str) -> None:
+    # the preload is what makes the contacts hold the shaft against the loads: name its key
     cause = CAUSES.get(status, "numerical failure")
     t = float(time[instant])
     if status == TOO_FEW_LOADED:
-        raise ContactLossError(cause, instant, t)
+        raise ContactLossError(cause, instant, t, key, HINT)
     if status == NOT_CONVERGED:
-        raise ConvergenceError(cause, instant, t)
-    raise NumericalError(cause, instant, t)
+        raise ConvergenceError(cause, instant, t, key, HINT)
+    raise NumericalError(cause, instant, t, key, HINT)
 
 
 def contact_arrays(
@@ -558,7 +566,7 @@ def solve(
             scratch,
         )
         if status != OK:
-            _raise(int(status), first + int(instant), t)
+            _raise(int(status), first + int(instant), t, st.preload_key)
     return q, unloaded
 
 
@@ -624,7 +632,9 @@ def solve_reference(
         q = q + step[:, None] * s
         if np.max(np.abs(step[:, None] * s) * st.scale) <= tol:
             return q
-    raise ConvergenceError("reference Newton iteration did not converge")
+    raise ConvergenceError(
+        "reference Newton iteration did not converge", key=st.preload_key, hint=HINT
+    )
 
 
 def generalised_forces(
@@ -757,7 +767,7 @@ def static_stiffness(st: Setup) -> tuple[NDArray[np.float64], NDArray[np.float64
         scratch_for(st.geo.shape[1], m),
     )
     if status != OK:
-        _raise(int(status), 0, np.zeros(1))
+        _raise(int(status), 0, np.zeros(1), st.preload_key)
     q = q_out[0]
     k = _hessian(st, c, cth, sth, q)
     if m > 5:  # the spring-loaded ring's slide: static condensation

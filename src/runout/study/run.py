@@ -160,9 +160,11 @@ def dask_executor(address: str | None = None, **cluster: Any) -> Executor:
     Parameters
     ----------
     address : str, optional
-        Scheduler address ``tcp://HOST:PORT``; None starts a local cluster.
+        Scheduler address: ``tcp://HOST:PORT``, ``tls://HOST:PORT``, ``HOST:PORT`` or
+        ``"local"`` (:func:`runout.study.scheduler.scheduler_address`); None (or ``"local"``)
+        starts a local cluster.
     **cluster
-        Keyword arguments of :class:`distributed.LocalCluster` when ``address`` is None.
+        Keyword arguments of :class:`distributed.LocalCluster` for a local cluster.
 
     Returns
     -------
@@ -172,27 +174,32 @@ def dask_executor(address: str | None = None, **cluster: Any) -> Executor:
     Raises
     ------
     StudyError
-        When Dask is not installed (``pip install 'runout[dask]'``) or the scheduler does not
-        answer.
+        A malformed address (refused before any connection), Dask not installed
+        (``pip install 'runout[dask]'``), or a scheduler that does not accept the connection
+        within the connect timeout or does not answer within the response timeout
+        (:mod:`runout.study.scheduler`: ``RUNOUT_SCHEDULER_CONNECT_TIMEOUT``, 10 s, and
+        ``RUNOUT_SCHEDULER_RESPONSE_TIMEOUT``, 30 s). Each names ``--scheduler``.
     """
+    from runout.study.scheduler import connect_client, scheduler_address
+
+    remote = None if address is None else scheduler_address(address)
     try:
         import dask
         from distributed import Client, LocalCluster
     except ImportError:  # pragma: no cover - depends on the installation
         raise StudyError("--scheduler needs Dask distributed: pip install 'runout[dask]'") from None
+    if remote is not None:
+        return connect_client(remote).get_executor()
     try:
-        if address is None:
-            cluster.setdefault("dashboard_address", None)
-            # Dask's nannies trim malloc at 64 KiB by default (MALLOC_TRIM_THRESHOLD_), which
-            # returns every NumPy temporary of a chunk to the system and costs the workers
-            # much of their time; a local cluster of ours keeps glibc's usual behaviour.
-            trim = {"distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_": 2**28}
-            with dask.config.set(trim):
-                client = Client(LocalCluster(**cluster))
-        else:
-            client = Client(address, timeout=cluster.get("timeout", 10))
+        cluster.setdefault("dashboard_address", None)
+        # Dask's nannies trim malloc at 64 KiB by default (MALLOC_TRIM_THRESHOLD_), which
+        # returns every NumPy temporary of a chunk to the system and costs the workers
+        # much of their time; a local cluster of ours keeps glibc's usual behaviour.
+        trim = {"distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_": 2**28}
+        with dask.config.set(trim):
+            client = Client(LocalCluster(**cluster))
     except (OSError, TimeoutError) as exc:
-        raise StudyError(f"cannot reach the Dask scheduler {address}: {exc}") from None
+        raise StudyError(f"--scheduler: cannot start a local Dask cluster: {exc}") from None
     return client.get_executor()
 
 
