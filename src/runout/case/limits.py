@@ -459,7 +459,10 @@ def profile_roots(base_dir: Path, environ: Mapping[str, str] | None = None) -> l
     roots = [base_dir.resolve()]
     for part in env.get(ENV_PROFILE_DIRS, "").split(os.pathsep):
         if part.strip():
-            roots.append(Path(part.strip()).expanduser().resolve())
+            try:
+                roots.append(Path(part.strip()).expanduser().resolve())
+            except (OSError, RuntimeError):  # a loop of links names no directory
+                continue
     return roots
 
 
@@ -479,7 +482,10 @@ def profile_allowed(path: Path, base_dir: Path, environ: Mapping[str, str] | Non
     -------
     bool
     """
-    resolved = path.resolve()
+    try:
+        resolved = path.resolve()
+    except (OSError, RuntimeError):  # a loop of links (RuntimeError up to Python 3.12)
+        return False
     return any(resolved.is_relative_to(root) for root in profile_roots(base_dir, environ))
 
 
