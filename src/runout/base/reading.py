@@ -45,9 +45,11 @@ __all__ = [
     "MAX_JSON_DEPTH",
     "MAX_JSON_INT_DIGITS",
     "MAX_JSON_VALUES",
+    "MISSING",
     "InputFileError",
     "check_shape",
     "open_regular",
+    "parse_json",
     "read_bytes",
     "read_json",
     "read_text",
@@ -68,6 +70,10 @@ MAX_JSON_DEPTH = 64
 MAX_JSON_INT_DIGITS = 100
 #: Largest figure embedded in a report [B] (runout's figures are below 1 MB).
 MAX_FIGURE_BYTES = 32 * _MiB
+
+
+#: The message of a file that does not exist.
+MISSING = "cannot be read (no such file)"
 
 
 class InputFileError(RunoutError, ValueError):
@@ -119,7 +125,7 @@ def resolve_inside(path: Path, roots: Sequence[Path] | None, name: str | None = 
     try:
         real = Path(path).resolve(strict=True)
     except FileNotFoundError:
-        raise InputFileError(shown, "", "no such file") from None
+        raise InputFileError(shown, "", MISSING) from None
     except RuntimeError:  # Python 3.11: "Symlink loop from ..."
         raise InputFileError(shown, "", "is a loop of symbolic links") from None
     except OSError as exc:

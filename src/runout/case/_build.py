@@ -15,7 +15,7 @@ from typing import Any
 import numpy as np
 
 from runout.base.errors import GeometryError
-from runout.base.reading import InputFileError, resolve_inside
+from runout.base.reading import MISSING, InputFileError, resolve_inside
 from runout.base.units import to_si
 from runout.case._schema import (
     MAX_CONFORMITY,
@@ -306,7 +306,7 @@ def _read_profile(
         # a loop of links is named here (resolving it raised RuntimeError, exit 70)
         resolve_inside(path, None, p.file)
     except InputFileError as exc:
-        if exc.message != "no such file":
+        if exc.message != MISSING:
             raise _CaseKeyError(f"{key}.file", f'"{p.file}" {exc.message}') from None
     if not profile_allowed(path, base_dir):
         raise _CaseKeyError(

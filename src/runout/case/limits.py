@@ -26,6 +26,11 @@ Profiles (``[[profile]] file``) must be regular files no larger than :func:`max_
 and lie inside the case file's directory; ``RUNOUT_PROFILE_DIRS`` (directories separated by
 ``os.pathsep``) names further directories profiles may be read from. A measured record
 (``runout diagnose --record``) may be no larger than :func:`max_record_bytes`.
+
+The files runout reads back (a run or study directory, a record) have fixed bounds of their
+own, below this layer so that every reader shares them: :mod:`runout.base.reading`
+(``MAX_JSON_BYTES``, ``MAX_JSON_VALUES``, ``MAX_JSON_DEPTH``, ``MAX_JSON_INT_DIGITS``,
+``MAX_FIGURE_BYTES``).
 """
 
 from __future__ import annotations

@@ -75,7 +75,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from runout.base.errors import CaseError
-from runout.base.reading import InputFileError, read_json
+from runout.base.reading import MISSING, InputFileError, read_json
 from runout.case import estimates, limits
 from runout.case.model import Case, StudySpec
 from runout.study._chunks import ERROR_CHARS as ERROR_CHARS
@@ -627,7 +627,7 @@ def _load_chunks(
             # (a chunk nested 10^5 deep or linked to /dev/zero is a damaged chunk, recomputed)
             chunk = read_json(path, [directory])
         except InputFileError as exc:
-            problem: str | None = "missing" if exc.message == "no such file" else exc.message
+            problem: str | None = "missing" if exc.message == MISSING else exc.message
         else:
             problem = _chunk_problem(chunk, plan.tasks[index], plan.digest)
         if problem is None:
