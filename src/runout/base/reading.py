@@ -1,5 +1,7 @@
-"""Reading the files runout did not just write: only regular files, only inside a directory,
-never more than a bound, JSON only of a bounded shape.
+"""Files read back safely: regular files inside their directory, bounded in size and shape.
+
+Only regular files, only inside a directory, never more than a bound, JSON only of a bounded
+size, depth and shape.
 
 Every file runout reads back (a run directory's ``result.json``, ``summary.json``,
 ``case.toml`` and figures for ``runout report``; a study's manifest and chunks for ``runout
