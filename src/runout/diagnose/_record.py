@@ -3,7 +3,8 @@
 A record is a CSV file with a header row: a time column (``time_s``, or ``t [ms]``), one or both
 of ``x_m`` and ``y_m`` (radial displacement of the measured ring along x and y, see the
 conventions page; ``x [um]`` gives the unit in brackets) and optionally a tachometer column
-``rev`` (a revolution count, or one pulse per revolution at two levels). Every failure is a
+``rev`` (a revolution count, or one pulse per revolution at two levels). Blank lines are
+ignored, before the header as between the rows. Every failure is a
 :class:`RecordError` naming the file and the row (the file's line number, the header being
 line 1) or the column.
 """
