@@ -139,7 +139,9 @@ def _unit_scale(file: str, column: str, unit: str, kind: str) -> float:
             kind, "a velocity (m/s, mm/s, um/s)"
         )
         raise RecordError(
-            file, f"column {column!r}", f"unknown unit {unit!r}: expected {word}"
+            file,
+            f"column {_shown_value(column, 40)}",
+            f"unknown unit {_shown_value(unit, 40)}: expected {word}",
         ) from None
 
 
@@ -167,7 +169,9 @@ def _columns(
                 scale = _unit_scale(file, name, unit, kind)
             elif role == "rev" and unit not in ("", "rev", "1", "-"):
                 raise RecordError(
-                    file, f"column {name!r}", f"unknown unit {unit!r}: rev counts revolutions"
+                    file,
+                    f"column {_shown_value(name, 40)}",
+                    f"unknown unit {_shown_value(unit, 40)}: rev counts revolutions",
                 )
         elif base in ("time_s", "t_s"):
             role = "time"
@@ -177,7 +181,7 @@ def _columns(
             if quantity == "velocity":
                 raise RecordError(
                     file,
-                    f"column {name!r}",
+                    f"column {_shown_value(name, 40)}",
                     "is a displacement but --quantity velocity was given: name the column "
                     "x_m_per_s (or x [mm/s]), or drop --quantity velocity",
                 )
@@ -186,7 +190,7 @@ def _columns(
             if quantity == "displacement":
                 raise RecordError(
                     file,
-                    f"column {name!r}",
+                    f"column {_shown_value(name, 40)}",
                     "is a velocity: pass --quantity velocity (Anderon-meter records)",
                 )
             role = base[0]
@@ -194,7 +198,7 @@ def _columns(
             ignored.append(name)
             continue
         if role in roles:
-            raise RecordError(file, f"column {name!r}", f"a second {role} column")
+            raise RecordError(file, f"column {_shown_value(name, 40)}", f"a second {role} column")
         roles[role] = (i, scale)
     if "time" not in roles:
         only = header[0] if len(header) == 1 else ""
@@ -286,7 +290,7 @@ def _parse_error(file: str, exc: ValueError, header: list[str]) -> RecordError:
         name = header[col - 1].strip() if 0 < col <= len(header) else str(col)
         return RecordError(
             file,
-            f"row {file_line(file, row)}, column {name!r}",
+            f"row {file_line(file, row)}, column {_shown_value(name, 40)}",
             f"{_shown_value(value)} is not a number",
         )
     m = re.search(r"number of columns changed from (\d+) to (\d+) at row (\d+)", text)
@@ -520,7 +524,7 @@ def _tachometer(file: str, column: str, t: FloatArray, rev: FloatArray) -> float
         if rising.size < 3:
             raise RecordError(
                 file,
-                f"column {column!r}",
+                f"column {_shown_value(column, 40)}",
                 f"a pulse tachometer needs at least 3 pulses (2 revolutions), found {rising.size}",
             )
         starts = t[rising]
@@ -531,7 +535,7 @@ def _tachometer(file: str, column: str, t: FloatArray, rev: FloatArray) -> float
         i = int(drop[0])
         raise RecordError(
             file,
-            f"row {file_line(file, i + 1)}, column {column!r}",
+            f"row {file_line(file, i + 1)}, column {_shown_value(column, 40)}",
             f"the revolution count decreases ({float(rev[i])!r} then {float(rev[i + 1])!r}); "
             "give a cumulative count or a pulse per revolution",
         )
@@ -541,7 +545,7 @@ def _tachometer(file: str, column: str, t: FloatArray, rev: FloatArray) -> float
     if turns > 0.5 * rev.size:
         raise RecordError(
             file,
-            f"column {column!r}",
+            f"column {_shown_value(column, 40)}",
             f"the revolution count advances {turns:.6g} revolutions over {rev.size} samples "
             f"({turns / max(float(t[-1] - t[0]), 1e-300):.6g} rev/s): a tachometer must be "
             "sampled at least twice a revolution; check the column (a count of revolutions, "
@@ -552,7 +556,7 @@ def _tachometer(file: str, column: str, t: FloatArray, rev: FloatArray) -> float
     if levels.size < 3:
         raise RecordError(
             file,
-            f"column {column!r}",
+            f"column {_shown_value(column, 40)}",
             f"the revolution count completes {max(levels.size - 1, 0)} revolution(s); at least "
             "2 are needed",
         )
@@ -578,7 +582,7 @@ def _steady(file: str, column: str, periods: FloatArray, what: str) -> None:
     if spread > TACHO_SPEED_RTOL:
         raise RecordError(
             file,
-            f"column {column!r}",
+            f"column {_shown_value(column, 40)}",
             f"the speed varies by {100 * spread:.3g} % over the record ({what}); the diagnosis "
             f"assumes a constant speed (within {100 * TACHO_SPEED_RTOL:g} %): resample the "
             "record to the shaft angle or cut a steady part",
