@@ -15,6 +15,7 @@ from typing import Any
 import numpy as np
 
 from runout.base.errors import GeometryError
+from runout.base.reading import MISSING, InputFileError, resolve_inside
 from runout.base.units import to_si
 from runout.case._schema import (
     MAX_CONFORMITY,
@@ -318,6 +319,12 @@ def _read_profile(
         except (GeometryError, ValueError) as exc:
             raise _CaseKeyError(f"{key}.file", str(exc)) from None
     path = base_dir / p.file
+    try:
+        # a loop of links is named here (resolving it raised RuntimeError, exit 70)
+        resolve_inside(path, None, p.file)
+    except InputFileError as exc:
+        if exc.message != MISSING:
+            raise _CaseKeyError(f"{key}.file", f'"{p.file}" {exc.message}') from None
     if not profile_allowed(path, base_dir):
         raise _CaseKeyError(
             f"{key}.file",

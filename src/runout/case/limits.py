@@ -26,6 +26,11 @@ Profiles (``[[profile]] file``) must be regular files no larger than :func:`max_
 and lie inside the case file's directory; ``RUNOUT_PROFILE_DIRS`` (directories separated by
 ``os.pathsep``) names further directories profiles may be read from. A measured record
 (``runout diagnose --record``) may be no larger than :func:`max_record_bytes`.
+
+The files runout reads back (a run or study directory, a record) have fixed bounds of their
+own, below this layer so that every reader shares them: :mod:`runout.base.reading`
+(``MAX_JSON_BYTES``, ``MAX_JSON_VALUES``, ``MAX_JSON_DEPTH``, ``MAX_JSON_INT_DIGITS``,
+``MAX_FIGURE_BYTES``).
 """
 
 from __future__ import annotations
@@ -480,7 +485,10 @@ def profile_roots(base_dir: Path, environ: Mapping[str, str] | None = None) -> l
     roots = [base_dir.resolve()]
     for part in env.get(ENV_PROFILE_DIRS, "").split(os.pathsep):
         if part.strip():
-            roots.append(Path(part.strip()).expanduser().resolve())
+            try:
+                roots.append(Path(part.strip()).expanduser().resolve())
+            except (OSError, RuntimeError):  # a loop of links names no directory
+                continue
     return roots
 
 
@@ -500,7 +508,10 @@ def profile_allowed(path: Path, base_dir: Path, environ: Mapping[str, str] | Non
     -------
     bool
     """
-    resolved = path.resolve()
+    try:
+        resolved = path.resolve()
+    except (OSError, RuntimeError):  # a loop of links (RuntimeError up to Python 3.12)
+        return False
     return any(resolved.is_relative_to(root) for root in profile_roots(base_dir, environ))
 
 

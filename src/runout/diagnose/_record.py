@@ -3,14 +3,17 @@
 A record is a CSV file with a header row: a time column (``time_s``, or ``t [ms]``), one or both
 of ``x_m`` and ``y_m`` (radial displacement of the measured ring along x and y, see the
 conventions page; ``x [um]`` gives the unit in brackets) and optionally a tachometer column
-``rev`` (a revolution count, or one pulse per revolution at two levels). Every failure is a
+``rev`` (a revolution count, or one pulse per revolution at two levels). Blank lines are
+ignored, before the header as between the rows. Every failure is a
 :class:`RecordError` naming the file and the row (the file's line number, the header being
 line 1) or the column.
 """
 
 from __future__ import annotations
 
+import io
 import math
+import os
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -20,6 +23,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from runout.base.errors import RunoutError
+from runout.base.reading import InputFileError, open_regular
 from runout.case.limits import RECORD_BYTES_PER_FILE_BYTE, Budget, format_bytes, max_record_bytes
 
 __all__ = [
@@ -135,7 +139,9 @@ def _unit_scale(file: str, column: str, unit: str, kind: str) -> float:
             kind, "a velocity (m/s, mm/s, um/s)"
         )
         raise RecordError(
-            file, f"column {column!r}", f"unknown unit {unit!r}: expected {word}"
+            file,
+            f"column {_shown_value(column, 40)}",
+            f"unknown unit {_shown_value(unit, 40)}: expected {word}",
         ) from None
 
 
@@ -163,7 +169,9 @@ def _columns(
                 scale = _unit_scale(file, name, unit, kind)
             elif role == "rev" and unit not in ("", "rev", "1", "-"):
                 raise RecordError(
-                    file, f"column {name!r}", f"unknown unit {unit!r}: rev counts revolutions"
+                    file,
+                    f"column {_shown_value(name, 40)}",
+                    f"unknown unit {_shown_value(unit, 40)}: rev counts revolutions",
                 )
         elif base in ("time_s", "t_s"):
             role = "time"
@@ -173,7 +181,7 @@ def _columns(
             if quantity == "velocity":
                 raise RecordError(
                     file,
-                    f"column {name!r}",
+                    f"column {_shown_value(name, 40)}",
                     "is a displacement but --quantity velocity was given: name the column "
                     "x_m_per_s (or x [mm/s]), or drop --quantity velocity",
                 )
@@ -182,7 +190,7 @@ def _columns(
             if quantity == "displacement":
                 raise RecordError(
                     file,
-                    f"column {name!r}",
+                    f"column {_shown_value(name, 40)}",
                     "is a velocity: pass --quantity velocity (Anderon-meter records)",
                 )
             role = base[0]
@@ -190,7 +198,7 @@ def _columns(
             ignored.append(name)
             continue
         if role in roles:
-            raise RecordError(file, f"column {name!r}", f"a second {role} column")
+            raise RecordError(file, f"column {_shown_value(name, 40)}", f"a second {role} column")
         roles[role] = (i, scale)
     if "time" not in roles:
         only = header[0] if len(header) == 1 else ""
@@ -205,18 +213,42 @@ def _columns(
         raise RecordError(
             file,
             "header",
-            "no time column: name one time_s (or t [ms], time [s]); found "
-            + ", ".join(repr(h.strip()) for h in header),
+            "no time column: name one time_s (or t [ms], time [s]); " + _found(header),
         )
     if "x" not in roles and "y" not in roles:
         unit = "x_m, y_m (or x [um])" if quantity == "displacement" else "x_m_per_s (or x [mm/s])"
         raise RecordError(
             file,
             "header",
-            f"no displacement column: expected one or both of {unit}; found "
-            + ", ".join(repr(h.strip()) for h in header),
+            f"no displacement column: expected one or both of {unit}; " + _found(header),
         )
     return roles, ignored
+
+
+#: Most header fields an error message lists, and the longest one it shows [characters].
+_SHOWN_FIELDS = 8
+_SHOWN_NAME = 32
+
+
+def _found(header: list[str]) -> str:
+    """The header's column names as an error shows them: only fields that read as column
+    names (a letter, then letters, digits, ``_``, a unit in brackets), each short, so that a
+    file that is no record (a link to any text file) is not echoed into the message."""
+    names = [h.strip().strip('"').strip() for h in header]
+    shown = [n for n in names if _HEADER.match(n) and len(n) <= _SHOWN_NAME]
+    if not shown:
+        return "its first line holds no column names"
+    more = len(names) - len(shown[:_SHOWN_FIELDS])
+    return (
+        "found "
+        + ", ".join(repr(n) for n in shown[:_SHOWN_FIELDS])
+        + (f" and {more} other field(s)" if more else "")
+    )
+
+
+def _shown_value(text: str, limit: int = 24) -> str:
+    """Text of the file as an error shows it: escaped (repr), at most ``limit`` characters."""
+    return repr(text if len(text) <= limit else text[: limit - 3] + "...")
 
 
 #: The file name of a record built from arrays (:func:`record_from_arrays`).
@@ -233,15 +265,17 @@ def file_line(file: str, index: int) -> int:
     if file == ARRAYS:
         return index + 2
     try:
-        with open(file, encoding="utf-8-sig", newline="") as fh:
-            fh.readline()
-            seen = -1
-            for number, line in enumerate(fh, start=2):
+        with (
+            open_regular(Path(file)) as raw,
+            io.TextIOWrapper(raw, encoding="utf-8-sig", newline="") as fh,
+        ):
+            seen = -2  # the first line that is not blank is the header
+            for number, line in enumerate(fh, start=1):
                 if line.strip():
                     seen += 1
                     if seen == index:
                         return number
-    except (OSError, UnicodeDecodeError):
+    except (OSError, UnicodeDecodeError, RunoutError):
         pass
     return index + 2
 
@@ -249,12 +283,15 @@ def file_line(file: str, index: int) -> int:
 def _parse_error(file: str, exc: ValueError, header: list[str]) -> RecordError:
     """numpy's loadtxt message turned into the file's line and the column's name."""
     text = str(exc)
-    m = re.search(r"could not convert string '([^']*)' to \w+ at row (\d+), column (\d+)", text)
+    # numpy cuts a long value at 100 characters, without its closing quote
+    m = re.search(r"could not convert string '(.*?)'? to \w+ at row (\d+), column (\d+)", text)
     if m:
         value, row, col = m.group(1), int(m.group(2)), int(m.group(3))
         name = header[col - 1].strip() if 0 < col <= len(header) else str(col)
         return RecordError(
-            file, f"row {file_line(file, row)}, column {name!r}", f"{value!r} is not a number"
+            file,
+            f"row {file_line(file, row)}, column {_shown_value(name, 40)}",
+            f"{_shown_value(value)} is not a number",
         )
     m = re.search(r"number of columns changed from (\d+) to (\d+) at row (\d+)", text)
     if m:
@@ -263,7 +300,7 @@ def _parse_error(file: str, exc: ValueError, header: list[str]) -> RecordError:
             f"row {file_line(file, int(m.group(3)) - 1)}",  # loadtxt counts these from 1
             f"has {m.group(2)} fields where the header has {m.group(1)}",
         )
-    return RecordError(file, "", f"cannot be read as CSV ({text})")
+    return RecordError(file, "", f"cannot be read as CSV ({_shown_value(text, 160)[1:-1]})")
 
 
 def read_record(
@@ -300,28 +337,34 @@ def read_record(
             file, "", f'quantity must be "displacement" or "velocity", got {quantity!r}'
         )
     try:
-        size = p.stat().st_size
-        if not p.is_file():
-            raise RecordError(file, "", "is not a regular file")
-    except OSError as exc:
-        raise RecordError(file, "", f"cannot be read ({exc.strerror or exc})") from None
-    budget = limits if limits is not None else Budget()
-    if size > max_record_bytes(budget):
-        need = size * RECORD_BYTES_PER_FILE_BYTE
-        raise RecordError(
-            file,
-            "",
-            f"a record of {format_bytes(size)} would need about {format_bytes(need)} of memory; "
-            f"shorten or decimate it {budget.raise_hint('memory')}",
-        )
+        # only a regular file (a FIFO would block, /dev/zero never end), a loop of links named
+        raw = open_regular(p, None, file)
+    except InputFileError as exc:
+        raise RecordError(file, "", exc.message) from None
     import warnings
 
+    header: list[str] = []
     try:
+        size = os.fstat(raw.fileno()).st_size
+        budget = limits if limits is not None else Budget()
+        if size > max_record_bytes(budget):
+            need = size * RECORD_BYTES_PER_FILE_BYTE
+            raise RecordError(
+                file,
+                "",
+                f"a record of {format_bytes(size)} would need about {format_bytes(need)} of "
+                f"memory; shorten or decimate it {budget.raise_hint('memory')}",
+            )
         # utf-8-sig: a spreadsheet's "CSV UTF-8" starts with a byte-order mark
-        with p.open("r", encoding="utf-8-sig", newline="") as fh:
+        with raw, io.TextIOWrapper(raw, encoding="utf-8-sig", newline="") as fh:
+            # blank lines are ignored, before the header as between the rows
             first = fh.readline()
-            if not first.strip():
-                raise RecordError(file, "row 1", "no header row (expected e.g. time_s,x_m,y_m)")
+            while first and not first.strip():
+                first = fh.readline()
+            if not first:
+                raise RecordError(
+                    file, "", "is empty: no header row (expected e.g. time_s,x_m,y_m)"
+                )
             header = first.rstrip("\r\n").split(",")
             roles, _ = _columns(file, header, quantity)
             with warnings.catch_warnings():
@@ -339,6 +382,8 @@ def read_record(
         raise _parse_error(file, exc, header) from None
     except OSError as exc:
         raise RecordError(file, "", f"cannot be read as text ({exc})") from None
+    finally:
+        raw.close()
     if data.size == 0:
         raise RecordError(file, "", "has a header but no data rows")
     if data.shape[1] != len(header):
@@ -479,7 +524,7 @@ def _tachometer(file: str, column: str, t: FloatArray, rev: FloatArray) -> float
         if rising.size < 3:
             raise RecordError(
                 file,
-                f"column {column!r}",
+                f"column {_shown_value(column, 40)}",
                 f"a pulse tachometer needs at least 3 pulses (2 revolutions), found {rising.size}",
             )
         starts = t[rising]
@@ -490,16 +535,28 @@ def _tachometer(file: str, column: str, t: FloatArray, rev: FloatArray) -> float
         i = int(drop[0])
         raise RecordError(
             file,
-            f"row {file_line(file, i + 1)}, column {column!r}",
+            f"row {file_line(file, i + 1)}, column {_shown_value(column, 40)}",
             f"the revolution count decreases ({float(rev[i])!r} then {float(rev[i + 1])!r}); "
             "give a cumulative count or a pulse per revolution",
+        )
+    # a count sampled less than twice a revolution cannot be interpolated (and would ask
+    # for one array entry per revolution: 1e11 rev/s ran out of memory): refuse it before
+    turns = float(rev[-1]) - float(rev[0])
+    if turns > 0.5 * rev.size:
+        raise RecordError(
+            file,
+            f"column {_shown_value(column, 40)}",
+            f"the revolution count advances {turns:.6g} revolutions over {rev.size} samples "
+            f"({turns / max(float(t[-1] - t[0]), 1e-300):.6g} rev/s): a tachometer must be "
+            "sampled at least twice a revolution; check the column (a count of revolutions, "
+            "or one pulse per revolution)",
         )
     # the instants the count reaches each whole revolution after its first value
     levels = math.floor(rev[0]) + 1.0 + np.arange(max(0, math.floor(rev[-1]) - math.floor(rev[0])))
     if levels.size < 3:
         raise RecordError(
             file,
-            f"column {column!r}",
+            f"column {_shown_value(column, 40)}",
             f"the revolution count completes {max(levels.size - 1, 0)} revolution(s); at least "
             "2 are needed",
         )
@@ -525,7 +582,7 @@ def _steady(file: str, column: str, periods: FloatArray, what: str) -> None:
     if spread > TACHO_SPEED_RTOL:
         raise RecordError(
             file,
-            f"column {column!r}",
+            f"column {_shown_value(column, 40)}",
             f"the speed varies by {100 * spread:.3g} % over the record ({what}); the diagnosis "
             f"assumes a constant speed (within {100 * TACHO_SPEED_RTOL:g} %): resample the "
             "record to the shaft angle or cut a steady part",

@@ -7,8 +7,6 @@ from __future__ import annotations
 
 import csv
 import math
-import os
-import stat
 import warnings
 from collections.abc import Sequence
 from pathlib import Path
@@ -17,6 +15,7 @@ from typing import Literal
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from runout.base.reading import InputFileError, read_bytes
 from runout.geometry._harmonics import (
     TWO_PI,
     Harmonics,
@@ -346,20 +345,18 @@ def _read_text(path: Path, name: str, max_bytes: int | None) -> str:
     try:
         if max_bytes is None:
             return path.read_text(encoding="utf-8-sig")
-        # O_NONBLOCK: opening a FIFO must not wait for a writer before it is found out
-        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
-        with os.fdopen(fd, "rb") as handle:
-            if not stat.S_ISREG(os.fstat(handle.fileno()).st_mode):
-                raise ProfileError(name, None, "is not a regular file")
-            raw = handle.read(max_bytes + 1)
+        # the shared reader: only a regular file (a FIFO found out without waiting for a
+        # writer), a loop of links named, at most max_bytes + 1 bytes read
+        raw = read_bytes(path, max_bytes, None, name)
+    except InputFileError as exc:
+        message = "is not a regular file" if "regular file" in exc.message else exc.message
+        raise ProfileError(name, None, message) from None
     except OSError as exc:
         raise ProfileError(name, None, f"cannot read the file: {exc.strerror or exc}") from exc
     except UnicodeDecodeError as exc:
         raise ProfileError(
             name, None, f"is not UTF-8 text (byte {exc.start + 1} cannot be decoded)"
         ) from None
-    if len(raw) > max_bytes:
-        raise ProfileError(name, None, f"is larger than {max_bytes} bytes")
     try:
         return raw.decode("utf-8-sig")
     except UnicodeDecodeError as exc:

@@ -10,7 +10,7 @@ reading needs none, so this module stays below it.
 
 from __future__ import annotations
 
-import json
+import io
 from pathlib import Path
 from typing import Any
 
@@ -19,12 +19,113 @@ from numpy.typing import ArrayLike, NDArray
 
 from runout.analysis.results import RunResult
 from runout.base.errors import RunoutError
+from runout.base.reading import InputFileError, open_regular, read_json
 
-__all__ = ["HISTORY_COLUMNS", "read_history", "read_result", "read_result_json", "write_columns"]
+__all__ = [
+    "HISTORY_COLUMNS",
+    "RESULT_SHAPE",
+    "SUMMARY_SHAPE",
+    "read_history",
+    "read_result",
+    "read_result_json",
+    "write_columns",
+]
 
 #: Header of ``history.csv``: time [s], x, y, z [m]
 #: (:data:`runout.analysis.results.DISPLACEMENT_OF`).
 HISTORY_COLUMNS = ["time_s", "x_m", "y_m", "z_m"]
+
+_LINE = {
+    "direction": "string",
+    "frequency_hz": "number",
+    "order": "number",
+    "pp_m": "number",
+    "label": "string",
+    "phase_rad": "number",
+    "repeatable": "bool",
+    "sources": [
+        {
+            "part": "string",
+            "element": "number",
+            "lobes": "number",
+            "term": "string",
+            "formula": "string",
+            "share": "number",
+        }
+    ],
+}
+_RUNOUT = {k: "number" for k in ("radial_pp_m", "axial_pp_m", "rro_pp_m", "nrro_pp_m")}
+#: The shape of ``result.json`` that readers rely on (:func:`runout.base.reading.check_shape`):
+#: a value of another type (a string where an object belongs) is refused naming its key, an
+#: unknown key is free (the contract is extended, not broken).
+RESULT_SHAPE: dict[str, Any] = {
+    "model": "string",
+    "title": "string",
+    "rotating_ring": "string",
+    "frequencies_hz": "object",
+    "contact_angle_deg": "number",
+    "radial_clearance_m": "number",
+    "solver_resolution_m": "number",
+    "runout": _RUNOUT,
+    "components": [_LINE],
+    "notes": ["string"],
+    "displacement_of": "string",
+    "mean_displacement_m": ["number"],
+    "anderon": {k: "number" for k in "URLMHEA"},
+    "attribution": [{k: "scalar" for k in ("part", "factor", "lobes", "formula", "order")}],
+    "verdict": {
+        "quantity": "string",
+        "pass": "bool",
+        "limit_m": "number",
+        "value_m": "number",
+        "limit_um_per_s": "number",
+        "value_um_per_s": "number",
+    },
+    "iso15242": {
+        "unit": "string",
+        "bands": {
+            k: {"rms_um_per_s": "number", "low_hz": "number", "high_hz": "number"}
+            for k in ("L", "M", "H")
+        },
+    },
+    "iso492": {"quantity": "string"},
+    "natural_frequencies_hz": ["number"],
+    "ring_displacement": {"axial_m": "number", "x_m": "number", "y_m": "number"},
+    "inner_contact_angle_deg": ["number"],
+    "outer_contact_angle_deg": ["number"],
+    "stiffness_matrix": {"dofs": ["string"], "matrix": [["number"]]},
+    "balls": [{"ball": "scalar"}],
+    "bearings": [
+        {
+            "name": "string",
+            "position_m": "number",
+            "thrust": "string",
+            "contact_angle_deg": "number",
+            "preload_n": "number",
+            "pressure_centre_m": "number",
+            "runout": _RUNOUT,
+        }
+    ],
+    "tilt_pp_rad": {"x": "number", "y": "number"},
+    "nose_position_m": "number",
+    "tool_point_stiffness_n_per_m": {"x": "number", "y": "number", "z": "number"},
+}
+#: The shape of a run's ``summary.json`` that the report relies on.
+SUMMARY_SHAPE: dict[str, Any] = {
+    "title": "string",
+    "bearing": {
+        "type": "string",
+        "elements": "number",
+        "element_diameter_m": "number",
+        "pitch_diameter_m": "number",
+        "radial_clearance_m": "number",
+        "inner_conformity": "number",
+        "outer_conformity": "number",
+    },
+    "derived": "object",
+    "contact": "object",
+    "frequencies_hz": "object",
+}
 
 #: Rows formatted per call of :func:`write_columns` (bounds its temporary memory: a few MB).
 _CSV_CHUNK = 65536
@@ -81,13 +182,12 @@ def read_result_json(directory: Path) -> dict[str, Any]:
     Raises
     ------
     RunoutError
-        The file is missing, unreadable or not a JSON object.
+        The file is missing, unreadable, not a regular file inside ``directory``, beyond the
+        bounds of :mod:`runout.base.reading`, or not of :data:`RESULT_SHAPE` (naming the key).
     """
-    path = Path(directory) / "result.json"
-    try:
-        loaded = json.loads(path.read_text(encoding="utf-8"))
-    except (OSError, json.JSONDecodeError) as exc:
-        raise RunoutError(f"{path}: cannot be read as JSON ({exc})") from None
+    directory = Path(directory)
+    path = directory / "result.json"
+    loaded = read_json(path, [directory], shape=RESULT_SHAPE)
     if not isinstance(loaded, dict):
         raise RunoutError(f"{path}: expected a JSON object")
     return loaded
@@ -113,8 +213,12 @@ def read_history(path: Path) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     RunoutError
         The file is missing, has another header, or a value that is not a number.
     """
+    path = Path(path)
     try:
-        with Path(path).open(encoding="ascii", newline="") as fh:
+        with (
+            open_regular(path, [path.parent]) as raw,
+            io.TextIOWrapper(raw, encoding="ascii", newline="") as fh,
+        ):
             header = fh.readline().strip().split(",")
             if header != HISTORY_COLUMNS:
                 raise RunoutError(
@@ -122,6 +226,8 @@ def read_history(path: Path) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
                     f"got {', '.join(header)}"
                 )
             data = np.loadtxt(fh, delimiter=",", dtype=np.float64, ndmin=2)
+    except InputFileError:
+        raise
     except (OSError, ValueError, UnicodeDecodeError) as exc:
         raise RunoutError(f"{path}: cannot be read ({exc})") from None
     if data.size == 0:

@@ -18,10 +18,11 @@ here take both.
 
 from __future__ import annotations
 
-import json
 import re
 from pathlib import Path
 from typing import Any
+
+from runout.base.reading import InputFileError, read_json
 
 __all__ = [
     "COLUMNS_FILE",
@@ -159,10 +160,21 @@ def read_columns(directory: Path) -> dict[str, Any] | None:
     -------
     dict or None
         ``{"format", "units": {column: unit}, "columns": {column: {...}}}``.
+
+    Raises
+    ------
+    InputFileError
+        The file is a link out of the directory, not a regular file, or beyond the bounds
+        of :mod:`runout.base.reading` (an edited directory, not an earlier version's).
     """
+    path = Path(directory) / COLUMNS_FILE
+    if not (path.exists() or path.is_symlink()):
+        return None
     try:
-        doc = json.loads((Path(directory) / COLUMNS_FILE).read_text(encoding="utf-8"))
-    except (OSError, ValueError):
+        doc = read_json(path, [Path(directory)])
+    except InputFileError as exc:
+        if not exc.message.startswith("is not valid JSON"):
+            raise
         return None
     ok = (
         isinstance(doc, dict)

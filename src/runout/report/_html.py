@@ -19,6 +19,7 @@ from typing import Any
 
 from runout import __version__
 from runout.base.display import format_length, length_unit
+from runout.base.reading import MAX_FIGURE_BYTES, InputFileError, read_bytes
 
 __all__ = [
     "CAPTIONS",
@@ -204,13 +205,28 @@ def _gif_frames(data: bytes) -> tuple[int, int]:
         return int(getattr(image, "n_frames", 1)), image.size[0]
 
 
-def figure(path: Path) -> str:
+#: The first bytes of the figure files a report embeds.
+_SIGNATURES = {".png": (b"\x89PNG\r\n\x1a\n",), ".gif": (b"GIF87a", b"GIF89a")}
+
+
+def figure(path: Path, directory: Path | None = None) -> str:
     """An embedded figure (base64 data URI) with its caption.
 
     A GIF is embedded as it is (animated) when it has more than one frame and is below
-    :data:`GIF_MAX_BYTES`; otherwise the page says why it is not shown.
+    :data:`GIF_MAX_BYTES`; otherwise the page says why it is not shown. Only a regular file
+    inside ``directory`` (default: the figure's own) of at most
+    :data:`~runout.base.reading.MAX_FIGURE_BYTES` that starts as a PNG or GIF does is
+    embedded: a page that is mailed on its own must never carry another file.
+
+    Raises
+    ------
+    InputFileError
+        A link out of the directory, not a regular file, too large, or not an image.
     """
-    data = path.read_bytes()
+    directory = path.parent if directory is None else directory
+    data = read_bytes(path, MAX_FIGURE_BYTES, [directory])
+    if not data.startswith(_SIGNATURES.get(path.suffix.lower(), (b"",))):
+        raise InputFileError(str(path), "", f"is not a {path.suffix[1:].upper()} image")
     caption = caption_of(path.name)
     css = ""
     if path.suffix.lower() == ".gif":

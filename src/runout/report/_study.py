@@ -9,10 +9,15 @@ per row; p99, which the JSON does not hold, is taken from ``samples.csv``.
 from __future__ import annotations
 
 import csv
+import io
 import math
+import os
+from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
+from runout.base.reading import InputFileError, open_regular
 from runout.io.study_columns import line_columns, read_columns
 from runout.report._html import (
     QUANTITY_NAMES,
@@ -28,16 +33,65 @@ from runout.report._html import (
     table,
 )
 
-__all__ = ["study_first_screen", "study_statistics"]
+__all__ = ["STUDY_SUMMARY_SHAPE", "study_first_screen", "study_statistics"]
+
+_STATS = {k: "number" for k in ("mean", "std", "p5", "p50", "p95", "max", "min")}
+#: The shape of a study's ``summary.json`` that the report relies on
+#: (:func:`runout.base.reading.check_shape`).
+STUDY_SUMMARY_SHAPE: dict[str, Any] = {
+    "title": "string",
+    "kind": "string",
+    "models": ["string"],
+    "quantities": ["string"],
+    "samples": "number",
+    "failed": "number",
+    "notes": ["string"],
+    "errors": ["string"],
+    "runout": {k: _STATS for k in RUNOUT_KEYS},
+    "components": [
+        {"direction": "string", "frequency_hz": "number", "label": "string", "pp_m": _STATS}
+    ],
+    "yield": {
+        "quantity": "string",
+        "fraction": "number",
+        "ci_low": "number",
+        "ci_high": "number",
+        "confidence": "number",
+        "limit_m": "number",
+        "limit_um_per_s": "number",
+        "passed": "number",
+        "samples": "number",
+    },
+}
+#: Largest ``samples.csv`` a report reads [B] (a study of 10^5 samples and 50 outputs: ~75 MB).
+MAX_SAMPLES_CSV_BYTES = 512 * 1024 * 1024
+
+
+@contextmanager
+def _open_samples(path: Path) -> Iterator[io.TextIOWrapper]:
+    """``samples.csv`` as text: only a regular file inside its directory, of a bounded size."""
+    with open_regular(path, [path.parent]) as raw:
+        size = os.fstat(raw.fileno()).st_size
+        if size > MAX_SAMPLES_CSV_BYTES:
+            raise InputFileError(
+                str(path), "", f"is larger than {MAX_SAMPLES_CSV_BYTES // 2**20} MiB"
+            )
+        with io.TextIOWrapper(raw, encoding="utf-8", newline="") as handle:
+            try:
+                yield handle
+            except UnicodeDecodeError:
+                raise InputFileError(str(path), "", "is not UTF-8 text") from None
+            except csv.Error as exc:
+                raise InputFileError(str(path), "", f"is not CSV ({exc})") from None
 
 
 def _samples_columns(directory: Path) -> dict[str, list[float]]:
     """Finite numbers of every column of ``samples.csv`` (empty when there is none)."""
     path = directory / "samples.csv"
     columns: dict[str, list[float]] = {}
-    if not path.exists():
+    if not (path.exists() or path.is_symlink()):
         return columns
-    with path.open(encoding="utf-8", newline="") as handle:
+    with _open_samples(path) as handle:
         for record in csv.DictReader(handle):
             for key, text in record.items():
                 if key is None:
@@ -174,9 +228,9 @@ def _csv_hz(value: Any) -> str:
 
 def _sweep_table(directory: Path) -> list[str]:
     path = directory / "samples.csv"
-    if not path.exists():
+    if not (path.exists() or path.is_symlink()):
         return []
-    with path.open(encoding="utf-8", newline="") as handle:
+    with _open_samples(path) as handle:
         records = list(csv.DictReader(handle))
     if not records:
         return []

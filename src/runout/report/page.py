@@ -15,14 +15,15 @@ line with its sources on demand, the figures, the notes, and the case file.
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
 from typing import Any
 
 from runout.base.display import resolution_note
 from runout.base.errors import RunoutError
+from runout.base.reading import read_json, read_text, resolve_inside
+from runout.case.limits import MAX_CASE_FILE_BYTES
 from runout.io.output_dir import write_atomic
-from runout.io.result_files import read_result_json
+from runout.io.result_files import SUMMARY_SHAPE, read_result_json
 from runout.report._html import (
     QUANTITY_NAMES,
     RUNOUT_KEYS,
@@ -40,7 +41,7 @@ from runout.report._html import (
     table,
 )
 from runout.report._inputs import inputs_section, speed_words, unused_keys
-from runout.report._study import study_first_screen, study_statistics
+from runout.report._study import STUDY_SUMMARY_SHAPE, study_first_screen, study_statistics
 
 __all__ = ["build_combined_report", "build_report", "report_html"]
 
@@ -162,11 +163,10 @@ def _page(title: str, body: str) -> str:
 # --------------------------------------------------------------------------------------------
 # reading the directory
 # --------------------------------------------------------------------------------------------
-def _read_json(path: Path) -> dict[str, Any]:
-    try:
-        loaded = json.loads(path.read_text(encoding="utf-8"))
-    except (OSError, json.JSONDecodeError) as exc:
-        raise RunoutError(f"{path}: cannot be read as JSON ({exc})") from None
+def _read_json(path: Path, shape: dict[str, Any]) -> dict[str, Any]:
+    """A JSON object of the directory (only a regular file inside it, within the bounds of
+    :mod:`runout.base.reading`, of ``shape``)."""
+    loaded = read_json(path, [path.parent], shape=shape)
     if not isinstance(loaded, dict):
         raise RunoutError(f"{path}: expected a JSON object")
     return loaded
@@ -181,10 +181,13 @@ def _load_case(directory: Path) -> tuple[Any, str | None]:
     the report its operating inputs, which then come from the JSON alone; the page says so.
     """
     path = directory / "case.toml"
-    if not path.exists():
+    if not (path.exists() or path.is_symlink()):
         return None, None
     from runout.case.model import load_case
 
+    # the copy must be ours to read: a link out of the directory is refused before TOML
+    # reads it (load_case itself follows links, as a case named on the command line may)
+    resolve_inside(path, [directory])
     try:
         return load_case(path), None
     except (RunoutError, OSError, ValueError) as exc:
@@ -206,19 +209,21 @@ def _report_body(directory: Path) -> tuple[str, str]:
     summary_path = directory / "summary.json"
     # `runout study --out DIR` writes manifest.json and its statistics in summary.json.
     is_study = (directory / "manifest.json").exists()
-    if not result_path.exists() and not is_study:
+    if not (result_path.exists() or result_path.is_symlink()) and not is_study:
         raise RunoutError(
             f"{directory}: holds no result.json or study manifest "
             "(write one with `runout run CASE --out DIR` or `runout study CASE --out DIR`)"
         )
     # the run's JSON as the files layer reads it back (runout.io.result_files.read_result);
     # the page reads it defensively, so a hand-edited or older result.json still reports
-    result = read_result_json(directory) if result_path.exists() else {}
-    study = _read_json(summary_path) if is_study and summary_path.exists() else {}
-    summary = _read_json(summary_path) if summary_path.exists() and not is_study else {}
+    result = read_result_json(directory) if result_path.exists() or result_path.is_symlink() else {}
+    exists = summary_path.exists() or summary_path.is_symlink()
+    study = _read_json(summary_path, STUDY_SUMMARY_SHAPE) if is_study and exists else {}
+    summary = _read_json(summary_path, SUMMARY_SHAPE) if exists and not is_study else {}
+    case_path = directory / "case.toml"
     case_text = (
-        (directory / "case.toml").read_text(encoding="utf-8")
-        if (directory / "case.toml").exists()
+        read_text(case_path, MAX_CASE_FILE_BYTES, [directory])
+        if case_path.exists() or case_path.is_symlink()
         else ""
     )
     case, unloaded = _load_case(directory)
@@ -628,4 +633,4 @@ def _figures(directory: Path) -> list[str]:
     figures.sort(key=lambda p: (order.index(p.name) if p.name in order else len(order), p.name))
     if not figures:
         return []
-    return ["<h2>Figures</h2>", *(figure(p) for p in figures)]
+    return ["<h2>Figures</h2>", *(figure(p, directory) for p in figures)]

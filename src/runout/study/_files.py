@@ -6,7 +6,6 @@ Part of :mod:`runout.study.run` (its module docstring describes studies).
 from __future__ import annotations
 
 import contextlib
-import json
 import math
 import os
 import re
@@ -15,6 +14,7 @@ from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any, TextIO
 
+from runout.base.reading import InputFileError, read_json
 from runout.io import output_dir as _policy
 from runout.study._chunks import ChunkTask
 from runout.study._plan import FORMAT, RUNOUT_KEYS, StudyError
@@ -132,7 +132,7 @@ def refuse_foreign(directory: Path, kind: str, force: bool, option: str = "--out
         return
     if kind == "study":
         manifest = directory / "manifest.json"
-        if manifest.is_file():
+        if manifest.exists() or manifest.is_symlink():  # a link or a device is named too
             _read_manifest(manifest)  # a corrupted manifest is an error of its own
             return
         foreign: Path | None = entries[0]
@@ -163,9 +163,9 @@ def _refuse_collisions(directory: Path, entries: list[Path]) -> None:
     """
     manifest = directory / "manifest.json"
     if manifest.is_file() and not manifest.is_symlink():
-        try:
-            doc = json.loads(manifest.read_text(encoding="utf-8"))
-        except (OSError, ValueError):
+        try:  # the bounded reader: a manifest is read back like every file of ours
+            doc = read_json(manifest, [directory])
+        except (OSError, ValueError, InputFileError):
             return  # a corrupted manifest of a study: --force starts it afresh
         if isinstance(doc, dict) and doc.get("format") == FORMAT:
             return
@@ -327,11 +327,9 @@ def _read_manifest(path: Path) -> dict[str, Any]:
         trusts whatever it lists.
     """
     try:
-        doc = json.loads(path.read_text(encoding="utf-8"))
-    except OSError as exc:
-        problem = f"cannot read: {exc.strerror or exc}"
-    except ValueError as exc:  # JSONDecodeError, UnicodeDecodeError
-        problem = f"not valid JSON: {exc}"
+        doc = read_json(path, [path.parent])
+    except InputFileError as exc:
+        problem = exc.message
     else:
         found = _manifest_problem(doc)
         if found is None:

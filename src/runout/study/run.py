@@ -75,6 +75,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from runout.base.errors import CaseError
+from runout.base.reading import MISSING, InputFileError, read_json
 from runout.case import estimates, limits
 from runout.case.model import Case, StudySpec
 from runout.study._chunks import ERROR_CHARS as ERROR_CHARS
@@ -629,13 +630,11 @@ def _load_chunks(
     for index in indices:
         path = _chunk_path(directory, index)
         try:
-            chunk = json.loads(path.read_text(encoding="utf-8"))
-        except FileNotFoundError:
-            problem: str | None = "missing"
-        except OSError as exc:
-            problem = f"cannot read: {exc.strerror or exc}"
-        except ValueError:
-            problem = "not valid JSON"
+            # only a regular file of the directory, within the bounds of runout.base.reading
+            # (a chunk nested 10^5 deep or linked to /dev/zero is a damaged chunk, recomputed)
+            chunk = read_json(path, [directory])
+        except InputFileError as exc:
+            problem: str | None = "missing" if exc.message == MISSING else exc.message
         else:
             problem = _chunk_problem(chunk, plan.tasks[index], plan.digest)
         if problem is None:
