@@ -695,6 +695,16 @@ def _prepare_directory(
             )
             fresh = True
         else:
+            chunks_dir = directory / "chunks"
+            if chunks_dir.is_dir() and not chunks_dir.is_symlink():
+                # a link where a chunk of ours belongs: never read through it, and its
+                # recomputed chunk could only be written through it or over the user's link
+                link = next((p for p in sorted(chunks_dir.iterdir()) if p.is_symlink()), None)
+                if link is not None:
+                    raise OutputError(
+                        f"{link}: a symbolic link; runout does not read or write through "
+                        "links (remove it, or run without --resume into another directory)"
+                    )
             done, bad = _load_chunks(directory, old["done"], plan)
             if bad:
                 n = len(bad)
