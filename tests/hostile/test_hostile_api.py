@@ -270,6 +270,8 @@ def test_a_spindle_layout_refuses_bearings_closer_than_their_rings_allow() -> No
     [
         ("BearingImperfections.perfect(10**9)", "n_elements"),
         ("spectral_law((1, 10**9), 1e-9, -1.0, phase=0.0)", "waviness_spectrum.orders"),
+        # a harmonic built directly: orders bounded as the case file's (2**31 was accepted)
+        ("single_harmonic(2**30, 1e-9, 0.0)", "harmonics.orders"),
         ("single_harmonic(9, 1e-9 + 1j, 0.0)", "waviness.amplitude"),
         ("spectral_law((2, 30), 1e-9, -1.0, phase=1j)", "waviness_spectrum.phase"),
         (
@@ -287,3 +289,10 @@ def test_the_harmonics_constructors_bound_sizes_and_refuse_complex(call: str, ke
     )
     assert got["error"] == "ImperfectionError" and got["key"] == key, got
     assert took < 30.0
+
+
+def test_a_bearing_built_in_python_has_the_case_files_bound_on_its_elements() -> None:
+    # the geometry class had no cap (the case file's is 10,000): 10**6 balls were accepted
+    with pytest.raises(GeometryError) as refused:
+        runout.BallBearing(elements=10**6, element_diameter=1e-6, pitch_diameter=1.0)
+    assert refused.value.key == "elements" and "at most 10000" in str(refused.value)

@@ -115,8 +115,12 @@ def _as_orders(name: str, values: ArrayLike) -> NDArray[np.int64]:
     if (arr < 0).any():
         i = int(np.flatnonzero(arr < 0)[0])
         raise ImperfectionError(name, f"must be >= 0, got {int(arr[i])} at position {i}")
-    if (arr > 2**31).any():
-        raise ImperfectionError(name, f"order {int(arr.max())} is unreasonably large")
+    if (arr > MAX_ORDER).any():  # as the case file's orders (case.limits.MAX_ORDER)
+        raise ImperfectionError(
+            name,
+            f"order {int(arr.max())} is beyond {MAX_ORDER}: a wave that short is shorter than "
+            "any contact",
+        )
     return arr.astype(np.int64)
 
 

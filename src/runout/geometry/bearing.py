@@ -35,6 +35,7 @@ from typing import TYPE_CHECKING, Any, Literal, TypeVar
 import numpy as np
 
 from runout.base.errors import GeometryError
+from runout.geometry._harmonics import MAX_ELEMENTS
 
 __all__ = ["BallBearing", "Bearing", "Material", "Operation", "RollerBearing"]
 
@@ -178,6 +179,12 @@ def _check_elements(bearing: Any) -> None:
     object.__setattr__(bearing, "elements", int(z))
     if z < 3:
         raise GeometryError("elements", f"must be an integer >= 3, got {z}")
+    if z > MAX_ELEMENTS:  # as the case file's bearing.elements (case.limits.MAX_ELEMENTS)
+        raise GeometryError(
+            "elements",
+            f"must be at most {MAX_ELEMENTS} (the largest slewing bearings have a few "
+            f"hundred), got {z}",
+        )
 
 
 def _as_real(name: str, value: Any) -> Any:
