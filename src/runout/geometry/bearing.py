@@ -176,14 +176,15 @@ def _check_elements(bearing: Any) -> None:
         z = z[()]
     if isinstance(z, bool | np.bool_) or not isinstance(z, numbers.Integral):
         raise GeometryError("elements", f"must be an integer, got {z!r}")
-    object.__setattr__(bearing, "elements", int(z))
-    if z < 3:
-        raise GeometryError("elements", f"must be an integer >= 3, got {z}")
-    if z > MAX_ELEMENTS:  # as the case file's bearing.elements (case.limits.MAX_ELEMENTS)
+    count = int(z)
+    object.__setattr__(bearing, "elements", count)
+    if count < 3:
+        raise GeometryError("elements", f"must be an integer >= 3, got {count}")
+    if count > MAX_ELEMENTS:  # as the case file's bearing.elements (case.limits.MAX_ELEMENTS)
         raise GeometryError(
             "elements",
             f"must be at most {MAX_ELEMENTS} (the largest slewing bearings have a few "
-            f"hundred), got {z}",
+            f"hundred), got {count}",
         )
 
 
