@@ -494,14 +494,7 @@ def contact_arrays(
     """
     parts = []
     for b, imp in zip(st.bearings, imperfections, strict=True):
-        src = contact_sources(
-            imp,
-            b.kinematics,
-            ring_gain=math.cos(b.contact_angle),
-            element_gain=1.0,
-            offset=b.approach,
-            planar=False,
-        )
+        src = _bearing_sources(imp, b)
         parts.append(contact_series(t, *src.args()))
     c, cth, sth = (
         np.ascontiguousarray(np.concatenate([p[k] for p in parts], axis=1)) for k in range(3)
@@ -784,12 +777,10 @@ def static_stiffness(st: Setup) -> tuple[NDArray[np.float64], NDArray[np.float64
 PREDICTION_FLOOR = 1e-9
 
 
-def _single_sources(
-    imperfections: BearingImperfections, b: BearingSetup
-) -> list[tuple[str, int | None, int, float, tuple[Any, ...]]]:
-    """Each harmonic of one bearing alone: (part, element, lobes, amplitude [m], the
-    arguments of :func:`contact_series` with only that harmonic)."""
-    src = contact_sources(
+def _bearing_sources(imperfections: BearingImperfections, b: BearingSetup) -> Any:
+    """One bearing's contact sources in the spindle: ring deviations along its contact
+    angle, elements radially, about its own approach (seed 000 eq. 2, bearing by bearing)."""
+    return contact_sources(
         imperfections,
         b.kinematics,
         ring_gain=math.cos(b.contact_angle),
@@ -797,6 +788,14 @@ def _single_sources(
         offset=b.approach,
         planar=False,
     )
+
+
+def _single_sources(
+    imperfections: BearingImperfections, b: BearingSetup
+) -> list[tuple[str, int | None, int, float, tuple[Any, ...]]]:
+    """Each harmonic of one bearing alone: (part, element, lobes, amplitude [m], the
+    arguments of :func:`contact_series` with only that harmonic)."""
+    src = _bearing_sources(imperfections, b)
     z = b.kinematics.n_elements
     no_ring, no_ball = np.zeros((3, 0)), np.zeros((3, 0))
     out: list[tuple[str, int | None, int, float, tuple[Any, ...]]] = []
