@@ -243,6 +243,22 @@ def read_text(
 ) -> str:
     """The UTF-8 text (a leading byte-order mark dropped) of :func:`read_bytes`.
 
+    Parameters
+    ----------
+    path : Path
+        The file.
+    max_bytes : int
+        Largest file read [B].
+    roots : sequence of Path or None
+        Directories the file must lie in (see :func:`resolve_inside`).
+    name : str, optional
+        The file as shown in messages.
+
+    Returns
+    -------
+    str
+        The file's text.
+
     Raises
     ------
     InputFileError

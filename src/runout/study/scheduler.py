@@ -56,6 +56,9 @@ ACCEPTED_FORMS = (
 _HOST_NAME = re.compile(r"[A-Za-z0-9](?:[A-Za-z0-9.-]{0,251}[A-Za-z0-9])?")
 _IPV6 = re.compile(r"[0-9A-Fa-f:.]+(?:%[A-Za-z0-9_.-]+)?")
 
+#: The refusal when Dask's ``distributed`` (the ``dask`` extra) is not installed.
+_NO_DASK = "--scheduler needs Dask distributed: pip install 'runout[dask]'"
+
 
 @dataclass(frozen=True)
 class SchedulerAddress:
@@ -221,8 +224,11 @@ def _answers(address: SchedulerAddress, connect: float, response: float) -> None
     handshake runs here under a deadline, in a thread of its own (the caller may be inside an
     event loop, e.g. a notebook).
     """
-    from distributed.comm import connect as dask_connect
-    from distributed.security import Security
+    try:  # the dask extra (study.run checked it already; a direct caller gets the message)
+        from distributed.comm import connect as dask_connect
+        from distributed.security import Security
+    except ImportError:  # pragma: no cover - depends on the installation
+        raise StudyError(_NO_DASK) from None
 
     args = Security().get_connection_args("client") if address.scheme == "tls" else {}
 
@@ -277,7 +283,10 @@ def connect_client(address: SchedulerAddress, environ: Mapping[str, str] | None 
         The scheduler refused the connection, did not accept it within the connect timeout,
         or did not answer within the response timeout; each names ``--scheduler``.
     """
-    from distributed import Client
+    try:  # the dask extra
+        from distributed import Client
+    except ImportError:  # pragma: no cover - depends on the installation
+        raise StudyError(_NO_DASK) from None
 
     connect, response = scheduler_timeouts(environ)
     _accepts(address, connect, response)
