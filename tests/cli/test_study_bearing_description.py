@@ -310,3 +310,22 @@ def test_sweep_dynamic_of_a_bearing_by_catalogue_angle(tmp_path: Path) -> None:
     assert done.returncode == 0, done.stderr
     (point,) = json.loads(done.stdout)["points"]
     assert point["preload_n"] == 10.0
+
+
+@pytest.mark.parametrize(
+    "text", ["not json at all\n", '{"format": "something else", "units": {}, "columns": {}}\n']
+)
+def test_an_edited_samples_columns_json_is_refused_not_read_as_an_old_study(
+    tmp_path: Path, text: str
+) -> None:
+    """A samples_columns.json that is not runout's description was taken for an earlier
+    version's directory without a word (the old column names then found no line columns)."""
+    out = tmp_path / "out"
+    assert (
+        cli("study", str(write(tmp_path, "r.toml", samples=12)), "--out", str(out)).returncode == 0
+    )
+    (out / "samples_columns.json").write_text(text, encoding="utf-8")
+    done = cli("report", str(out))
+    assert done.returncode == 2, done.stdout + done.stderr
+    lines = done.stderr.strip().splitlines()
+    assert len(lines) == 1 and "samples_columns.json" in lines[0], lines

@@ -159,30 +159,36 @@ def read_columns(directory: Path) -> dict[str, Any] | None:
     Returns
     -------
     dict or None
-        ``{"format", "units": {column: unit}, "columns": {column: {...}}}``.
+        ``{"format", "units": {column: unit}, "columns": {column: {...}}}``; None when the
+        directory has no such file (an earlier version's study).
 
     Raises
     ------
     InputFileError
-        The file is a link out of the directory, not a regular file, or beyond the bounds
-        of :mod:`runout.base.reading` (an edited directory, not an earlier version's).
+        The file is a link out of the directory, not a regular file, beyond the bounds of
+        :mod:`runout.base.reading`, not JSON, or not runout's description (an edited
+        directory, not an earlier version's).
     """
     path = Path(directory) / COLUMNS_FILE
     if not (path.exists() or path.is_symlink()):
         return None
-    try:
-        doc = read_json(path, [Path(directory)])
-    except InputFileError as exc:
-        if not exc.message.startswith("is not valid JSON"):
-            raise
-        return None
+    doc = read_json(path, [Path(directory)])
     ok = (
         isinstance(doc, dict)
         and doc.get("format") == FORMAT
         and isinstance(doc.get("units"), dict)
         and isinstance(doc.get("columns"), dict)
     )
-    return doc if ok else None
+    if not ok:
+        # not ours, or edited: reading samples.csv by the names of an earlier version instead
+        # would silently lose its line columns
+        raise InputFileError(
+            str(path),
+            "",
+            f'is not a "{FORMAT}" description of samples.csv (an edited or foreign file; '
+            "remove it to read the study as an earlier version's)",
+        )
+    return doc
 
 
 def line_columns(directory: Path) -> dict[tuple[str, str], str] | None:
