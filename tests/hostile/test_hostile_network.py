@@ -103,7 +103,6 @@ def silent_server() -> Iterator[tuple[str, list[socket.socket]]]:
 def test_a_scheduler_that_accepts_and_never_answers_times_out(
     silent_server: tuple[str, list[socket.socket]],
 ) -> None:
-    pytest.importorskip("distributed")  # the [dask] extra
     address, accepted = silent_server
     done, took = _study(address, RUNOUT_SCHEDULER_RESPONSE_TIMEOUT="1 s")
     line = _one_line_naming_the_option(done)
@@ -113,7 +112,6 @@ def test_a_scheduler_that_accepts_and_never_answers_times_out(
 
 
 def test_a_closed_port_is_refused_at_once() -> None:
-    pytest.importorskip("distributed")
     with socket.create_server(("127.0.0.1", 0)) as probe:
         port = probe.getsockname()[1]
     done, _ = _study(f"127.0.0.1:{port}")
@@ -122,7 +120,6 @@ def test_a_closed_port_is_refused_at_once() -> None:
 
 @pytest.mark.parametrize("value", ["soon", "0 s", "-3", "nan"])
 def test_a_timeout_that_is_not_a_positive_time_names_its_variable(value: str) -> None:
-    pytest.importorskip("distributed")
     done, _ = _study("tcp://127.0.0.1:9", RUNOUT_SCHEDULER_CONNECT_TIMEOUT=value)
     assert done.returncode == 2, done.stderr
     lines = done.stderr.splitlines()

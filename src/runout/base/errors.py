@@ -30,7 +30,30 @@ class GeometryError(RunoutError, ValueError):
         super().__init__(f"{key}: {message}")
 
 
-class CaseError(RunoutError):
+class FileKeyError(RunoutError):
+    """What is wrong with one file, and where in it: ``"<file>: <key>: <message>"``.
+
+    Parameters
+    ----------
+    file : str
+        The file as the user gave it or sees it.
+    key : str
+        Dotted key path inside the file; empty for file-level errors.
+    message : str
+        What is wrong.
+    hint : str, optional
+        Appended to the message (e.g. where the docs describe the key).
+    """
+
+    def __init__(self, file: str, key: str, message: str, hint: str = "") -> None:
+        self.file = file
+        self.key = key
+        self.message = message
+        where = f"{file}: {key}" if key else file
+        super().__init__(f"{where}: {message}{hint}")
+
+
+class CaseError(FileKeyError):
     """A case file that cannot be read or is invalid.
 
     Parameters
@@ -44,11 +67,7 @@ class CaseError(RunoutError):
     """
 
     def __init__(self, file: str, key: str, message: str) -> None:
-        self.file = file
-        self.key = key
-        self.message = message
-        where = f"{file}: {key}" if key else file
-        super().__init__(f"{where}: {message}{_doc_hint(key)}")
+        super().__init__(file, key, message, _doc_hint(key))
 
 
 _DOCUMENTED_TABLES = (

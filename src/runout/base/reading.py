@@ -39,7 +39,7 @@ from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
 from typing import Any, BinaryIO
 
-from runout.base.errors import RunoutError
+from runout.base.errors import FileKeyError
 
 __all__ = [
     "MAX_FIGURE_BYTES",
@@ -78,7 +78,7 @@ MAX_FIGURE_BYTES = 32 * _MiB
 MISSING = "cannot be read (no such file)"
 
 
-class InputFileError(RunoutError, ValueError):
+class InputFileError(FileKeyError, ValueError):
     """A file that cannot be read back safely or is not what runout writes.
 
     Parameters
@@ -93,11 +93,7 @@ class InputFileError(RunoutError, ValueError):
     """
 
     def __init__(self, file: str, key: str, message: str) -> None:
-        self.file = file
-        self.key = key
-        self.message = message
-        where = f"{file}: {key}" if key else file
-        super().__init__(f"{where}: {message}")
+        super().__init__(file, key, message)
 
 
 def resolve_inside(path: Path, roots: Sequence[Path] | None, name: str | None = None) -> Path:
