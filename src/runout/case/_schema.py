@@ -813,10 +813,20 @@ def parse_vary_key(key: str) -> tuple[str, int | None, str]:
     return table, position, name
 
 
-class StudySpec(_Table):
-    """``[study]``: for ``runout study`` (Monte Carlo over drawn quantities, or sweeps)."""
+#: ``[study] minimise`` of ``kind = "arrangement"``: what the chosen order makes smallest.
+ARRANGEMENT_OBJECTIVES = ("lines", "line", "nrro_pp", "band")
+#: ``[study] line``: the f_c line or a k f_b +- f_c line of an even order k (seed 001 Tables 4-8).
+_ARRANGEMENT_LINE = re.compile(r"fc|([1-9][0-9]{0,2})fb([+-])fc")
+#: ``[study]`` keys that only ``kind = "arrangement"`` reads.
+_ARRANGEMENT_KEYS = ("lot", "minimise", "line", "band", "random_orders")
 
-    kind: Literal["montecarlo", "sweep"] = Field(description='"montecarlo" or "sweep".')
+
+class StudySpec(_Table):
+    """``[study]``: for ``runout study`` (Monte Carlo, sweeps, or a ball arrangement)."""
+
+    kind: Literal["montecarlo", "sweep", "arrangement"] = Field(
+        description='"montecarlo", "sweep" or "arrangement" (the order of a lot\'s balls).'
+    )
     samples: int = Field(100, ge=1, description="Number of Monte Carlo samples (bearings).")
     seed: int = Field(
         0, ge=0, description="Root seed: sample i draws from SeedSequence(seed, spawn_key=(i,))."
@@ -855,6 +865,54 @@ class StudySpec(_Table):
         ),
     )
 
+    lot: str | None = Field(
+        None,
+        description=(
+            "Arrangement: CSV file of the measured balls of the lot, one row per ball (columns "
+            "diameter_error_um, waviness_<k>_amplitude_um, waviness_<k>_phase_deg; "
+            "docs/studies.md), relative to the case file."
+        ),
+    )
+    minimise: Literal["lines", "line", "nrro_pp", "band"] = Field(
+        "lines",
+        description=(
+            'Arrangement: what the chosen order makes smallest: "lines" (sum of the p-p of the '
+            'f_c and k f_b +- f_c lines), "line" (one of them: line = ...), "nrro_pp" (NRRO p-p '
+            'along the measuring direction) or "band" (an Anderon band: band = ...).'
+        ),
+    )
+    line: str | None = Field(
+        None,
+        description=(
+            'Arrangement, minimise = "line": "fc" or "<k>fb+fc" / "<k>fb-fc" with k an even '
+            'order of the lot\'s waviness (e.g. "2fb+fc").'
+        ),
+    )
+    band: Literal["U", "R", "L", "M", "H"] | None = Field(
+        None, description='Arrangement, minimise = "band": the Anderon band (U, R, L, M, H).'
+    )
+    random_orders: int = Field(
+        4000,
+        ge=1,
+        le=1_000_000,
+        description=(
+            "Arrangement: random assemblies (Z balls of the lot in random order) the chosen "
+            "order is compared with."
+        ),
+    )
+
+    @field_validator("line")
+    @classmethod
+    def _line_name(cls, value: str | None) -> str | None:
+        if value is None:
+            return value
+        match = _ARRANGEMENT_LINE.fullmatch(value)
+        if match is None or (match.group(1) is not None and int(match.group(1)) % 2):
+            raise ValueError(
+                f'expected "fc" or "<k>fb+fc" / "<k>fb-fc" with an even order k, got {value!r}'
+            )
+        return value
+
     @field_validator("vary", mode="before")
     @classmethod
     def _bearing_shorthands(cls, value: object) -> object:
@@ -883,6 +941,11 @@ class StudySpec(_Table):
 
     @model_validator(mode="after")
     def _check_vary(self) -> StudySpec:
+        if self.kind == "arrangement":
+            return self._check_arrangement()
+        for name in _ARRANGEMENT_KEYS:
+            if name in self.model_fields_set:
+                raise _KeyedError(name, 'only applies to kind = "arrangement"')
         if not self.vary:
             raise _KeyedError("vary", "name at least one quantity to vary")
         if self.kind == "sweep" and "samples" in self.model_fields_set:
@@ -920,6 +983,25 @@ class StudySpec(_Table):
                 _check_distribution(where, entry, given)
             else:
                 _check_sweep(where, entry, given)
+        return self
+
+    def _check_arrangement(self) -> StudySpec:
+        # the lot's balls are the study's input: nothing is drawn or swept, nothing chunked
+        for name in ("vary", "samples", "chunk_size", "bins", "models"):
+            if name in self.model_fields_set:
+                raise _KeyedError(
+                    name, 'does not apply to kind = "arrangement" (the balls come from lot)'
+                )
+        if self.lot is None:
+            raise _KeyedError("lot", 'required for kind = "arrangement": the CSV of the balls')
+        if self.minimise == "line" and self.line is None:
+            raise _KeyedError("line", 'required for minimise = "line" (e.g. "fc" or "2fb+fc")')
+        if self.minimise == "band" and self.band is None:
+            raise _KeyedError("band", 'required for minimise = "band" (e.g. "H")')
+        if self.line is not None and self.minimise != "line":
+            raise _KeyedError("line", 'only applies to minimise = "line"')
+        if self.band is not None and self.minimise != "band":
+            raise _KeyedError("band", 'only applies to minimise = "band"')
         return self
 
 

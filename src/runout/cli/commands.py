@@ -570,6 +570,18 @@ def study_command(
     case = _load(case_file, model, sets)
     if case.study is None:
         _fail(f"{case_file}: study: the case has no [study] table (see docs/studies.md)")
+    if case.study.kind == "arrangement":
+        given = {
+            "--workers": workers != 1,
+            "--scheduler": scheduler is not None,
+            "--resume": resume,
+            "--chunk-size": chunk_size is not None,
+        }
+        for option, used in given.items():
+            if used:
+                _fail(f'{option} does not apply to [study] kind = "arrangement" (one process)')
+        _arrangement(case, case_file, as_json, out, force)
+        return
     executor = None
     if scheduler is not None:
         executor = dask_executor(None if scheduler == "local" else scheduler)
@@ -602,6 +614,117 @@ def study_command(
     else:
         _print_study(summary, str(case.title or case_file), out)
     _study_failures(summary)
+
+
+def _arrangement(case: Any, case_file: Path, as_json: bool, out: str | None, force: bool) -> None:
+    """``runout study`` of ``[study] kind = "arrangement"``: the order of a lot's balls."""
+    from runout.io.output_dir import claim, output_directory
+    from runout.study.arrangement_study import run_arrangement
+
+    directory = None
+    if out is not None:  # refused before the search runs: a refusal costs nothing
+        directory = output_directory(out)
+        claim(directory, force=force)
+    study = run_arrangement(case)
+    doc = study.to_json()
+    if as_json:
+        _print_json(doc)
+    else:
+        _print_arrangement(doc, str(case.title or case_file))
+    if directory is not None:
+        written = _write_arrangement(study, case_file, directory)
+        if not as_json:
+            for path in written:
+                _out.print(f"wrote {escape(str(path))}")
+
+
+def _write_arrangement(study: Any, case_file: Path, directory: Path) -> list[Path]:
+    """arrangement.json, arrangement.csv, random_orders.csv and case.toml, all or none."""
+    from runout.io.output_dir import staged
+
+    doc = study.to_json()
+    with staged(directory) as stage:
+        files = {
+            "arrangement.json": json.dumps(doc, indent=2, allow_nan=False) + "\n",
+            "arrangement.csv": "position,ball,lot_row,diameter_error_um\n"
+            + "".join(
+                f"{r['position']},{r['ball']},{r['lot_row']},{r['diameter_error_m'] * 1e6:.9g}\n"
+                for r in study.positions
+            ),
+            "random_orders.csv": f"{doc['minimise']['quantity']}_{doc['minimise']['unit']}\n"
+            + "".join(f"{v:.9g}\n" for v in study.random_values),
+            "case.toml": case_file.read_text(encoding="utf-8"),
+        }
+        written = []
+        for name, text in files.items():
+            (stage.path / name).write_text(text, encoding="utf-8")
+            written.append(stage.path / name)
+        written = [stage.final(p) for p in written]
+    return written
+
+
+def _print_arrangement(doc: dict[str, Any], title: str) -> None:
+    """The chosen order, its value predicted and computed, and the random assemblies."""
+    from runout.base.display import format_length, length_unit
+
+    goal, arr, rand, check = doc["minimise"], doc["arrangement"], doc["random"], doc["check"]
+    what = {
+        "lines": "sum of the line p-p",
+        "line": f"p-p of the {goal['line']} line",
+        "nrro_pp": "NRRO p-p",
+        "band": f"Anderon band {goal['band']}",
+    }[goal["quantity"]]
+    values = [arr["predicted"], check["value"], rand["p5"], rand["p50"], rand["p95"]]
+    if goal["unit"] == "m":
+        unit = length_unit(values)
+
+        def fmt(value: float) -> str:
+            return format_length(value, unit)
+
+    else:
+
+        def fmt(value: float) -> str:
+            return f"{value:.4g} Anderon"
+
+    lot = doc["lot"]
+    _out.print(
+        f"{escape(title)}: {lot['elements']} of {lot['balls']} balls ({escape(lot['file'])}), "
+        f"minimising the {what} ({arr['search']} search, {arr['evaluated']} orders)",
+        highlight=False,
+        soft_wrap=True,
+    )
+    _out.print(
+        "order (position 1 first): " + escape(", ".join(arr["balls"])),
+        highlight=False,
+        soft_wrap=True,
+    )
+    table = Table(title_justify="left", header_style="bold")
+    for col in ("line", "Hz", "predicted p-p", "model p-p"):
+        table.add_column(col, justify="left" if col == "line" else "right")
+    for line in arr["lines"]:
+        table.add_row(
+            escape(line["line"]),
+            f"{line['frequency_hz']:.5g}",
+            format_length(line["predicted_pp_m"], length_unit([line["predicted_pp_m"]])),
+            format_length(line["model_pp_m"], length_unit([line["model_pp_m"]])),
+        )
+    _out.print(table)
+    diff = check["relative_difference"]
+    _out.print(
+        f"{what}: predicted {fmt(arr['predicted'])}, model {doc['model']} {fmt(check['value'])}"
+        + ("" if diff is None else f" ({100 * diff:+.2f} %)"),
+        highlight=False,
+        soft_wrap=True,
+    )
+    _out.print(
+        f"{rand['orders']} random orders: p5 {fmt(rand['p5'])}, median {fmt(rand['p50'])}, "
+        f"p95 {fmt(rand['p95'])}, mean {fmt(rand['mean'])}; "
+        f"{100 * rand['fraction_as_good']:.3g} % as good as this order",
+        highlight=False,
+        soft_wrap=True,
+    )
+    for note in doc["notes"]:
+        _out.print(f"note: {escape(note)}", highlight=False, soft_wrap=True)
 
 
 def _study_failures(summary: dict[str, Any]) -> None:

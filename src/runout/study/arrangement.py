@@ -30,6 +30,7 @@ from __future__ import annotations
 
 import itertools
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -42,6 +43,7 @@ __all__ = [
     "Arrangement",
     "ArrangementLines",
     "line_amplitudes",
+    "line_phasors",
     "optimise_arrangement",
     "verify",
 ]
@@ -111,18 +113,60 @@ def line_amplitudes(
     return ArrangementLines(float(fc), plus, minus, k)
 
 
-def _objective(
+def line_phasors(
     d: NDArray[np.float64], f: NDArray[np.complex128], p: NDArray[np.complex128]
+) -> NDArray[np.complex128]:
+    r"""Whirl phasors of the f_c and k f_b ± f_c lines of many arrangements.
+
+    The shaft centre of the module docstring, :math:`q = x + iy`, is the sum
+    :math:`q(t) = \sum_l B_l e^{i \nu_l t}` with
+
+    * :math:`B_0 = -(2/Z) \sum_j \Delta_j p_j`, :math:`\nu_0 = \omega_c` (size errors);
+    * :math:`B^+_k = -(1/Z) \sum_j A_j p_j`, :math:`\nu = k\omega_b + \omega_c`;
+    * :math:`B^-_k = -(1/Z) \sum_j \bar A_j p_j`, :math:`\nu = -(k\omega_b - \omega_c)`,
+
+    from :math:`w_j(t) = \Delta_j + \mathrm{Re}(A_j e^{ik\omega_b t})`. Each line is a circle:
+    its p-p along any direction is :math:`2|B|`.
+
+    Parameters
+    ----------
+    d : ndarray, shape (..., Z)
+        Diameter errors by position [m].
+    f : ndarray of complex, shape (..., Z, K)
+        Diameter-deviation harmonics by position [m].
+    p : ndarray of complex, shape (Z,)
+        Position phasors :math:`e^{i 2\pi j / Z}`.
+
+    Returns
+    -------
+    ndarray of complex, shape (..., 1 + 2K)
+        :math:`B_0`, then :math:`B^+` of each order, then :math:`B^-` [m].
+    """
+    z = p.size
+    fc = (-2.0 / z) * (d @ p)
+    plus = (-1.0 / z) * np.einsum("...jk,j->...k", f, p)
+    minus = (-1.0 / z) * np.einsum("...jk,j->...k", np.conj(f), p)
+    return np.concatenate([fc[..., None], plus, minus], axis=-1)
+
+
+def _sum_of_lines(phasors: NDArray[np.complex128]) -> NDArray[np.float64]:
+    """Sum of every line's p-p [m] (the Σ column of seed 001 Tables 4-8)."""
+    return np.asarray(2.0 * np.abs(phasors).sum(axis=-1))
+
+
+def _objective(
+    d: NDArray[np.float64],
+    f: NDArray[np.complex128],
+    p: NDArray[np.complex128],
+    objective: Objective | None = None,
 ) -> NDArray[np.float64]:
     """Objective of many arrangements: d (..., Z), f (..., Z, K) → (...)."""
-    z = p.size
-    total = 4.0 / z * np.abs(d @ p)
-    if f.shape[-1]:
-        total = total + 2.0 / z * (
-            np.abs(np.einsum("...jk,j->...k", f, p)).sum(-1)
-            + np.abs(np.einsum("...jk,j->...k", f, np.conj(p))).sum(-1)
-        )
-    return total
+    phasors = line_phasors(d, f, p)
+    return _sum_of_lines(phasors) if objective is None else objective(phasors)
+
+
+#: An objective of many arrangements from their line phasors (..., 1 + 2K) [m] → (...).
+Objective = Callable[[NDArray[np.complex128]], NDArray[np.float64]]
 
 
 @dataclass(frozen=True)
@@ -145,6 +189,8 @@ class Arrangement:
         Arrangements evaluated.
     verified : dict or None
         Nonlinear check (:func:`verify`) of the chosen arrangement when a case was given.
+    random_objectives : ndarray or None
+        The objective of every random assembly of the baseline.
     """
 
     balls: tuple[int, ...]
@@ -156,6 +202,7 @@ class Arrangement:
     random_p95: float
     evaluated: int
     verified: dict[str, Any] | None = field(default=None, compare=False)
+    random_objectives: NDArray[np.float64] | None = field(default=None, compare=False, repr=False)
 
     @property
     def improvement(self) -> float:
@@ -175,11 +222,13 @@ def optimise_arrangement(
     random_trials: int = 4000,
     case: Any = None,
     candidates: int = 3,
+    objective: Objective | None = None,
 ) -> Arrangement:
     """Pick Z balls from a lot and order them to minimise the NRRO lines.
 
     Exact (every selection, every order with ball 0 of the selection at position 0: rotations
-    are equivalent) when ``C(n, Z)·(Z-1)!`` ≤ ``exact_limit``; otherwise a local search:
+    are equivalent for the line magnitudes) when ``C(n, Z)·(Z-1)!`` ≤ ``exact_limit``;
+    otherwise a local search:
     ``restarts`` random starts, each improved by the best of all position swaps and lot
     exchanges until none improves (each move is evaluated with the closed form).
 
@@ -205,6 +254,12 @@ def optimise_arrangement(
     candidates : int
         How many of the best arrangements of the closed form the nonlinear model checks
         (with ``case`` only).
+    objective : callable, optional
+        What to minimise, from the arrangements' :func:`line_phasors` (shape (..., 1 + 2K))
+        to one value each [any unit]; default the sum of every line's p-p [m]. An objective
+        with an attribute ``cost`` (work per arrangement relative to the default) lowers
+        ``exact_limit`` by that factor; one with ``rotation_invariant = False`` (a p-p along
+        one direction) is enumerated over every order, rotations included.
 
     Returns
     -------
@@ -222,16 +277,20 @@ def optimise_arrangement(
     )
     k = np.asarray(orders if orders is not None else 2 * np.arange(1, f.shape[1] + 1), np.int64)
     p = _phasors(z)
-    count = math.comb(n, z) * math.factorial(z - 1)
-    if count <= exact_limit:
-        found, evaluated = _exact(d, f, p, z)
+    # a rotation of every ball by one position turns the whole pattern in space: the line
+    # magnitudes stay, a p-p along one direction over a finite record does not
+    turning = bool(getattr(objective, "rotation_invariant", True))
+    count = math.comb(n, z) * math.factorial(z - 1 if turning else z)
+    cost = float(getattr(objective, "cost", 1.0))
+    if count * cost <= exact_limit:
+        found, evaluated = _exact(d, f, p, z, objective, turning)
         exact = True
     else:
-        found, evaluated = _local_search(d, f, p, z, rng, restarts)
+        found, evaluated = _local_search(d, f, p, z, rng, restarts, objective)
         exact = False
     # random assembly baseline
     picks = np.argsort(rng.random((random_trials, n)), axis=1)[:, :z]
-    rand = _objective(d[picks], f[picks], p)
+    rand = _objective(d[picks], f[picks], p, objective)
     best = found[0][0]
     verified = None
     if case is not None:
@@ -239,9 +298,12 @@ def optimise_arrangement(
         checks = checks[:candidates]
         best, verified = min(checks, key=lambda c: c[1]["total_pp_m"])
     lines = line_amplitudes(d[list(best)], f[list(best)], k)
+    chosen = lines.total
+    if objective is not None:
+        chosen = float(_objective(d[list(best)], f[list(best)], p, objective))
     return Arrangement(
         balls=tuple(int(b) for b in best),
-        objective=lines.total,
+        objective=chosen,
         lines=lines,
         exact=exact,
         random_mean=float(rand.mean()),
@@ -249,19 +311,28 @@ def optimise_arrangement(
         random_p95=float(np.percentile(rand, 95.0)),
         evaluated=evaluated,
         verified=verified,
+        random_objectives=rand,
     )
 
 
 def _exact(
-    d: NDArray[np.float64], f: NDArray[np.complex128], p: NDArray[np.complex128], z: int
+    d: NDArray[np.float64],
+    f: NDArray[np.complex128],
+    p: NDArray[np.complex128],
+    z: int,
+    objective: Objective | None = None,
+    turning: bool = True,
 ) -> tuple[list[tuple[tuple[int, ...], float]], int]:
-    perms = np.array(list(itertools.permutations(range(1, z))), dtype=np.int64).reshape(-1, z - 1)
-    perms = np.concatenate([np.zeros((perms.shape[0], 1), np.int64), perms], axis=1)
+    if turning:  # rotations are equivalent: the selection's first ball stays at position 0
+        perms = np.array(list(itertools.permutations(range(1, z))), np.int64).reshape(-1, z - 1)
+        perms = np.concatenate([np.zeros((perms.shape[0], 1), np.int64), perms], axis=1)
+    else:
+        perms = np.array(list(itertools.permutations(range(z))), np.int64).reshape(-1, z)
     best: list[tuple[tuple[int, ...], float]] = []
     evaluated = 0
     for subset in itertools.combinations(range(d.size), z):
         idx = np.asarray(subset)[perms]  # (P, Z)
-        obj = _objective(d[idx], f[idx], p)
+        obj = _objective(d[idx], f[idx], p, objective)
         evaluated += obj.size
         order = np.argsort(obj, kind="stable")[:4]
         best += [(tuple(int(b) for b in idx[i]), float(obj[i])) for i in order]
@@ -277,6 +348,7 @@ def _local_search(
     z: int,
     rng: np.random.Generator,
     restarts: int,
+    objective: Objective | None = None,
 ) -> tuple[list[tuple[tuple[int, ...], float]], int]:
     n = d.size
     results: list[tuple[tuple[int, ...], float]] = []
@@ -285,7 +357,7 @@ def _local_search(
     for _ in range(restarts):
         perm = rng.permutation(n)
         cur, rest = perm[:z].copy(), perm[z:].copy()
-        value = float(_objective(d[cur], f[cur], p))
+        value = float(_objective(d[cur], f[cur], p, objective))
         while True:
             # all position swaps
             swaps = np.repeat(cur[None, :], len(pairs), axis=0)
@@ -299,7 +371,7 @@ def _local_search(
                 ex[np.arange(ex.shape[0]), pos] = np.tile(rest, z)
                 cands.append(ex)
             allc = np.concatenate(cands)
-            obj = _objective(d[allc], f[allc], p)
+            obj = _objective(d[allc], f[allc], p, objective)
             evaluated += obj.size
             i = int(np.argmin(obj))
             if not obj[i] < value * (1.0 - 1e-12):
