@@ -79,9 +79,11 @@ from runout.study.run import run_study, study_limit
 __all__ = [
     "MAX_STUDIES",
     "RTOL",
+    "UP_FACTOR",
     "Allocation",
     "Evaluation",
     "Search",
+    "SearchError",
     "Tolerance",
     "allocate",
     "search",
@@ -94,9 +96,9 @@ __all__ = [
 RTOL = 0.01
 #: Studies one allocation runs at most (pilot, bracket and bisection).
 MAX_STUDIES = 40
-#: Steps of the bracket search up (doubling from rtol of the guess) before it gives up: the
-#: tolerance then reaches about 2^STEPS_UP rtol times the guess with the yield still met.
-STEPS_UP = 40
+#: How far above the first guess the bracket search goes up (steps of rtol, doubling) with the
+#: yield still met before it takes the quantity not to limit the lot [-].
+UP_FACTOR = 1e4
 
 
 class SearchError(StudyError):
@@ -255,18 +257,15 @@ def search(
     step = rtol * width
     if met(width):  # up in steps of rtol, doubling, until the yield misses the target
         passing, failing = width, known_above(width)
-        for _ in range(STEPS_UP):
-            if failing is not None or len(evaluations) >= max_studies:
-                break
+        while failing is None and len(evaluations) < max_studies:
+            if passing >= UP_FACTOR * width:
+                raise SearchError("unlimited", lowest + passing, "the yield still meets the target")
             trial = passing + step
             if met(trial):
                 passing = trial
                 step *= 2.0
             else:
                 failing = trial
-        else:
-            if failing is None:
-                raise SearchError("unlimited", lowest + passing, "the yield still meets the target")
     else:  # down in steps of rtol, doubling (at most halving), until one meets the target
         passing, failing = known_below(width), width
         while passing is None and len(evaluations) < max_studies:
