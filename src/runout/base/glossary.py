@@ -231,6 +231,14 @@ TERMS: tuple[Term, ...] = (
         "–",
         "fraction of a Monte Carlo lot within the limit, Clopper–Pearson 95 % interval",
     ),
+    Term(
+        ("allocate", "target_yield", "allocated"),
+        "–",
+        "–",
+        "`[study]` keys of a tolerance allocation: the `[study.vary]` key whose tolerance is "
+        "found, the lot's target yield; JSON `allocated`: the largest tolerance whose "
+        "estimated yield meets it, with its interval",
+    ),
     # ------------------------------------------------------------------ ring tilt
     Term(
         ("ring_tilt",),

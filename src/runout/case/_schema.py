@@ -855,6 +855,23 @@ class StudySpec(_Table):
     bins: int = Field(
         20, ge=1, le=MAX_BINS, description="Histogram bins of the Monte Carlo summary."
     )
+    allocate: str | None = Field(
+        None,
+        description=(
+            "Tolerance allocation: the [study.vary] key whose tolerance runout study finds "
+            "(element_diameter_sigma, a normal std or a uniform high): the largest value for "
+            "which the lot meets analysis.limit with target_yield (docs/studies.md)."
+        ),
+    )
+    target_yield: float | None = Field(
+        None,
+        gt=0.0,
+        lt=1.0,
+        description=(
+            "Tolerance allocation: fraction of the lot within analysis.limit (0 < y < 1); "
+            "with allocate."
+        ),
+    )
     vary: dict[str, VarySpec | RawQuantity] = Field(
         default_factory=dict,
         description=(
@@ -983,6 +1000,7 @@ class StudySpec(_Table):
                 _check_distribution(where, entry, given)
             else:
                 _check_sweep(where, entry, given)
+        _check_allocation(self)
         return self
 
     def _check_arrangement(self) -> StudySpec:
@@ -1003,6 +1021,33 @@ class StudySpec(_Table):
         if self.band is not None and self.minimise != "band":
             raise _KeyedError("band", 'only applies to minimise = "band"')
         return self
+
+
+def _check_allocation(study: StudySpec) -> None:
+    """``allocate`` names a drawn quantity with a tolerance; ``target_yield`` goes with it."""
+    if study.allocate is None:
+        if study.target_yield is not None:
+            raise _KeyedError("target_yield", "needs allocate (the [study.vary] key to allocate)")
+        return
+    if study.kind != "montecarlo":
+        raise _KeyedError("allocate", 'applies to kind = "montecarlo" (a lot of drawn bearings)')
+    if study.target_yield is None:
+        raise _KeyedError(
+            "target_yield", "required with allocate: the fraction of the lot within the limit"
+        )
+    if study.allocate not in study.vary:
+        keys = ", ".join(sorted(study.vary))
+        raise _KeyedError(
+            "allocate", f"'{study.allocate}' is not a [study.vary] key (the case varies: {keys})"
+        )
+    entry = study.vary[study.allocate]
+    if isinstance(entry, VarySpec) and entry.distribution == "sample":
+        raise _KeyedError(
+            "allocate",
+            f"'{study.allocate}' is drawn from measured values (distribution = \"sample\"): it "
+            'has no tolerance to allocate; give it as distribution = "normal" (std) or '
+            '"uniform" (high)',
+        )
 
 
 def _check_distribution(where: str, entry: VarySpec, given: set[str]) -> None:

@@ -18,6 +18,7 @@ import math
 import os
 import shutil
 import sys
+from contextlib import nullcontext
 from pathlib import Path
 from typing import Annotated, Any, NoReturn
 
@@ -548,6 +549,25 @@ def study_command(
     ] = False,
     model: ModelOpt = None,
     sets: SetOpt = None,
+    allocate: Annotated[
+        str | None,
+        typer.Option(
+            "--allocate",
+            metavar="KEY",
+            help="Find the largest tolerance of this [study.vary] key (element_diameter_sigma, "
+            "a normal std, a uniform high) for which the lot meets [analysis] limit with "
+            "--target-yield (sets study.allocate; docs/studies.md).",
+        ),
+    ] = None,
+    target_yield: Annotated[
+        float | None,
+        typer.Option(
+            "--target-yield",
+            metavar="Y",
+            help="Fraction of the lot within the limit for --allocate, 0 < Y < 1 (sets "
+            "study.target_yield).",
+        ),
+    ] = None,
 ) -> None:
     r"""Run the case's \[study]: Monte Carlo over drawn quantities or a sweep (docs/studies.md).
 
@@ -567,7 +587,7 @@ def study_command(
         from runout.study.scheduler import scheduler_address
 
         scheduler_address(scheduler)
-    case = _load(case_file, model, sets)
+    case = _load_allocating(case_file, model, sets, allocate, target_yield)
     if case.study is None:
         _fail(f"{case_file}: study: the case has no [study] table (see docs/studies.md)")
     if case.study.kind == "arrangement":
@@ -583,6 +603,29 @@ def study_command(
         _arrangement(case, case_file, as_json, out, force)
         return
     executor = None
+    if case.study.allocate is not None:
+        if out is not None or resume:
+            _fail(
+                f"{case_file}: study.allocate: an allocation runs its studies in memory; "
+                f"{'--out' if out is not None else '--resume'} applies to one study: run "
+                "`runout study` with the allocated value to write its files"
+            )
+        from runout.study.allocate import allocate as allocate_tolerance
+
+        if scheduler is not None:
+            executor = dask_executor(None if scheduler == "local" else scheduler)
+        with _err.status("allocating", spinner="dots") if _err.is_terminal else nullcontext():
+            found = allocate_tolerance(
+                case, executor=executor, workers=workers, chunk_size=chunk_size, notify=_note
+            )
+        summary = found.result.to_json()
+        summary["allocated"] = found.to_json()
+        if as_json:
+            _print_json(summary)
+        else:
+            _print_allocation(summary, str(case.title or case_file))
+        _study_failures(summary)
+        return
     if scheduler is not None:
         executor = dask_executor(None if scheduler == "local" else scheduler)
     columns = (
@@ -725,6 +768,68 @@ def _print_arrangement(doc: dict[str, Any], title: str) -> None:
     )
     for note in doc["notes"]:
         _out.print(f"note: {escape(note)}", highlight=False, soft_wrap=True)
+
+
+def _load_allocating(
+    case_file: Path,
+    model: str | None,
+    sets: list[str] | None,
+    allocate: str | None,
+    target_yield: float | None,
+) -> Any:
+    """The case with ``--allocate`` and ``--target-yield`` set as ``study.allocate`` and
+    ``study.target_yield`` (a refusal of either names its option)."""
+    from runout.base.errors import CaseError
+
+    extra = list(sets or ())
+    options = {}
+    if allocate is not None:
+        extra.append(f"study.allocate={json.dumps(allocate)}")
+        options["study.allocate"] = "--allocate"
+    if target_yield is not None:
+        extra.append(f"study.target_yield={target_yield!r}")
+        options["study.target_yield"] = "--target-yield"
+    try:
+        return _load(case_file, model, extra)
+    except CaseError as exc:
+        option = options.get(exc.key)
+        if option is None or not exc.message.endswith("(given by --set)"):
+            raise
+        message = exc.message.removesuffix("(given by --set)") + f"(given by {option})"
+        raise CaseError(exc.file, exc.key, message) from None
+
+
+def _print_allocation(summary: dict[str, Any], title: str) -> None:
+    """The study at the allocated tolerance, then the allocation in one paragraph."""
+    from runout.base.display import format_length, length_unit
+
+    found = summary["allocated"]
+    key = found["key"]
+    name = next(k for k in found if k not in ("key", "studies") and k.startswith(key))
+    _print_study(summary, f"{title} at the allocated {key}", None)
+
+    def value(v: float | None) -> str:
+        if v is None:
+            return "none"
+        if name.endswith("_m"):
+            return format_length(v, length_unit([v]))
+        return f"{v:.6g}"
+
+    limit = format_length(found["limit_m"], length_unit([found["limit_m"]]))
+    low, high = found["ci"]
+    _out.print(
+        f"allocated: {key} = {value(found[name])}: {found['passed']} of {found['samples']} "
+        f"bearings within {limit} on {found['quantity']} ({100 * found['yield']:.1f} %; "
+        f"{100 * found['confidence']:.0f} % interval {100 * low:.1f}-{100 * high:.1f} %, "
+        f"{found['method']}) for a target of {100 * found['target_yield']:.1f} %; the next "
+        f"value tried, {value(found['next_' + name])}, misses it (resolution "
+        f"{100 * found['rtol']:g} %, {len(found['studies'])} studies of the same "
+        f"{found['samples']} bearings, seed {found['seed']})",
+        soft_wrap=True,
+        highlight=False,
+    )
+    for text in found["notes"]:
+        _out.print(f"note: {escape(text)}", soft_wrap=True, highlight=False)
 
 
 def _study_failures(summary: dict[str, Any]) -> None:

@@ -223,7 +223,10 @@ def _digest(
             files[name] = hashlib.sha256((Path(base_dir) / name).read_bytes()).hexdigest()
         except OSError:
             files[name] = "unreadable"  # parse_case reports it when the study runs
-    doc: dict[str, Any] = {"case": data, "study": study.model_dump(mode="json")}
+    # the allocation keys (unset in every study of earlier versions, and in each study an
+    # allocation runs) stay out of the digest: older output directories still resume
+    unset = {k for k in ("allocate", "target_yield") if getattr(study, k) is None}
+    doc: dict[str, Any] = {"case": data, "study": study.model_dump(mode="json", exclude=unset)}
     if given is not None and _by_catalogue_angle(given):
         doc["samples_built_from"] = "the keys the case gives"
     if files:  # studies without profiles keep the digest of earlier versions
