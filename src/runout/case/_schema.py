@@ -818,7 +818,7 @@ ARRANGEMENT_OBJECTIVES = ("lines", "line", "nrro_pp", "band")
 #: ``[study] line``: the f_c line or a k f_b +- f_c line of an even order k (seed 001 Tables 4-8).
 _ARRANGEMENT_LINE = re.compile(r"fc|([1-9][0-9]{0,2})fb([+-])fc")
 #: ``[study]`` keys that only ``kind = "arrangement"`` reads.
-_ARRANGEMENT_KEYS = ("lot", "minimise", "line", "band", "random_orders")
+ARRANGEMENT_KEYS = ("lot", "minimise", "line", "band", "random_orders")
 
 
 class StudySpec(_Table):
@@ -960,7 +960,7 @@ class StudySpec(_Table):
     def _check_vary(self) -> StudySpec:
         if self.kind == "arrangement":
             return self._check_arrangement()
-        for name in _ARRANGEMENT_KEYS:
+        for name in ARRANGEMENT_KEYS:
             if name in self.model_fields_set:
                 raise _KeyedError(name, 'only applies to kind = "arrangement"')
         if not self.vary:

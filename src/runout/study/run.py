@@ -77,6 +77,7 @@ from numpy.typing import NDArray
 from runout.base.errors import CaseError
 from runout.base.reading import MISSING, InputFileError, read_json
 from runout.case import estimates, limits
+from runout.case._schema import ARRANGEMENT_KEYS
 from runout.case.model import Case, StudySpec
 from runout.study._chunks import ERROR_CHARS as ERROR_CHARS
 from runout.study._chunks import ERRORS_SHOWN as ERRORS_SHOWN
@@ -224,8 +225,11 @@ def _digest(
         except OSError:
             files[name] = "unreadable"  # parse_case reports it when the study runs
     # the allocation keys (unset in every study of earlier versions, and in each study an
-    # allocation runs) stay out of the digest: older output directories still resume
+    # allocation runs) and the arrangement keys (read by kind = "arrangement" only, which
+    # writes no chunks) stay out of the digest: older output directories still resume
     unset = {k for k in ("allocate", "target_yield") if getattr(study, k) is None}
+    if study.kind != "arrangement":
+        unset |= set(ARRANGEMENT_KEYS)
     doc: dict[str, Any] = {"case": data, "study": study.model_dump(mode="json", exclude=unset)}
     if given is not None and _by_catalogue_angle(given):
         doc["samples_built_from"] = "the keys the case gives"
