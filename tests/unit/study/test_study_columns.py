@@ -68,7 +68,9 @@ def _old_digest(case: Case) -> str:
     """The digest earlier versions wrote into manifest.json (a case without profiles)."""
     assert case.study is not None
     data = case.spec.model_dump(mode="python", exclude_none=True, exclude={"study"})
-    doc = {"case": data, "study": case.study.model_dump(mode="json")}
+    # [study] keys added since (allocation, arrangement): earlier versions had none of them
+    added = {"allocate", "target_yield", "lot", "minimise", "line", "band", "random_orders"}
+    doc = {"case": data, "study": case.study.model_dump(mode="json", exclude=added)}
     return hashlib.sha256(json.dumps(doc, sort_keys=True, default=str).encode()).hexdigest()
 
 
