@@ -605,7 +605,11 @@ def _execute(
             for _ in range(workers):
                 pool.submit(int)
         ahead = AHEAD_PER_WORKER * workers if own else AHEAD_EXTERNAL
-        _drain(pool, iter(_with_batch(tasks)), len(tasks), ahead, finished)
+        batched = _with_batch(tasks)
+        submit = _scattered(pool, batched)
+        if submit is not None:  # a Dask cluster: the shared arrays sent to each worker once
+            batched = [dataclasses.replace(t, batch=None) for t in batched]
+        _drain(pool, iter(batched), len(batched), ahead, finished, submit)
         ok = True
     finally:
         if own:
@@ -614,18 +618,51 @@ def _execute(
             pool.shutdown(wait=not ok, cancel_futures=True)
 
 
+def _scattered(
+    pool: Executor, tasks: list[ChunkTask]
+) -> Callable[[ChunkTask], Future[dict[str, Any]]] | None:
+    """Submission of chunks whose shared arrays were scattered to every Dask worker once.
+
+    On a Dask executor (``Client.get_executor()``) the :class:`BatchArrays` of a batched
+    Monte Carlo go to every worker with ``Client.scatter(broadcast=True)``, and each chunk
+    carries only a reference to them; None for any other executor or study (the arrays then
+    travel with each chunk, as they must for a process pool, whose workers cannot be named).
+    """
+    client = getattr(pool, "_client", None)
+    if client is None or not tasks or tasks[0].batch is None:
+        return None
+    try:
+        shared = client.scatter(tasks[0].batch, broadcast=True, hash=False)
+    except Exception:  # the arrays then travel with each chunk, as they do elsewhere
+        return None
+
+    def submit(task: ChunkTask) -> Future[dict[str, Any]]:
+        future: Future[dict[str, Any]] = pool.submit(_evaluate_with, task, shared)
+        return future
+
+    return submit
+
+
+def _evaluate_with(task: ChunkTask, batch: Any) -> dict[str, Any]:
+    """:func:`evaluate_chunk` of ``task`` with the shared arrays a Dask worker holds."""
+    return evaluate_chunk(dataclasses.replace(task, batch=batch))
+
+
 def _drain(
     pool: Executor,
     queue: Iterator[ChunkTask],
     count: int,
     ahead: int,
     finished: Callable[[int, dict[str, Any]], None],
+    submit: Callable[[ChunkTask], Future[dict[str, Any]]] | None = None,
 ) -> None:
-    """Run the ``count`` tasks of ``queue`` on ``pool``, at most ``ahead`` at a time."""
+    """Run the ``count`` tasks of ``queue`` on ``pool`` (through ``submit`` when given), at
+    most ``ahead`` at a time."""
     running: dict[Future[dict[str, Any]], int] = {}
     for _ in range(count + 1):  # one submission round per finished chunk, at most
         for task in itertools.islice(queue, max(0, ahead - len(running))):
-            running[pool.submit(evaluate_chunk, task)] = task.index
+            future = pool.submit(evaluate_chunk, task) if submit is None else submit(task)
+            running[future] = task.index
         if not running:
             break
         done, _pending = wait(running, return_when=FIRST_COMPLETED)
