@@ -8,10 +8,12 @@ and every labelled line (:class:`runout.analysis.results.Component`, p-p [m]).
 
 Randomness
 ----------
-Sample ``i`` draws its values from ``numpy.random.default_rng(SeedSequence(seed,
-spawn_key=(i,)))``: the i-th child of the root seed. The numbers of a sample therefore depend
-only on ``(seed, i)``, never on the chunking, the number of workers or the order in which
-chunks finish; runs are reproducible bit for bit.
+A study draws from one counter-based Philox stream keyed by ``SeedSequence(seed)``; sample ``i``
+takes a fixed run of its words (:func:`runout.study._plan.sample_uniforms`, sampling version
+:data:`SAMPLING`), and a chunk draws all its samples in one call. The numbers of a sample
+therefore depend only on ``(seed, i)``, never on the chunking, the number of workers or the
+order in which chunks finish; runs are reproducible bit for bit. A resume of a Monte Carlo
+written by an earlier sampling version is refused (its samples are other bearings).
 
 Execution
 ---------
@@ -42,7 +44,9 @@ and the study goes on. Pool workers end with their parent, even a SIGKILLed one
 
 Statistics
 ----------
-Every runout figure and line is summarised by its mean, sample standard deviation (ddof = 1),
+Each finished chunk is copied into the result's float64 columns and dropped
+(:class:`_Assembly`): memory is the columns (8 bytes per sample and column) and the chunks in
+flight. Every runout figure and line is summarised by its mean, sample standard deviation (ddof = 1),
 2σ, 5/50/95 % percentiles (linear interpolation), min, max and a histogram. A line missing from
 a sample's output (below the model's reporting floor) counts as 0 in that sample.
 """
