@@ -46,9 +46,10 @@ Statistics
 ----------
 Each finished chunk is copied into the result's float64 columns and dropped
 (:class:`_Assembly`): memory is the columns (8 bytes per sample and column) and the chunks in
-flight. Every runout figure and line is summarised by its mean, sample standard deviation (ddof = 1),
-2σ, 5/50/95 % percentiles (linear interpolation), min, max and a histogram. A line missing from
-a sample's output (below the model's reporting floor) counts as 0 in that sample.
+flight. Every runout figure and line is summarised by its mean, sample standard deviation
+(ddof = 1), 2σ, 5/50/95 % percentiles (linear interpolation, exact), min, max and a histogram.
+A line missing from a sample's output (below the model's reporting floor) counts as 0 in that
+sample.
 """
 
 from __future__ import annotations
