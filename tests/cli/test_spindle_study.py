@@ -14,10 +14,11 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from scipy.special import ndtri
 from typer.testing import CliRunner
 
 from runout.cli.commands import app
-from runout.study.run import sample_rng
+from runout.study.run import sample_uniforms
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLE = (ROOT / "examples" / "spindle_hdd_ball_grade.toml").read_text(encoding="utf-8")
@@ -97,8 +98,9 @@ def test_statistics_equal_a_loop_of_runout_run_over_the_same_draws(tmp_path: Pat
         rows = list(csv.DictReader(fh))
     radial = []
     for i in range(samples):
-        # sample i's draw: SeedSequence(seed, spawn_key=(i,)), sigma x N(0, 1) per front ball
-        errors = SIGMA * sample_rng(1, i).standard_normal(Z)
+        # sample i's draw: its Z words of the study's Philox stream (seed 1), sigma x
+        # Phi^-1(u) per front ball
+        errors = SIGMA * ndtri(sample_uniforms(1, i, i + 1, Z)[0])
         drawn = [float(rows[i][f"element_diameter_error_front_{j + 1:02d}"]) for j in range(Z)]
         assert drawn == pytest.approx(errors, rel=1e-15, abs=0.0)
         text = case.read_text(encoding="utf-8").split("[study]")[0]

@@ -244,11 +244,20 @@ def test_samples_csv_names_are_plain_identifiers_with_units_beside(tmp_path: Pat
         assert name in lines and columns["units"][name] == "m"
         assert columns["columns"][name]["frequency_hz"] == comp["frequency_hz"]
     assert described[("x", "ball size error: f_c")] == "x_ball_size_error_f_c_pp_m"
-    # the drawn values are the sample's draws (SeedSequence(7, spawn_key=(i,)))
-    from runout.study.run import sample_rng
+    # the drawn values are the sample's draws: sample 0's words of the study's Philox stream
+    # (seed 7), the ball sizes after the other keys' columns in key order, through Phi^-1
+    from scipy.special import ndtri
 
+    from runout.case.model import load_case
+    from runout.study.run import plan_quantities, sample_uniforms
+
+    quantities = plan_quantities(load_case(path))
+    keys = [q.key for q in quantities]
+    offset = sum(q.size for q in quantities[: keys.index("element_diameter_sigma")])
+    width = -(-sum(q.size for q in quantities) // 4) * 4
+    u = sample_uniforms(7, 0, 1, width)[0, offset : offset + 8]
     first = [float(v) for v in rows[1][2:10]]
-    assert first == pytest.approx(1e-7 * sample_rng(7, 0).standard_normal(8), rel=1e-15)
+    assert first == pytest.approx(1e-7 * ndtri(u), rel=1e-15)
 
 
 def test_report_reads_new_and_old_samples_csv(tmp_path: Path) -> None:

@@ -162,3 +162,48 @@ def test_dask_local_cluster_same_numbers(cluster, tmp_path: Path) -> None:  # ty
     assert done.returncode == 0, done.stderr
     out = json.loads(done.stdout)
     assert out["runout"]["radial_pp_m"]["mean"] == local.to_json()["runout"]["radial_pp_m"]["mean"]
+
+
+def test_dask_scatters_the_shared_arrays_and_gives_the_same_bytes(  # type: ignore[no-untyped-def]
+    cluster, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A batched ball-size Monte Carlo on Dask: the shared arrays are scattered to the workers
+    once (chunks carry none), and the numbers are the in-process ones for any chunk size."""
+    import distributed
+
+    from runout.study import run as st_mod
+
+    text = CASE.format(samples=17, chunk=250)
+    text = text.replace('"operation.axial_load" = { distribution = "normal", std = "2 N" }\n', "")
+    assert "operation.axial_load" not in text
+    path = tmp_path / "balls.toml"
+    path.write_text(text, encoding="utf-8")
+    local = run_study(load_case(path))
+    shipped: list[bool] = []
+    evaluate = st_mod.evaluate_chunk
+
+    def spy(task):  # type: ignore[no-untyped-def]
+        shipped.append(task.batch is not None)
+        return evaluate(task)
+
+    scattered: list[bool] = []
+    scatter = st_mod._scattered
+
+    def watch(pool, tasks):  # type: ignore[no-untyped-def]
+        submit = scatter(pool, tasks)
+        scattered.append(submit is not None)
+        return submit
+
+    monkeypatch.setattr(st_mod, "evaluate_chunk", spy)  # in the cluster's threads too
+    monkeypatch.setattr(st_mod, "_scattered", watch)
+    with distributed.Client(cluster) as client:
+        remote = run_study(load_case(path), executor=client.get_executor(), chunk_size=4)
+    assert scattered == [True]  # sent once, by reference
+    assert len(shipped) == 5 and all(shipped)  # every chunk found them on its worker
+    for k, v in local.runout.items():
+        assert v.tobytes() == remote.runout[k].tobytes()
+    assert local.values["element_diameter_sigma"].tobytes() == (
+        remote.values["element_diameter_sigma"].tobytes()
+    )
+    for key, (f, pp) in local.lines.items():
+        assert remote.lines[key][0] == f and pp.tobytes() == remote.lines[key][1].tobytes()

@@ -40,12 +40,14 @@ __all__ = [
     "STUDY_BYTES_PER_RUN",
     "Sizes",
     "batched_memory",
+    "batched_sample_bytes",
     "batched_study",
     "check_limits",
     "estimate_run",
     "estimate_study",
     "sizes_of",
     "study_points",
+    "study_threads",
 ]
 
 
@@ -398,12 +400,41 @@ def batched_memory(case: Any, workers: int = 1) -> float:
     return copies * shared + concurrent * one_pass
 
 
+def batched_sample_bytes(case: Any) -> float:
+    """Bytes a batched ball-size Monte Carlo keeps per sample [B].
+
+    The study's result columns are float64 arrays (:class:`runout.study.run.StudyResult`): the
+    Z drawn diameters, the four runout figures, the p-p of every line in x and y
+    (:attr:`Sizes.lines`, an upper bound) and the sample's model; nothing per sample besides.
+
+    Parameters
+    ----------
+    case : Case
+        A validated case with a ball-size Monte Carlo ``[study]``.
+
+    Returns
+    -------
+    float
+        Bytes per sample [B].
+    """
+    s = sizes_of(case)
+    return 8.0 * (s.elements + 4.0 + 2.0 * s.lines + 1.0)
+
+
+def study_threads() -> int:
+    """Threads a batched Monte Carlo runs on in this process (Numba's, as the study uses)."""
+    limit = os.environ.get("NUMBA_NUM_THREADS", "").strip()
+    cores = os.cpu_count() or 1
+    return max(1, min(cores, int(limit))) if limit.isdigit() and int(limit) > 0 else cores
+
+
 def estimate_study(case: Any, per_run: ResourceEstimate) -> ResourceEstimate:
     """Memory and time of a case's whole ``[study]`` from the estimate of one run.
 
     The records are not kept (each chunk is summarised as it finishes): memory is one run's
-    plus :data:`STUDY_BYTES_PER_RUN` per run; a batched ball-size Monte Carlo holds its shared
-    arrays and one pass of rows per concurrent evaluation (:func:`batched_memory`, in this
+    plus :data:`STUDY_BYTES_PER_RUN` per run; a batched ball-size Monte Carlo keeps
+    :func:`batched_sample_bytes` per sample, holds its shared arrays and one pass of rows per
+    concurrent evaluation (:func:`batched_memory`, in this
     process; :func:`runout.study.run.run_study` checks again for worker processes) and costs
     :data:`COST_BATCH` per instant and ball instead of a whole run.
 
@@ -423,11 +454,17 @@ def estimate_study(case: Any, per_run: ResourceEstimate) -> ResourceEstimate:
     key = _study_key(case)
     memory = per_run.memory + points * STUDY_BYTES_PER_RUN
     each = per_run.seconds
+    seconds_per_thread, on = 1.0, ""
     if batched_study(case):
-        memory = max(memory, batched_memory(case) + points * STUDY_BYTES_PER_RUN)
+        # compact result columns instead of a run's record per sample; the chunks run side by
+        # side on every thread of this process (measured: wall time = CPU time / threads)
+        kept = points * batched_sample_bytes(case)
+        memory = max(per_run.memory, batched_memory(case)) + kept
         each = case.analysis.samples * case.bearing.elements * COST_BATCH
-    seconds = points * each
-    what = f"{points} runs x about {format_seconds(each)} each"
+        seconds_per_thread = 1.0 / study_threads()
+        on = f" on {study_threads()} threads" if study_threads() > 1 else ""
+    seconds = points * each * seconds_per_thread
+    what = f"{points} runs x about {format_seconds(each)} each{on}"
     return ResourceEstimate(memory, seconds, key, key, f"{points} runs", what)
 
 

@@ -22,7 +22,7 @@ from runout.analysis.decompose import study_key
 from runout.base.errors import ContactLossError, ConvergenceError, NumericalError
 from runout.base.units import to_si
 from runout.case.model import Case, parse_case
-from runout.study._plan import RUNOUT_KEYS, Quantity, _set_at, sample_rng
+from runout.study._plan import RUNOUT_KEYS, Quantity, _set_at, draw_block
 from runout.study._pool import BatchArrays, evaluate_rows, line_projector
 
 # --------------------------------------------------------------------------------------------
@@ -68,15 +68,33 @@ class ChunkTask:
     batch: BatchArrays | None = None
 
 
+def _plain(value: Any) -> Any:
+    """A drawn value as a case takes it: a float, or a list of floats for a per-element key."""
+    if isinstance(value, np.ndarray):
+        return [float(x) for x in value] if value.ndim else float(value)
+    return float(value) if isinstance(value, np.floating) else value
+
+
+def _chunk_points(task: ChunkTask) -> tuple[list[str], dict[str, Any]]:
+    """Model of every sample or point of ``task`` and the values of its quantities.
+
+    Monte Carlo: the values as arrays drawn for the whole chunk at once (:func:`draw_block`:
+    shape (n,) or (n, size) per key), no Python object per sample; sweep: lists of the grid's
+    values (SI floats or the literal strings of a text key).
+    """
+    n = task.stop - task.start
+    if task.kind == "montecarlo":
+        return [task.models[0]] * n, draw_block(task.quantities, task.seed, task.start, task.stop)
+    points = [_point(task, i) for i in range(task.start, task.stop)]
+    values = {q.key: [v[q.key] for _, v in points] for q in task.quantities}
+    return [m for m, _ in points], values
+
+
 def _point(task: ChunkTask, i: int) -> tuple[str, dict[str, Any]]:
     """Model and values of sample or point ``i``."""
     if task.kind == "montecarlo":
-        rng = sample_rng(task.seed, i)
-        drawn: dict[str, Any] = {}
-        for q in task.quantities:
-            v = q.draw(rng)
-            drawn[q.key] = [float(x) for x in v] if q.size > 1 else float(v[0])
-        return task.models[0], drawn
+        drawn = draw_block(task.quantities, task.seed, i, i + 1)
+        return task.models[0], {key: _plain(v[0]) for key, v in drawn.items()}
     shape = [len(task.models), *(len(q.values) for q in task.quantities)]
     idx = np.unravel_index(i, shape)
     values = {q.key: q.values[int(j)] for q, j in zip(task.quantities, idx[1:], strict=True)}
@@ -148,42 +166,37 @@ def error_text(exc: BaseException) -> str:
 
 
 def evaluate_chunk(task: ChunkTask) -> dict[str, Any]:
-    """Evaluate one chunk: a column-wise dict (JSON-ready) of values, runout and lines.
+    """Evaluate one chunk: a column-wise dict of values, runout and lines.
 
+    Columns are arrays (``values`` of a Monte Carlo, ``runout`` with NaN for a failed sample,
+    every line's ``pp_m``); :func:`chunk_json` turns the chunk into the JSON of its file.
     A sample (or point) whose variant or model raises any :class:`Exception` is recorded in
-    ``chunk["errors"]`` (sample index -> ``"Type: message"``) with ``None`` runout and no lines,
+    ``chunk["errors"]`` (sample index -> ``"Type: message"``) with NaN runout and no lines,
     and the chunk goes on: one bad point must not lose the others. ``KeyboardInterrupt`` and
     ``SystemExit`` are not exceptions of the samples and still stop the study.
     """
     chunk = _empty_chunk(task)
-    points = [_point(task, i) for i in range(task.start, task.stop)]
-    for model, values in points:
-        chunk["model"].append(model)
-        for key, v in values.items():
-            chunk["values"][key].append(v)
+    models, values = _chunk_points(task)
+    chunk["model"], chunk["values"] = models, values
     if _batched(task):
         # the batch fills only runout, lines and errors: it shares the drawn values
-        batch = {
-            **chunk,
-            "runout": {k: [] for k in RUNOUT_KEYS},
-            "lines": {},
-            "errors": {},
-            "stiffness": {},
-        }
+        batch = {**chunk, "runout": {}, "lines": {}, "errors": {}, "stiffness": {}}
         try:
-            _evaluate_batched(task, points, batch)
+            _evaluate_batched(task, values, batch)
         except Exception:  # the per-bearing path below records each bearing's own failure
             pass
         else:
             return batch
     from runout.runner import run_model
 
-    for row, (model, values) in enumerate(points):
+    runout: dict[str, list[float | None]] = chunk["runout"]
+    for row, model in enumerate(models):
+        point = {key: _plain(v[row]) for key, v in values.items()}
         try:
-            result = run_model(_variant(task, model, values))
+            result = run_model(_variant(task, model, point))
             figures = result.runout.to_json()
             # None: a figure the model does not have (a radial model's axial p-p), not 0
-            runout = [None if (v := figures[k]) is None else float(v) for k in RUNOUT_KEYS]
+            numbers = [None if (v := figures[k]) is None else float(v) for k in RUNOUT_KEYS]
             comps = [
                 (c.direction, c.frequency_hz, study_key(c.sources) or c.label, c.pp_m)
                 for c in result.components
@@ -192,14 +205,52 @@ def evaluate_chunk(task: ChunkTask) -> dict[str, Any]:
         except Exception as exc:  # recorded with its sample: the study goes on
             chunk["errors"][str(task.start + row)] = error_text(exc)
             for k in RUNOUT_KEYS:
-                chunk["runout"][k].append(None)
+                runout[k].append(None)
             continue
-        for k, v in zip(RUNOUT_KEYS, runout, strict=True):
-            chunk["runout"][k].append(v)
+        for k, v in zip(RUNOUT_KEYS, numbers, strict=True):
+            runout[k].append(v)
         _add_lines(chunk, row, comps)
         if stiffness is not None:
             chunk["stiffness"][str(task.start + row)] = stiffness
+    # None (a figure the model does not have, a failed sample) is NaN in the arrays
+    chunk["runout"] = {k: np.array(v, dtype=np.float64) for k, v in runout.items()}
+    for entry in chunk["lines"].values():
+        entry["pp_m"] = np.array(entry["pp_m"], dtype=np.float64)
     return chunk
+
+
+def _listed(column: Any) -> list[Any]:
+    """A column as JSON lists: NaN (a failed sample, a figure a model lacks) as None."""
+    if not isinstance(column, np.ndarray):
+        return list(column)
+    out: list[Any] = column.tolist()
+    if column.dtype.kind == "f" and column.ndim == 1:
+        for i in np.flatnonzero(~np.isfinite(column)).tolist():
+            out[i] = None
+    return out
+
+
+def chunk_json(chunk: dict[str, Any]) -> dict[str, Any]:
+    """The JSON document of a chunk's file (lists; None for a failed sample's figures).
+
+    Parameters
+    ----------
+    chunk : dict
+        A chunk of :func:`evaluate_chunk` (array columns) or one read back from its file.
+
+    Returns
+    -------
+    dict
+        The same chunk with every column a list, as chunk files hold it.
+    """
+    return {
+        **chunk,
+        "values": {k: _listed(v) for k, v in chunk["values"].items()},
+        "runout": {k: _listed(v) for k, v in chunk["runout"].items()},
+        "lines": {
+            key: {**entry, "pp_m": _listed(entry["pp_m"])} for key, entry in chunk["lines"].items()
+        },
+    }
 
 
 # ---------------------------------------------------------------- batched 2-D path
@@ -291,24 +342,22 @@ _BASES: dict[str, BatchArrays] = {}
 _line_projector = line_projector
 
 
-def _evaluate_batched(
-    task: ChunkTask, points: list[tuple[str, dict[str, Any]]], chunk: dict[str, Any]
-) -> None:
+def _evaluate_batched(task: ChunkTask, values: dict[str, Any], chunk: dict[str, Any]) -> None:
     """Fill ``chunk`` (runout, lines, errors) from the batched kernel, column by column.
 
-    The same JSON as the per-bearing records of :func:`evaluate_chunk` would hold: a failed
-    bearing has None runout and 0 in every line; a line's entry appears at the first bearing
-    that succeeds (none: no lines).
+    The same numbers as the per-bearing records of :func:`evaluate_chunk` would hold: a failed
+    bearing has NaN runout and 0 in every line; a line's entry appears at the first bearing
+    that succeeds (none: no lines). No Python work per bearing: the drawn sizes go to the
+    kernel as one array, and its rows come back as the chunk's columns.
     """
     b = _batch_base(task)
+    n = task.stop - task.start
     # every quantity replaces the same key: the last one (sorted keys) wins, as in _variant
-    errors = np.array(
-        [values[task.quantities[-1].key] for _, values in points], dtype=np.float64
-    ).reshape(len(points), b.z)
+    errors = np.asarray(values[task.quantities[-1].key], dtype=np.float64).reshape(n, b.z)
     rows = evaluate_rows(b, errors, task.parallel)
     ok = rows.status == 0
     t = b.time
-    for row in np.flatnonzero(~ok):
+    for row in np.flatnonzero(~ok).tolist():
         from runout.models import quasi_static_2d as qs2
 
         code = int(rows.status[row])
@@ -318,19 +367,17 @@ def _evaluate_batched(
         # bearing reads the same on both paths
         kind = {qs2.TOO_FEW_LOADED: ContactLossError, qs2.NOT_CONVERGED: ConvergenceError}
         exc = kind.get(code, NumericalError)(cause, at, float(t[at]))
-        chunk["errors"][str(task.start + int(row))] = error_text(exc)
+        chunk["errors"][str(task.start + row)] = error_text(exc)
 
-    def column(values: NDArray[np.float64]) -> list[float | None]:
-        out: list[float | None] = values.tolist()
-        for row in np.flatnonzero(~ok):
-            out[row] = None
-        return out
+    def column(figures: NDArray[np.float64]) -> NDArray[np.float64]:
+        return np.where(ok, figures, np.nan)
 
-    runout = chunk["runout"]
-    runout["radial_pp_m"] = column(rows.radial)
-    runout["axial_pp_m"] = [None] * len(points)  # the planar model: no axial freedom
-    runout["rro_pp_m"] = column(rows.rro)
-    runout["nrro_pp_m"] = column(rows.nrro)
+    chunk["runout"] = {
+        "radial_pp_m": column(rows.radial),
+        "axial_pp_m": np.full(n, np.nan),  # the planar model: no axial freedom
+        "rro_pp_m": column(rows.rro),
+        "nrro_pp_m": column(rows.nrro),
+    }
     if not ok.any():
         return
     lines = chunk["lines"]
@@ -343,12 +390,12 @@ def _evaluate_batched(
                 # NaN (never from hypot of finite coefficients) would read 0, as max(0.0, nan)
                 lines[key] = {
                     "frequency_hz": float(b.frequencies[j]),
-                    "pp_m": np.where(pp > 0.0, pp, 0.0).tolist(),
+                    "pp_m": np.where(pp > 0.0, pp, 0.0),
                 }
             else:
                 # two lines of one sample that differ only by element numbers: keep the larger
-                old = np.array(entry["pp_m"], dtype=np.float64)
-                entry["pp_m"] = np.where(pp > old, pp, old).tolist()
+                old = entry["pp_m"]
+                entry["pp_m"] = np.where(pp > old, pp, old)
 
 
 def _with_batch(tasks: list[ChunkTask]) -> list[ChunkTask]:

@@ -313,6 +313,9 @@ def _manifest_problem(doc: Any) -> str | None:
         return "done lists a chunk twice"
     if not isinstance(doc.get("complete"), bool):
         return "complete is not true or false"
+    # absent in the manifests of sampling version 1 (before issue 31)
+    if "sampling" in doc and (not _is_int(doc["sampling"]) or doc["sampling"] < 1):
+        return f"sampling is {doc['sampling']!r}, not a positive integer"
     return None
 
 

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import copy
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -30,12 +30,95 @@ class StudyError(RunoutError):
     """A study that cannot run as asked (output directory, resume mismatch, bad quantity)."""
 
 
-def sample_rng(seed: int, index: int) -> np.random.Generator:
-    """Generator of sample ``index``: the ``index``-th child of ``SeedSequence(seed)``.
+#: Version of the Monte Carlo draws (recorded in manifest.json as ``sampling``). 1: one
+#: ``SeedSequence`` child per sample (runout before issue 31); 2: one counter-based Philox stream
+#: per study, sample ``i`` at a fixed place in it (:func:`sample_uniforms`).
+SAMPLING = 2
+#: Random 64-bit words of one Philox counter step (the stream advances in blocks of four).
+_BLOCK = 4
 
-    Identical to ``SeedSequence(seed).spawn(index + 1)[index]``, without spawning the others.
+
+def sample_rng(seed: int, index: int) -> np.random.Generator:
+    """Generator of sample ``index`` in studies of sampling version 1 (before issue 31).
+
+    The ``index``-th child of ``SeedSequence(seed)``; studies now draw through
+    :func:`sample_uniforms` (:data:`SAMPLING` 2). Kept for callers of the former stream.
     """
     return np.random.default_rng(np.random.SeedSequence(seed, spawn_key=(index,)))
+
+
+def draw_width(quantities: Sequence[Quantity]) -> int:
+    """Random numbers one Monte Carlo sample takes: the drawn entries, padded to a whole block.
+
+    Parameters
+    ----------
+    quantities : sequence of Quantity
+        The study's varied quantities (sorted by key, as :func:`plan_quantities` gives them).
+
+    Returns
+    -------
+    int
+        A multiple of four (one Philox counter step holds four 64-bit words).
+    """
+    used = sum(q.size for q in quantities)
+    return max(_BLOCK, -(-used // _BLOCK) * _BLOCK)
+
+
+def sample_uniforms(seed: int, start: int, stop: int, width: int) -> NDArray[np.float64]:
+    """Uniform numbers of samples ``start`` ... ``stop - 1``, ``width`` per sample, in (0, 1).
+
+    One counter-based stream per study (Philox-4x64, Salmon et al., "Parallel random numbers:
+    as easy as 1, 2, 3", SC 2011), keyed by ``SeedSequence(seed)``; sample ``i`` takes the
+    64-bit words ``i * width`` ... ``(i + 1) * width - 1`` of it. The stream is positioned at
+    ``start`` by its counter (no draws skipped), so a block of samples is one generator call
+    and sample ``i``'s numbers depend only on ``(seed, i)``: not on the chunking, the worker
+    count or the order in which chunks run.
+
+    Parameters
+    ----------
+    seed : int
+        ``[study] seed``.
+    start, stop : int
+        First sample and one past the last.
+    width : int
+        Words per sample, a multiple of four (:func:`draw_width`).
+
+    Returns
+    -------
+    ndarray, shape (stop - start, width)
+        ``(k + 1/2) / 2**52`` with ``k`` the word's top 52 bits: never 0 or 1, exact in float64.
+    """
+    if width % _BLOCK:
+        raise ValueError(f"width must be a multiple of {_BLOCK}, got {width}")
+    key = np.random.SeedSequence(seed).generate_state(2, np.uint64)
+    stream = np.random.Philox(key=key, counter=start * (width // _BLOCK))
+    n = max(0, stop - start)
+    words = stream.random_raw(n * width).reshape(n, width)
+    return ((words >> np.uint64(12)).astype(np.float64) + 0.5) * 2.0**-52
+
+
+def draw_block(
+    quantities: Sequence[Quantity], seed: int, start: int, stop: int
+) -> dict[str, NDArray[np.float64]]:
+    """Values of every drawn quantity for samples ``start`` ... ``stop - 1`` [SI].
+
+    One call of the stream (:func:`sample_uniforms`) for the block; quantity ``q`` takes the
+    next ``q.size`` columns in key order and turns them into its distribution
+    (:meth:`Quantity.from_uniforms`).
+
+    Returns
+    -------
+    dict
+        Key -> ndarray, shape (n,) for a scalar key or (n, size) for a per-element key.
+    """
+    u = sample_uniforms(seed, start, stop, draw_width(quantities))
+    out: dict[str, NDArray[np.float64]] = {}
+    column = 0
+    for q in quantities:
+        v = q.from_uniforms(u[:, column : column + q.size])
+        column += q.size
+        out[q.key] = v if q.size > 1 else np.ascontiguousarray(v[:, 0])
+    return out
 
 
 # --------------------------------------------------------------------------------------------
@@ -72,8 +155,37 @@ class Quantity:
     spread: tuple[float, ...] = ()
     values: tuple[Any, ...] = ()
 
+    def from_uniforms(self, u: NDArray[np.float64]) -> NDArray[np.float64]:
+        """Values of a block of samples from their uniform numbers [SI].
+
+        Parameters
+        ----------
+        u : ndarray, shape (n, size)
+            Uniform numbers in (0, 1) (:func:`sample_uniforms`), one row per sample.
+
+        Returns
+        -------
+        ndarray, shape (n, size)
+            Normal: ``mean + std * Phi^-1(u)`` (the inverse of the normal distribution
+            function, one number per value, so that every sample takes the same count);
+            uniform: ``low + (high - low) u``; ``"sample"``: entry ``floor(u * count)`` of the
+            measured values.
+        """
+        if self.distribution == "normal":
+            from scipy.special import ndtri
+
+            return self.mean + self.spread[0] * ndtri(u)
+        if self.distribution == "uniform":
+            return self.spread[0] + (self.spread[1] - self.spread[0]) * u
+        if self.distribution == "sample":
+            pool = np.asarray(self.values, dtype=np.float64)
+            pick = np.minimum((u * pool.size).astype(np.int64), pool.size - 1)
+            return pool[pick]
+        raise StudyError(f"study.vary.{self.key}: a sweep quantity is not drawn")
+
     def draw(self, rng: np.random.Generator) -> NDArray[np.float64]:
-        """Draw the ``size`` values of one sample [SI]."""
+        """Draw the ``size`` values of one sample from ``rng`` [SI] (sampling version 1;
+        studies draw blocks through :func:`draw_block`)."""
         if self.distribution == "normal":
             return self.mean + self.spread[0] * rng.standard_normal(self.size)
         if self.distribution == "uniform":

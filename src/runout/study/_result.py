@@ -72,6 +72,8 @@ _CONTRACT = ("mean", "std", "p5", "p50", "p95")
 _STIFFNESS_COLUMNS = ("kxx_n_per_m", "kxy_n_per_m", "kyx_n_per_m", "kyy_n_per_m", "kzz_n_per_m")
 #: Runout columns of :meth:`StudyResult.to_dataframe`, in this order.
 _FRAME_RUNOUT = ("radial_pp_m", "rro_pp_m", "nrro_pp_m", "axial_pp_m")
+#: Rows of samples.csv turned into text at a time (the file is written block by block).
+CSV_BLOCK = 8192
 #: Confidence of the interval of a lot's yield [-].
 YIELD_CONFIDENCE = 0.95
 
@@ -92,7 +94,9 @@ class StudyResult:
     model : list of str, length N
         Model of each sample.
     values : dict
-        Quantity key -> list of N values (lists for per-element keys).
+        Quantity key -> the N values: a Monte Carlo's as a float64 array, shape (N,) or
+        (N, size) for a per-element key [SI]; a sweep's as a list (SI floats, or the literal
+        strings of a text key).
     runout : dict
         RUNOUT_KEYS -> ndarray (N,) [m]; NaN for failed samples.
     lines : dict
@@ -306,7 +310,10 @@ class StudyResult:
         units: dict[str, str] = {"sample": "-", "model": "-"}
         for q in self.quantities:
             values = self.values[q.key]
-            data[q.key] = [list(v) for v in values] if q.size > 1 else list(values)
+            if isinstance(values, np.ndarray):  # a Monte Carlo's drawn column
+                data[q.key] = values.tolist() if q.size > 1 else values
+            else:
+                data[q.key] = [list(v) for v in values] if q.size > 1 else list(values)
             units[q.key] = _si_unit(q)
         for k in _FRAME_RUNOUT:
             data[k] = np.asarray(self.runout[k], dtype=np.float64)
@@ -437,7 +444,9 @@ class StudyResult:
                     for j in range(q.size)
                 ]
             else:
-                cols.append((identifier(q.key), np.array(vals, dtype=object), unit, {"key": q.key}))
+                # a Monte Carlo's drawn column is float64 already; a sweep's may hold text
+                column = vals if isinstance(vals, np.ndarray) else np.array(vals, dtype=object)
+                cols.append((identifier(q.key), column, unit, {"key": q.key}))
         cols += [(k, self.runout[k], "m", {}) for k in RUNOUT_KEYS]
         names = self.line_columns()
         for d, f, label, pp in self.line_table():
@@ -511,12 +520,15 @@ class StudyResult:
     def _write_csv(self, path: Path) -> Path:
         cols = self.columns()
 
-        cells = [_cells(col) for _, col in cols]  # column by column: no per-cell dispatch
-
         def rows(fh: TextIO) -> None:
             writer = csv.writer(fh, lineterminator="\n")
             writer.writerow([name for name, _ in cols])
-            writer.writerows(zip(*cells, strict=True))
+            # CSV_BLOCK rows at a time, column by column (no per-cell dispatch): the text of
+            # 10^6 samples is never in memory at once
+            for start in range(0, self.samples, CSV_BLOCK):
+                block = slice(start, start + CSV_BLOCK)
+                cells = [_cells(col[block]) for _, col in cols]
+                writer.writerows(zip(*cells, strict=True))
 
         return write_atomic(path, rows)
 

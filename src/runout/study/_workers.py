@@ -21,7 +21,7 @@ import numpy as np
 import runout.study._chunks  # noqa: F401 - what unpickling a chunk needs, loaded before the first
 from runout.study._kernels import project_rows, solve_batch
 
-__all__ = ["die_with_parent", "init_worker", "spawn_context", "warm_kernels"]
+__all__ = ["die_with_parent", "init_worker", "spawn_context", "warm_kernels", "worker_threads"]
 
 
 # --------------------------------------------------------------------------------------------
@@ -37,18 +37,41 @@ def spawn_context() -> Any:
     return multiprocessing.get_context("spawn")
 
 
-def init_worker(parent: int | None = None) -> None:  # pragma: no cover - runs in workers
-    """Set up a pool worker once for all its chunks.
+def worker_threads(workers: int, cores: int | None = None) -> int:
+    """Numba threads of each of ``workers`` pool processes: its share of the cores, at least 1.
 
-    Numba single-threaded and no threads for long records (the workers are the parallelism),
-    tied to the life of ``parent``, and the study code and its kernels loaded now, while the
-    parent plans the study, instead of in the first chunk.
+    ``workers x threads`` never exceeds the cores (no oversubscription: two processes whose
+    thread teams share one core wait for each other at every chunk's end), and a machine with
+    more cores than workers still uses them all.
+
+    Parameters
+    ----------
+    workers : int
+        Worker processes of the pool.
+    cores : int, optional
+        Cores of the machine (default: :func:`os.cpu_count`).
+    """
+    cores = cores or os.cpu_count() or 1
+    import numba
+
+    limit = int(getattr(numba.config, "NUMBA_NUM_THREADS", cores))
+    return max(1, min(limit, cores // max(1, workers)))
+
+
+def init_worker(parent: int | None = None, threads: int = 1) -> None:  # pragma: no cover
+    """Set up a pool worker once for all its chunks (runs in the worker).
+
+    One Numba thread team of ``threads`` (:func:`worker_threads`: the process's share of the
+    cores) and no threads for long records, tied to the life of ``parent``, and the study
+    code and its kernels loaded now, while the parent plans the study, instead of in the first
+    chunk.
     """
     import numba
 
     from runout.base._threads import use_threads
 
-    numba.set_num_threads(1)
+    limit = int(getattr(numba.config, "NUMBA_NUM_THREADS", threads))
+    numba.set_num_threads(max(1, min(threads, limit)))
     use_threads(False)  # nor two threads per long record: the workers are the parallelism
     if parent is not None:
         die_with_parent(parent)

@@ -8,10 +8,12 @@ and every labelled line (:class:`runout.analysis.results.Component`, p-p [m]).
 
 Randomness
 ----------
-Sample ``i`` draws its values from ``numpy.random.default_rng(SeedSequence(seed,
-spawn_key=(i,)))``: the i-th child of the root seed. The numbers of a sample therefore depend
-only on ``(seed, i)``, never on the chunking, the number of workers or the order in which
-chunks finish; runs are reproducible bit for bit.
+A study draws from one counter-based Philox stream keyed by ``SeedSequence(seed)``; sample ``i``
+takes a fixed run of its words (:func:`runout.study._plan.sample_uniforms`, sampling version
+:data:`SAMPLING`), and a chunk draws all its samples in one call. The numbers of a sample
+therefore depend only on ``(seed, i)``, never on the chunking, the number of workers or the
+order in which chunks finish; runs are reproducible bit for bit. A resume of a Monte Carlo
+written by an earlier sampling version is refused (its samples are other bearings).
 
 Execution
 ---------
@@ -42,9 +44,12 @@ and the study goes on. Pool workers end with their parent, even a SIGKILLed one
 
 Statistics
 ----------
-Every runout figure and line is summarised by its mean, sample standard deviation (ddof = 1),
-2σ, 5/50/95 % percentiles (linear interpolation), min, max and a histogram. A line missing from
-a sample's output (below the model's reporting floor) counts as 0 in that sample.
+Each finished chunk is copied into the result's float64 columns and dropped
+(:class:`_Assembly`): memory is the columns (8 bytes per sample and column) and the chunks in
+flight. Every runout figure and line is summarised by its mean, sample standard deviation
+(ddof = 1), 2σ, 5/50/95 % percentiles (linear interpolation, exact), min, max and a histogram.
+A line missing from a sample's output (below the model's reporting floor) counts as 0 in that
+sample.
 """
 
 from __future__ import annotations
@@ -85,6 +90,7 @@ from runout.study._chunks import (
     ChunkTask,
     _threads,
     _with_batch,
+    chunk_json,
     error_text,
     evaluate_chunk,
     line_label,
@@ -106,24 +112,29 @@ from runout.study._files import (
 from runout.study._plan import (
     FORMAT,
     RUNOUT_KEYS,
+    SAMPLING,
     Quantity,
     StudyError,
     _case_data,
     _digest_data,
     _models,
     _study_of,
+    draw_block,
+    draw_width,
     plan_quantities,
     sample_rng,
+    sample_uniforms,
 )
 from runout.study._result import YIELD_CONFIDENCE as YIELD_CONFIDENCE
 from runout.study._result import StudyResult, _write_text, statistics
 from runout.study._result import (
     _dumps as _dumps,  # runout.models.dynamic's sweep
 )
-from runout.study._workers import die_with_parent, init_worker, spawn_context
+from runout.study._workers import die_with_parent, init_worker, spawn_context, worker_threads
 
 __all__ = [
     "RUNOUT_KEYS",
+    "SAMPLING",
     "ChunkTask",
     "OutputError",
     "Quantity",
@@ -131,6 +142,8 @@ __all__ = [
     "StudyResult",
     "dask_executor",
     "die_with_parent",
+    "draw_block",
+    "draw_width",
     "error_text",
     "evaluate_chunk",
     "line_label",
@@ -142,6 +155,7 @@ __all__ = [
     "refuse_unbuildable",
     "run_study",
     "sample_rng",
+    "sample_uniforms",
     "statistics",
     "write_atomic",
 ]
@@ -235,6 +249,8 @@ def _digest(
         doc["samples_built_from"] = "the keys the case gives"
     if files:  # studies without profiles keep the digest of earlier versions
         doc["profile_files"] = files
+    if study.kind == "montecarlo":  # its samples are drawn: the draws' version decides them
+        doc["sampling"] = SAMPLING
     text = json.dumps(doc, sort_keys=True, default=str)
     return hashlib.sha256(text.encode()).hexdigest()
 
@@ -272,6 +288,7 @@ class _Plan:
             "chunks": len(self.tasks),
             "done": [],
             "complete": False,
+            "sampling": SAMPLING,
         }
 
 
@@ -385,9 +402,9 @@ def run_study(
     if executor is None and workers > 1 and estimates.batched_study(case):
         # the case's estimate assumed this process; worker processes each hold the shared
         # arrays too (and the chunks in flight): check the budget for them before starting
-        needed = estimates.batched_memory(case, workers) + estimates.study_points(case) * (
-            estimates.STUDY_BYTES_PER_RUN
-        )
+        needed = estimates.batched_memory(case, workers) + estimates.study_points(
+            case
+        ) * estimates.batched_sample_bytes(case)
         budget = limits.case_budget(case)
         if needed > budget.memory:
             raise limits.LimitError(
@@ -498,32 +515,38 @@ def _run(
     plots: bool,
     notify: Callable[[str], None],
 ) -> StudyResult:
-    """run_study once ``directory`` (if any) is checked and locked."""
+    """run_study once ``directory`` (if any) is checked and locked.
+
+    Every chunk is added to the result's columns as it finishes (:class:`_Assembly`) and then
+    dropped: the study holds its compact columns and the chunks in flight, never all chunks.
+    """
     manifest = plan.manifest()
-    results: dict[int, dict[str, Any]] = {}
+    assembly = _Assembly(case, plan)
+    done: set[int] = set()
     if directory is not None:
-        results = _prepare_directory(directory, manifest, plan, resume, force, notify)
+        done = _prepare_directory(directory, manifest, plan, resume, force, notify, assembly.add)
     tasks = plan.tasks
-    done_samples = sum(tasks[k].stop - tasks[k].start for k in results)
+    done_samples = sum(tasks[k].stop - tasks[k].start for k in done)
     if progress is not None:
         progress(done_samples, plan.total)
-    pending = [t for t in tasks if t.index not in results]
+    pending = [t for t in tasks if t.index not in done]
 
     def finished(index: int, chunk: dict[str, Any]) -> None:
         nonlocal done_samples
         # the chunk names the case + study that wrote it: a resume accepts only its own
         chunk["digest"] = plan.digest
-        results[index] = chunk
+        done.add(index)
         if directory is not None:
-            _write_text(_chunk_path(directory, index), _dumps(chunk))
-            manifest["done"] = sorted(results)
+            _write_text(_chunk_path(directory, index), _dumps(chunk_json(chunk)))
+            manifest["done"] = sorted(done)
             _write_text(directory / "manifest.json", _dumps(manifest, indent=2))
+        assembly.add(index, chunk)
         done_samples += tasks[index].stop - tasks[index].start
         if progress is not None:
             progress(done_samples, plan.total)
 
     _execute(pending, executor, workers, finished)
-    result = _assemble(case, plan.study, plan.quantities, [results[k] for k in range(len(tasks))])
+    result = assembly.result()
     if directory is not None:
         manifest["complete"] = True
         _write_text(directory / "manifest.json", _dumps(manifest, indent=2))
@@ -574,23 +597,31 @@ def _execute(
             team.shutdown(wait=True, cancel_futures=True)
         return
     own = executor is None
+    # each worker's Numba team is its share of the cores; a chunk then uses it (a pool
+    # worker evaluates its chunks in its main thread, where the parallel kernel may run)
+    threads = worker_threads(workers) if own else 1
     pool: Executor = (
         ProcessPoolExecutor(
             max_workers=workers,
             initializer=_init_worker,
-            initargs=(os.getpid(),),
+            initargs=(os.getpid(), threads),
             mp_context=_context(),
         )
         if executor is None
         else executor
     )
+    tasks = [dataclasses.replace(t, parallel=threads > 1) for t in tasks]
     ok = False
     try:
         if own:  # start every worker now: their start-up overlaps the set-up below
             for _ in range(workers):
                 pool.submit(int)
         ahead = AHEAD_PER_WORKER * workers if own else AHEAD_EXTERNAL
-        _drain(pool, iter(_with_batch(tasks)), len(tasks), ahead, finished)
+        batched = _with_batch(tasks)
+        submit = _scattered(pool, batched)
+        if submit is not None:  # a Dask cluster: the shared arrays sent to each worker once
+            batched = [dataclasses.replace(t, batch=None) for t in batched]
+        _drain(pool, iter(batched), len(batched), ahead, finished, submit)
         ok = True
     finally:
         if own:
@@ -599,18 +630,51 @@ def _execute(
             pool.shutdown(wait=not ok, cancel_futures=True)
 
 
+def _scattered(
+    pool: Executor, tasks: list[ChunkTask]
+) -> Callable[[ChunkTask], Future[dict[str, Any]]] | None:
+    """Submission of chunks whose shared arrays were scattered to every Dask worker once.
+
+    On a Dask executor (``Client.get_executor()``) the :class:`BatchArrays` of a batched
+    Monte Carlo go to every worker with ``Client.scatter(broadcast=True)``, and each chunk
+    carries only a reference to them; None for any other executor or study (the arrays then
+    travel with each chunk, as they must for a process pool, whose workers cannot be named).
+    """
+    client = getattr(pool, "_client", None)
+    if client is None or not tasks or tasks[0].batch is None:
+        return None
+    try:
+        shared = client.scatter(tasks[0].batch, broadcast=True, hash=False)
+    except Exception:  # the arrays then travel with each chunk, as they do elsewhere
+        return None
+
+    def submit(task: ChunkTask) -> Future[dict[str, Any]]:
+        future: Future[dict[str, Any]] = pool.submit(_evaluate_with, task, shared)
+        return future
+
+    return submit
+
+
+def _evaluate_with(task: ChunkTask, batch: Any) -> dict[str, Any]:
+    """:func:`evaluate_chunk` of ``task`` with the shared arrays a Dask worker holds."""
+    return evaluate_chunk(dataclasses.replace(task, batch=batch))
+
+
 def _drain(
     pool: Executor,
     queue: Iterator[ChunkTask],
     count: int,
     ahead: int,
     finished: Callable[[int, dict[str, Any]], None],
+    submit: Callable[[ChunkTask], Future[dict[str, Any]]] | None = None,
 ) -> None:
-    """Run the ``count`` tasks of ``queue`` on ``pool``, at most ``ahead`` at a time."""
+    """Run the ``count`` tasks of ``queue`` on ``pool`` (through ``submit`` when given), at
+    most ``ahead`` at a time."""
     running: dict[Future[dict[str, Any]], int] = {}
     for _ in range(count + 1):  # one submission round per finished chunk, at most
         for task in itertools.islice(queue, max(0, ahead - len(running))):
-            running[pool.submit(evaluate_chunk, task)] = task.index
+            future = pool.submit(evaluate_chunk, task) if submit is None else submit(task)
+            running[future] = task.index
         if not running:
             break
         done, _pending = wait(running, return_when=FIRST_COMPLETED)
@@ -629,10 +693,14 @@ def _drain(
 
 
 def _load_chunks(
-    directory: Path, indices: Iterable[int], plan: _Plan
-) -> tuple[dict[int, dict[str, Any]], list[str]]:
-    """The recorded chunks that pass :func:`_chunk_problem`, and ``"name: problem"`` of others."""
-    done: dict[int, dict[str, Any]] = {}
+    directory: Path,
+    indices: Iterable[int],
+    plan: _Plan,
+    sink: Callable[[int, dict[str, Any]], None],
+) -> tuple[set[int], list[str]]:
+    """Hand every recorded chunk that passes :func:`_chunk_problem` to ``sink``, one at a
+    time (none is kept here); return their indices and ``"name: problem"`` of the others."""
+    done: set[int] = set()
     bad: list[str] = []
     for index in indices:
         path = _chunk_path(directory, index)
@@ -645,7 +713,8 @@ def _load_chunks(
         else:
             problem = _chunk_problem(chunk, plan.tasks[index], plan.digest)
         if problem is None:
-            done[index] = chunk
+            done.add(index)
+            sink(index, chunk)
         else:
             bad.append(f"{path.name}: {problem}")
     return done, bad
@@ -665,8 +734,10 @@ def _prepare_directory(
     resume: bool,
     force: bool,
     notify: Callable[[str], None],
-) -> dict[int, dict[str, Any]]:
-    """Check ``directory`` (locked by us); return the chunks already done (resume).
+    sink: Callable[[int, dict[str, Any]], None],
+) -> set[int]:
+    """Check ``directory`` (locked by us); hand the chunks already done (resume) to ``sink``
+    and return their indices.
 
     Without ``resume`` (or when ``force`` overrides a corrupted manifest or a different
     study) the chunk files and study outputs of an earlier run are deleted, so that nothing
@@ -686,10 +757,11 @@ def _prepare_directory(
         raise StudyError(
             f"--resume: {path}: no such file (no run to continue); run without --resume"
         )
-    done: dict[int, dict[str, Any]] = {}
+    done: set[int] = set()
     fresh = not resume or old is None
     if not fresh:
         assert old is not None
+        _refuse_earlier_sampling(old, manifest, path, force, notify)
         differs = next((key for key in _RESUME_KEYS if old[key] != manifest[key]), None)
         if differs is not None and not force:
             raise StudyError(
@@ -712,7 +784,7 @@ def _prepare_directory(
                         f"{link}: a symbolic link; runout does not read or write through "
                         "links (remove it, or run without --resume into another directory)"
                     )
-            done, bad = _load_chunks(directory, old["done"], plan)
+            done, bad = _load_chunks(directory, old["done"], plan, sink)
             if bad:
                 n = len(bad)
                 shown = "; ".join(bad[:3]) + ("; ..." if n > 3 else "")
@@ -744,43 +816,99 @@ def _prepare_directory(
     return done
 
 
-def _assemble(
-    case: Case, study: StudySpec, quantities: tuple[Quantity, ...], chunks: list[dict[str, Any]]
-) -> StudyResult:
-    total = sum(c["stop"] - c["start"] for c in chunks)
-    model: list[str] = []
-    values: dict[str, list[Any]] = {q.key: [] for q in quantities}
-    runout = {k: np.full(total, np.nan) for k in RUNOUT_KEYS}
-    lines: dict[str, tuple[float, NDArray[np.float64]]] = {}
-    errors: dict[int, str] = {}
-    stiffness: dict[int, dict[str, Any]] = {}
-    for c in chunks:
-        s, e = c["start"], c["stop"]
-        model += c["model"]
-        for key in values:
-            values[key] += c["values"][key]
+class _Assembly:
+    """The columns of a study's result, filled chunk by chunk in any order.
+
+    Monte Carlo values, runout figures and line p-p are float64 arrays of the whole study
+    (8 bytes per sample and column, no Python object per sample); a chunk is copied into them
+    as it arrives and can then be dropped. Lines are ordered as if the chunks had arrived in
+    order (by the first chunk, and place in it, where each appears), so that the result does
+    not depend on which worker finished first.
+    """
+
+    def __init__(self, case: Case, plan: _Plan) -> None:
+        self.case, self.plan = case, plan
+        total = plan.total
+        self.model: list[str] = [""] * total
+        self.values: dict[str, Any] = {}
+        for q in plan.quantities:
+            if plan.study.kind == "montecarlo":
+                shape = (total, q.size) if q.size > 1 else (total,)
+                self.values[q.key] = np.zeros(shape)
+            else:
+                self.values[q.key] = [None] * total
+        self.runout = {k: np.full(total, np.nan) for k in RUNOUT_KEYS}
+        self.lines: dict[str, tuple[float, NDArray[np.float64]]] = {}
+        self.first: dict[str, tuple[int, int]] = {}
+        self.errors: dict[int, str] = {}
+        self.stiffness: dict[int, dict[str, Any]] = {}
+
+    def add(self, index: int, chunk: dict[str, Any]) -> None:
+        """Copy ``chunk`` (arrays of :func:`evaluate_chunk` or lists of its file) in."""
+        s, e = chunk["start"], chunk["stop"]
+        self.model[s:e] = chunk["model"]
+        for key, column in self.values.items():
+            given = chunk["values"][key]
+            if isinstance(column, np.ndarray):
+                column[s:e] = np.asarray(given, dtype=np.float64).reshape(column[s:e].shape)
+            else:
+                column[s:e] = list(given)
         for k in RUNOUT_KEYS:
-            runout[k][s:e] = [np.nan if v is None else v for v in c["runout"][k]]
-        for key, entry in c["lines"].items():
-            if key not in lines:
-                lines[key] = (entry["frequency_hz"], np.zeros(total))
-            lines[key][1][s:e] = entry["pp_m"]
-        errors.update({int(k): v for k, v in c["errors"].items()})
-        stiffness.update({int(k): v for k, v in c.get("stiffness", {}).items()})
-    return StudyResult(
-        kind=study.kind,
-        title=case.title,
-        seed=study.seed,
-        quantities=quantities,
-        model=model,
-        values=values,
-        runout=runout,
-        lines=lines,
-        errors=errors,
-        bins=study.bins,
-        limit=study_limit(case),
-        stiffness=stiffness,
+            # None in a chunk file (a failed sample, a figure the model lacks) is NaN
+            self.runout[k][s:e] = np.asarray(chunk["runout"][k], dtype=np.float64)
+        for place, (key, entry) in enumerate(chunk["lines"].items()):
+            if key not in self.lines:
+                self.lines[key] = (entry["frequency_hz"], np.zeros(self.plan.total))
+            self.first[key] = min(self.first.get(key, (index, place)), (index, place))
+            self.lines[key][1][s:e] = entry["pp_m"]
+        self.errors.update({int(k): v for k, v in chunk["errors"].items()})
+        self.stiffness.update({int(k): v for k, v in chunk.get("stiffness", {}).items()})
+
+    def result(self) -> StudyResult:
+        """The :class:`StudyResult` of every chunk added."""
+        study = self.plan.study
+        lines = {key: self.lines[key] for key in sorted(self.lines, key=self.first.__getitem__)}
+        return StudyResult(
+            kind=study.kind,
+            title=self.case.title,
+            seed=study.seed,
+            quantities=self.plan.quantities,
+            model=self.model,
+            values=self.values,
+            runout=self.runout,
+            lines=lines,
+            errors=dict(sorted(self.errors.items())),
+            bins=study.bins,
+            limit=study_limit(self.case),
+            stiffness=dict(sorted(self.stiffness.items())),
+        )
+
+
+def _refuse_earlier_sampling(
+    old: dict[str, Any],
+    manifest: dict[str, Any],
+    path: Path,
+    force: bool,
+    notify: Callable[[str], None] | None = None,
+) -> None:
+    """Refuse to resume (or read) a Monte Carlo drawn by an earlier version's sampling.
+
+    Its samples are other bearings than this version draws for the same seed: mixing its
+    chunks with new ones would make a lot that neither version draws. ``force`` starts afresh
+    (said through ``notify``).
+    """
+    earlier = old.get("sampling", 1)
+    if old.get("kind") != "montecarlo" or earlier == manifest.get("sampling", SAMPLING):
+        return
+    message = (
+        f"{path}: a Monte Carlo drawn by an earlier version of runout (sampling {earlier}; this "
+        f"version draws by sampling {SAMPLING}, which gives other samples for the same seed)"
     )
+    if notify is None:
+        raise StudyError(f"{message}; run the study again to read it with this version")
+    if not force:
+        raise StudyError(f"--resume: {message}; run without --resume to start afresh")
+    notify(f"{message}: --force, started afresh")
 
 
 def study_limit(case: Case) -> tuple[str, float] | None:
@@ -828,10 +956,12 @@ def load_study(directory: Path | str, case: Case) -> StudyResult:
     d = Path(directory)
     manifest = _read_manifest(d / "manifest.json")
     plan = _plan(case, manifest["chunk_size"])
+    _refuse_earlier_sampling(manifest, plan.manifest(), d / "manifest.json", False)
     differs = next((k for k in _RESUME_KEYS if manifest[k] != plan.manifest()[k]), None)
     if differs is not None:
         raise StudyError(f"{d / 'manifest.json'}: a run of a different case or study ({differs})")
-    chunks, bad = _load_chunks(d, range(len(plan.tasks)), plan)
+    assembly = _Assembly(case, plan)
+    _done, bad = _load_chunks(d, range(len(plan.tasks)), plan, assembly.add)
     if bad:
         raise StudyError(f"{d / 'chunks'}: not a complete study of this case ({bad[0]})")
-    return _assemble(case, plan.study, plan.quantities, [chunks[k] for k in range(len(plan.tasks))])
+    return assembly.result()

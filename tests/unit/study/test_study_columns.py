@@ -75,11 +75,27 @@ def _old_digest(case: Case) -> str:
 
 
 def test_digest_of_a_case_given_by_clearance_is_unchanged() -> None:
-    """Study directories of earlier versions resume and load: same case, same digest."""
+    """Sweep directories of earlier versions resume and load: same case, same digest."""
+    case = kim_case(
+        study={
+            "kind": "sweep",
+            "vary": {"operation.axial_load": {"values": ["30 N", "60 N"]}},
+        }
+    )
+    assert st_mod._plan(case, None).digest == _old_digest(case)
+
+
+def test_digest_of_a_monte_carlo_names_its_sampling() -> None:
+    """A Monte Carlo's samples are what its draws make them: sampling version 2 draws other
+    bearings than version 1 for the same seed, so its chunks carry another digest (and a
+    resume of a version-1 directory is refused by name, tests/cli/test_study_scale.py)."""
     case = kim_case(
         study={"kind": "montecarlo", "samples": 4, "vary": {"element_diameter_sigma": "0.1 um"}}
     )
-    assert st_mod._plan(case, None).digest == _old_digest(case)
+    data = case.spec.model_dump(mode="python", exclude_none=True, exclude={"study"})
+    doc = {"case": data, "study": case.study.model_dump(mode="json"), "sampling": 2}
+    digest = hashlib.sha256(json.dumps(doc, sort_keys=True, default=str).encode()).hexdigest()
+    assert st_mod._plan(case, None).digest == digest != _old_digest(case)
 
 
 def test_digest_of_a_case_given_by_its_angle_is_new() -> None:

@@ -38,7 +38,9 @@ def mc(samples: int, seed: int = 7, chunk: int = 250) -> Case:
 
 def chunks_equal(a: st_mod.StudyResult, b: st_mod.StudyResult) -> None:
     """Byte-identical results: same floats, same keys, same order, same errors."""
-    assert a.model == b.model and a.values == b.values and a.errors == b.errors
+    assert a.model == b.model and a.values.keys() == b.values.keys() and a.errors == b.errors
+    for key in a.values:
+        assert np.asarray(a.values[key]).tobytes() == np.asarray(b.values[key]).tobytes()
     for k in st_mod.RUNOUT_KEYS:
         assert a.runout[k].tobytes() == b.runout[k].tobytes()
     assert list(a.lines) == list(b.lines)
@@ -105,7 +107,9 @@ def test_chunks_with_shipped_arrays_equal_chunks_that_set_up_the_case() -> None:
     chunks_mod._BASES.clear()  # the worker's own set-up, from the case document
     for bare, task in zip(plan.tasks, shipped, strict=True):
         assert bare.batch is None
-        assert st_mod.evaluate_chunk(bare) == st_mod.evaluate_chunk(task)
+        assert chunks_mod.chunk_json(st_mod.evaluate_chunk(bare)) == chunks_mod.chunk_json(
+            st_mod.evaluate_chunk(task)
+        )
 
 
 def test_byte_identical_for_any_worker_count_chunking_and_executor() -> None:
@@ -116,6 +120,14 @@ def test_byte_identical_for_any_worker_count_chunking_and_executor() -> None:
     chunks_equal(one, run_study(mc(41, chunk=10), workers=2))  # process pool, arrays shipped
     with ThreadPoolExecutor(max_workers=3) as threads:  # nogil kernels side by side
         chunks_equal(one, run_study(mc(41, chunk=5), executor=threads))
+
+
+def test_byte_identical_with_thread_teams_in_the_workers(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Workers whose Numba team has two threads (a machine with twice the cores) run the
+    parallel kernel in each chunk: the same bytes as one thread in this process."""
+    one = run_study(mc(29, chunk=250))
+    monkeypatch.setattr(st_mod, "worker_threads", lambda workers: 2)
+    chunks_equal(one, run_study(mc(29, chunk=6), workers=2))
 
 
 def test_a_case_whose_set_up_fails_is_left_to_the_workers(
@@ -186,8 +198,10 @@ def test_column_fill_equals_the_row_by_row_records(
     monkeypatch.setattr(chunks_mod, "evaluate_rows", failing)
     chunk = st_mod.evaluate_chunk(task)
     ref = _per_row_reference(task, b, seen[0])
-    assert chunk["runout"] == ref["runout"]
-    assert chunk["lines"] == ref["lines"] and list(chunk["lines"]) == list(ref["lines"])
+    # the chunk's file (lists, None for a failed bearing) is the row-by-row record
+    written = chunks_mod.chunk_json(chunk)
+    assert written["runout"] == ref["runout"]
+    assert written["lines"] == ref["lines"] and list(chunk["lines"]) == list(ref["lines"])
     assert sorted(chunk["errors"]) == sorted(ref["errors"])
     assert all("ContactLossError" in v for v in chunk["errors"].values())
 
