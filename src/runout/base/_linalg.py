@@ -7,7 +7,7 @@ import math
 import numba
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, no_cfunc_wrapper=True)
 def solve_spd3(h00, h01, h02, h11, h12, h22, r0, r1, r2):  # pragma: no cover - compiled
     """Solve the symmetric positive definite 3×3 system H s = r (compiled).
 

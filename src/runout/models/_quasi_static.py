@@ -433,7 +433,7 @@ def contact_anchor(
         ring_p[1, m] = 0.0
 
 
-@numba.njit(cache=True, inline="always")
+@numba.njit(cache=True, no_cfunc_wrapper=True, inline="always")
 def contact_advance(state: tuple[NDArray[np.float64], ...]) -> None:
     """Advance the rotations since the anchor, and the element phasors, by one step (compiled)."""
     ball_ph = state[2]  # one name at a time (see contact_anchor)
@@ -455,7 +455,7 @@ def contact_advance(state: tuple[NDArray[np.float64], ...]) -> None:
         ball_ph[1, m] = re * ball_rot[1, m] + im * ball_rot[0, m]
 
 
-@numba.njit(cache=True, inline="always")
+@numba.njit(cache=True, no_cfunc_wrapper=True, inline="always")
 def contact_values(
     state: tuple[NDArray[np.float64], ...],
     n_inner: int,

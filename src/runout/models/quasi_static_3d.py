@@ -292,7 +292,7 @@ def _newton(
     return q0, q1, q2, count, OK
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, no_cfunc_wrapper=True)
 def solve_kernel(
     c: NDArray[np.float64],
     theta: NDArray[np.float64],
@@ -386,7 +386,7 @@ def solve_kernel(
     return q, unloaded, 0, -1
 
 
-@numba.njit(cache=True, nogil=True)
+@numba.njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def solve_fused(
     t: NDArray[np.float64],
     rates: NDArray[np.float64],
