@@ -33,10 +33,11 @@ from __future__ import annotations
 
 import math
 
-import numba
 import numpy as np
 from numba.extending import register_jitable
 from numpy.typing import NDArray
+
+from runout.base._kernel import kernel
 
 FloatArray = NDArray[np.float64]
 BoolArray = NDArray[np.bool_]
@@ -191,7 +192,7 @@ def _speeds(
     return omega_m, omega_r, sb
 
 
-@numba.njit(cache=True, no_cfunc_wrapper=True)
+@kernel()
 def _ball_state(
     x1: float,
     x2: float,
@@ -440,7 +441,7 @@ def _ball_newton(
 
 
 # inlined into _balls, its one caller (tests call it too)
-@numba.njit(cache=True, no_cfunc_wrapper=True, inline="always")
+@kernel(inline="always")
 def _lifted_off(
     a: FloatArray,
     balls: FloatArray,
@@ -584,7 +585,7 @@ def _copy_rows(dst: FloatArray, src: FloatArray, active: BoolArray) -> None:
             dst[m, 1] = src[m, 1]
 
 
-@numba.njit(cache=True, no_cfunc_wrapper=True)
+@kernel()
 def _friction_continuation(
     xs: FloatArray,
     aa: FloatArray,
@@ -630,7 +631,7 @@ def _friction_continuation(
             return
 
 
-@numba.njit(cache=True, no_cfunc_wrapper=True)
+@kernel()
 def _balls(
     q: FloatArray,
     x: FloatArray,
@@ -724,7 +725,7 @@ def _balls(
     return all_done
 
 
-@numba.njit(cache=True, no_cfunc_wrapper=True)
+@kernel()
 def _restart_balls(
     a: FloatArray,
     x: FloatArray,

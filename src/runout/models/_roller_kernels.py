@@ -29,10 +29,11 @@ from __future__ import annotations
 
 import math
 
-import numba
 import numpy as np
 from numba.extending import register_jitable
 from numpy.typing import NDArray
+
+from runout.base._kernel import kernel
 
 FloatArray = NDArray[np.float64]
 IntArray = NDArray[np.int64]
@@ -363,8 +364,8 @@ def _gaps_at(
 
 #: :func:`_support` and :func:`_gap` compiled on their own, for callers in Python (the kernels
 #: compile them in).
-support = numba.njit(cache=True, no_cfunc_wrapper=True)(_support)
-gap = numba.njit(cache=True, no_cfunc_wrapper=True)(_gap)
+support = kernel()(_support)
+gap = kernel()(_gap)
 
 
 def work_arrays(z: int) -> tuple[NDArray[np.bool_], FloatArray, FloatArray, NDArray[np.int64]]:
@@ -408,7 +409,7 @@ def _accept(
         out_status[n] = _FAR_CONTACT
 
 
-@numba.njit(cache=True, no_cfunc_wrapper=True, nogil=True)
+@kernel(nogil=True)
 def _solve_all(
     alphas: FloatArray,
     n_start: int,
@@ -608,7 +609,7 @@ def _solve_all(
     return alphas.size, cx, cy
 
 
-@numba.njit(cache=True, no_cfunc_wrapper=True, nogil=True)
+@kernel(nogil=True)
 def _solve_pairs(
     n: int,
     mode: int,
