@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import math
 
-import numba
+from runout.base._kernel import kernel
 
 
-@numba.njit(cache=True)
+@kernel()
 def solve_spd3(h00, h01, h02, h11, h12, h22, r0, r1, r2):  # pragma: no cover - compiled
     """Solve the symmetric positive definite 3×3 system H s = r (compiled).
 

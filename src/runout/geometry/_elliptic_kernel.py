@@ -9,12 +9,13 @@ from __future__ import annotations
 
 import math
 
-import numba
 import numpy as np
 from numpy.typing import NDArray
 
+from runout.base._kernel import kernel
 
-@numba.njit(cache=True)
+
+@kernel()
 def _agm_one(b: float, c_sq: float, max_steps: int, tolerance: float) -> tuple[float, float, bool]:
     """M(1, b) and Σ 2^(n-1) c_n² of one entry: the float loop of
     :func:`runout.geometry._elliptic._agm`."""
@@ -34,7 +35,7 @@ def _agm_one(b: float, c_sq: float, max_steps: int, tolerance: float) -> tuple[f
     return a, total, False
 
 
-@numba.njit(cache=True)
+@kernel()
 def complete_elliptic_all(
     p: NDArray[np.float64], m: NDArray[np.float64], max_steps: int, tolerance: float, tiny: float
 ) -> tuple[NDArray[np.float64], NDArray[np.float64], bool]:

@@ -33,9 +33,10 @@ from __future__ import annotations
 
 import math
 
-import numba
 import numpy as np
 from numpy.typing import NDArray
+
+from runout.base._kernel import kernel
 
 __all__ = [
     "BLOCK",
@@ -65,7 +66,7 @@ _C1, _C2, _C3, _C4, _C5, _C6, _C7, _C8 = ((-1.0) ** n / math.factorial(2 * n) fo
 _S1, _S2, _S3, _S4, _S5, _S6, _S7 = ((-1.0) ** n / math.factorial(2 * n + 1) for n in range(1, 8))
 
 
-@numba.njit(cache=True, inline="always")
+@kernel(inline="always")
 def fast_cos(x: float) -> float:
     """cos(x) for |x| <= :data:`FAST_LIMIT`, branch-free and vectorisable (see module notes)."""
     q = np.floor(x * _TWO_OVER_PI + 0.5)
@@ -86,7 +87,7 @@ def fast_cos(x: float) -> float:
     return -v if negative else v
 
 
-@numba.njit(cache=True)
+@kernel()
 def _max_abs(x: NDArray[np.float64]) -> float:
     m = 0.0
     for i in range(x.size):
@@ -96,7 +97,7 @@ def _max_abs(x: NDArray[np.float64]) -> float:
     return m
 
 
-@numba.njit(cache=True)
+@kernel()
 def _accumulate(
     out: NDArray[np.float64],
     theta: NDArray[np.float64],
@@ -133,7 +134,7 @@ def _accumulate(
                     ob[i] += a * math.cos(k * tb[i] + p)
 
 
-@numba.njit(cache=True)
+@kernel()
 def harmonic_sum(
     theta: NDArray[np.float64],
     orders: NDArray[np.float64],
@@ -163,7 +164,7 @@ def harmonic_sum(
     return out
 
 
-@numba.njit(cache=True)
+@kernel()
 def harmonic_sum_rows(
     theta: NDArray[np.float64],
     orders: NDArray[np.float64],

@@ -22,12 +22,12 @@ from __future__ import annotations
 
 import math
 
-import numba
 import numpy as np
 from numba.extending import register_jitable
 from numpy.typing import NDArray
 
 from runout.analysis.results import SOLVER_RTOL
+from runout.base._kernel import kernel
 from runout.base._linalg import solve_spd3
 
 FloatArray = NDArray[np.float64]
@@ -62,7 +62,7 @@ P_FU, P_WU, P_FX, P_FY, P_FZ, P_TOL = 11, 12, 13, 14, 15, 16
 N_PAR = 17
 
 
-@numba.njit(cache=True)
+@kernel()
 def _hsum(k: FloatArray, a: FloatArray, p: FloatArray, lo: int, hi: int, angle: float) -> float:
     s = 0.0
     for i in range(lo, hi):
@@ -70,7 +70,7 @@ def _hsum(k: FloatArray, a: FloatArray, p: FloatArray, lo: int, hi: int, angle: 
     return s
 
 
-@numba.njit(cache=True)
+@kernel()
 def _deviations(
     t: float,
     par: FloatArray,
@@ -157,7 +157,7 @@ def _phasor_tables(
     return rate, ball, ring, bcoef
 
 
-@numba.njit(cache=True)
+@kernel()
 def _phasor_anchor(t: float, rate: FloatArray, ph: FloatArray) -> None:
     """Set every phasor to its exact value :math:`e^{i r t}` at time t [s]."""
     for m in range(rate.size):
@@ -165,7 +165,7 @@ def _phasor_anchor(t: float, rate: FloatArray, ph: FloatArray) -> None:
         ph[m, 1] = math.sin(rate[m] * t)
 
 
-@numba.njit(cache=True)
+@kernel()
 def _phasor_rotate(ph: FloatArray, rot: FloatArray) -> None:
     """Advance every phasor by one step: multiply by its :math:`e^{i r h}`."""
     for m in range(ph.shape[0]):
@@ -188,7 +188,7 @@ def _phasor_balls(ph: FloatArray, ball: FloatArray, cth: FloatArray, sth: FloatA
         sth[j] = ball[j, 0] * ei + ball[j, 1] * er
 
 
-@numba.njit(cache=True)
+@kernel()
 def _phasor_deviations(
     ph: FloatArray,
     ball: FloatArray,
@@ -218,7 +218,7 @@ def _phasor_deviations(
         wb[j] = w
 
 
-@numba.njit(cache=True)
+@kernel()
 def _contact(
     q0: float,
     q1: float,
@@ -286,7 +286,7 @@ def _solve3(
     return s0, s1, s2
 
 
-@numba.njit(cache=True)
+@kernel()
 def _newmark_radial(
     n_steps: int,
     stride: int,
@@ -488,7 +488,7 @@ def newmark_kernel(
     return _newmark_general(n_steps, stride, t_start, state, par, phasors, ndof, max_iter, out)
 
 
-@numba.njit(cache=True)
+@kernel()
 def _newmark_general(
     n_steps: int,
     stride: int,

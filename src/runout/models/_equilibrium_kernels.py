@@ -25,17 +25,19 @@ its Jacobian) are written out where they are used.
 The kernels take C-contiguous float64 arrays and plain scalars, are compiled with
 ``cache=True`` and without ``fastmath``. The constants of the bearing travel in one float64
 vector (indices ``C_*`` below); the Hertz constants of each ball (linearised in its contact
-angles, :meth:`runout.models.equilibrium._Ring.set_angles`) in six arrays of shape (Z,).
+angles, :meth:`runout.models.equilibrium._Ring.set_angles`) and its azimuth in one ball
+table of shape (8, Z) (rows ``B_*``), which :func:`ring_forces` builds from its arguments.
 """
 
 from __future__ import annotations
 
 import math
 
-import numba
 import numpy as np
 from numba.extending import register_jitable
 from numpy.typing import NDArray
+
+from runout.base._kernel import kernel
 
 FloatArray = NDArray[np.float64]
 BoolArray = NDArray[np.bool_]
@@ -61,6 +63,12 @@ _CONT_PASSES = 1024 * 12
 C_D, C_DM, C_RI0, C_RO0, C_FI, C_MASS, C_INERTIA, C_INNER, C_OUTER, C_INNER_CONTROL = range(10)
 C_A1, C_A2, C_RAD_I, C_SCALE = range(10, 14)
 N_CONST = 14
+
+# rows of the ball table (8, Z): the Hertz constants K = k0 + k1 (α − α_c) of the inner and
+# outer contacts, and the azimuth. One array rather than eight: each array argument of a
+# compiled function costs its own unpacking code (first-run compilation time)
+B_KI0, B_KI1, B_AI_C, B_KO0, B_KO1, B_AO_C, B_COS, B_SIN = range(8)
+N_BALL_ROWS = 8
 
 #: Rows of the per-ball state returned by :func:`ring_forces`.
 STATE_NAMES = (
@@ -184,7 +192,7 @@ def _speeds(
     return omega_m, omega_r, sb
 
 
-@numba.njit(cache=True)
+@kernel()
 def _ball_state(
     x1: float,
     x2: float,
@@ -347,12 +355,7 @@ def _ball_newton(
     xs: FloatArray,
     aa: FloatArray,
     active: BoolArray,
-    ki0: FloatArray,
-    ki1: FloatArray,
-    ai_c: FloatArray,
-    ko0: FloatArray,
-    ko1: FloatArray,
-    ao_c: FloatArray,
+    balls: FloatArray,
     cst: FloatArray,
     lam_i: float,
     lam_o: float,
@@ -382,14 +385,13 @@ def _ball_newton(
         for m in range(z):
             if not active[m]:
                 continue
-            j = m
             x1 = xs[m, 0]
             x2 = xs[m, 1]
             a1 = aa[m, 0]
             a2 = aa[m, 1]
             # g and ∂g/∂X: two directional derivatives of the ball state
-            k0, k1, kc = ki0[j], ki1[j], ai_c[j]
-            o0, o1, oc = ko0[j], ko1[j], ao_c[j]
+            k0, k1, kc = balls[B_KI0, m], balls[B_KI1, m], balls[B_AI_C, m]
+            o0, o1, oc = balls[B_KO0, m], balls[B_KO1, m], balls[B_AO_C, m]
             s = _ball_state(
                 x1, x2, a1, a2, 1.0, 0.0, 0.0, 0.0, k0, k1, kc, o0, o1, oc, cst, lam_i, lam_o,
                 speed_on,
@@ -438,12 +440,11 @@ def _ball_newton(
             break
 
 
-@numba.njit(cache=True, inline="always")  # into _balls, its one caller (tests call it too)
+# inlined into _balls, its one caller (tests call it too)
+@kernel(inline="always")
 def _lifted_off(
     a: FloatArray,
-    ko0: FloatArray,
-    ko1: FloatArray,
-    ao_c: FloatArray,
+    balls: FloatArray,
     cst: FloatArray,
     lam_i: float,
     lam_o: float,
@@ -466,32 +467,36 @@ def _lifted_off(
     inertia = cst[C_INERTIA]
     ri0 = cst[C_RI0]
     ro0 = cst[C_RO0]
+    inner = cst[C_INNER]
+    outer = cst[C_OUTER]
+    control = cst[C_INNER_CONTROL]
     # rows of the caller's work array (3, Z): an allocation here would compile np.empty
     ao = work[0]
     ai = work[1]
-    d_i = work[2]  # set for every ball by each pass of the fixed point
+    d_i = work[2]  # set for every ball by each pass of the fixed point (BALL_ITER >= 1)
     for j in range(z):
-        ao[j] = math.atan(a[j, 0] / a[j, 1])
-        ai[j] = ao[j]
-        x_star[j, 0] = 0.0
-        x_star[j, 1] = 0.0
+        angle = math.atan(a[j, 0] / a[j, 1])
+        ao[j] = angle
+        ai[j] = angle
+    # each element read or written once per pass: every source-level access compiles its
+    # own indexing code
     for _ in range(BALL_ITER):
         moved = 0.0
         for j in range(z):
-            ci = math.cos(ai[j])
-            si = math.sin(ai[j])
-            co = math.cos(ao[j])
-            so = math.sin(ao[j])
-            wm, wr, sb = _speeds(
-                ci, si, co, so, gamma, cst[C_INNER], cst[C_OUTER], cst[C_INNER_CONTROL]
-            )
+            ai_j = ai[j]
+            ao_j = ao[j]
+            ci = math.cos(ai_j)
+            si = math.sin(ai_j)
+            co = math.cos(ao_j)
+            so = math.sin(ao_j)
+            wm, wr, sb = _speeds(ci, si, co, so, gamma, inner, outer, control)
             fc = 0.5 * mass * dm * wm * wm
             md = inertia * wr * wm * sb / d
             v = md * (lam_i * ci - lam_o * co)
             w = md * (lam_i * si - lam_o * so) + fc
             q_o = math.hypot(v, w)
             ao_new = math.atan2(-v, w)
-            k_o = ko0[j] + ko1[j] * (ao_new - ao_c[j])
+            k_o = balls[B_KO0, j] + balls[B_KO1, j] * (ao_new - balls[B_AO_C, j])
             k_o = 1e-300 if 1e-300 > k_o else k_o  # max(k_o, 1e-300) (see _ball_newton)
             r = ro0 + (q_o / k_o) ** (2.0 / 3.0)
             x1 = r * math.sin(ao_new)
@@ -502,8 +507,8 @@ def _lifted_off(
             e2 = a[j, 1] - x2
             ai_new = math.atan(e1 / e2)
             d_i[j] = math.hypot(e1, e2) - ri0
-            step_o = abs(ao_new - ao[j])
-            step_i = abs(ai_new - ai[j])
+            step_o = abs(ao_new - ao_j)
+            step_i = abs(ai_new - ai_j)
             moved = step_o if step_o > moved else moved  # max(...) (see _ball_newton)
             moved = step_i if step_i > moved else moved
             ao[j] = ao_new
@@ -580,17 +585,12 @@ def _copy_rows(dst: FloatArray, src: FloatArray, active: BoolArray) -> None:
             dst[m, 1] = src[m, 1]
 
 
-@numba.njit(cache=True)
+@kernel()
 def _friction_continuation(
     xs: FloatArray,
     aa: FloatArray,
     active: BoolArray,
-    ki0: FloatArray,
-    ki1: FloatArray,
-    ai_c: FloatArray,
-    ko0: FloatArray,
-    ko1: FloatArray,
-    ao_c: FloatArray,
+    balls: FloatArray,
     cst: FloatArray,
     lam_i: float,
     lam_o: float,
@@ -606,7 +606,7 @@ def _friction_continuation(
     (step halved on failure, down to 1/1024).
     """
     z = active.size
-    _ball_newton(xs, aa, active, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, 0.0, 0.0, speed_on, tol, done)
+    _ball_newton(xs, aa, active, balls, cst, 0.0, 0.0, speed_on, tol, done)
     xt = np.empty((z, 2))
     ok = np.empty(z, dtype=np.bool_)
     s, ds = 0.0, 0.25
@@ -617,9 +617,7 @@ def _friction_continuation(
         _copy_rows(xt, xs, active)
         lam_ti = t * lam_i
         lam_to = t * lam_o
-        _ball_newton(
-            xt, aa, active, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_ti, lam_to, speed_on, tol, ok
-        )
+        _ball_newton(xt, aa, active, balls, cst, lam_ti, lam_to, speed_on, tol, ok)
         if _all(ok, active):
             _copy_rows(xs, xt, active)
             s, ds = t, min(2.0 * ds, 0.5)
@@ -633,19 +631,12 @@ def _friction_continuation(
             return
 
 
-@numba.njit(cache=True)
+@kernel()
 def _balls(
     q: FloatArray,
-    cos_psi: FloatArray,
-    sin_psi: FloatArray,
     x: FloatArray,
     have_x: bool,
-    ki0: FloatArray,
-    ki1: FloatArray,
-    ai_c: FloatArray,
-    ko0: FloatArray,
-    ko1: FloatArray,
-    ao_c: FloatArray,
+    balls: FloatArray,
     cst: FloatArray,
     lam_i: float,
     lam_o: float,
@@ -662,9 +653,12 @@ def _balls(
     """Groove centres ``a`` at ring displacement q and eq. 3-4 for every loaded ball, in place
     in ``x`` (Z, 2) from its current value (or the Hertz split without ``have_x``).
 
-    The lift-off test is inlined here, and the Jacobian of the ball residual into the ball
-    Newton (their one call each): compiled on their own they would also build Python and C
-    entry points for their arguments, first-run compilation time for nothing.
+    ``balls`` is the ball table (rows ``B_*``: Hertz constants and azimuths). The lift-off
+    test is inlined here, and the Jacobian of the ball residual into the ball Newton (their
+    one call each): compiled on their own they would also build Python and C entry points for
+    their arguments, first-run compilation time for nothing. For the same reason each array
+    element is read or written once where the code allows (every source-level access compiles
+    its own indexing code) and the loops over the balls are merged where their order allows.
 
     Unloaded balls (a gap at rest, lifted off at speed: ``loaded`` false) go to the outer
     groove bottom. A loaded ball starts with both contacts closed; ``done`` tells which
@@ -673,88 +667,75 @@ def _balls(
     every ball converged, and then also the ball states and the Jacobian of the ring force
     (:func:`_ring_jacobian`, compiled into this kernel: one entry point, not two).
     """
-    z = cos_psi.size
+    z = balls.shape[1]
     ri0 = cst[C_RI0]
     ro0 = cst[C_RO0]
     rad_i = cst[C_RAD_I]
+    a1_0 = cst[C_A1]
+    a2_0 = cst[C_A2]
+    q0 = q[0]
+    q1 = q[1]
+    q2 = q[2]
+    q3 = q[3]
+    q4 = q[4]
     for j in range(z):
-        a[j, 0] = cst[C_A1] + q[0] + rad_i * (q[3] * sin_psi[j] - q[4] * cos_psi[j])
-        a[j, 1] = cst[C_A2] + q[1] * cos_psi[j] + q[2] * sin_psi[j]
+        cp = balls[B_COS, j]
+        sp = balls[B_SIN, j]
+        a1 = a1_0 + q0 + rad_i * (q3 * sp - q4 * cp)
+        a2 = a2_0 + q1 * cp + q2 * sp
+        a[j, 0] = a1
+        a[j, 1] = a2
         if not have_x:
-            x[j, 0], x[j, 1] = _start(a[j, 0], a[j, 1], ki0[j], ko0[j], ri0, ro0)
+            x[j, 0], x[j, 1] = _start(a1, a2, balls[B_KI0, j], balls[B_KO0, j], ri0, ro0)
     if speed_on:
-        _lifted_off(a, ko0, ko1, ao_c, cst, lam_i, lam_o, x_star, loaded, lift_work)
-        for j in range(z):
-            loaded[j] = not loaded[j]
-    else:
-        for j in range(z):
-            loaded[j] = math.hypot(a[j, 0], a[j, 1]) > ri0 + ro0
+        _lifted_off(a, balls, cst, lam_i, lam_o, x_star, loaded, lift_work)
     for j in range(z):
-        if loaded[j]:
+        a1 = a[j, 0]
+        a2 = a[j, 1]
+        if speed_on:
+            on = not loaded[j]  # _lifted_off wrote "lifted off"
+        else:
+            on = math.hypot(a1, a2) > ri0 + ro0
+        loaded[j] = on
+        if on:
             # start with both contacts closed (the previous state may have had one open)
-            d_i = math.hypot(a[j, 0] - x[j, 0], a[j, 1] - x[j, 1]) - ri0  # as _approaches
-            d_o = math.hypot(x[j, 0], x[j, 1]) - ro0
+            x1 = x[j, 0]
+            x2 = x[j, 1]
+            d_i = math.hypot(a1 - x1, a2 - x2) - ri0  # as _approaches
+            d_o = math.hypot(x1, x2) - ro0
             if d_i <= 0.0 or d_o <= 0.0:
                 if speed_on:  # the inner groove overlaps X*: both contacts closed there
                     x[j, 0] = x_star[j, 0]
                     x[j, 1] = x_star[j, 1]
                 else:
-                    x[j, 0], x[j, 1] = _start(a[j, 0], a[j, 1], ki0[j], ko0[j], ri0, ro0)
+                    x[j, 0], x[j, 1] = _start(a1, a2, balls[B_KI0, j], balls[B_KO0, j], ri0, ro0)
     tol = 1e-13 * cst[C_SCALE]
-    _ball_newton(
-        x, a, loaded, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o, speed_on, tol, done
-    )
+    _ball_newton(x, a, loaded, balls, cst, lam_i, lam_o, speed_on, tol, done)
     all_done = True  # every loaded ball converged (a loop: _all would compile apart)
     for j in range(z):
-        if loaded[j] and not done[j]:
-            all_done = False
-    for j in range(z):
-        if not loaded[j]:  # on the outer groove bottom
+        if loaded[j]:
+            if not done[j]:
+                all_done = False
+        else:  # on the outer groove bottom
             x[j, 0] = 0.0
             x[j, 1] = ro0
             done[j] = True
     if all_done:
-        _ring_jacobian(
-            a,
-            x,
-            cos_psi,
-            sin_psi,
-            ki0,
-            ki1,
-            ai_c,
-            ko0,
-            ko1,
-            ao_c,
-            cst,
-            lam_i,
-            lam_o,
-            speed_on,
-            jac,
-            state,
-            loaded,
-            parts,
-        )
+        _ring_jacobian(a, x, balls, cst, lam_i, lam_o, speed_on, jac, state, loaded, parts)
     return all_done
 
 
-@numba.njit(cache=True)
+@kernel()
 def _restart_balls(
     a: FloatArray,
     x: FloatArray,
-    ki0: FloatArray,
-    ki1: FloatArray,
-    ai_c: FloatArray,
-    ko0: FloatArray,
-    ko1: FloatArray,
-    ao_c: FloatArray,
+    balls: FloatArray,
     cst: FloatArray,
     lam_i: float,
     lam_o: float,
     speed_on: bool,
     x_star: FloatArray,
     done: BoolArray,
-    cos_psi: FloatArray,
-    sin_psi: FloatArray,
     loaded: BoolArray,
     jac: FloatArray,
     state: FloatArray,
@@ -790,18 +771,15 @@ def _restart_balls(
                 x[j, 0] = x_star[j, 0]
                 x[j, 1] = x_star[j, 1]
             elif attempt == 1:
-                x[j, 0], x[j, 1] = _start(a[j, 0], a[j, 1], ki0[j], ko0[j], ri0, ro0)
+                ki0 = balls[B_KI0, j]
+                x[j, 0], x[j, 1] = _start(a[j, 0], a[j, 1], ki0, balls[B_KO0, j], ri0, ro0)
             else:
                 side = 1.0 if attempt == 2 else -1.0
-                x[j, 0], x[j, 1] = _closed_start(a[j, 0], a[j, 1], ko0[j], cst, side)
+                x[j, 0], x[j, 1] = _closed_start(a[j, 0], a[j, 1], balls[B_KO0, j], cst, side)
         if attempt != 1:
-            _ball_newton(
-                x, a, redo, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o, speed_on, tol, dr
-            )
+            _ball_newton(x, a, redo, balls, cst, lam_i, lam_o, speed_on, tol, dr)
         else:
-            _friction_continuation(
-                x, a, redo, ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o, speed_on, tol, dr
-            )
+            _friction_continuation(x, a, redo, balls, cst, lam_i, lam_o, speed_on, tol, dr)
         for j in range(z):
             if redo[j]:
                 done[j] = dr[j]
@@ -810,26 +788,7 @@ def _restart_balls(
         if not done[j]:
             ok = False
     if ok:
-        _ring_jacobian(
-            a,
-            x,
-            cos_psi,
-            sin_psi,
-            ki0,
-            ki1,
-            ai_c,
-            ko0,
-            ko1,
-            ao_c,
-            cst,
-            lam_i,
-            lam_o,
-            speed_on,
-            jac,
-            state,
-            loaded,
-            parts,
-        )
+        _ring_jacobian(a, x, balls, cst, lam_i, lam_o, speed_on, jac, state, loaded, parts)
     return ok
 
 
@@ -913,31 +872,19 @@ def ring_forces(
         :data:`OK`, or :data:`BALLS_DID_NOT_CONVERGE`.
     """
     z = cos_psi.size
+    balls = np.empty((N_BALL_ROWS, z))  # the ball table, rows B_*
+    for row, values in enumerate((ki0, ki1, ai_c, ko0, ko1, ao_c, cos_psi, sin_psi)):
+        balls[row] = values
     a = np.empty((z, 2))
     x_star = np.empty((z, 2))
     done = np.empty(z, dtype=np.bool_)
     parts = np.empty((5, z))
     lift_work = np.empty((3, z))  # the lift-off fixed point's angles and approaches
-    hertz = (ki0, ki1, ai_c, ko0, ko1, ao_c, cst, lam_i, lam_o)
-    speed = bool(speed_on)
+    ring = (balls, cst, lam_i, lam_o, bool(speed_on))
     out = (jac, state, parts)
-    ok = _balls(
-        q,
-        cos_psi,
-        sin_psi,
-        x,
-        bool(have_x),
-        *hertz,
-        speed,
-        a,
-        x_star,
-        loaded,
-        done,
-        *out,
-        lift_work,
-    )
-    if not ok and speed:
-        ok = _restart_balls(a, x, *hertz, speed, x_star, done, cos_psi, sin_psi, loaded, *out)
+    ok = _balls(q, x, bool(have_x), *ring, a, x_star, loaded, done, *out, lift_work)
+    if not ok and speed_on:
+        ok = _restart_balls(a, x, *ring, x_star, done, loaded, *out)
     if not ok:
         return BALLS_DID_NOT_CONVERGE
     force[:] = parts.sum(axis=1)  # each row in NumPy's pairwise order
@@ -949,14 +896,7 @@ def ring_forces(
 def _ring_jacobian(
     a: FloatArray,
     x: FloatArray,
-    cos_psi: FloatArray,
-    sin_psi: FloatArray,
-    ki0: FloatArray,
-    ki1: FloatArray,
-    ai_c: FloatArray,
-    ko0: FloatArray,
-    ko1: FloatArray,
-    ao_c: FloatArray,
+    balls: FloatArray,
     cst: FloatArray,
     lam_i: float,
     lam_o: float,
@@ -969,7 +909,7 @@ def _ring_jacobian(
     """Ball states, the Jacobian ``jac`` of the ring force and each ball's part of it in
     ``parts`` (P_a, P_r cos ψ, P_r sin ψ, P_m sin ψ, P_m cos ψ per ball; rows summed by
     :func:`ring_forces`), at converged ball centres ``x`` and groove centres ``a``."""
-    z = cos_psi.size
+    z = balls.shape[1]
     rad_i = cst[C_RAD_I]
     lam_fi = lam_i * cst[C_FI]
     for r in range(5):
@@ -980,17 +920,20 @@ def _ring_jacobian(
         # (small arrays would compile to several times the code); entries 14-18 of the ball
         # state by literal indices: a computed index compiles to a switch over the 19 entries
         xj0, xj1, aj0, aj1 = x[j, 0], x[j, 1], a[j, 0], a[j, 1]
-        k0, k1, kc = ki0[j], ki1[j], ai_c[j]
-        o0, o1, oc = ko0[j], ko1[j], ao_c[j]
+        k0, k1, kc = balls[B_KI0, j], balls[B_KI1, j], balls[B_AI_C, j]
+        o0, o1, oc = balls[B_KO0, j], balls[B_KO1, j], balls[B_AO_C, j]
         s = _ball_state(
             xj0, xj1, aj0, aj1, 1.0, 0.0, 0.0, 0.0, k0, k1, kc, o0, o1, oc, cst, lam_i, lam_o,
             speed_on,
         )  # fmt: skip
+        st_pa = s[2]
+        st_pr = s[3]
+        st_mg = s[4]
         state[0, j] = s[0]
         state[1, j] = s[1]
-        state[2, j] = s[2]
-        state[3, j] = s[3]
-        state[4, j] = s[4]
+        state[2, j] = st_pa
+        state[3, j] = st_pr
+        state[4, j] = st_mg
         state[5, j] = s[5]
         state[6, j] = s[6]
         state[7, j] = s[7]
@@ -1032,18 +975,18 @@ def _ring_jacobian(
         pa01 = s[16]
         pa11 = s[17]
         pa21 = s[18]
-        for r in range(5):
-            parts[r, j] = 0.0
         if not loaded[j]:  # an unloaded ball exerts nothing on the inner ring
+            for r in range(5):
+                parts[r, j] = 0.0
             continue
-        st_pa = state[2, j]
-        st_pr = state[3, j]
-        pm = st_pa * rad_i + lam_fi * state[4, j]
+        cp = balls[B_COS, j]
+        sp = balls[B_SIN, j]
+        pm = st_pa * rad_i + lam_fi * st_mg
         parts[0, j] = st_pa
-        parts[1, j] = st_pr * cos_psi[j]
-        parts[2, j] = st_pr * sin_psi[j]
-        parts[3, j] = pm * sin_psi[j]
-        parts[4, j] = pm * cos_psi[j]
+        parts[1, j] = st_pr * cp
+        parts[2, j] = st_pr * sp
+        parts[3, j] = pm * sp
+        parts[4, j] = pm * cp
         # (∂g/∂X)^{-1} ∂g/∂A by Cramer's rule (2×2), columns A_1, A_2
         det = gx00 * gx11 - gx01 * gx10
         s00 = (gx11 * ga00 - gx01 * ga10) / det
@@ -1059,8 +1002,6 @@ def _ring_jacobian(
         l21 = pa21 - (px20 * s01 + px21 * s11)
         l20 = l00 * rad_i + lam_fi * l20
         l21 = l01 * rad_i + lam_fi * l21
-        cp = cos_psi[j]
-        sp = sin_psi[j]
         for col in range(5):
             # column col of B_j: ∂A_1/∂q_col, ∂A_2/∂q_col (scalars: no array compiled)
             if col == 0:

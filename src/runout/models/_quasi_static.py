@@ -24,7 +24,6 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
-import numba
 import numpy as np
 from numba.extending import register_jitable
 from numpy.typing import NDArray
@@ -39,6 +38,7 @@ from runout.analysis.decompose import (
 )
 from runout.analysis.result_details import QuasiStaticDetails
 from runout.analysis.results import RunResult, Source, stated_resolution
+from runout.base._kernel import kernel
 from runout.base._threads import halves, in_spans, one_blas_thread
 from runout.base.errors import GeometryError
 from runout.geometry.attribution import ball_size_line, ball_waviness_line
@@ -433,7 +433,7 @@ def contact_anchor(
         ring_p[1, m] = 0.0
 
 
-@numba.njit(cache=True, inline="always")
+@kernel(inline="always")
 def contact_advance(state: tuple[NDArray[np.float64], ...]) -> None:
     """Advance the rotations since the anchor, and the element phasors, by one step (compiled)."""
     ball_ph = state[2]  # one name at a time (see contact_anchor)
@@ -455,7 +455,7 @@ def contact_advance(state: tuple[NDArray[np.float64], ...]) -> None:
         ball_ph[1, m] = re * ball_rot[1, m] + im * ball_rot[0, m]
 
 
-@numba.njit(cache=True, inline="always")
+@kernel(inline="always")
 def contact_values(
     state: tuple[NDArray[np.float64], ...],
     n_inner: int,

@@ -29,10 +29,11 @@ from __future__ import annotations
 
 import math
 
-import numba
 import numpy as np
 from numba.extending import register_jitable
 from numpy.typing import NDArray
+
+from runout.base._kernel import kernel
 
 FloatArray = NDArray[np.float64]
 IntArray = NDArray[np.int64]
@@ -363,8 +364,8 @@ def _gaps_at(
 
 #: :func:`_support` and :func:`_gap` compiled on their own, for callers in Python (the kernels
 #: compile them in).
-support = numba.njit(cache=True)(_support)
-gap = numba.njit(cache=True)(_gap)
+support = kernel()(_support)
+gap = kernel()(_gap)
 
 
 def work_arrays(z: int) -> tuple[NDArray[np.bool_], FloatArray, FloatArray, NDArray[np.int64]]:
@@ -373,9 +374,45 @@ def work_arrays(z: int) -> tuple[NDArray[np.bool_], FloatArray, FloatArray, NDAr
     return np.empty(z, dtype=np.bool_), np.empty(3), np.empty((5, z)), np.empty((2, z), np.int64)
 
 
-@numba.njit(cache=True, nogil=True)
+@register_jitable(no_cfunc_wrapper=True)
+def _accept(
+    n: int,
+    mode: int,
+    bx: float,
+    by: float,
+    la: float,
+    lb: float,
+    first: int,
+    second: int,
+    rx: FloatArray,
+    ry: FloatArray,
+    far: NDArray[np.bool_],
+    dev: FloatArray,
+    sh: FloatArray,
+    bt: Bodies,
+    kept: FloatArray,
+    out_c: FloatArray,
+    out_pair: NDArray[np.int64],
+    out_lam: FloatArray,
+    out_gap: FloatArray,
+    out_status: NDArray[np.int64],
+) -> None:
+    """The stable position (bx, by) of angle n, its contact pair and multipliers, and every
+    roller's gap there, into the outputs (a contact beyond the candidates: status)."""
+    out_c[n, 0] = bx
+    out_c[n, 1] = by
+    out_pair[n, 0] = first
+    out_pair[n, 1] = second
+    out_lam[n, 0] = la
+    out_lam[n, 1] = lb
+    if not _gaps_at(mode, bx, by, rx, ry, far, dev, sh, bt, kept, out_gap[n]):
+        out_status[n] = _FAR_CONTACT
+
+
+@kernel(nogil=True)
 def _solve_all(
     alphas: FloatArray,
+    n_start: int,
     mode: int,
     bt: Bodies,
     beta0: FloatArray,
@@ -398,13 +435,20 @@ def _solve_all(
     sh: FloatArray,
     fwork: FloatArray,
     iwork: NDArray[np.int64],
-) -> None:
-    """Every rotation angle in turn (see the module docstring).
+) -> tuple[int, float, float]:
+    """The rotation angles from ``n_start`` on, in turn (see the module docstring), from the
+    inner-ring centre (c0x, c0y) of the angle before.
 
     ``dev`` holds the largest deviation of each body from its base radius
     (:func:`deviations`); ``far`` (Z,), ``sh`` (3,), ``fwork`` (5, Z) and ``iwork`` (2, Z) are
     work space (:func:`work_arrays`). Both come from the caller: set-up that, compiled, would
     only cost compilation time.
+
+    Returns the number of angles, or the first angle whose active-set walk found no stable
+    vertex, and the centre of the last angle solved: the search over every pair of
+    candidates (:func:`_solve_pairs`) takes that angle from the work space as this kernel
+    leaves it, and the caller resumes here after it. Apart, it compiles only in a run that
+    needs it (none of the examples does).
     """
     z = beta0.size
     r0 = bt[0]
@@ -423,7 +467,7 @@ def _solve_all(
     cand = iwork[0]
     sc = iwork[1]  # candidates sorted by angle
     lim = 0.5 * math.pi + 2.0 * math.pi / z
-    for n in range(alphas.size):
+    for n in range(n_start, alphas.size):
         alpha = alphas[n]
         # e^{-i shift} of the inner ring, the outer ring and the rollers at this angle
         for j in range(z):
@@ -555,55 +599,99 @@ def _solve_all(
         if out_status[n] == _FAR_CONTACT:
             continue
         if not found:
-            # 4. fall-back: every pair of candidates, keep the lowest admissible KKT vertex
-            best = -1e300
-            for i1 in range(nc):
-                for i2 in range(i1 + 1, nc):
-                    vx, vy, lam_a, lam_b, conv = _vertex(
-                        mode,
-                        sc[i1],
-                        sc[i2],
-                        cx,
-                        cy,
-                        ux,
-                        uy,
-                        rx,
-                        ry,
-                        sh,
-                        bt,
-                    )
-                    if not conv or lam_a < -TOL_MULTIPLIER or lam_b < -TOL_MULTIPLIER:
-                        continue
-                    wj, _ = _worst(mode, sc[i1], sc[i2], vx, vy, rx, ry, far, dev, sh, bt, wg)
-                    if wj < 0 and ux * vx + uy * vy > best:
-                        best = ux * vx + uy * vy
-                        bx, by, la, lb = vx, vy, lam_a, lam_b
-                        ia, ib = i1, i2
-                        single = -1
-                        found = True
-            if mode == 1:
-                for i1 in range(nc):
-                    qx, qy = _single(mode, sc[i1], wx, wy, rx, ry, sh, bt)
-                    wj, _ = _worst(mode, sc[i1], sc[i1], qx, qy, rx, ry, far, dev, sh, bt, wg)
-                    if wj < 0 and ux * qx + uy * qy > best:
-                        best = ux * qx + uy * qy
-                        bx, by, la, lb = qx, qy, 1.0, 0.0
-                        single = sc[i1]
-                        found = True
-        if not found:
-            out_status[n] = _NO_STABLE
-            continue
+            return n, cx, cy  # 4. every pair of candidates: _solve_pairs
         cx = bx
         cy = by
-        out_c[n, 0] = cx
-        out_c[n, 1] = cy
-        if single >= 0:
-            out_pair[n, 0] = single
-            out_pair[n, 1] = single
-        else:
-            out_pair[n, 0] = sc[ia]
-            out_pair[n, 1] = sc[ib]
-        out_lam[n, 0] = la
-        out_lam[n, 1] = lb
-        if not _gaps_at(mode, cx, cy, rx, ry, far, dev, sh, bt, kept, out_gap[n]):
-            out_status[n] = _FAR_CONTACT
+        first = sc[ia] if single < 0 else single
+        second = sc[ib] if single < 0 else single
+        args = (rx, ry, far, dev, sh, bt, kept, out_c, out_pair, out_lam, out_gap, out_status)
+        _accept(n, mode, bx, by, la, lb, first, second, *args)
+    return alphas.size, cx, cy
+
+
+@kernel(nogil=True)
+def _solve_pairs(
+    n: int,
+    mode: int,
+    bt: Bodies,
+    cx: float,
+    cy: float,
+    ux: float,
+    uy: float,
+    out_c: FloatArray,
+    out_pair: NDArray[np.int64],
+    out_lam: FloatArray,
+    out_gap: FloatArray,
+    out_status: NDArray[np.int64],
+    dev: FloatArray,
+    far: NDArray[np.bool_],
+    sh: FloatArray,
+    fwork: FloatArray,
+    iwork: NDArray[np.int64],
+) -> tuple[float, float]:
+    """Angle n where the active-set walk of :func:`_solve_all` found no stable vertex: the
+    lowest admissible KKT vertex over every pair of candidate rollers (and, outer ring
+    loaded, every single roller), from the work space :func:`_solve_all` left at that angle
+    (settled rollers, candidates sorted by angle, the rings' turns); (cx, cy) is the centre
+    of the angle before. No stable position: status ``_NO_STABLE``. Returns the centre the
+    next angle starts from (the stable position, or (cx, cy) without one).
+    """
+    z = far.size
+    wg = fwork[0]
+    kept = fwork[1]
+    rx = fwork[2]
+    ry = fwork[3]
+    sc = iwork[1]
+    wx = ux if mode == 0 else -ux
+    wy = uy if mode == 0 else -uy
+    nc = 0
+    for j in range(z):
+        if not far[j]:
+            nc += 1
+    found = False
+    single = -1
+    ia = ib = -1
+    bx = by = 0.0
+    la = lb = 0.0
+    best = -1e300
+    for i1 in range(nc):
+        for i2 in range(i1 + 1, nc):
+            vx, vy, lam_a, lam_b, conv = _vertex(
+                mode,
+                sc[i1],
+                sc[i2],
+                cx,
+                cy,
+                ux,
+                uy,
+                rx,
+                ry,
+                sh,
+                bt,
+            )
+            if not conv or lam_a < -TOL_MULTIPLIER or lam_b < -TOL_MULTIPLIER:
+                continue
+            wj, _ = _worst(mode, sc[i1], sc[i2], vx, vy, rx, ry, far, dev, sh, bt, wg)
+            if wj < 0 and ux * vx + uy * vy > best:
+                best = ux * vx + uy * vy
+                bx, by, la, lb = vx, vy, lam_a, lam_b
+                ia, ib = i1, i2
+                single = -1
+                found = True
+    if mode == 1:
+        for i1 in range(nc):
+            qx, qy = _single(mode, sc[i1], wx, wy, rx, ry, sh, bt)
+            wj, _ = _worst(mode, sc[i1], sc[i1], qx, qy, rx, ry, far, dev, sh, bt, wg)
+            if wj < 0 and ux * qx + uy * qy > best:
+                best = ux * qx + uy * qy
+                bx, by, la, lb = qx, qy, 1.0, 0.0
+                single = sc[i1]
+                found = True
+    if not found:
+        out_status[n] = _NO_STABLE
+        return cx, cy
+    first = sc[ia] if single < 0 else single
+    second = sc[ib] if single < 0 else single
+    args = (rx, ry, far, dev, sh, bt, kept, out_c, out_pair, out_lam, out_gap, out_status)
+    _accept(n, mode, bx, by, la, lb, first, second, *args)
+    return bx, by

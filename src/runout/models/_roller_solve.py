@@ -26,6 +26,7 @@ from runout.models._roller_kernels import (
     _NO_VERTEX,
     _SETTLE_FAIL,
     _solve_all,
+    _solve_pairs,
     deviations,
     gap,
     support,
@@ -199,28 +200,26 @@ def _solve_one(geo: ConstraintGeometry, al: FloatArray) -> Solution:
     out_gap = np.zeros((n, z))
     out_rc = np.zeros((n, z, 2))
     out_status = np.zeros(n, dtype=np.int64)
-    _solve_all(
-        al,
-        0 if geo.rotating_ring == "inner" else 1,
-        bodies,
-        np.ascontiguousarray(beta0),
-        cage_ratio(geo),
-        absolute_spin_ratio(geo),
-        inner_turns,
-        outer_turns,
-        float(u[0]),
-        float(u[1]),
-        float(c0[0]),
-        float(c0[1]),
-        out_c,
-        out_pair,
-        out_lam,
-        out_gap,
-        out_rc,
-        out_status,
-        deviations(bodies),
-        *work_arrays(z),
-    )
+    mode = 0 if geo.rotating_ring == "inner" else 1
+    ux, uy = float(u[0]), float(u[1])
+    cx, cy = float(c0[0]), float(c0[1])
+    dev = deviations(bodies)
+    work = work_arrays(z)
+    out = (out_c, out_pair, out_lam, out_gap)
+    kinematics = (cage_ratio(geo), absolute_spin_ratio(geo), inner_turns, outer_turns)
+    beta = np.ascontiguousarray(beta0)
+    start = 0
+    for _ in range(n + 1):  # each pass solves at least one angle
+        start, cx, cy = _solve_all(
+            al, start, mode, bodies, beta, *kinematics, ux, uy, cx, cy, *out, out_rc,
+            out_status, dev, *work,
+        )  # fmt: skip
+        if start >= n:
+            break
+        # an angle the active-set walk could not place: every pair of candidates (compiled
+        # only in a run that needs it), then on with the next angle
+        cx, cy = _solve_pairs(start, mode, bodies, cx, cy, ux, uy, *out, out_status, dev, *work)
+        start += 1
     bad = np.flatnonzero(out_status)
     if bad.size:
         i = int(bad[0])

@@ -15,12 +15,12 @@ from __future__ import annotations
 
 import math
 
-import numba
 import numpy as np
 from numba.extending import register_jitable
 from numpy.typing import NDArray
 
 from runout.analysis.results import SOLVER_RTOL
+from runout.base._kernel import kernel
 from runout.models._quasi_static import predict
 
 F64 = NDArray[np.float64]
@@ -128,7 +128,7 @@ def _potential(c: F64, gn: F64, k: F64, force: F64, q: F64) -> float:
 
 # inlined into its one caller, solve_chunk: compiled on its own it would also build the Python
 # and C entry points of its fourteen array arguments (first-run compilation time)
-@numba.njit(cache=True, inline="always")
+@kernel(inline="always")
 def newton(
     c: NDArray[np.float64],
     cth: NDArray[np.float64],
@@ -278,7 +278,7 @@ def newton(
     return _final(h, work, r, s, n - loaded, converged)
 
 
-@numba.njit(cache=True, inline="always")  # one caller, newton (see there)
+@kernel(inline="always")  # one caller, newton (see there)
 def _final(h: F64, work: F64, r: F64, s: F64, unloaded: int, converged: bool) -> tuple[int, int]:
     """Status of a solve whose unregularised stiffness is ``h`` (compiled).
 
@@ -303,7 +303,7 @@ def scratch_for(n_balls: int, m: int) -> tuple[F64, F64, F64, F64]:
     return np.empty((m, m)), np.empty((m, m)), np.empty((4, m)), np.empty((n_balls, m))
 
 
-@numba.njit(cache=True, nogil=True)
+@kernel(nogil=True)
 def solve_chunk(
     c: NDArray[np.float64],
     cth: NDArray[np.float64],

@@ -51,12 +51,12 @@ import math
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, Literal
 
-import numba
 import numpy as np
 from numba.extending import register_jitable
 from numpy.typing import NDArray
 
 from runout.analysis.results import SOLVER_RTOL, RunResult
+from runout.base._kernel import kernel
 from runout.base.errors import ContactLossError, ConvergenceError, GeometryError, NumericalError
 from runout.geometry.bearing import BallBearing, Operation
 from runout.geometry.contact import ball_race_contacts
@@ -111,7 +111,7 @@ FLOOR = 64.0 * 2.0**-52
 ElementProjection = Literal["none", "radial"]
 
 
-@numba.njit(cache=True)
+@kernel()
 def hertz_potential(
     c: NDArray[np.float64],
     cth: NDArray[np.float64],
@@ -155,7 +155,7 @@ def hertz_potential(
     return e
 
 
-@numba.njit(cache=True)
+@kernel()
 def loaded_balls_collinear(
     c: NDArray[np.float64], cth: NDArray[np.float64], sth: NDArray[np.float64], q0: float, q1: float
 ) -> bool:
@@ -192,7 +192,7 @@ def loaded_balls_collinear(
     return h00 * h11 - h01 * h01 <= 1e-12 * tr * tr
 
 
-@numba.njit(cache=True)
+@kernel()
 def solve_kernel(
     c: NDArray[np.float64], theta: NDArray[np.float64], k: float, d_ref: float, max_iter: int
 ) -> tuple[NDArray[np.float64], NDArray[np.int64], int, int]:
@@ -318,7 +318,7 @@ def _newton(
     return q0, q1, count, OK
 
 
-@numba.njit(cache=True)
+@kernel()
 def solve_kernel_loaded(
     c: NDArray[np.float64],
     theta: NDArray[np.float64],
@@ -398,7 +398,7 @@ def solve_kernel_loaded(
     return q, unloaded, 0, -1
 
 
-@numba.njit(cache=True, nogil=True)
+@kernel(nogil=True)
 def solve_fused(
     t: NDArray[np.float64],
     rates: NDArray[np.float64],

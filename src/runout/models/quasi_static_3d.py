@@ -67,12 +67,12 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-import numba
 import numpy as np
 from numba.extending import register_jitable
 from numpy.typing import NDArray
 
 from runout.analysis.results import SOLVER_RTOL, RunResult
+from runout.base._kernel import kernel
 from runout.base._linalg import solve_spd3
 from runout.base.errors import ContactLossError, ConvergenceError, GeometryError, NumericalError
 from runout.geometry.bearing import BallBearing, Operation
@@ -292,7 +292,7 @@ def _newton(
     return q0, q1, q2, count, OK
 
 
-@numba.njit(cache=True)
+@kernel()
 def solve_kernel(
     c: NDArray[np.float64],
     theta: NDArray[np.float64],
@@ -386,7 +386,7 @@ def solve_kernel(
     return q, unloaded, 0, -1
 
 
-@numba.njit(cache=True, nogil=True)
+@kernel(nogil=True)
 def solve_fused(
     t: NDArray[np.float64],
     rates: NDArray[np.float64],

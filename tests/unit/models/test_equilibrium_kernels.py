@@ -557,9 +557,27 @@ def test_ball_state_derivatives_equal_complex_step(name: str) -> None:
                 assert abs(got[14 + r] - want) <= 1e-9 * size, (out, j, k)
 
 
-def _constants(ring: eq._Ring) -> tuple[Any, ...]:
+def _ball_table(ring: eq._Ring) -> NDArray[np.float64]:
+    """The kernels' ball table (rows B_*: Hertz constants, azimuths)."""
     p = ring.p
-    return (p.ki0, p.ki1, p.ai_c, p.ko0, p.ko1, p.ao_c)
+    rows = (p.ki0, p.ki1, p.ai_c, p.ko0, p.ko1, p.ao_c, ring.cos_psi, ring.sin_psi)
+    table = np.empty((kern.N_BALL_ROWS, p.ki0.size))
+    for row, values in zip(
+        (
+            kern.B_KI0,
+            kern.B_KI1,
+            kern.B_AI_C,
+            kern.B_KO0,
+            kern.B_KO1,
+            kern.B_AO_C,
+            kern.B_COS,
+            kern.B_SIN,
+        ),
+        rows,
+        strict=True,
+    ):
+        table[row] = values
+    return table
 
 
 @pytest.mark.parametrize("name", ["kim_7200rpm", "lifted_off", "near_lift_off_inner_control"])
@@ -569,10 +587,9 @@ def test_lift_off_fixed_point_matches_numpy(name: str) -> None:
     lifted, x_star = _lifted_off(a, ring.p)  # type: ignore[arg-type]
     got_x = np.empty_like(a)
     got_lifted = np.empty(a.shape[0], dtype=np.bool_)
-    _, _, _, ko0, ko1, ao_c = _constants(ring)
     work = np.empty((3, a.shape[0]))
     args = (ring.cst, ring.p.lam_i, ring.p.lam_o, got_x, got_lifted, work)
-    kern._lifted_off(a, ko0, ko1, ao_c, *args)
+    kern._lifted_off(a, _ball_table(ring), *args)
     assert np.array_equal(got_lifted, lifted)
     np.testing.assert_allclose(got_x, x_star, rtol=1e-14, atol=1e-14 * ring.a)
     if name == "lifted_off":
@@ -590,7 +607,7 @@ def test_friction_continuation_matches_numpy() -> None:
     xs = start.copy()
     done = np.empty(every.size, dtype=np.bool_)
     kern._friction_continuation(
-        xs, a, every, *_constants(ring), ring.cst, p.lam_i, p.lam_o, True, tol, done
+        xs, a, every, _ball_table(ring), ring.cst, p.lam_i, p.lam_o, True, tol, done
     )
     assert np.array_equal(done, want_done)
     # a ball without rest overlap has no loaded state without friction (s = 0): there the
