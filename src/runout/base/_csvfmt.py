@@ -20,9 +20,10 @@ from __future__ import annotations
 
 import math
 
-import numba
 import numpy as np
 import numpy.typing as npt
+
+from runout.base._kernel import kernel
 
 __all__ = ["format_rows"]
 
@@ -31,7 +32,7 @@ _POW10 = np.array([10.0**k for k in range(23)])
 _TIE_BAND = 2.5e-4
 
 
-@numba.njit(cache=True)
+@kernel()
 def _digits(v: float) -> tuple[int, int, bool]:
     """12 correctly rounded significant digits of |v| as an integer, its exponent, proven."""
     a = abs(v)
@@ -65,7 +66,7 @@ def _digits(v: float) -> tuple[int, int, bool]:
     return d, e, True
 
 
-@numba.njit(cache=True)
+@kernel()
 def _significant(d: int) -> int:
     """Digits of the 12-digit ``d`` left once its trailing zeros are dropped (1..12)."""
     nd = 12
@@ -75,7 +76,7 @@ def _significant(d: int) -> int:
     return nd
 
 
-@numba.njit(cache=True)
+@kernel()
 def _length(v: float, d: int, e: int) -> int:
     """Length of the ``%.12g`` text of ``v`` (digits ``d``, exponent ``e``) [bytes]."""
     nd = _significant(d)
@@ -87,7 +88,7 @@ def _length(v: float, d: int, e: int) -> int:
     return n + (nd + 1 if nd > 1 else 1) + 2 + (3 if abs(e) >= 100 else 2)
 
 
-@numba.njit(cache=True)
+@kernel()
 def _render(
     v: float, d: int, e: int, out: npt.NDArray[np.uint8], pos: int, digits: npt.NDArray[np.uint8]
 ) -> int:
@@ -145,7 +146,7 @@ def _render(
     return pos + 2
 
 
-@numba.njit(cache=True, nogil=True)  # a run writes it while plotting
+@kernel(nogil=True)  # a run writes it while plotting
 def _plan(
     block: npt.NDArray[np.float64],
 ) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.int64], npt.NDArray[np.int64]]:
@@ -169,7 +170,7 @@ def _plan(
     return digits, exps, length
 
 
-@numba.njit(cache=True, nogil=True)  # a run writes it while plotting
+@kernel(nogil=True)  # a run writes it while plotting
 def _write(
     block: npt.NDArray[np.float64],
     digits: npt.NDArray[np.int64],

@@ -24,6 +24,7 @@ import numba
 import numpy as np
 from numpy.typing import NDArray
 
+from runout.base._kernel import kernel
 from runout.models.quasi_static_2d import FLOOR
 
 __all__ = ["project_rows", "solve_batch", "solve_batch_reference"]
@@ -35,7 +36,7 @@ RTOL = 1e-11
 QUAD = 1e-6
 
 
-@numba.njit(cache=True, nogil=True)
+@kernel(nogil=True)
 def _contacts(ci, cth, sth, k, q0, q1):  # pragma: no cover - compiled
     """Force, stiffness, total load and Hertz energy of the balls at shaft centre (q0, q1).
 
@@ -68,7 +69,7 @@ def _contacts(ci, cth, sth, k, q0, q1):  # pragma: no cover - compiled
     return f0, f1, h00, h01, h11, load_sum, e
 
 
-@numba.njit(cache=True, nogil=True)
+@kernel(nogil=True)
 def _solve_one(c_base, offset, cth, sth, k, d_ref, max_iter, q_out, unloaded):  # pragma: no cover
     n, z = c_base.shape
     tol = RTOL * d_ref
@@ -148,7 +149,7 @@ def _solve_one(c_base, offset, cth, sth, k, d_ref, max_iter, q_out, unloaded):  
     return 0, -1
 
 
-@numba.njit(cache=True, nogil=True, parallel=True)
+@kernel(nogil=True, parallel=True)
 def _solve_batch_parallel(
     c_base, offsets, cth, sth, k, d_ref, max_iter, q, unloaded, status, instant
 ):  # pragma: no cover
@@ -158,7 +159,7 @@ def _solve_batch_parallel(
         instant[m] = i
 
 
-@numba.njit(cache=True, nogil=True)
+@kernel(nogil=True)
 def _solve_batch_serial(
     c_base, offsets, cth, sth, k, d_ref, max_iter, q, unloaded, status, instant
 ):  # pragma: no cover
@@ -218,14 +219,14 @@ def solve_batch(
     th = np.asarray(theta, dtype=np.float64)
     cth = np.ascontiguousarray(np.cos(th))
     sth = np.ascontiguousarray(np.sin(th))
-    kernel = _solve_batch_parallel if parallel else _solve_batch_serial
+    solve = _solve_batch_parallel if parallel else _solve_batch_serial
     # the outputs are allocated here: compiled, their allocation would only cost compilation
     b, n = o.shape[0], c.shape[0]
     q = np.zeros((b, n, 2))
     unloaded = np.zeros((b, n), dtype=np.int64)
     status = np.zeros(b, dtype=np.int64)
     instant = np.full(b, -1, dtype=np.int64)
-    kernel(
+    solve(
         c, o, cth, sth, float(stiffness), float(d_ref), int(max_iter), q, unloaded, status, instant
     )
     return q, unloaded, status, instant
@@ -275,7 +276,7 @@ def solve_batch_reference(
     raise ArithmeticError("reference Newton iteration did not converge")
 
 
-@numba.njit(cache=True, nogil=True)
+@kernel(nogil=True)
 def _project_rows(x, p):  # pragma: no cover - compiled
     r, n = x.shape
     k = p.shape[0]
