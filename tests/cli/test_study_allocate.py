@@ -3,9 +3,14 @@ fresh Monte Carlo (another seed), gives the target yield within the stated inter
 
 Seed 001 (Kim et al.) Table 9 bearing (examples/seed001_kim_table9.toml) and the HDD spindle
 lot of examples/spindle_hdd_ball_grade.toml. The allocation's criterion: the largest tolerance
-whose *estimated* yield is at least the target (runout.study.allocate); its Clopper-Pearson
-interval covers the true yield at it (an order statistic), so a fresh, larger Monte Carlo at
-that tolerance lands inside it, and the target lies inside the fresh study's own interval.
+whose *estimated* yield is at least the target (runout.study.allocate). With m of n bearings
+within the limit there, the true yield at it is Beta(m, n - m + 1) distributed (an order
+statistic), which is where its stated 95 % interval comes from; a fresh Monte Carlo of N
+bearings at that tolerance then counts K within the limit, K beta-binomial(N, m, n - m + 1).
+The test checks K against that law two-sided at a false-alarm rate of 1e-3, not against the
+95 % interval itself: that interval misses the true yield in one allocation in twenty, by
+design (a fixed seed would make the test pass or fail by the luck of its draws: the seed 001
+lot at 300 bearings and a 90 % target is one that misses, see docs/studies.md).
 """
 
 from __future__ import annotations
@@ -17,6 +22,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from scipy.stats import betabinom
 
 ROOT = Path(__file__).resolve().parents[2]
 KIM = ROOT / "examples" / "seed001_kim_table9.toml"
@@ -67,10 +73,12 @@ def forward_check(
     )
     lot = fresh["yield"]
     assert fresh["seed"] == 97 and lot["samples"] == 4 * samples
-    # the fresh estimate of the same true yield: inside the interval the allocation stated
-    assert low <= lot["fraction"] <= high, (found, lot)
-    # and the target inside the fresh study's own interval
-    assert lot["ci_low"] <= target <= lot["ci_high"], (found, lot)
+    # the fresh count against its law given the allocation's m of n (module docstring)
+    m, n = found["passed"], found["samples"]
+    law = betabinom(lot["samples"], m, n - m + 1)
+    k = lot["passed"]
+    p_value = 2.0 * min(law.cdf(k), law.sf(k - 1))
+    assert p_value >= 1e-3, (found, lot, p_value)
 
 
 def test_seed001_table9_allocation_holds_in_a_fresh_monte_carlo(tmp_path: Path) -> None:

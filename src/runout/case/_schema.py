@@ -819,6 +819,8 @@ ARRANGEMENT_OBJECTIVES = ("lines", "line", "nrro_pp", "band")
 _ARRANGEMENT_LINE = re.compile(r"fc|([1-9][0-9]{0,2})fb([+-])fc")
 #: ``[study]`` keys that only ``kind = "arrangement"`` reads.
 ARRANGEMENT_KEYS = ("lot", "minimise", "line", "band", "random_orders")
+#: Random assemblies an arrangement is compared with when ``random_orders`` is not given.
+DEFAULT_RANDOM_ORDERS = 4000
 
 
 class StudySpec(_Table):
@@ -890,12 +892,15 @@ class StudySpec(_Table):
             "docs/studies.md), relative to the case file."
         ),
     )
-    minimise: Literal["lines", "line", "nrro_pp", "band"] = Field(
-        "lines",
+    # None rather than the defaults in the schema: a Monte Carlo or a sweep dumped with
+    # exclude_none and parsed again must not carry keys only an arrangement reads
+    minimise: Literal["lines", "line", "nrro_pp", "band"] | None = Field(
+        None,
         description=(
-            'Arrangement: what the chosen order makes smallest: "lines" (sum of the p-p of the '
-            'f_c and k f_b +- f_c lines), "line" (one of them: line = ...), "nrro_pp" (NRRO p-p '
-            'along the measuring direction) or "band" (an Anderon band: band = ...).'
+            'Arrangement: what the chosen order makes smallest: "lines" (the default: sum of '
+            'the p-p of the f_c and k f_b +- f_c lines), "line" (one of them: line = ...), '
+            '"nrro_pp" (NRRO p-p along the measuring direction) or "band" (an Anderon band: '
+            "band = ...)."
         ),
     )
     line: str | None = Field(
@@ -908,15 +913,25 @@ class StudySpec(_Table):
     band: Literal["U", "R", "L", "M", "H"] | None = Field(
         None, description='Arrangement, minimise = "band": the Anderon band (U, R, L, M, H).'
     )
-    random_orders: int = Field(
-        4000,
+    random_orders: int | None = Field(
+        None,
         ge=1,
         le=1_000_000,
         description=(
             "Arrangement: random assemblies (Z balls of the lot in random order) the chosen "
-            "order is compared with."
+            f"order is compared with (default {DEFAULT_RANDOM_ORDERS})."
         ),
     )
+
+    @property
+    def arrangement_goal(self) -> Literal["lines", "line", "nrro_pp", "band"]:
+        """``minimise`` of an arrangement, its default ("lines") where the case names none."""
+        return self.minimise or "lines"
+
+    @property
+    def arrangement_trials(self) -> int:
+        """``random_orders`` of an arrangement, its default where the case names none."""
+        return self.random_orders or DEFAULT_RANDOM_ORDERS
 
     @field_validator("line")
     @classmethod
@@ -1012,13 +1027,14 @@ class StudySpec(_Table):
                 )
         if self.lot is None:
             raise _KeyedError("lot", 'required for kind = "arrangement": the CSV of the balls')
-        if self.minimise == "line" and self.line is None:
+        goal = self.arrangement_goal
+        if goal == "line" and self.line is None:
             raise _KeyedError("line", 'required for minimise = "line" (e.g. "fc" or "2fb+fc")')
-        if self.minimise == "band" and self.band is None:
+        if goal == "band" and self.band is None:
             raise _KeyedError("band", 'required for minimise = "band" (e.g. "H")')
-        if self.line is not None and self.minimise != "line":
+        if self.line is not None and goal != "line":
             raise _KeyedError("line", 'only applies to minimise = "line"')
-        if self.band is not None and self.minimise != "band":
+        if self.band is not None and goal != "band":
             raise _KeyedError("band", 'only applies to minimise = "band"')
         return self
 

@@ -48,7 +48,8 @@ despite the search having chosen t from the same samples. Its mean is m / (n + 1
 criterion gives a lot whose true yield is Y within the interval, not a guarantee of Y; for a
 guaranteed yield ask for a larger Y (or more samples, which narrow the interval). A fresh Monte
 Carlo (another seed) at the allocated tolerance estimates the same true yield; the tests check
-it lands within the stated interval.
+its count against the beta-binomial law this implies (a 95 % interval misses the true yield in
+one allocation in twenty).
 
 References
 ----------

@@ -273,9 +273,9 @@ def run_arrangement(case: Case) -> ArrangementStudy:
     direction = measuring_direction(op)
     objective: Objective | None
     unit = "m"
-    if study.minimise == "lines":
+    if study.arrangement_goal == "lines":
         objective = None
-    elif study.minimise == "line":
+    elif study.arrangement_goal == "line":
         assert study.line is not None
         if study.line not in lines.labels:
             raise CaseError(
@@ -285,7 +285,7 @@ def run_arrangement(case: Case) -> ArrangementStudy:
                 f"{', '.join(lines.labels)})",
             )
         objective = _line_objective(lines.labels.index(study.line))
-    elif study.minimise == "nrro_pp":
+    elif study.arrangement_goal == "nrro_pp":
         objective = _NrroObjective(lines, t, direction)
     else:
         from runout.analysis.spectrum import ANDERON_BANDS
@@ -310,7 +310,7 @@ def run_arrangement(case: Case) -> ArrangementStudy:
         form=form,
         orders=orders,
         rng=rng,
-        random_trials=study.random_orders,
+        random_trials=study.arrangement_trials,
         objective=objective,
     )
     balls = found.balls
@@ -322,11 +322,11 @@ def run_arrangement(case: Case) -> ArrangementStudy:
     radial = direction[0] * result.displacement[0] + direction[1] * result.displacement[1]
     fit = extract_lines(result.time, radial, lines.frequencies_hz)
     model_pp = 2.0 * np.asarray(fit.amplitude)
-    if study.minimise == "lines":
+    if study.arrangement_goal == "lines":
         computed = float(model_pp.sum())
-    elif study.minimise == "line":
+    elif study.arrangement_goal == "line":
         computed = float(model_pp[lines.labels.index(str(study.line))])
-    elif study.minimise == "nrro_pp":
+    elif study.arrangement_goal == "nrro_pp":
         nrro = result.runout.nrro_pp_m
         if nrro is None:  # pragma: no cover - the 2-D model separates NRRO for every case
             raise CaseError(case.path, "study.minimise", "the model gives no NRRO p-p here")
@@ -365,7 +365,7 @@ def run_arrangement(case: Case) -> ArrangementStudy:
             "waviness_orders": [int(k) for k in lot.orders],
         },
         "minimise": {
-            "quantity": study.minimise,
+            "quantity": study.arrangement_goal,
             "line": study.line,
             "band": study.band,
             "unit": unit,
