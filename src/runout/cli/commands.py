@@ -326,6 +326,10 @@ def _import_plotting_meanwhile() -> threading.Thread:
             matplotlib.use("Agg", force=False)
             import matplotlib.pyplot
             import PIL.Image  # noqa: F401  (the animation's frames)
+            from matplotlib.mathtext import MathTextParser
+
+            # the parser of the log axes' tick labels (10^k) is built once, on first use
+            MathTextParser("path").parse(r"$\mathdefault{10^{-1}}$")
         except Exception:  # raised again, in order, where the figures import them
             return
 
