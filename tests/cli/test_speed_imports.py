@@ -94,6 +94,6 @@ def test_run_out_of_the_linear_model_imports_no_numba(tmp_path: Path) -> None:
 
 
 def test_run_json_imports_no_plotting_library() -> None:
-    """Only ``--out`` loads matplotlib (early, while the model runs): ``--json`` never does."""
+    """Only ``--out`` loads matplotlib and Pillow (~0.4 s): ``--json`` never does."""
     loaded = _modules("run", str(EXAMPLES / "seed002_608.toml"), "--json")
     assert "matplotlib" not in loaded and "PIL" not in loaded

@@ -18,7 +18,6 @@ import math
 import os
 import shutil
 import sys
-import threading
 from pathlib import Path
 from typing import Annotated, Any, NoReturn
 
@@ -292,50 +291,18 @@ def run(
     case_text = _case_text(case_file, case, model, sets)
     # checked before the model runs: a refused directory costs nothing and is left untouched
     directory = None if out is None else _run_directory(out, case_file, force, case_text)
-    plotting = None if directory is None else _import_plotting_meanwhile()
     result = run_model(case)  # with the case's [analysis] outputs (bands, verdict)
     if as_json:
         _print_json(result.to_json())
     else:
         _print_sections(result_sections(result))
     if directory is not None:
-        if plotting is not None:
-            plotting.join()
         written = _write_run(
             result, case, case_file, case_text, directory, report, history_revolutions
         )
         if not as_json:
             for path in written:
                 _out.print(f"wrote {escape(str(path))}")
-
-
-def _import_plotting_meanwhile() -> threading.Thread:
-    """Import matplotlib and Pillow on a thread of their own while the model runs.
-
-    ``run --out`` draws its figures after the model; their libraries take about 0.4 s to
-    import, which this overlaps with the model's compiled solves (they release the GIL). The
-    model imports neither library (``run --json`` loads neither), so the two threads do not
-    take turns importing the same packages. A failure here is left for the figures to raise,
-    in order.
-    """
-
-    def load() -> None:
-        try:
-            import matplotlib
-
-            matplotlib.use("Agg", force=False)
-            import matplotlib.pyplot
-            import PIL.Image  # noqa: F401  (the animation's frames)
-            from matplotlib.mathtext import MathTextParser
-
-            # the parser of the log axes' tick labels (10^k) is built once, on first use
-            MathTextParser("path").parse(r"$\mathdefault{10^{-1}}$")
-        except Exception:  # raised again, in order, where the figures import them
-            return
-
-    thread = threading.Thread(target=load, name="runout-import-plotting", daemon=True)
-    thread.start()
-    return thread
 
 
 def _write_run(
