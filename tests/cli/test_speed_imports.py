@@ -80,3 +80,20 @@ def test_frequencies_compile_nothing(case: str) -> None:
     numba (~0.2 s to import, and it pulls scipy.linalg) is for the models."""
     loaded = _modules("frequencies", str(EXAMPLES / case))
     assert "numba" not in loaded and "runout.geometry._elliptic_kernel" not in loaded
+
+
+def test_run_out_of_the_linear_model_imports_no_numba(tmp_path: Path) -> None:
+    """The linear model compiles nothing, and neither do its files: ``run --out`` of a linear
+    case must not import numba (~0.3 s) nor load the roller or CSV kernels (~0.5 s from the
+    cache) to write a record a few hundred thousand values long (issue 31: ``--out`` within
+    2x ``--json``)."""
+    loaded = _modules("run", str(EXAMPLES / "seed002_608.toml"), "--out", str(tmp_path / "o"))
+    assert (tmp_path / "o" / "history.csv").is_file()
+    assert "numba" not in loaded
+    assert "runout.models._roller_kernels" not in loaded
+
+
+def test_run_json_imports_no_plotting_library() -> None:
+    """Only ``--out`` loads matplotlib and Pillow (~0.4 s): ``--json`` never does."""
+    loaded = _modules("run", str(EXAMPLES / "seed002_608.toml"), "--json")
+    assert "matplotlib" not in loaded and "PIL" not in loaded

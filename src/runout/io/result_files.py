@@ -11,6 +11,7 @@ reading needs none, so this module stays below it.
 from __future__ import annotations
 
 import io
+import sys
 from pathlib import Path
 from typing import Any
 
@@ -129,6 +130,26 @@ SUMMARY_SHAPE: dict[str, Any] = {
 
 #: Rows formatted per call of :func:`write_columns` (bounds its temporary memory: a few MB).
 _CSV_CHUNK = 65536
+#: Most values :func:`write_columns` formats in Python when numba is not loaded yet: Python
+#: formats about a million values a second, and numba costs about 0.6 s to import and start.
+_PYTHON_FORMAT_LIMIT = 1 << 19
+
+
+def _format_rows_python(block: NDArray[np.float64]) -> bytes:
+    """The bytes of :func:`runout.base._csvfmt.format_rows`, formatted by Python.
+
+    Parameters
+    ----------
+    block : ndarray, shape (rows, columns)
+        The values.
+
+    Returns
+    -------
+    bytes
+        ``"".join(",".join("%.12g" % v for v in row) + "\\r\\n" for row in block)``, ASCII.
+    """
+    row = ",".join(["%.12g"] * block.shape[1]) + "\r\n"
+    return "".join([row % values for values in map(tuple, block.tolist())]).encode("ascii")
 
 
 def write_columns(path: Path, header: list[str], columns: list[NDArray[np.float64]]) -> Path:
@@ -137,8 +158,10 @@ def write_columns(path: Path, header: list[str], columns: list[NDArray[np.float6
     The same text as a ``csv.writer`` writing ``f"{v:.12g}"`` for every value (comma
     separated, CRLF line ends, header first), formatted by compiled kernels
     (:func:`runout.base._csvfmt.format_rows`, about ten times faster than Python's formatting,
-    which it falls back on for the rare values it cannot prove it rounds the same way).
-    Rows are formatted in chunks, so the text in memory stays small.
+    which it falls back on for the rare values it cannot prove it rounds the same way); a
+    record of at most :data:`_PYTHON_FORMAT_LIMIT` values written before numba is loaded is
+    formatted by Python instead. Rows are formatted in chunks, so the text in memory stays
+    small.
 
     Parameters
     ----------
@@ -153,12 +176,16 @@ def write_columns(path: Path, header: list[str], columns: list[NDArray[np.float6
     -------
     Path
     """
-    from runout.base._csvfmt import format_rows
-
     data = [np.asarray(c, dtype=np.float64).ravel() for c in columns]
     n = data[0].size if data else 0
     if any(c.size != n for c in data):
         raise ValueError(f"columns differ in length: {[c.size for c in data]}")
+    if "numba" not in sys.modules and n * len(data) <= _PYTHON_FORMAT_LIMIT:
+        # a run that compiled nothing (the linear model): Python formats a short record in
+        # less time than numba takes to import and start (~0.6 s), for the same bytes
+        format_rows = _format_rows_python
+    else:
+        from runout.base._csvfmt import format_rows
     with path.open("wb") as fh:
         fh.write((",".join(header) + "\r\n").encode("ascii"))
         for i0 in range(0, n, _CSV_CHUNK):

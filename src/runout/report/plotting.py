@@ -163,6 +163,11 @@ def place_labels(
     with no free position is dropped. Positions are final for the figure's current layout:
     call this after the layout is fixed (:func:`_fix_layout`).
 
+    A label's text is measured once; its box at each candidate offset is that box moved by
+    the offset and the alignment (a text's extent does not depend on where it is drawn), so
+    only the kept position becomes an artist. The figure is laid out (legend, ticks) by a
+    draw that renders nothing.
+
     Parameters
     ----------
     ax : matplotlib Axes
@@ -180,7 +185,7 @@ def place_labels(
     from matplotlib.text import Text
 
     fig = ax.figure
-    fig.canvas.draw()  # legend positions ("best") and tick labels are settled by a draw
+    fig.draw_without_rendering()  # legend positions ("best") and tick labels are settled
     renderer = fig.canvas.get_renderer()
     frame = ax.get_window_extent(renderer)
     taken = [
@@ -189,30 +194,38 @@ def place_labels(
     legend = ax.get_legend()
     if legend is not None:
         taken.append(legend.get_window_extent(renderer))
+    size = fontsize or style.ANNOTATION_SIZE
+    pixels_per_point = fig.dpi / 72.0
     dropped = 0
     for x, y, text in items:
+        probe = ax.annotate(
+            text, (x, y), xytext=(0, 0), textcoords="offset points", ha="left", va="bottom",
+            fontsize=size,
+        )  # fmt: skip
+        probe.update_positions(renderer)
+        at_point = Text.get_window_extent(probe, renderer)  # left-aligned on the point itself
+        probe.remove()
+        shift = {"left": 0.0, "center": 0.5 * at_point.width, "right": at_point.width}
         for dx, dy, ha in _LABEL_OFFSETS:
-            label = ax.annotate(
-                text,
-                (x, y),
-                xytext=(dx, dy),
-                textcoords="offset points",
-                ha=ha,
-                va="bottom",
-                fontsize=fontsize or style.ANNOTATION_SIZE,
-                # a label moved away from its point is tied to it by a thin leader
-                arrowprops=(
-                    None
-                    if abs(dy) <= 3
-                    else {"arrowstyle": "-", "lw": 0.5, "color": "0.55", "shrinkA": 0}
-                ),
-            )
-            label.update_positions(renderer)
-            box = Text.get_window_extent(label, renderer)  # the text, not its leader
+            box = at_point.translated(dx * pixels_per_point - shift[ha], dy * pixels_per_point)
             if _inside(frame, box) and not any(_overlap(box, b) for b in taken):
+                ax.annotate(
+                    text,
+                    (x, y),
+                    xytext=(dx, dy),
+                    textcoords="offset points",
+                    ha=ha,
+                    va="bottom",
+                    fontsize=size,
+                    # a label moved away from its point is tied to it by a thin leader
+                    arrowprops=(
+                        None
+                        if abs(dy) <= 3
+                        else {"arrowstyle": "-", "lw": 0.5, "color": "0.55", "shrinkA": 0}
+                    ),
+                )
                 taken.append(box)
                 break
-            label.remove()
         else:
             dropped += 1
     return dropped
@@ -543,9 +556,19 @@ def animate_bearing(
     plt.close(fig)
     step = max(1, n // 1500)  # the trace is drawn with at most ~1500 points
     trace_px = px(ax2, x[::step], y[::step])  # transformed once, sliced per frame
+    # The trace so far is kept on its own copy of the background and only its new segments
+    # drawn per frame: a wide line is drawn segment by segment in one colour, so the pixels
+    # are those of the whole polyline drawn again (which cost ~2 ms a frame at 1500 points).
+    traced = base.copy()
+    traced_draw = ImageDraw.Draw(traced)
+    traced_to = 0  # trace_px[: traced_to + 1] is on ``traced``
     images = []
     for i in idx:
-        img = base.copy()
+        upto = i // step
+        if upto > traced_to:
+            traced_draw.line(trace_px[traced_to : upto + 1], fill=blue, width=2)
+            traced_to = upto
+        img = traced.copy()
         draw = ImageDraw.Draw(img)
         cx, cy = x[i] * magnify, y[i] * magnify
         (c,) = px(ax, np.array([cx]), np.array([cy]))
@@ -564,9 +587,9 @@ def animate_bearing(
                 fill=grey,
                 outline=dark,
             )
-        trace = trace_px[: i // step + 1] + px(ax2, x[i : i + 1], y[i : i + 1])
-        if len(trace) >= 2:
-            draw.line(trace, fill=blue, width=2)
+        # the segment from the last traced point to this instant's
+        trace = trace_px[upto : upto + 1] + px(ax2, x[i : i + 1], y[i : i + 1])
+        draw.line(trace, fill=blue, width=2)
         d = trace[-1]
         draw.ellipse([d[0] - 4, d[1] - 4, d[0] + 4, d[1] + 4], fill=red)
         images.append(img)

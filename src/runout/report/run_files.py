@@ -10,9 +10,9 @@ from __future__ import annotations
 import csv
 import json
 import math
-from concurrent.futures import ThreadPoolExecutor
+from concurrent.futures import Future, ThreadPoolExecutor
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -27,8 +27,10 @@ from runout.analysis.results import RunResult
 from runout.analysis.spectrum import ANDERON_BANDS, amplitude_spectrum
 from runout.io.result_files import HISTORY_COLUMNS, write_columns
 from runout.models.linear import LinearResult
-from runout.models.roller_constraint import OrderSweep, Solution, order_sweep, rotation_angles
 from runout.report import plotting
+
+if TYPE_CHECKING:
+    from runout.models.roller_constraint import OrderSweep, Solution
 
 __all__ = ["model_files", "write_result"]
 
@@ -58,21 +60,29 @@ def write_result(
     path.write_text(json.dumps(result.to_json(), indent=2, allow_nan=False) + "\n")
     written.append(path)
     # the record's CSV is formatted by compiled code that releases the GIL: written on a
-    # second thread while the figures are drawn (a record of 2^20 instants: 0.3 s each)
+    # second thread while the figures are drawn (a record of 2^20 instants: 0.3 s each); so
+    # is the rigid model's order sweep (about a hundred solves, 1.5 s on two cores)
     history = directory / "history.csv"
-    pool = ThreadPoolExecutor(1, thread_name_prefix="runout-csv")
+    pool = ThreadPoolExecutor(2, thread_name_prefix="runout-files")
     pending = pool.submit(
         write_columns, history, HISTORY_COLUMNS, [result.time, *result.displacement]
     )
+    solution = _roller_solution(result)
+    sweep = None if solution is None else pool.submit(_order_sweep, solution)
     try:
-        written += _write_rest(result, directory, history_revolutions)
+        written += _write_rest(result, directory, history_revolutions, sweep)
     finally:
         pool.shutdown(wait=True)
     pending.result()  # its error, if any (disk full), is this call's
     return [written[0], history, *written[1:]]
 
 
-def _write_rest(result: RunResult, directory: Path, history_revolutions: float) -> list[Path]:
+def _write_rest(
+    result: RunResult,
+    directory: Path,
+    history_revolutions: float,
+    sweep: Future[OrderSweep] | None,
+) -> list[Path]:
     """``lines.csv``, the figures and the model's own files (:func:`write_result`)."""
     written: list[Path] = []
     path = directory / "lines.csv"
@@ -92,8 +102,19 @@ def _write_rest(result: RunResult, directory: Path, history_revolutions: float) 
             )
     written.append(path)
     written += plotting.write_figures(result, directory, history_revolutions=history_revolutions)
-    written += model_files(result, directory)
+    written += _model_files(result, directory, sweep)
     return written
+
+
+def _roller_solution(result: RunResult) -> Solution | None:
+    """The rigid model's solution held by ``result`` (None for another model or read back)."""
+    if not isinstance(result.details, RollerDetails):
+        return None
+    # imported here: the roller kernels (and numba) are for roller results alone
+    from runout.models.roller_constraint import Solution
+
+    solution = result.details.solution
+    return solution if isinstance(solution, Solution) else None
 
 
 def model_files(result: RunResult, directory: Path) -> list[Path]:
@@ -115,6 +136,13 @@ def model_files(result: RunResult, directory: Path) -> list[Path]:
     list of Path
         The files written.
     """
+    return _model_files(result, directory, None)
+
+
+def _model_files(
+    result: RunResult, directory: Path, sweep: Future[OrderSweep] | None
+) -> list[Path]:
+    """:func:`model_files`, with the rigid model's order sweep already under way (or None)."""
     details = result.details
     if isinstance(result, LinearResult):
         return _linear_files(result, directory)
@@ -128,8 +156,9 @@ def model_files(result: RunResult, directory: Path) -> list[Path]:
         return _equilibrium_files(result, details, directory)
     if isinstance(details, DynamicDetails):
         return _dynamic_files(result, details, directory)
-    if isinstance(details, RollerDetails) and isinstance(details.solution, Solution):
-        return _roller_files(details.solution, directory)
+    solution = _roller_solution(result)
+    if solution is not None:
+        return _roller_files(solution, directory, sweep)
     return []
 
 
@@ -203,11 +232,26 @@ def _dynamic_files(result: RunResult, details: DynamicDetails, directory: Path) 
     return [spectrum_csv, *plotting.plot_dynamic_figures(result, directory)]
 
 
-def _roller_files(sol: Solution, directory: Path) -> list[Path]:
+def _order_sweep(sol: Solution) -> OrderSweep:
+    """The order sweep of the rigid model's files (:func:`_roller_files`).
+
+    One revolution of the turning ring at the run's angular step (at most 720 angles) and
+    1 µm on each part, orders 2 … 3Z.
+    """
+    from runout.models.roller_constraint import order_sweep, rotation_angles
+
+    step = float(np.median(np.diff(sol.alpha))) if sol.alpha.size > 1 else math.radians(0.25)
+    n1 = int(min(720, max(64, round(2.0 * math.pi / step)))) + 1
+    return order_sweep(sol.geometry, rotation_angles(1.0, n1))
+
+
+def _roller_files(
+    sol: Solution, directory: Path, sweep: Future[OrderSweep] | None = None
+) -> list[Path]:
     """``contacts.csv``, ``order_sweep.csv`` and the rigid model's plots.
 
-    The order sweep uses one revolution of the turning ring at the run's angular step (at most
-    720 angles) and 1 µm on each part, orders 2 … 3Z.
+    The order sweep is :func:`_order_sweep`'s, computed here unless ``sweep`` is already
+    computing it (on another thread, while the standard figures are drawn).
     """
     directory.mkdir(parents=True, exist_ok=True)
     written: list[Path] = []
@@ -233,10 +277,8 @@ def _roller_files(sol: Solution, directory: Path) -> list[Path]:
                 ]
             )
     written.append(path)
-    step = float(np.median(np.diff(sol.alpha))) if sol.alpha.size > 1 else math.radians(0.25)
-    n1 = int(min(720, max(64, round(2.0 * math.pi / step)))) + 1
-    sweep = order_sweep(sol.geometry, rotation_angles(1.0, n1))
-    written.append(_write_order_sweep(sweep, directory / "order_sweep.csv"))
+    swept = _order_sweep(sol) if sweep is None else sweep.result()
+    written.append(_write_order_sweep(swept, directory / "order_sweep.csv"))
     angle_deg = np.degrees(sol.alpha)
     written.append(
         plotting.save_figure(
@@ -253,12 +295,12 @@ def _roller_files(sol: Solution, directory: Path) -> list[Path]:
     written.append(
         plotting.save_figure(
             plotting.plot_order_sweep(
-                sweep.orders,
-                sweep.runout,
-                sweep.parts,
-                sweep.baseline,
-                sweep.n_elements,
-                solved=sweep.solved,
+                swept.orders,
+                swept.runout,
+                swept.parts,
+                swept.baseline,
+                swept.n_elements,
+                solved=swept.solved,
             ),
             directory / "order_sweep.png",
         )

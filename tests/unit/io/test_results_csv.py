@@ -48,3 +48,34 @@ def test_chunks_and_special_values(tmp_path: Path, monkeypatch) -> None:
     _reference(tmp_path / "a.csv", ["t", "x", "y", "z"], cols)
     write_columns(tmp_path / "b.csv", ["t", "x", "y", "z"], cols)
     assert (tmp_path / "a.csv").read_bytes() == (tmp_path / "b.csv").read_bytes()
+
+
+any_floats = st.floats(width=64)  # NaN, inf and -0.0 included
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    data=arrays(np.float64, st.tuples(st.integers(0, 40), st.integers(1, 5)), elements=any_floats)
+)
+def test_python_formatting_gives_the_compiled_bytes(data: np.ndarray) -> None:
+    """The two formatters of ``write_columns`` (Python for a short record written before numba
+    is loaded, compiled otherwise) write the same bytes."""
+    from runout.base._csvfmt import format_rows
+
+    assert result_files._format_rows_python(data) == format_rows(data)
+
+
+def test_a_short_record_without_numba_is_formatted_by_python(tmp_path: Path, monkeypatch) -> None:
+    import sys
+
+    calls = []
+    python = result_files._format_rows_python
+    monkeypatch.setattr(
+        result_files, "_format_rows_python", lambda b: calls.append(b.shape) or python(b)
+    )
+    monkeypatch.delitem(sys.modules, "numba", raising=False)
+    cols = [np.arange(10) * 1e-3, np.full(10, -2.5e-9)]
+    write_columns(tmp_path / "a.csv", ["time_s", "x_m"], cols)
+    _reference(tmp_path / "b.csv", ["time_s", "x_m"], cols)
+    assert calls == [(10, 2)]
+    assert (tmp_path / "a.csv").read_bytes() == (tmp_path / "b.csv").read_bytes()

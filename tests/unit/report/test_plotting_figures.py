@@ -16,6 +16,9 @@ from typing import Any
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from matplotlib.text import Text
 from typer.testing import CliRunner
 
 from cases import KIM_BEARING, KIM_OPERATION, dynamic_case
@@ -134,6 +137,51 @@ def test_label_placement_drops_labels_without_room() -> None:
     placed = len(ax.texts)
     assert placed + dropped == 20 and 0 < placed < 20
     assert figure_problems(fig) == []  # the placed ones overlap nothing
+    plt.close(fig)
+
+
+@settings(max_examples=25, deadline=None)
+@given(
+    points=st.lists(
+        st.tuples(
+            st.floats(0.0, 1.0),
+            st.floats(0.0, 1.0),
+            st.text("abcdefghij ()0123456789:/", min_size=1, max_size=24),
+        ),
+        min_size=1,
+        max_size=12,
+    ),
+    log=st.booleans(),
+)
+def test_placed_labels_are_where_they_were_checked(points: list[Any], log: bool) -> None:
+    """A label's box at each offset is computed from one measurement (moved by the offset and
+    alignment): the drawn labels must lie inside the axes and clear of each other and the
+    legend, as the placement checked them."""
+    plt = plotting.pyplot()
+    fig, ax = plt.subplots(figsize=(5, 3))
+    ax.plot([0.0, 1.0], [1e-3 if log else 0.0, 1.0], label="curve")
+    if log:
+        ax.set_yscale("log")
+        points = [(x, max(y, 1e-3), t) for x, y, t in points]
+    ax.set_xlim(0.0, 1.0)
+    ax.set_ylim(1e-3 if log else 0.0, 1.0)
+    ax.legend(loc="upper left")
+    fig.tight_layout()
+    dropped = plotting.place_labels(ax, points)
+    labels = [t for t in ax.texts if t.get_text()]
+    assert len(labels) + dropped == len(points)
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    frame = ax.get_window_extent(renderer)
+    boxes = [Text.get_window_extent(t, renderer) for t in labels]
+    legend = ax.get_legend().get_window_extent(renderer)
+    for k, box in enumerate(boxes):
+        assert frame.x0 - 0.01 <= box.x0 and box.x1 <= frame.x1 + 0.01
+        assert frame.y0 - 0.01 <= box.y0 and box.y1 <= frame.y1 + 0.01
+        for other in [legend, *boxes[:k]]:
+            overlap_x = min(box.x1, other.x1) - max(box.x0, other.x0)
+            overlap_y = min(box.y1, other.y1) - max(box.y0, other.y0)
+            assert not (overlap_x > 0.51 and overlap_y > 0.51), (box, other)
     plt.close(fig)
 
 
