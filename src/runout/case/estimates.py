@@ -422,7 +422,14 @@ def batched_sample_bytes(case: Any) -> float:
 
 
 def study_threads() -> int:
-    """Threads a batched Monte Carlo runs on in this process (Numba's, as the study uses)."""
+    """Threads a batched Monte Carlo runs on in this process (Numba's, as the study uses).
+
+    Returns
+    -------
+    int
+        ``NUMBA_NUM_THREADS`` where set to a positive integer (at most the cores), else the
+        cores of the machine.
+    """
     limit = os.environ.get("NUMBA_NUM_THREADS", "").strip()
     cores = os.cpu_count() or 1
     return max(1, min(cores, int(limit))) if limit.isdigit() and int(limit) > 0 else cores

@@ -51,8 +51,15 @@ def statistics(values: ArrayLikeF, bins: int = 20) -> dict[str, Any]:
     # values equal to round-off (a line no swept quantity changes, e.g. a spindle's in-phase
     # translation) cannot be cut into finite-size bins: one bin holds them
     spread = float(v.max() - v.min())
-    equal = 0.0 < spread <= 1e-10 * float(np.abs(v).max())  # (all equal: numpy widens)
-    counts, edges = np.histogram(v, bins=1 if equal else bins)
+    scale = float(np.abs(v).max())
+    equal = 0.0 < spread <= 1e-10 * scale
+    if spread == 0.0:
+        # all equal: numpy's own ±0.5 around them, widened where 0.5 is below the values'
+        # resolution (above ~1e14 it cannot make finite bins; a tampered chunk can hold that)
+        half = max(0.5, 1e-10 * scale)
+        counts, edges = np.histogram(v, bins=bins, range=(v[0] - half, v[0] + half))
+    else:
+        counts, edges = np.histogram(v, bins=1 if equal else bins)
     return {
         "mean": float(np.mean(v)),
         "std": std,

@@ -103,9 +103,19 @@ UP_FACTOR = 1e4
 
 
 class SearchError(StudyError):
-    """A search that cannot allocate: ``reason`` is ``"unreachable"`` (the target is missed at
-    zero tolerance), ``"unlimited"`` (met at every tolerance tried) or ``"failed"`` (a study
-    whose every sample failed, or the studies ran out); ``value`` [SI] where it happened."""
+    """A search that cannot allocate.
+
+    Parameters
+    ----------
+    reason : str
+        ``"unreachable"`` (the target is missed at zero tolerance), ``"unlimited"`` (met at
+        every tolerance tried) or ``"failed"`` (a study whose every sample failed, or the
+        studies ran out).
+    value : float
+        The tolerance where it happened [SI unit of the key].
+    message : str
+        The text of the error.
+    """
 
     def __init__(self, reason: str, value: float, message: str) -> None:
         super().__init__(message)
@@ -144,7 +154,17 @@ class Tolerance:
 
 @dataclass(frozen=True)
 class Evaluation:
-    """One study of the search: the tolerance [SI] and the lot's passes of ``samples``."""
+    """One study of the search.
+
+    Attributes
+    ----------
+    value : float
+        The tolerance studied [SI unit of the key].
+    passed : int
+        Bearings within the limit.
+    samples : int
+        Bearings whose model ran.
+    """
 
     value: float
     passed: int
@@ -423,7 +443,14 @@ class Allocation:
     notes: list[str]
 
     def to_json(self) -> dict[str, Any]:
-        """The ``allocated`` JSON object of ``runout study --allocate`` (docs/studies.md)."""
+        """The ``allocated`` JSON object of ``runout study --allocate`` (docs/studies.md).
+
+        Returns
+        -------
+        dict
+            The allocated value under ``<key>_<unit>``, its yield and interval, the search's
+            studies, resolution and notes.
+        """
         lot = self.result.lot_yield()
         t = self.tolerance
         return {

@@ -120,7 +120,13 @@ class ArrangementStudy:
     random_values: NDArray[np.float64]
 
     def to_json(self) -> dict[str, Any]:
-        """The JSON object (docs/studies.md, "Ball arrangement")."""
+        """The JSON object (docs/studies.md, "Ball arrangement").
+
+        Returns
+        -------
+        dict
+            ``kind``, ``lot``, ``minimise``, ``arrangement``, ``check``, ``random``, ``notes``.
+        """
         return self.document
 
 

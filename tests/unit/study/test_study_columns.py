@@ -14,6 +14,7 @@ from cases import kim_case
 from runout.case.model import Case
 from runout.io.study_columns import element_column, identifier, line_column
 from runout.study import run as st_mod
+from runout.study._result import statistics
 from runout.study.run import Quantity, StudyResult
 
 IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
@@ -113,3 +114,15 @@ def test_digest_of_a_case_given_by_its_angle_is_new() -> None:
 
     by_angle = parse_case(data, "angle.toml")
     assert st_mod._plan(by_angle, None).digest != _old_digest(by_angle)
+
+
+def test_statistics_of_equal_values_beyond_half_a_unit_of_resolution() -> None:
+    """All samples equal at a magnitude where numpy's ±0.5 cannot make finite bins (a value a
+    tampered chunk can hold, tests/property/test_reading_fuzz.py): a histogram, no error; and
+    numpy's own bins wherever it can make them."""
+    big = statistics([2.0**48, 2.0**48])
+    assert sum(big["histogram"]["counts"]) == 2
+    assert big["histogram"]["edges"][0] < 2.0**48 < big["histogram"]["edges"][-1]
+    small = statistics([3e-7])
+    _, edges = np.histogram(np.array([3e-7]), bins=20)
+    assert small["histogram"]["edges"] == [float(e) for e in edges]
