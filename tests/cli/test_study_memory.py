@@ -8,10 +8,10 @@ command line and its peak memory measured by a fresh parent process.
 
 from __future__ import annotations
 
-import subprocess
 import sys
 from pathlib import Path
 
+from peak_memory import peak_rss
 from runout.case.estimates import estimate_run, estimate_study
 from runout.case.model import load_case
 
@@ -19,19 +19,6 @@ EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "seed001_kim_table9
 #: Peak memory of the command before any study array: Python, NumPy, numba, SciPy, pint,
 #: pydantic and the compiled kernels (measured ~250 MB), with margin.
 BASELINE = 400 * 2**20
-
-
-def _peak_rss(cmd: list[str]) -> float:
-    """Peak resident memory of one command [B] (ru_maxrss of its own fresh parent, in KiB)."""
-    probe = (
-        "import resource, subprocess, sys; "
-        "subprocess.run(sys.argv[1:], check=True, capture_output=True); "
-        "print(resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)"
-    )
-    done = subprocess.run(
-        [sys.executable, "-c", probe, *cmd], check=True, capture_output=True, text=True
-    )
-    return 1024.0 * float(done.stdout.strip())
 
 
 def test_batched_monte_carlo_stays_within_its_estimate(tmp_path: Path) -> None:
@@ -45,7 +32,7 @@ def test_batched_monte_carlo_stays_within_its_estimate(tmp_path: Path) -> None:
     case = load_case(case_path)
     assert case.analysis.samples == 131072 and case.study.samples == 250
     estimate = estimate_study(case, estimate_run(case, case.analysis.model))
-    peak = _peak_rss(
+    peak = peak_rss(
         [sys.executable, "-m", "runout.cli", "study", str(case_path), "--out", str(tmp_path / "o")]
     )
     assert peak <= BASELINE + estimate.memory, (peak / 2**20, estimate.memory / 2**20)

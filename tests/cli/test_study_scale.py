@@ -14,6 +14,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+from peak_memory import peak_rss
 from runout.case.estimates import batched_sample_bytes
 from runout.case.model import load_case
 
@@ -38,19 +39,6 @@ def lot(tmp_path: Path, samples: int, instants: int | None = None) -> Path:
     return path
 
 
-def _peak_rss(cmd: list[str]) -> float:
-    """Peak resident memory of one command [B] (ru_maxrss of its own fresh parent, in KiB)."""
-    probe = (
-        "import resource, subprocess, sys; "
-        "subprocess.run(sys.argv[1:], check=True, capture_output=True); "
-        "print(resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)"
-    )
-    done = subprocess.run(
-        [sys.executable, "-c", probe, *cmd], check=True, capture_output=True, text=True
-    )
-    return 1024.0 * float(done.stdout.strip())
-
-
 def test_a_million_bearings_are_within_the_default_budget(tmp_path: Path) -> None:
     path = lot(tmp_path, 1_000_000)
     assert load_case(path).study.samples == 1_000_000
@@ -70,7 +58,7 @@ def test_memory_of_a_lot_grows_by_its_columns_not_by_objects_per_sample(
         path = lot(tmp_path, samples, instants=64)
         out = tmp_path / f"o{samples}"
         cmd = [sys.executable, "-m", "runout.cli", "study", str(path), "--out", str(out)]
-        peaks[samples] = _peak_rss(cmd)
+        peaks[samples] = peak_rss(cmd)
         with (out / "samples.csv").open() as fh:
             columns = len(fh.readline().split(","))
             assert sum(1 for _ in fh) == samples
