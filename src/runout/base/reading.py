@@ -424,7 +424,11 @@ _WORDS = {
 
 
 def check_shape(doc: Any, shape: Any, name: str, key: str = "") -> None:
-    """Check that ``doc`` has ``shape`` (see :data:`SHAPE_TYPES`); ``null`` always passes.
+    """Check that ``doc`` has ``shape`` (see :data:`SHAPE_TYPES`).
+
+    ``null`` passes for a value (an absent or undefined number, string or object), but not as
+    an element of an array of objects: the files written hold none there, and a reader would
+    take it for an object.
 
     Parameters
     ----------
@@ -457,6 +461,10 @@ def check_shape(doc: Any, shape: Any, name: str, key: str = "") -> None:
         elif isinstance(want, list):
             if not isinstance(value, list):
                 raise _mismatch(name, where, value, "an array")
+            if isinstance(want[0], dict):
+                for i, item in enumerate(value):
+                    if item is None:
+                        raise _mismatch(name, f"{where}[{i}]", item, "an object")
             stack.extend(
                 (value[i], want[0], f"{where}[{i}]") for i in range(len(value) - 1, -1, -1)
             )
@@ -467,9 +475,8 @@ def check_shape(doc: Any, shape: Any, name: str, key: str = "") -> None:
 
 
 def _mismatch(name: str, key: str, value: Any, expected: str) -> InputFileError:
-    found = {dict: "an object", list: "an array", str: "a string", bool: "true or false"}.get(
-        type(value), "a number"
-    )
+    kinds = {dict: "an object", list: "an array", str: "a string", bool: "true or false"}
+    found = "null" if value is None else kinds.get(type(value), "a number")
     return InputFileError(
         name, key or "(the document)", f"expected {expected}, found {found} (an edited file?)"
     )

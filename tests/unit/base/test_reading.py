@@ -87,3 +87,13 @@ def test_a_link_out_of_the_directory_and_a_loop_are_refused(tmp_path: Path) -> N
     assert read_bytes(inside / "link.json", 100, [inside]) == b"{}"  # a link inside is fine
     with pytest.raises(InputFileError, match="larger than"):
         read_bytes(inside / "ok.json", 1, [inside])
+
+
+def test_null_in_an_array_of_objects_is_refused_naming_it() -> None:
+    """A run directory's result.json with ``"components": [null, ...]`` crashed `runout report`
+    (found by tests/property/test_reading_fuzz.py); a null number stays allowed."""
+    shape = {"components": [{"pp_m": "number"}], "values": ["number"]}
+    check_shape({"components": [{"pp_m": None}], "values": [1.0, None]}, shape, "result.json")
+    with pytest.raises(InputFileError) as info:
+        check_shape({"components": [{"pp_m": 1.0}, None]}, shape, "result.json")
+    assert "components[1]" in str(info.value) and "found null" in str(info.value)
