@@ -48,6 +48,7 @@ __all__ = [
     "N_CONST",
     "N_STATE",
     "STATE_NAMES",
+    "ball_table",
     "constants",
     "ring_forces",
 ]
@@ -795,6 +796,26 @@ def _restart_balls(
 # --------------------------------------------------------------------------------------------
 # ring force and stiffness
 # --------------------------------------------------------------------------------------------
+def ball_table(*rows: FloatArray) -> FloatArray:
+    """The kernels' ball table (8, Z): ki0, ki1, ai_c, ko0, ko1, ao_c, cos ψ, sin ψ.
+
+    Parameters
+    ----------
+    *rows : ndarray, shape (Z,)
+        The Hertz constants K = k0 + k1 (α − α_c) of the inner and outer contacts
+        [N/m^1.5, N/m^1.5/rad, rad] and the ball azimuths' cosine and sine, in the order of
+        the rows ``B_*``.
+
+    Returns
+    -------
+    ndarray, shape (8, Z)
+        C-contiguous float64.
+    """
+    if len(rows) != N_BALL_ROWS:
+        raise ValueError(f"ball_table takes {N_BALL_ROWS} rows, got {len(rows)}")
+    return np.ascontiguousarray(np.stack(rows), dtype=np.float64)
+
+
 def ring_forces(
     q: FloatArray,
     cos_psi: FloatArray,
@@ -872,9 +893,7 @@ def ring_forces(
         :data:`OK`, or :data:`BALLS_DID_NOT_CONVERGE`.
     """
     z = cos_psi.size
-    balls = np.empty((N_BALL_ROWS, z))  # the ball table, rows B_*
-    for row, values in enumerate((ki0, ki1, ai_c, ko0, ko1, ao_c, cos_psi, sin_psi)):
-        balls[row] = values
+    balls = ball_table(ki0, ki1, ai_c, ko0, ko1, ao_c, cos_psi, sin_psi)
     a = np.empty((z, 2))
     x_star = np.empty((z, 2))
     done = np.empty(z, dtype=np.bool_)

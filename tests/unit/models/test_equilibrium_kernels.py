@@ -558,26 +558,9 @@ def test_ball_state_derivatives_equal_complex_step(name: str) -> None:
 
 
 def _ball_table(ring: eq._Ring) -> NDArray[np.float64]:
-    """The kernels' ball table (rows B_*: Hertz constants, azimuths)."""
+    """The kernels' ball table of ``ring`` (rows B_*: Hertz constants, azimuths)."""
     p = ring.p
-    rows = (p.ki0, p.ki1, p.ai_c, p.ko0, p.ko1, p.ao_c, ring.cos_psi, ring.sin_psi)
-    table = np.empty((kern.N_BALL_ROWS, p.ki0.size))
-    for row, values in zip(
-        (
-            kern.B_KI0,
-            kern.B_KI1,
-            kern.B_AI_C,
-            kern.B_KO0,
-            kern.B_KO1,
-            kern.B_AO_C,
-            kern.B_COS,
-            kern.B_SIN,
-        ),
-        rows,
-        strict=True,
-    ):
-        table[row] = values
-    return table
+    return kern.ball_table(p.ki0, p.ki1, p.ai_c, p.ko0, p.ko1, p.ao_c, ring.cos_psi, ring.sin_psi)
 
 
 @pytest.mark.parametrize("name", ["kim_7200rpm", "lifted_off", "near_lift_off_inner_control"])

@@ -65,13 +65,16 @@ def test_two_labels_with_one_name_are_numbered_by_key_not_by_size() -> None:
         assert list(described["units"]) == [n for n, _ in result(*pair).columns()]
 
 
+#: [study] keys added since the digests of earlier versions (allocation, arrangement): those
+#: versions had none of them
+ADDED_STUDY_KEYS = {"allocate", "target_yield", "lot", "minimise", "line", "band", "random_orders"}
+
+
 def _old_digest(case: Case) -> str:
     """The digest earlier versions wrote into manifest.json (a case without profiles)."""
     assert case.study is not None
     data = case.spec.model_dump(mode="python", exclude_none=True, exclude={"study"})
-    # [study] keys added since (allocation, arrangement): earlier versions had none of them
-    added = {"allocate", "target_yield", "lot", "minimise", "line", "band", "random_orders"}
-    doc = {"case": data, "study": case.study.model_dump(mode="json", exclude=added)}
+    doc = {"case": data, "study": case.study.model_dump(mode="json", exclude=ADDED_STUDY_KEYS)}
     return hashlib.sha256(json.dumps(doc, sort_keys=True, default=str).encode()).hexdigest()
 
 
@@ -94,8 +97,7 @@ def test_digest_of_a_monte_carlo_names_its_sampling() -> None:
         study={"kind": "montecarlo", "samples": 4, "vary": {"element_diameter_sigma": "0.1 um"}}
     )
     data = case.spec.model_dump(mode="python", exclude_none=True, exclude={"study"})
-    added = {"allocate", "target_yield", "lot", "minimise", "line", "band", "random_orders"}
-    study = case.study.model_dump(mode="json", exclude=added)
+    study = case.study.model_dump(mode="json", exclude=ADDED_STUDY_KEYS)
     doc = {"case": data, "study": study, "sampling": 2}
     digest = hashlib.sha256(json.dumps(doc, sort_keys=True, default=str).encode()).hexdigest()
     assert st_mod._plan(case, None).digest == digest != _old_digest(case)
