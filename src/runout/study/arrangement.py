@@ -291,6 +291,11 @@ def optimise_arrangement(
     # random assembly baseline
     picks = np.argsort(rng.random((random_trials, n)), axis=1)[:, :z]
     rand = _objective(d[picks], f[picks], p, objective)
+    lucky = int(np.argmin(rand))
+    if not exact and rand[lucky] < found[0][1]:
+        # the local search is no proof: a random assembly it lost to is the better answer
+        candidate = (tuple(int(b) for b in picks[lucky]), float(rand[lucky]))
+        found = sorted([candidate, *found], key=lambda c: c[1])
     best = found[0][0]
     verified = None
     if case is not None:
