@@ -857,9 +857,13 @@ class _Assembly:
             # None in a chunk file (a failed sample, a figure the model lacks) is NaN
             self.runout[k][s:e] = np.asarray(chunk["runout"][k], dtype=np.float64)
         for place, (key, entry) in enumerate(chunk["lines"].items()):
-            if key not in self.lines:
-                self.lines[key] = (entry["frequency_hz"], np.zeros(self.plan.total))
-            self.first[key] = min(self.first.get(key, (index, place)), (index, place))
+            here = (index, place)
+            if key not in self.lines or here < self.first[key]:
+                # the line's frequency is that of its first chunk, whichever chunk finishes
+                # first: the files are the same for any worker count and scheduler
+                column = self.lines[key][1] if key in self.lines else np.zeros(self.plan.total)
+                self.lines[key] = (entry["frequency_hz"], column)
+                self.first[key] = here
             self.lines[key][1][s:e] = entry["pp_m"]
         self.errors.update({int(k): v for k, v in chunk["errors"].items()})
         self.stiffness.update({int(k): v for k, v in chunk.get("stiffness", {}).items()})
