@@ -16,11 +16,14 @@ half the time of the complex arithmetic this kernel used before.
 
 Compilation time (a model's first run on an empty cache, some 3 s on the 2-core machine):
 one entry point per run (:func:`_balls`, which ends with :func:`_ring_jacobian`); the
-restarts (:func:`_restart_balls`) compile only in a run that needs them; helpers with one
-calling kernel are ``register_jitable`` (compiled into it, no Python or C entry points of
-their own), helpers shared by two stay ``njit`` (compiled once). Each compiled function costs
-some 40 ms however small, so small helpers (``max``/``min`` of two floats, the residual and
-its Jacobian) are written out where they are used.
+restarts (:func:`_restart_balls`) compile only in a run that needs them. The ball Newton,
+the ring Jacobian and the lift-off test are inlined into :func:`_balls` at numba's IR level
+(``inline="always"``): as functions of their own (``register_jitable``) they cost some
+0.13 s of first-run compilation each, measured, for their own typing pass, module and LLVM
+optimisation. Small scalar helpers stay ``register_jitable`` (inlining them measured no
+better), and :func:`_ball_state`, called six times, stays ``njit`` (compiled once). Tiny
+helpers (``max``/``min`` of two floats, the residual and its Jacobian) are written out where
+they are used.
 
 The kernels take C-contiguous float64 arrays and plain scalars, are compiled with
 ``cache=True`` and without ``fastmath``. The constants of the bearing travel in one float64
@@ -351,7 +354,7 @@ def _ball_state(
 # --------------------------------------------------------------------------------------------
 # ball equilibrium
 # --------------------------------------------------------------------------------------------
-@register_jitable(no_cfunc_wrapper=True)
+@kernel(inline="always")  # into _balls, _restart_balls and _friction_continuation
 def _ball_newton(
     xs: FloatArray,
     aa: FloatArray,
@@ -441,8 +444,7 @@ def _ball_newton(
             break
 
 
-# inlined into _balls, its one caller (tests call it too)
-@kernel(inline="always")
+@kernel(inline="always")  # into _balls, its one caller (tests call it too)
 def _lifted_off(
     a: FloatArray,
     balls: FloatArray,
@@ -655,9 +657,9 @@ def _balls(
     in ``x`` (Z, 2) from its current value (or the Hertz split without ``have_x``).
 
     ``balls`` is the ball table (rows ``B_*``: Hertz constants and azimuths). The lift-off
-    test is inlined here, and the Jacobian of the ball residual into the ball Newton (their
-    one call each): compiled on their own they would also build Python and C entry points for
-    their arguments, first-run compilation time for nothing. For the same reason each array
+    test, the ball Newton and the ring Jacobian are inlined here (their one call each in a
+    run that needs no restart): compiled on their own they cost first-run compilation time
+    for nothing (module Notes). For the same reason each array
     element is read or written once where the code allows (every source-level access compiles
     its own indexing code) and the loops over the balls are merged where their order allows.
 
@@ -911,7 +913,7 @@ def ring_forces(
     return OK
 
 
-@register_jitable(no_cfunc_wrapper=True)  # into _balls and _restart_balls (see _balls)
+@kernel(inline="always")  # into _balls and _restart_balls (see _balls)
 def _ring_jacobian(
     a: FloatArray,
     x: FloatArray,
