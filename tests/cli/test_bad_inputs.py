@@ -271,3 +271,22 @@ def test_an_emoji_code_in_a_value_is_printed_as_text(tmp_path: Path) -> None:
     code, stderr = _run(tmp_path, _replace('speed = "1800 rpm"', 'speed = "1 :x:"'))
     assert code == 2
     assert '"1 :x:"' in stderr
+
+
+def test_revolutions_beyond_what_the_models_resolve_are_refused(tmp_path: Path) -> None:
+    """Found by the case fuzz test: ``revolutions = 2.2250738585e-313`` made a time step below
+    the normal floats and ended in an internal error (exit 70), 1e-308 as well, and 1e308 was
+    refused by the roller model after ``check`` had passed it. The key now has bounds, and the
+    shortest record it allows runs (no synchronous average under two revolutions)."""
+    spectrum = '[[waviness_spectrum]]\npart = "inner"\norders = [2, 10]\namplitude = "1 nm"\n'
+    for revolutions, bound in (("2.2250738585e-313", ">= 1e-06"), ("1e308", "<= 1000000000.0")):
+        text = VALID + f'[analysis]\nmodel = "linear"\nsamples = 64\nrevolutions = {revolutions}\n'
+        code, stderr = _run(tmp_path, text + spectrum)
+        assert code == 2 and len(stderr.splitlines()) == 1, stderr
+        assert f"analysis.revolutions: must be {bound}" in stderr
+    path = tmp_path / "case.toml"
+    path.write_text(VALID + "[analysis]\nsamples = 64\nrevolutions = 1e-6\n" + spectrum)
+    for model in ("linear", "quasi_static_2d"):
+        result = runner.invoke(app, ["run", str(path), "--json", "--model", model])
+        assert result.exit_code == 0, result.stderr
+        assert "NaN" not in result.stdout and "Infinity" not in result.stdout

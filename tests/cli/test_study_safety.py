@@ -11,6 +11,7 @@ typer's CliRunner on ``runout.cli.commands:app``.
 from __future__ import annotations
 
 import json
+import math
 import os
 import shutil
 import signal
@@ -204,6 +205,118 @@ def test_swapped_chunk_from_another_study_is_recomputed(tmp_path: Path) -> None:
     assert tree(mine) == tree(fresh)
     chunk = json.loads((mine / "chunks" / "chunk_00000.json").read_text())
     assert chunk["digest"] == json.loads((mine / "manifest.json").read_text())["digest"]
+
+
+def test_resume_takes_the_chunks_the_manifest_has_not_listed_yet(tmp_path: Path) -> None:
+    """The manifest is rewritten at most once a second: after a kill it may lag the chunk
+    files; a resume takes every valid chunk on disk, recomputes none, and ends the same."""
+    out, fresh = tmp_path / "out", tmp_path / "fresh"
+    case = write_case(tmp_path)
+    assert invoke("study", str(case), "--out", str(out)).exit_code == 0
+    assert invoke("study", str(case), "--out", str(fresh)).exit_code == 0
+    manifest = _manifest(out)
+    (out / "manifest.json").write_text(json.dumps({**manifest, "done": [0], "complete": False}))
+    (out / "summary.json").unlink()
+    stamps = {p.name: p.stat().st_mtime_ns for p in (out / "chunks").iterdir()}
+    result = invoke("study", str(case), "--out", str(out), "--resume")
+    assert result.exit_code == 0, (result.stderr, result.exception)
+    assert "recomputing" not in result.stderr
+    assert {p.name: p.stat().st_mtime_ns for p in (out / "chunks").iterdir()} == stamps
+    assert tree(out) == tree(fresh)
+
+
+def test_a_chunk_size_chosen_from_the_cost_gives_the_same_numbers(tmp_path: Path) -> None:
+    """Without ``chunk_size`` the study chooses it from the estimated cost of a sample (at
+    least four chunks per thread or worker here); its numbers are those of any chunk size, and
+    a resume with another worker count continues with the size the run chose."""
+    from runout.case import estimates
+    from runout.case.model import load_case
+
+    given = write_case(tmp_path, samples=48, chunk=5, name="given.toml")
+    text = given.read_text().replace("chunk_size = 5\n", "")
+    chosen = tmp_path / "chosen.toml"
+    chosen.write_text(text)
+    assert invoke("study", str(given), "--out", str(tmp_path / "a")).exit_code == 0
+    result = invoke("study", str(chosen), "--out", str(tmp_path / "b"))
+    assert result.exit_code == 0, (result.stderr, result.exception)
+    size = _manifest(tmp_path / "b")["chunk_size"]
+    threads = estimates.study_threads() if estimates.batched_study(load_case(chosen)) else 1
+    assert size == estimates.study_chunk_size(load_case(chosen), threads)
+    assert 1 <= size <= -(-48 // (estimates.CHUNKS_PER_WORKER * threads))
+    summary = "summary.json"
+    assert (tmp_path / "a" / summary).read_bytes() == (tmp_path / "b" / summary).read_bytes()
+    manifest = _manifest(tmp_path / "b")
+    (tmp_path / "b" / "manifest.json").write_text(
+        json.dumps({**manifest, "done": [0], "complete": False})
+    )
+    for extra in sorted((tmp_path / "b" / "chunks").iterdir())[1:]:
+        extra.unlink()
+    again = invoke("study", str(chosen), "--out", str(tmp_path / "b"), "--resume", "--workers", "2")
+    assert again.exit_code == 0, (again.stderr, again.exception)
+    assert _manifest(tmp_path / "b")["chunk_size"] == size
+    assert (tmp_path / "a" / summary).read_bytes() == (tmp_path / "b" / summary).read_bytes()
+
+
+def test_chosen_chunk_sizes_follow_the_cost_within_their_bounds() -> None:
+    """About CHUNK_SECONDS of estimated work per chunk, CHUNKS_PER_WORKER chunks per worker
+    at least, MAX_CHOSEN_CHUNK samples at most: each bound binds in one of these cases."""
+    import tomllib
+
+    from runout.case import estimates
+    from runout.case.model import parse_case
+
+    def case(samples: int, instants: int, batched: bool = False) -> Any:
+        text = CASE.format(samples=samples, chunk=1, seed=1).replace("chunk_size = 1\n", "")
+        if batched:  # the ball sizes alone: the batched Monte Carlo (microseconds a bearing)
+            text = text.replace(text[text.index('"operation.axial_load"') :], "")
+        text = text.replace("samples = 256", f"samples = {instants}")
+        budget = 'max_time = "1000 h"\n'  # estimated, never run
+        text = text.replace("revolutions = 4\n", "revolutions = 4\n" + budget)
+        return parse_case(tomllib.loads(text), "case.toml")
+
+    def expected(c: Any, workers: int) -> tuple[int, int, int]:
+        per = estimates.study_point_seconds(c)
+        points = estimates.study_points(c)
+        return (
+            math.ceil(estimates.CHUNK_SECONDS / per),
+            math.ceil(points / (estimates.CHUNKS_PER_WORKER * workers)),
+            estimates.MAX_CHOSEN_CHUNK,
+        )
+
+    for samples, instants, batched, workers, binding in (
+        (40, 4096, False, 2, 1),  # few samples: four chunks per worker
+        (100_000, 16, True, 1, 2),  # cheap samples: the largest chunk
+        (100_000, 256, False, 1, 0),  # costly samples: a quarter second of work
+    ):
+        c = case(samples, instants, batched)
+        assert estimates.batched_study(c) == batched
+        bounds = expected(c, workers)
+        assert estimates.study_chunk_size(c, workers) == min(bounds) == bounds[binding], bounds
+    assert estimates.study_chunk_size(case(40, 4096), 16) == 1
+
+
+def test_manifest_is_not_rewritten_after_every_chunk(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Rewriting the growing list of done chunks after each chunk is quadratic in the number
+    of chunks: written at the start, at most once a second, and at the end."""
+    import runout.study.run as study_run
+
+    writes: list[str] = []
+    real = study_run._write_text
+
+    def counting(path: Path, text: str) -> Path:
+        writes.append(path.name)
+        return real(path, text)
+
+    monkeypatch.setattr(study_run, "_write_text", counting)
+    monkeypatch.setattr(study_run, "MANIFEST_INTERVAL_S", 3600.0)
+    case = write_case(tmp_path, samples=40, chunk=1)
+    result = invoke("study", str(case), "--out", str(tmp_path / "out"))
+    assert result.exit_code == 0, (result.stderr, result.exception)
+    assert writes.count("manifest.json") == 2  # the start and the end
+    manifest = _manifest(tmp_path / "out")
+    assert manifest["done"] == list(range(40)) and manifest["complete"] is True
 
 
 @pytest.mark.parametrize(

@@ -843,9 +843,11 @@ def split_runout(
     if residual is not None and rotation_hz > 0 and synchronous:
         res = u[0] * residual[0] + u[1] * residual[1]
         n_rev = math.floor((time[-1] - time[0] + (time[1] - time[0])) * rotation_hz + 1e-9)
-        spr_f = 1.0 / (rotation_hz * (time[1] - time[0]))
-        spr = round(spr_f)
-        if n_rev >= 2 and abs(spr_f - spr) < 1e-6 * spr:
+        # samples per revolution, only where the record holds two (a record of a vanishing
+        # number of revolutions has a step of 0 or below the normal floats: no average)
+        spr_f = 1.0 / (rotation_hz * (time[1] - time[0])) if n_rev >= 2 else 0.0
+        spr = round(spr_f) if math.isfinite(spr_f) else 0
+        if n_rev >= 2 and spr > 0 and abs(spr_f - spr) < 1e-6 * spr:
             blocks = res[: n_rev * spr].reshape(n_rev, spr)
             avg = blocks.mean(axis=0)
             se = blocks.std(axis=0, ddof=1) / math.sqrt(n_rev)

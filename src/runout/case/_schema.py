@@ -553,7 +553,15 @@ class AnalysisSpec(_Table):
     ] = Field(
         "quasi_static_3d", description="Model id (docs/conventions.md: which keys each honours)."
     )
-    revolutions: float = Field(20.0, gt=0, description="Revolutions of the rotating ring.")
+    revolutions: float = Field(
+        20.0,
+        ge=1e-6,
+        le=1e9,
+        description=(
+            "Revolutions of the rotating ring, 10^-6 to 10^9 (a shorter record holds no motion "
+            "the models resolve; beyond, the ring angle's round-off exceeds a microradian)."
+        ),
+    )
     samples: int = Field(4096, ge=16, description="Number of instants.")
     max_memory: MemoryQ | None = Field(
         None,
@@ -833,8 +841,15 @@ class StudySpec(_Table):
     seed: int = Field(
         0, ge=0, description="Root seed: sample i draws from SeedSequence(seed, spawn_key=(i,))."
     )
-    chunk_size: int = Field(
-        250, ge=1, description="Samples per task and per result file (--out, --resume)."
+    chunk_size: int | None = Field(
+        None,
+        ge=1,
+        description=(
+            "Samples per task and per result file (--out, --resume). Default: chosen from the "
+            "estimated cost of a sample, about a quarter second of work per chunk, at least four "
+            "chunks per worker or thread, at most 2048 samples; the numbers do not depend "
+            "on it."
+        ),
     )
     models: (
         list[

@@ -36,6 +36,7 @@ from runout.case.limits import (
 __all__ = [
     "BYTES_PER_ROW_INSTANT",
     "COST_BATCH",
+    "LEGACY_CHUNK_SIZE",
     "PASS_BYTES",
     "STUDY_BYTES_PER_RUN",
     "Sizes",
@@ -46,6 +47,8 @@ __all__ = [
     "estimate_run",
     "estimate_study",
     "sizes_of",
+    "study_chunk_size",
+    "study_point_seconds",
     "study_points",
     "study_threads",
 ]
@@ -395,7 +398,9 @@ def batched_memory(case: Any, workers: int = 1) -> float:
         copies, concurrent = 1.0, float(max(2, os.cpu_count() or 1))
     else:
         copies, concurrent = 1.0 + 3.0 * workers, float(workers)
-    chunk = float(min(case.study.chunk_size, case.study.samples))
+    # a chosen chunk size is at most MAX_CHOSEN_CHUNK samples: the bound where none is given
+    given = case.study.chunk_size
+    chunk = float(min(MAX_CHOSEN_CHUNK if given is None else given, case.study.samples))
     one_pass = min(float(PASS_BYTES), max(1.0, chunk) * n * BYTES_PER_ROW_INSTANT)
     return copies * shared + concurrent * one_pass
 
@@ -473,6 +478,67 @@ def estimate_study(case: Any, per_run: ResourceEstimate) -> ResourceEstimate:
     seconds = points * each * seconds_per_thread
     what = f"{points} runs x about {format_seconds(each)} each{on}"
     return ResourceEstimate(memory, seconds, key, key, f"{points} runs", what)
+
+
+#: Work a chosen chunk aims at [s of CPU]: its fixed costs (a task, a chunk file, an entry in
+#: the manifest: milliseconds) stay small beside it, and progress and a resume lose little.
+CHUNK_SECONDS = 0.25
+#: Chunks per concurrent evaluation a chosen chunk size leaves at least, where the study has
+#: enough samples: the last chunks of the workers finish close together.
+CHUNKS_PER_WORKER = 4
+#: Largest chosen chunk [samples]: a chunk's file and its Python lists stay some megabytes.
+MAX_CHOSEN_CHUNK = 2_048
+#: Chunk size of earlier versions, where ``[study] chunk_size`` is not given and the size is
+#: not chosen (a study's digest keeps it: older output directories still resume).
+LEGACY_CHUNK_SIZE = 250
+
+
+def study_point_seconds(case: Any) -> float:
+    """Estimated CPU time of one point of a case's study on one thread [s].
+
+    Parameters
+    ----------
+    case : Case
+        A validated case with a ``[study]``.
+
+    Returns
+    -------
+    float
+        A batched ball-size Monte Carlo: :data:`COST_BATCH` per instant and ball; any other
+        study: one run of its costliest model (:func:`estimate_run`).
+    """
+    if batched_study(case):
+        return float(case.analysis.samples * case.bearing.elements * COST_BATCH)
+    models = list(case.study.models) if case.study.models else [case.analysis.model]
+    return max(estimate_run(case, m).seconds for m in models)
+
+
+def study_chunk_size(case: Any, concurrency: int) -> int:
+    """Samples per chunk of a study whose case and command line do not set it.
+
+    About :data:`CHUNK_SECONDS` of estimated work per chunk (:func:`study_point_seconds`),
+    but at least :data:`CHUNKS_PER_WORKER` chunks per concurrent evaluation where the study
+    has that many points, and at most :data:`MAX_CHOSEN_CHUNK` samples. The numbers of a
+    study do not depend on its chunk size (each sample's draws are its own), only its speed,
+    its memory in flight and the granularity of ``--resume``.
+
+    Parameters
+    ----------
+    case : Case
+        A validated case with a ``[study]``.
+    concurrency : int
+        Chunks evaluated at once (worker processes, or this process's threads).
+
+    Returns
+    -------
+    int
+        The chunk size [samples], at least 1.
+    """
+    points = max(1, study_points(case))
+    per_point = max(study_point_seconds(case), 1e-9)
+    size = math.ceil(CHUNK_SECONDS / per_point)
+    balanced = math.ceil(points / (CHUNKS_PER_WORKER * max(1, concurrency)))
+    return int(max(1, min(size, balanced, MAX_CHOSEN_CHUNK)))
 
 
 def check_limits(case: Any) -> None:

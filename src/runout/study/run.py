@@ -63,6 +63,7 @@ import math
 import os
 import re
 import threading
+import time
 from collections.abc import Callable, Iterable, Iterator
 from concurrent.futures import (
     FIRST_COMPLETED,
@@ -245,6 +246,10 @@ def _digest(
     if study.kind != "arrangement":
         unset |= set(ARRANGEMENT_KEYS)
     doc: dict[str, Any] = {"case": data, "study": study.model_dump(mode="json", exclude=unset)}
+    if study.chunk_size is None and "chunk_size" in doc["study"]:
+        # a chosen chunk size: earlier versions' default in the digest, so that their output
+        # directories still resume (the numbers do not depend on the chunk size)
+        doc["study"]["chunk_size"] = estimates.LEGACY_CHUNK_SIZE
     if given is not None and _by_catalogue_angle(given):
         doc["samples_built_from"] = "the keys the case gives"
     if files:  # studies without profiles keep the digest of earlier versions
@@ -292,7 +297,12 @@ class _Plan:
         }
 
 
-def _plan(case: Case, chunk_size: int | None, parallel: bool = False) -> _Plan:
+def _plan(
+    case: Case, chunk_size: int | None, parallel: bool = False, concurrency: int = 1
+) -> _Plan:
+    """The study's chunks: ``chunk_size``, else ``[study] chunk_size``, else a size chosen from
+    the estimated cost of a sample for ``concurrency`` chunks at once
+    (:func:`runout.case.estimates.study_chunk_size`)."""
     study = _study_of(case)
     data = _case_data(case)
     quantities = tuple(plan_quantities(case, data))
@@ -301,7 +311,7 @@ def _plan(case: Case, chunk_size: int | None, parallel: bool = False) -> _Plan:
         total = study.samples
     else:
         total = len(models) * math.prod(len(q.values) for q in quantities)
-    size = chunk_size or study.chunk_size
+    size = chunk_size or study.chunk_size or estimates.study_chunk_size(case, concurrency)
     n_chunks = max(1, math.ceil(total / size))
     base_dir = str(Path(case.path).resolve().parent) if case.path != "<case>" else os.getcwd()
     tasks = [
@@ -390,8 +400,13 @@ def run_study(
         (:func:`refuse_unbuildable`), before any sample runs and any file is written.
     """
     in_process = executor is None and workers <= 1
+    if chunk_size is None and case.study is not None and case.study.chunk_size is None:
+        chunk_size = _resumed_chunk_size(out, resume)
     plan = _plan(
-        case, chunk_size, in_process and threading.current_thread() is threading.main_thread()
+        case,
+        chunk_size,
+        in_process and threading.current_thread() is threading.main_thread(),
+        _concurrency(case, executor, workers),
     )
     from runout.case.conventions import enforce
 
@@ -423,6 +438,34 @@ def run_study(
         return _run(
             directory, case, plan, executor, workers, resume, force, progress, plots, notify
         )
+
+
+#: Chunks evaluated at once on an external executor (Dask), for a chosen chunk size: its
+#: workers are not known here; a cluster of other size sets ``--chunk-size``.
+EXTERNAL_CONCURRENCY = 16
+
+
+def _concurrency(case: Case, executor: Executor | None, workers: int) -> int:
+    """Chunks evaluated at once: worker processes, the threads of this process (a batched
+    Monte Carlo), or :data:`EXTERNAL_CONCURRENCY` on an external executor."""
+    if executor is not None:
+        return EXTERNAL_CONCURRENCY
+    if workers > 1:
+        return workers
+    return estimates.study_threads() if estimates.batched_study(case) else 1
+
+
+def _resumed_chunk_size(out: Path | str | None, resume: bool) -> int | None:
+    """The chunk size of the run ``--resume`` continues (a chosen size depends on the
+    workers and cores, which may differ now), or None: none to continue, or a manifest that
+    :func:`_prepare_directory` refuses (or replaces under ``--force``) with its reason."""
+    if not resume or out is None:
+        return None
+    try:
+        size = _read_manifest(Path(out) / "manifest.json")["chunk_size"]
+    except (StudyError, OSError):
+        return None
+    return int(size)
 
 
 #: Monte Carlo samples built before a study runs: when every one of them is refused for the
@@ -530,16 +573,23 @@ def _run(
     if progress is not None:
         progress(done_samples, plan.total)
     pending = [t for t in tasks if t.index not in done]
+    written_at = time.monotonic()
 
     def finished(index: int, chunk: dict[str, Any]) -> None:
-        nonlocal done_samples
+        nonlocal done_samples, written_at
         # the chunk names the case + study that wrote it: a resume accepts only its own
         chunk["digest"] = plan.digest
         done.add(index)
         if directory is not None:
             _write_text(_chunk_path(directory, index), _dumps(chunk_json(chunk)))
-            manifest["done"] = sorted(done)
-            _write_text(directory / "manifest.json", _dumps(manifest, indent=2))
+            # the manifest lists every chunk done: rewritten after each chunk it would cost
+            # time quadratic in the number of chunks; a resume also takes the valid chunk
+            # files the manifest has not listed yet (_prepare_directory)
+            now = time.monotonic()
+            if now - written_at >= MANIFEST_INTERVAL_S:
+                manifest["done"] = sorted(done)
+                _write_text(directory / "manifest.json", _dumps(manifest, indent=2))
+                written_at = now
         assembly.add(index, chunk)
         done_samples += tasks[index].stop - tasks[index].start
         if progress is not None:
@@ -548,6 +598,7 @@ def _run(
     _execute(pending, executor, workers, finished)
     result = assembly.result()
     if directory is not None:
+        manifest["done"] = sorted(done)
         manifest["complete"] = True
         _write_text(directory / "manifest.json", _dumps(manifest, indent=2))
         try:
@@ -557,6 +608,8 @@ def _run(
     return result
 
 
+#: Least time between two rewrites of ``manifest.json`` during a study [s] (and at its end).
+MANIFEST_INTERVAL_S = 1.0
 #: Chunks submitted ahead per worker of the process pool (the others wait in the parent, so
 #: that the pool's queue holds a few chunks' arrays, not the whole study's).
 AHEAD_PER_WORKER = 2
@@ -720,6 +773,25 @@ def _load_chunks(
     return done, bad
 
 
+def _recorded(directory: Path, manifest: dict[str, Any], plan: _Plan) -> list[int]:
+    """The chunks a resume takes: those ``manifest`` lists as done and every other chunk
+    file of the plan's names in ``directory/chunks`` (the manifest is rewritten at most once
+    a second, :data:`MANIFEST_INTERVAL_S`: the chunks finished since are on disk, each still
+    checked by :func:`_load_chunks`)."""
+    found = set(manifest["done"])
+    chunks_dir = directory / "chunks"
+    if chunks_dir.is_dir():
+        for path in chunks_dir.glob("chunk_*.json"):
+            name = _CHUNK_NAME.fullmatch(path.name)
+            index = -1 if name is None else int(name[1])
+            if 0 <= index < len(plan.tasks) and path.name == _chunk_path(directory, index).name:
+                found.add(index)
+    return sorted(found)
+
+
+_CHUNK_NAME = re.compile(r"chunk_(\d{5,})\.json")
+
+
 #: Files a study writes at the top of its output directory (replaced by a fresh run).
 _STUDY_FILES = re.compile(
     r"^(manifest\.json|summary\.json|samples\.csv|samples_columns\.json|stiffness\.csv"
@@ -784,7 +856,7 @@ def _prepare_directory(
                         f"{link}: a symbolic link; runout does not read or write through "
                         "links (remove it, or run without --resume into another directory)"
                     )
-            done, bad = _load_chunks(directory, old["done"], plan, sink)
+            done, bad = _load_chunks(directory, _recorded(directory, old, plan), plan, sink)
             if bad:
                 n = len(bad)
                 shown = "; ".join(bad[:3]) + ("; ..." if n > 3 else "")

@@ -67,6 +67,8 @@ def test_two_labels_with_one_name_are_numbered_by_key_not_by_size() -> None:
 
 #: [study] keys added since the digests of earlier versions (allocation, arrangement): those
 #: versions had none of them
+#: The chunk size of earlier versions' studies that did not set one (250: its default then).
+LEGACY_CHUNK_SIZE = 250
 ADDED_STUDY_KEYS = {"allocate", "target_yield", "lot", "minimise", "line", "band", "random_orders"}
 
 
@@ -74,7 +76,9 @@ def _old_digest(case: Case) -> str:
     """The digest earlier versions wrote into manifest.json (a case without profiles)."""
     assert case.study is not None
     data = case.spec.model_dump(mode="python", exclude_none=True, exclude={"study"})
-    doc = {"case": data, "study": case.study.model_dump(mode="json", exclude=ADDED_STUDY_KEYS)}
+    study = case.study.model_dump(mode="json", exclude=ADDED_STUDY_KEYS)
+    study["chunk_size"] = case.study.chunk_size or LEGACY_CHUNK_SIZE  # its default then
+    doc = {"case": data, "study": study}
     return hashlib.sha256(json.dumps(doc, sort_keys=True, default=str).encode()).hexdigest()
 
 
@@ -98,6 +102,7 @@ def test_digest_of_a_monte_carlo_names_its_sampling() -> None:
     )
     data = case.spec.model_dump(mode="python", exclude_none=True, exclude={"study"})
     study = case.study.model_dump(mode="json", exclude=ADDED_STUDY_KEYS)
+    study["chunk_size"] = LEGACY_CHUNK_SIZE  # the default of earlier versions
     doc = {"case": data, "study": study, "sampling": 2}
     digest = hashlib.sha256(json.dumps(doc, sort_keys=True, default=str).encode()).hexdigest()
     assert st_mod._plan(case, None).digest == digest != _old_digest(case)
