@@ -294,7 +294,13 @@ class StreamStatistics:
         n = self.count
         s1 = self.total.value
         variance = (self.squares.value - s1 * s1 / n) / (n - 1)
-        return math.sqrt(float(variance))
+        # beyond float64 (values above ~1e154): the root of the variance scaled by 4^-k
+        k = max(0, (variance.numerator.bit_length() - variance.denominator.bit_length()) // 2)
+        return (
+            math.ldexp(math.sqrt(float(variance / (1 << (2 * k)))), k)
+            if k > 500
+            else (math.sqrt(float(variance)))
+        )
 
     def percentiles(self, qs: tuple[float, ...]) -> list[float]:
         """Percentiles ``qs`` [%]: numpy's linear interpolation between the order statistics,
@@ -343,7 +349,9 @@ class StreamStatistics:
         if self.count == 0:
             nan = float("nan")
             return {
-                **dict.fromkeys(("mean", "std", "two_sigma", "p5", "p50", "p95", "min", "max"), nan),
+                **dict.fromkeys(
+                    ("mean", "std", "two_sigma", "p5", "p50", "p95", "min", "max"), nan
+                ),
                 "histogram": {"edges": [], "counts": []},
             }
         std = self.std()
