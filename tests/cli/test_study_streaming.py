@@ -154,6 +154,10 @@ def test_streaming_directory_reloads_resumes_and_reports(tmp_path: Path) -> None
         json.loads(first)["runout"]["radial_pp_m"]["mean"]
         == result.summary()["runout"]["radial_pp_m"]["mean"]
     )
+    # statistics changes no sample: the exact mode resumes the streaming run's chunks
+    exact = cli("study", str(lot(tmp_path, 300, "exact", chunk=50)), "--out", str(out), "--resume")
+    assert exact.returncode == 0 and "recomputing" not in exact.stderr, exact.stderr
+    assert (out / "samples.csv").is_file()
     try:
         result.to_dataframe()
     except StudyError as exc:

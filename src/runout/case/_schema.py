@@ -862,7 +862,7 @@ class StudySpec(_Table):
         description=(
             'Monte Carlo statistics: "exact" (every sample\'s figures kept in memory: exact '
             'percentiles, samples.csv), "streaming" (memory independent of samples: exact '
-            "mean, std, min and max, percentiles within a relative 1e-4) or \"auto\" (exact when "
+            'mean, std, min and max, percentiles within a relative 1e-4) or "auto" (exact when '
             "the columns fit the memory budget, streaming otherwise; said in notes)."
         ),
     )

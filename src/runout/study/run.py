@@ -50,6 +50,12 @@ flight. Every runout figure and line is summarised by its mean, sample standard 
 (ddof = 1), 2σ, 5/50/95 % percentiles (linear interpolation, exact), min, max and a histogram.
 A line missing from a sample's output (below the model's reporting floor) counts as 0 in that
 sample.
+
+With ``[study] statistics = "streaming"`` (or ``"auto"`` when the columns do not fit the memory
+budget: :func:`runout.case.estimates.study_statistics`) each chunk is reduced instead into
+streaming statistics (:class:`_Streaming`, :mod:`runout.study._stream`): memory independent of
+the number of samples, exact count, min, max, mean and std (the same bits for any chunking),
+percentiles and histograms from a quantile sketch of relative accuracy 1e-4.
 """
 
 from __future__ import annotations
@@ -127,10 +133,10 @@ from runout.study._plan import (
 )
 from runout.study._result import YIELD_CONFIDENCE as YIELD_CONFIDENCE
 from runout.study._result import StreamedStudyResult, StudyResult, _write_text, statistics
-from runout.study._stream import QUANTILE_RELATIVE_ERROR, StreamStatistics
 from runout.study._result import (
     _dumps as _dumps,  # runout.models.dynamic's sweep
 )
+from runout.study._stream import QUANTILE_RELATIVE_ERROR, StreamStatistics
 from runout.study._workers import die_with_parent, init_worker, spawn_context, worker_threads
 
 __all__ = [

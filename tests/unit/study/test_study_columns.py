@@ -65,9 +65,18 @@ def test_two_labels_with_one_name_are_numbered_by_key_not_by_size() -> None:
         assert list(described["units"]) == [n for n, _ in result(*pair).columns()]
 
 
-#: [study] keys added since the digests of earlier versions (allocation, arrangement): those
-#: versions had none of them
-ADDED_STUDY_KEYS = {"allocate", "target_yield", "lot", "minimise", "line", "band", "random_orders"}
+#: [study] keys added since the digests of earlier versions (allocation, arrangement,
+#: statistics): those versions had none of them
+ADDED_STUDY_KEYS = {
+    "allocate",
+    "target_yield",
+    "lot",
+    "minimise",
+    "line",
+    "band",
+    "random_orders",
+    "statistics",
+}
 
 
 def _old_digest(case: Case) -> str:
