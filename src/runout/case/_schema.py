@@ -872,6 +872,15 @@ class StudySpec(_Table):
     bins: int = Field(
         20, ge=1, le=MAX_BINS, description="Histogram bins of the Monte Carlo summary."
     )
+    statistics: Literal["auto", "exact", "streaming"] = Field(
+        "auto",
+        description=(
+            'Monte Carlo statistics: "exact" (every sample\'s figures kept in memory: exact '
+            'percentiles, samples.csv), "streaming" (memory independent of samples: exact '
+            'mean, std, min and max, percentiles within a relative 1e-4) or "auto" (exact when '
+            "the columns fit the memory budget, streaming otherwise; said in notes)."
+        ),
+    )
     allocate: str | None = Field(
         None,
         description=(
@@ -997,6 +1006,10 @@ class StudySpec(_Table):
             raise _KeyedError("vary", "name at least one quantity to vary")
         if self.kind == "sweep" and "samples" in self.model_fields_set:
             raise _KeyedError("samples", 'only applies to kind = "montecarlo"')
+        if self.kind == "sweep" and self.statistics == "streaming":
+            raise _KeyedError(
+                "statistics", 'only applies to kind = "montecarlo" (a sweep lists every point)'
+            )
         if self.kind == "montecarlo" and self.models is not None and len(self.models) != 1:
             raise _KeyedError("models", "a Monte Carlo study runs one model")
         if self.models is not None and not self.models:
@@ -1035,7 +1048,7 @@ class StudySpec(_Table):
 
     def _check_arrangement(self) -> StudySpec:
         # the lot's balls are the study's input: nothing is drawn or swept, nothing chunked
-        for name in ("vary", "samples", "chunk_size", "bins", "models"):
+        for name in ("vary", "samples", "chunk_size", "bins", "models", "statistics"):
             if name in self.model_fields_set:
                 raise _KeyedError(
                     name, 'does not apply to kind = "arrangement" (the balls come from lot)'

@@ -38,6 +38,7 @@ __all__ = [
     "COST_BATCH",
     "LEGACY_CHUNK_SIZE",
     "PASS_BYTES",
+    "SKETCH_BYTES_PER_COLUMN",
     "STUDY_BYTES_PER_RUN",
     "Sizes",
     "batched_memory",
@@ -47,9 +48,11 @@ __all__ = [
     "estimate_run",
     "estimate_study",
     "sizes_of",
+    "stream_columns",
     "study_chunk_size",
     "study_point_seconds",
     "study_points",
+    "study_statistics",
     "study_threads",
 ]
 
@@ -440,7 +443,57 @@ def study_threads() -> int:
     return max(1, min(cores, int(limit))) if limit.isdigit() and int(limit) > 0 else cores
 
 
-def estimate_study(case: Any, per_run: ResourceEstimate) -> ResourceEstimate:
+#: Bytes of the streaming statistics of one column (a runout figure or a line) [B]: the
+#: quantile sketch's occupied buckets, 16 bytes each, for values spread over six decades at a
+#: relative accuracy of 1e-4 (ln(10^6) / ln((1 + 1e-4) / (1 - 1e-4)) ~ 69,000 buckets).
+SKETCH_BYTES_PER_COLUMN = 16.0 * 69_000
+
+
+def study_statistics(case: Any, workers: int = 1) -> str:
+    """How a study reduces its samples: ``"exact"`` or ``"streaming"`` (``[study] statistics``).
+
+    ``"auto"`` is exact when the per-sample columns fit the memory budget (with ``workers``
+    worker processes, each holding the shared arrays of a batched Monte Carlo), streaming
+    otherwise. A sweep is always exact (its JSON lists every point).
+
+    Parameters
+    ----------
+    case : Case
+        A validated case with a ``[study]``.
+    workers : int
+        Local worker processes of the study (1: in this process).
+
+    Returns
+    -------
+    str
+        ``"exact"`` or ``"streaming"``.
+    """
+    study = case.study
+    asked = getattr(study, "statistics", "auto")
+    if study.kind != "montecarlo" or asked != "auto":
+        return "exact" if study.kind != "montecarlo" else str(asked)
+    per_run = _per_run(case)
+    memory = estimate_study(case, per_run, "exact").memory
+    if workers > 1 and batched_study(case):
+        memory = batched_memory(case, workers) + study_points(case) * batched_sample_bytes(case)
+    return "exact" if memory <= case_budget(case).memory else "streaming"
+
+
+def _per_run(case: Any) -> ResourceEstimate:
+    """The estimate of one run of the study's largest model."""
+    models = list(case.study.models) if case.study.models else [case.analysis.model]
+    return max((estimate_run(case, m) for m in models), key=lambda e: (e.seconds, e.memory))
+
+
+def stream_columns(case: Any) -> int:
+    """Columns a streaming study summarises: the four runout figures and every line in x and
+    y (:attr:`Sizes.lines`, an upper bound)."""
+    return 4 + 2 * int(sizes_of(case).lines)
+
+
+def estimate_study(
+    case: Any, per_run: ResourceEstimate, statistics: str | None = None
+) -> ResourceEstimate:
     """Memory and time of a case's whole ``[study]`` from the estimate of one run.
 
     The records are not kept (each chunk is summarised as it finishes): memory is one run's
@@ -456,6 +509,10 @@ def estimate_study(case: Any, per_run: ResourceEstimate) -> ResourceEstimate:
         A validated case with a ``[study]``.
     per_run : ResourceEstimate
         Estimate of one run [B, s] (the largest of the study's models).
+    statistics : {"exact", "streaming"}, optional
+        The study's reduction (default: :func:`study_statistics`). Streaming keeps no
+        per-sample column: the chunks in flight and :data:`SKETCH_BYTES_PER_COLUMN` per
+        summarised column instead of the bytes per sample.
 
     Returns
     -------
@@ -464,13 +521,20 @@ def estimate_study(case: Any, per_run: ResourceEstimate) -> ResourceEstimate:
     """
     points = study_points(case)
     key = _study_key(case)
-    memory = per_run.memory + points * STUDY_BYTES_PER_RUN
+    streaming = (statistics or study_statistics(case)) == "streaming"
+    if streaming:  # per sample nothing: the chunks in flight (two per core) and the sketches
+        in_flight = 2 * max(1, os.cpu_count() or 1) * min(points, case.study.chunk_size)
+        kept_runs = float(in_flight)
+        sketches = stream_columns(case) * SKETCH_BYTES_PER_COLUMN
+    else:
+        kept_runs, sketches = float(points), 0.0
+    memory = per_run.memory + kept_runs * STUDY_BYTES_PER_RUN + sketches
     each = per_run.seconds
     seconds_per_thread, on = 1.0, ""
     if batched_study(case):
         # compact result columns instead of a run's record per sample; the chunks run side by
         # side on every thread of this process (measured: wall time = CPU time / threads)
-        kept = points * batched_sample_bytes(case)
+        kept = sketches if streaming else points * batched_sample_bytes(case)
         memory = max(per_run.memory, batched_memory(case)) + kept
         each = case.analysis.samples * case.bearing.elements * COST_BATCH
         seconds_per_thread = 1.0 / study_threads()
@@ -557,7 +621,21 @@ def check_limits(case: Any) -> None:
     limits = case_budget(case)
     per_run = estimate_run(case, case.analysis.model)
     if case.study is not None:
-        models = list(case.study.models) if case.study.models else [case.analysis.model]
-        per_run = max((estimate_run(case, m) for m in models), key=lambda e: (e.seconds, e.memory))
-        check(estimate_study(case, per_run), limits)
+        per_run = _per_run(case)
+        mode = study_statistics(case)
+        estimate = estimate_study(case, per_run, mode)
+        if getattr(case.study, "statistics", "auto") == "exact" and case.study.kind == "montecarlo":
+            try:
+                check(estimate, limits)
+            except LimitError as exc:
+                if not estimate.memory > limits.memory:
+                    raise
+                # the columns of every sample do not fit: the streaming statistics would
+                raise LimitError(
+                    "study.statistics",
+                    f'"exact" keeps every sample\'s figures: {exc.message}; or set '
+                    'statistics = "streaming" (or "auto")',
+                ) from None
+        else:
+            check(estimate, limits)
     check(per_run, limits)

@@ -898,8 +898,12 @@ def _print_study(summary: dict[str, Any], title: str, out: str | None) -> None:
                 soft_wrap=True,
                 highlight=False,
             )
+    for note in summary.get("notes", []):  # a streaming study: what it changes
+        _out.print(f"note: {escape(note)}", soft_wrap=True, highlight=False)
     if out is not None:
-        files = "manifest.json, chunks/, summary.json, samples.csv, samples_columns.json"
+        files = "manifest.json, chunks/, summary.json"
+        if (Path(out) / "samples.csv").is_file():  # not written by streaming statistics
+            files += ", samples.csv, samples_columns.json"
         if (Path(out) / "stiffness.csv").is_file():  # equilibrium: the stiffness of every point
             files += ", stiffness.csv"
         _out.print(f"wrote {escape(out)}/ ({files})")

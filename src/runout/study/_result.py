@@ -20,7 +20,8 @@ from runout.io.study_columns import COLUMNS_FILE, element_column, identifier, li
 from runout.io.study_columns import FORMAT as COLUMNS_FORMAT
 from runout.study._chunks import ERRORS_SHOWN
 from runout.study._files import write_atomic
-from runout.study._plan import RUNOUT_KEYS, Quantity
+from runout.study._plan import RUNOUT_KEYS, Quantity, StudyError
+from runout.study._stream import QUANTILE_RELATIVE_ERROR, StreamStatistics
 
 
 # --------------------------------------------------------------------------------------------
@@ -139,6 +140,11 @@ class StudyResult:
         """Number of samples (or sweep points × models)."""
         return len(self.model)
 
+    @property
+    def failed(self) -> int:
+        """Number of samples whose model failed."""
+        return len(self.errors)
+
     def line_table(self) -> list[tuple[str, float, str, NDArray[np.float64]]]:
         """(direction, frequency [Hz], label, p-p per sample [m]), largest mean first."""
         rows = [
@@ -168,7 +174,7 @@ class StudyResult:
             "seed": self.seed,
             "models": sorted(set(self.model)),
             "samples": self.samples,
-            "failed": len(self.errors),
+            "failed": self.failed,
             "errors": self.error_list(),
             "quantities": [q.key for q in self.quantities],
             "runout": runout,
@@ -202,7 +208,7 @@ class StudyResult:
             "models": full["models"],
             "seed": self.seed,
             "samples": self.samples,
-            "failed": len(self.errors),
+            "failed": self.failed,
             "errors": full["errors"],
             "runout": {k: trim(v) for k, v in full["runout"].items()},
             "components": [
@@ -217,7 +223,11 @@ class StudyResult:
             out["points"] = self.points()
         elif self.limit is not None:
             out["yield"] = self.lot_yield()
-        return out
+        return out | self._streaming_keys()
+
+    def _streaming_keys(self) -> dict[str, Any]:
+        """Keys a streaming study adds to its JSON (none here: exact statistics)."""
+        return {}
 
     def lot_yield(self, confidence: float = YIELD_CONFIDENCE) -> dict[str, Any]:
         """The ``yield`` JSON object: fraction of the lot within the limit, with its interval.
@@ -231,10 +241,7 @@ class StudyResult:
         if self.limit is None:
             raise ValueError("the study has no spec limit")
         quantity, limit = self.limit
-        values = self.runout[f"{quantity}_m"]
-        ok = values[np.isfinite(values)]
-        n = int(ok.size)
-        k = int(np.sum(ok <= limit))
+        n, k = self._passed(quantity, limit)
         low: float | None = None
         high: float | None = None
         if n:
@@ -254,6 +261,12 @@ class StudyResult:
             "confidence": confidence,
             "method": "Clopper-Pearson",
         }
+
+    def _passed(self, quantity: str, limit: float) -> tuple[int, int]:
+        """Samples with the figure ``quantity`` and, of them, those within ``limit``."""
+        values = self.runout[f"{quantity}_m"]
+        ok = values[np.isfinite(values)]
+        return int(ok.size), int(np.sum(ok <= limit))
 
     def points(self) -> list[dict[str, Any]]:
         """Per-sample records: values, model, runout and non-zero lines."""
@@ -382,10 +395,7 @@ class StudyResult:
         what it is (:meth:`column_descriptions`).
         """
         directory.mkdir(parents=True, exist_ok=True)
-        summary = _nan_to_none(self.summary())  # every sample failed: no statistics, null
-        if self.limit is not None and self.kind == "montecarlo":
-            summary["yield"] = self.lot_yield()
-        written = [_write_text(directory / "summary.json", _dumps(summary, indent=2))]
+        written = [self._write_summary(directory)]
         written.append(self._write_csv(directory / "samples.csv"))
         written.append(self._write_columns(directory / COLUMNS_FILE))
         if self.stiffness:
@@ -401,6 +411,12 @@ class StudyResult:
                     self, directory, limit_quantity=f"{self.limit[0]}_m", limit_m=self.limit[1]
                 )
         return written
+
+    def _write_summary(self, directory: Path) -> Path:
+        summary = _nan_to_none(self.summary())  # every sample failed: no statistics, null
+        if self.limit is not None and self.kind == "montecarlo":
+            summary["yield"] = self.lot_yield()
+        return _write_text(directory / "summary.json", _dumps(summary, indent=2))
 
     def columns(self) -> list[tuple[str, NDArray[Any]]]:
         """Flat table of ``samples.csv``: (column name, values per sample).
@@ -538,6 +554,135 @@ class StudyResult:
                 writer.writerows(zip(*cells, strict=True))
 
         return write_atomic(path, rows)
+
+
+#: What a streaming study answers where per-sample values are asked for.
+PER_SAMPLE_REFUSAL = (
+    'a streaming study (statistics = "streaming") keeps no per-sample values; run it with '
+    '[study] statistics = "exact" for {what}'
+)
+
+
+@dataclass(frozen=True)
+class StreamedStudyResult(StudyResult):
+    """A Monte Carlo reduced by streaming statistics: no per-sample column in memory.
+
+    The per-sample attributes of :class:`StudyResult` (``model``, ``values``, ``runout``,
+    ``lines``, ``stiffness``) are empty; ``errors`` holds the first
+    :data:`runout.study._chunks.ERRORS_SHOWN` failed samples only. Count, mean, std, min and max
+    are exact (the same bits for any chunking, worker count and scheduler); the percentiles and
+    histograms come from a quantile sketch of relative accuracy ``quantile_relative_error``
+    (:mod:`runout.study._stream`). Methods that need per-sample values (``points``,
+    ``to_dataframe``, ``columns``, ``plot``) raise :class:`StudyError` saying to use
+    ``statistics = "exact"``.
+
+    Attributes
+    ----------
+    sample_count : int
+        Number of samples.
+    failed_count : int
+        Samples whose model failed.
+    models_run : tuple of str
+        Models of the samples.
+    runout_statistics : dict
+        RUNOUT_KEYS -> :class:`StreamStatistics` [m].
+    line_statistics : dict
+        ``"direction|label"`` -> (frequency [Hz], :class:`StreamStatistics` of its p-p [m]
+        over the samples that ran, 0 where the line is below the reporting floor).
+    passed : int
+        Samples within the spec limit (with ``limit``).
+    notes : tuple of str
+        What the streaming statistics change (JSON ``notes`` and the readable summary).
+    """
+
+    sample_count: int = 0
+    failed_count: int = 0
+    models_run: tuple[str, ...] = ()
+    runout_statistics: dict[str, StreamStatistics] = field(default_factory=dict)
+    line_statistics: dict[str, tuple[float, StreamStatistics]] = field(default_factory=dict)
+    passed: int = 0
+    notes: tuple[str, ...] = ()
+
+    @property
+    def samples(self) -> int:
+        """Number of samples."""
+        return self.sample_count
+
+    @property
+    def failed(self) -> int:
+        """Number of samples whose model failed."""
+        return self.failed_count
+
+    def _line_order(self) -> list[tuple[str, float, str, StreamStatistics]]:
+        rows = [
+            (key.split("|", 1)[0], f, key.split("|", 1)[1], stats)
+            for key, (f, stats) in self.line_statistics.items()
+        ]
+        ran = self.runout_statistics["radial_pp_m"].count > 0
+        rows.sort(key=lambda r: (-r[3].mean() if ran else 0.0, r[0], r[1]))
+        return rows
+
+    def line_table(self) -> list[tuple[str, float, str, NDArray[np.float64]]]:
+        """Refused: the lines' per-sample p-p are not kept."""
+        raise StudyError(PER_SAMPLE_REFUSAL.format(what="the per-sample line p-p"))
+
+    def summary(self) -> dict[str, Any]:
+        """Full statistics (JSON-ready), as :meth:`StudyResult.summary`, plus ``statistics``,
+        ``quantile_relative_error`` and ``notes``."""
+        runout = {k: self.runout_statistics[k].summary(self.bins) for k in RUNOUT_KEYS}
+        comps = [
+            {"direction": d, "frequency_hz": f, "label": label, "pp_m": stats.summary(self.bins)}
+            for d, f, label, stats in self._line_order()
+        ]
+        return {
+            "title": self.title,
+            "kind": self.kind,
+            "seed": self.seed,
+            "models": sorted(self.models_run),
+            "samples": self.samples,
+            "failed": self.failed,
+            "errors": self.error_list(),
+            "quantities": [q.key for q in self.quantities],
+            "runout": runout,
+            "components": comps,
+            **self._streaming_keys(),
+        }
+
+    def _streaming_keys(self) -> dict[str, Any]:
+        return {
+            "statistics": "streaming",
+            "quantile_relative_error": QUANTILE_RELATIVE_ERROR,
+            "notes": list(self.notes),
+        }
+
+    def _passed(self, quantity: str, limit: float) -> tuple[int, int]:
+        return self.runout_statistics[f"{quantity}_m"].count, self.passed
+
+    def points(self) -> list[dict[str, Any]]:
+        """Refused: the per-sample records are not kept."""
+        raise StudyError(PER_SAMPLE_REFUSAL.format(what="per-sample records"))
+
+    def to_dataframe(self) -> Any:
+        """Refused: the per-sample values are not kept."""
+        raise StudyError(PER_SAMPLE_REFUSAL.format(what="a table of the samples"))
+
+    def plot(self, kind: str | None = None, quantity: str | None = None, top: int = 4) -> Any:
+        """Refused: the figures are drawn from the per-sample values."""
+        raise StudyError(PER_SAMPLE_REFUSAL.format(what="its figures"))
+
+    def columns(self) -> list[tuple[str, NDArray[Any]]]:
+        """Refused: the per-sample values are not kept."""
+        raise StudyError(PER_SAMPLE_REFUSAL.format(what="the columns of samples.csv"))
+
+    def column_descriptions(self) -> dict[str, Any]:
+        """Refused: the columns of samples.csv are not written."""
+        raise StudyError(PER_SAMPLE_REFUSAL.format(what="the columns of samples.csv"))
+
+    def write(self, directory: Path, plots: bool = True) -> list[Path]:
+        """Write ``summary.json`` (samples.csv and the figures need per-sample values: their
+        absence is said in ``notes``)."""
+        directory.mkdir(parents=True, exist_ok=True)
+        return [self._write_summary(directory)]
 
 
 def _si_unit(q: Quantity) -> str:

@@ -50,6 +50,12 @@ flight. Every runout figure and line is summarised by its mean, sample standard 
 (ddof = 1), 2σ, 5/50/95 % percentiles (linear interpolation, exact), min, max and a histogram.
 A line missing from a sample's output (below the model's reporting floor) counts as 0 in that
 sample.
+
+With ``[study] statistics = "streaming"`` (or ``"auto"`` when the columns do not fit the memory
+budget: :func:`runout.case.estimates.study_statistics`) each chunk is reduced instead into
+streaming statistics (:class:`_Streaming`, :mod:`runout.study._stream`): memory independent of
+the number of samples, exact count, min, max, mean and std (the same bits for any chunking),
+percentiles and histograms from a quantile sketch of relative accuracy 1e-4.
 """
 
 from __future__ import annotations
@@ -127,10 +133,11 @@ from runout.study._plan import (
     sample_uniforms,
 )
 from runout.study._result import YIELD_CONFIDENCE as YIELD_CONFIDENCE
-from runout.study._result import StudyResult, _write_text, statistics
+from runout.study._result import StreamedStudyResult, StudyResult, _write_text, statistics
 from runout.study._result import (
     _dumps as _dumps,  # runout.models.dynamic's sweep
 )
+from runout.study._stream import QUANTILE_RELATIVE_ERROR, StreamStatistics
 from runout.study._workers import die_with_parent, init_worker, spawn_context, worker_threads
 
 __all__ = [
@@ -245,6 +252,8 @@ def _digest(
     unset = {k for k in ("allocate", "target_yield") if getattr(study, k) is None}
     if study.kind != "arrangement":
         unset |= set(ARRANGEMENT_KEYS)
+    # how the samples are reduced changes no sample: chunks of either mode resume each other
+    unset.add("statistics")
     doc: dict[str, Any] = {"case": data, "study": study.model_dump(mode="json", exclude=unset)}
     if study.chunk_size is None and "chunk_size" in doc["study"]:
         # a chosen chunk size: earlier versions' default in the digest, so that their output
@@ -414,12 +423,17 @@ def run_study(
         enforce(case, model)
     _check_analysis_outputs(case, notify or _log.warning)
     refuse_unbuildable(plan)
+    local = workers if executor is None else 1
+    streaming = estimates.study_statistics(case, local) == "streaming"
     if executor is None and workers > 1 and estimates.batched_study(case):
         # the case's estimate assumed this process; worker processes each hold the shared
         # arrays too (and the chunks in flight): check the budget for them before starting
-        needed = estimates.batched_memory(case, workers) + estimates.study_points(
-            case
-        ) * estimates.batched_sample_bytes(case)
+        kept = (
+            estimates.stream_columns(case) * estimates.SKETCH_BYTES_PER_COLUMN
+            if streaming
+            else estimates.study_points(case) * estimates.batched_sample_bytes(case)
+        )
+        needed = estimates.batched_memory(case, workers) + kept
         budget = limits.case_budget(case)
         if needed > budget.memory:
             raise limits.LimitError(
@@ -430,13 +444,16 @@ def run_study(
                 f" with [analysis] max_memory or {limits.ENV_MAX_MEMORY}",
             )
     notify = notify or _log.warning
+    mode = _streaming_notes(case, local) if streaming else None
     if out is None:
-        return _run(None, case, plan, executor, workers, False, False, progress, plots, notify)
+        return _run(
+            None, case, plan, executor, workers, False, False, progress, plots, notify, mode
+        )
     directory = output_directory(out)
     refuse_foreign(directory, "study", force)
     with output_lock(directory):
         return _run(
-            directory, case, plan, executor, workers, resume, force, progress, plots, notify
+            directory, case, plan, executor, workers, resume, force, progress, plots, notify, mode
         )
 
 
@@ -466,6 +483,29 @@ def _resumed_chunk_size(out: Path | str | None, resume: bool) -> int | None:
     except (StudyError, OSError):
         return None
     return int(size)
+
+
+def _streaming_notes(case: Case, workers: int) -> tuple[str, ...]:
+    """The notes of a streaming study: why it streams and what that changes."""
+    study = case.study
+    assert study is not None
+    if study.statistics == "auto":
+        budget = limits.case_budget(case)
+        why = (
+            f'study.statistics = "auto": the per-sample columns of {study.samples} samples do '
+            f"not fit the memory budget ({limits.format_bytes(budget.memory)}), so the "
+            "statistics are streamed"
+        )
+    else:
+        why = 'study.statistics = "streaming"'
+    return (
+        f"{why}: count, mean, std, min, max and the yield are exact; the percentiles are "
+        f"within a relative {QUANTILE_RELATIVE_ERROR:g} of the exact ones and each histogram "
+        "counts the sketch's buckets (a sample within that of a bin edge may be counted in "
+        "the next bin)",
+        "per-sample values are not kept: samples.csv, samples_columns.json, stiffness.csv and "
+        'the figures are not written (set study.statistics = "exact" for them)',
+    )
 
 
 #: Monte Carlo samples built before a study runs: when every one of them is refused for the
@@ -557,14 +597,19 @@ def _run(
     progress: Callable[[int, int], None] | None,
     plots: bool,
     notify: Callable[[str], None],
+    streaming: tuple[str, ...] | None = None,
 ) -> StudyResult:
     """run_study once ``directory`` (if any) is checked and locked.
 
     Every chunk is added to the result's columns as it finishes (:class:`_Assembly`) and then
     dropped: the study holds its compact columns and the chunks in flight, never all chunks.
+    With ``streaming`` (the notes of a streaming study) each chunk is reduced into streaming
+    statistics instead (:class:`_Streaming`): memory independent of the number of samples.
     """
     manifest = plan.manifest()
-    assembly = _Assembly(case, plan)
+    assembly: _Assembly | _Streaming = (
+        _Assembly(case, plan) if streaming is None else _Streaming(case, plan, streaming)
+    )
     done: set[int] = set()
     if directory is not None:
         done = _prepare_directory(directory, manifest, plan, resume, force, notify, assembly.add)
@@ -960,6 +1005,86 @@ class _Assembly:
         )
 
 
+class _Streaming:
+    """Streaming statistics of a Monte Carlo, reduced chunk by chunk in any order.
+
+    Every runout figure and line is a :class:`StreamStatistics` (exact count, min, max, sum
+    and sum of squares; a quantile sketch): memory does not grow with the number of samples,
+    and the result is the same, bit for bit, for any chunking and order of arrival. A line
+    counts as 0 in the samples of the chunks where it does not appear (as in :class:`_Assembly`):
+    its zeros are added at the end, from the number of samples that ran and those its chunks
+    covered. A line's frequency is that of its first chunk in sample order.
+    """
+
+    def __init__(self, case: Case, plan: _Plan, notes: tuple[str, ...]) -> None:
+        self.case, self.plan, self.notes = case, plan, notes
+        self.runout = {k: StreamStatistics() for k in RUNOUT_KEYS}
+        self.lines: dict[str, tuple[float, StreamStatistics]] = {}
+        self.covered: dict[str, int] = {}
+        self.first: dict[str, tuple[int, int]] = {}
+        self.ran = 0
+        self.models: set[str] = set()
+        self.failed = 0
+        self.errors: dict[int, str] = {}  # the first ERRORS_SHOWN failed samples only
+        self.passed = 0
+        self.limit = study_limit(case)
+
+    def add(self, index: int, chunk: dict[str, Any]) -> None:
+        """Reduce ``chunk`` (arrays of :func:`evaluate_chunk` or lists of its file)."""
+        self.models.update(chunk["model"])
+        figures = {k: np.asarray(chunk["runout"][k], dtype=np.float64) for k in RUNOUT_KEYS}
+        for k in RUNOUT_KEYS:
+            self.runout[k].add(figures[k])
+        ok = np.isfinite(figures["radial_pp_m"])
+        ran = int(np.count_nonzero(ok))
+        self.ran += ran
+        if self.limit is not None:
+            value = figures[f"{self.limit[0]}_m"]
+            self.passed += int(np.count_nonzero(value[np.isfinite(value)] <= self.limit[1]))
+        for place, (key, entry) in enumerate(chunk["lines"].items()):
+            here = (index, place)
+            if key not in self.lines:
+                self.lines[key] = (entry["frequency_hz"], StreamStatistics())
+                self.covered[key] = 0
+                self.first[key] = here
+            elif here < self.first[key]:  # the frequency of the line's first chunk
+                self.lines[key] = (entry["frequency_hz"], self.lines[key][1])
+                self.first[key] = here
+            self.lines[key][1].add(np.asarray(entry["pp_m"], dtype=np.float64)[ok])
+            self.covered[key] += ran
+        errors = {int(k): v for k, v in chunk["errors"].items()}
+        self.failed += len(errors)
+        self.errors = dict(sorted({**self.errors, **errors}.items())[:ERRORS_SHOWN])
+
+    def result(self) -> StreamedStudyResult:
+        """The :class:`StreamedStudyResult` of every chunk added."""
+        study = self.plan.study
+        for key, (_f, stats) in self.lines.items():
+            stats.add_zeros(self.ran - self.covered[key])
+            self.covered[key] = self.ran
+        lines = {key: self.lines[key] for key in sorted(self.lines, key=self.first.__getitem__)}
+        return StreamedStudyResult(
+            kind=study.kind,
+            title=self.case.title,
+            seed=study.seed,
+            quantities=self.plan.quantities,
+            model=[],
+            values={},
+            runout={},
+            lines={},
+            errors=self.errors,
+            bins=study.bins,
+            limit=self.limit,
+            sample_count=self.plan.total,
+            failed_count=self.failed,
+            models_run=tuple(sorted(self.models)),
+            runout_statistics=self.runout,
+            line_statistics=lines,
+            passed=self.passed,
+            notes=self.notes,
+        )
+
+
 def _refuse_earlier_sampling(
     old: dict[str, Any],
     manifest: dict[str, Any],
@@ -1036,7 +1161,10 @@ def load_study(directory: Path | str, case: Case) -> StudyResult:
     differs = next((k for k in _RESUME_KEYS if manifest[k] != plan.manifest()[k]), None)
     if differs is not None:
         raise StudyError(f"{d / 'manifest.json'}: a run of a different case or study ({differs})")
-    assembly = _Assembly(case, plan)
+    streaming = estimates.study_statistics(case) == "streaming"
+    assembly = (
+        _Streaming(case, plan, _streaming_notes(case, 1)) if streaming else _Assembly(case, plan)
+    )
     _done, bad = _load_chunks(d, range(len(plan.tasks)), plan, assembly.add)
     if bad:
         raise StudyError(f"{d / 'chunks'}: not a complete study of this case ({bad[0]})")

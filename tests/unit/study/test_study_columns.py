@@ -65,11 +65,20 @@ def test_two_labels_with_one_name_are_numbered_by_key_not_by_size() -> None:
         assert list(described["units"]) == [n for n, _ in result(*pair).columns()]
 
 
-#: [study] keys added since the digests of earlier versions (allocation, arrangement): those
-#: versions had none of them
+#: [study] keys added since the digests of earlier versions (allocation, arrangement,
+#: statistics): those versions had none of them
+ADDED_STUDY_KEYS = {
+    "allocate",
+    "target_yield",
+    "lot",
+    "minimise",
+    "line",
+    "band",
+    "random_orders",
+    "statistics",
+}
 #: The chunk size of earlier versions' studies that did not set one (250: its default then).
 LEGACY_CHUNK_SIZE = 250
-ADDED_STUDY_KEYS = {"allocate", "target_yield", "lot", "minimise", "line", "band", "random_orders"}
 
 
 def _old_digest(case: Case) -> str:
