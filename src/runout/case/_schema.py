@@ -1448,6 +1448,8 @@ def _describe(error: Any) -> tuple[str, str]:
         return _format_loc(loc), f"must be > {ctx.get('gt')}, got {given!r}"
     if kind == "less_than_equal":
         return _format_loc(loc), f"must be <= {ctx.get('le')}, got {given!r}"
+    if kind == "less_than":
+        return _format_loc(loc), f"must be < {ctx.get('lt')}, got {given!r}"
     if kind == "finite_number":
         return _format_loc(loc), f"must be a finite number, got {given!r}"
     if kind in ("recursion_loop",):

@@ -769,8 +769,9 @@ _OVERRIDE_KEY = re.compile(r"([a-z_]+)(?:\[(\d+)\])?(?:\.([a-z_]+))?")
 def apply_overrides(data: dict[str, Any], overrides: Mapping[str, Any], path: str) -> None:
     """Set case keys by dotted path in a TOML document, in place, before it is validated.
 
-    ``title``, ``table.key`` or ``table[i].key`` (entries counted from 1); a table the
-    document lacks is created. A key the case does not have is left to the validation, which
+    ``title``, ``table.key``, ``table[i].key`` (entries counted from 1) or
+    ``study.vary.KEY`` (a varied quantity, KEY as the file writes it); a table the document
+    lacks is created. A key the case does not have is left to the validation, which
     names it with a did-you-mean hint.
 
     Parameters
@@ -788,6 +789,9 @@ def apply_overrides(data: dict[str, Any], overrides: Mapping[str, Any], path: st
         A path that is not a case key's shape, or an array entry the document does not have.
     """
     for key, value in overrides.items():
+        if key.startswith(_VARY_PREFIX):  # a study's varied quantity: its key may hold dots
+            _override_vary(data, key, value, path)
+            continue
         match = _OVERRIDE_KEY.fullmatch(key)
         if match is None:
             raise CaseError(
@@ -823,6 +827,29 @@ def apply_overrides(data: dict[str, Any], overrides: Mapping[str, Any], path: st
         if not isinstance(entry, dict):  # a malformed file: `waviness = [1, 2]`
             raise CaseError(path, f"{table}[{position}]", "is not a table; fix the file first")
         entry[name] = value
+
+
+_VARY_PREFIX = "study.vary."
+
+
+def _override_vary(data: dict[str, Any], key: str, value: Any, path: str) -> None:
+    """``study.vary.KEY=VALUE``: set (or add) the varied quantity KEY of ``[study.vary]`` (KEY
+    as the file writes it, e.g. ``element_diameter_sigma`` or ``"operation.axial_load"``);
+    VALUE replaces the whole entry (a value with unit or an inline table)."""
+    name = key[len(_VARY_PREFIX) :].strip()
+    if len(name) >= 2 and name[0] == name[-1] and name[0] in "\"'":
+        name = name[1:-1]
+    if not name:
+        raise CaseError(
+            path, _one_line(key), "name the varied key, e.g. study.vary.element_diameter_sigma"
+        )
+    study = data.setdefault("study", {})
+    if not isinstance(study, dict):
+        raise CaseError(path, "study", "is not a table; fix the file first")
+    vary = study.setdefault("vary", {})
+    if not isinstance(vary, dict):
+        raise CaseError(path, "study.vary", "is not a table; fix the file first")
+    vary[name] = value
 
 
 def _one_line(text: str) -> str:
