@@ -87,6 +87,8 @@ def test_killed_run_resumes_to_identical_files(tmp_path: Path) -> None:
     case = write_case(tmp_path, 120, 4)  # 30 chunks on the per-bearing path
     fresh, killed = tmp_path / "fresh", tmp_path / "killed"
     done = cli("study", str(case), "--out", str(fresh))
+    # the "wrote" line names the figures too (it listed the tables alone)
+    assert "summary.json, samples.csv, samples_columns.json, histograms.png)" in done.stdout
     assert done.returncode == 0, done.stderr
     proc = subprocess.Popen(
         [sys.executable, "-m", "runout.cli", "study", str(case), "--out", str(killed)],

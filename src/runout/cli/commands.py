@@ -16,6 +16,7 @@ from __future__ import annotations
 import json
 import math
 import os
+import re
 import shutil
 import sys
 from contextlib import nullcontext
@@ -906,7 +907,13 @@ def _print_study(summary: dict[str, Any], title: str, out: str | None) -> None:
             files += ", samples.csv, samples_columns.json"
         if (Path(out) / "stiffness.csv").is_file():  # equilibrium: the stiffness of every point
             files += ", stiffness.csv"
+        # the figures (histograms.png, sweep_*.png: a fresh run removed any earlier ones)
+        figures = sorted(p.name for p in Path(out).glob("*.png") if _STUDY_FIGURE.match(p.name))
+        files += "".join(f", {name}" for name in figures)
         _out.print(f"wrote {escape(out)}/ ({files})")
+
+
+_STUDY_FIGURE = re.compile(r"histograms\.png|sweep_.+\.png")
 
 
 @app.command("reproduce")
