@@ -33,16 +33,15 @@ def cli(*args: str, env: dict[str, str] | None = None) -> subprocess.CompletedPr
 
 
 def lot(
-    tmp_path: Path, samples: int, statistics: str, chunk: int = 250, instants: int = 256
+    tmp_path: Path, samples: int, statistics: str, chunk: int | None = 250, instants: int = 256
 ) -> Path:
     """Seed 001 Table 9 with ``samples`` bearings (8 revolutions: the f_c lines resolved)."""
     text = EXAMPLE.read_text().replace("samples = 1000\n", f"samples = {samples}\n", 1)
     text = text.replace("samples = 1024", f"samples = {instants}", 1)
     if instants < 128:  # the cheapest record: one revolution
         text = text.replace("revolutions = 8 ", "revolutions = 1 ", 1)
-    text = text.replace(
-        "[study]\n", f'[study]\nstatistics = "{statistics}"\nchunk_size = {chunk}\n', 1
-    )
+    size = "" if chunk is None else f"chunk_size = {chunk}\n"  # None: chosen from the cost
+    text = text.replace("[study]\n", f'[study]\nstatistics = "{statistics}"\n{size}', 1)
     path = tmp_path / f"lot_{statistics}_{samples}_{chunk}_{instants}.toml"
     path.write_text(text)
     return path
@@ -53,6 +52,7 @@ def test_streaming_summary_is_the_same_for_any_workers_and_chunk_size(tmp_path: 
         "one": (lot(tmp_path, 300, "streaming", chunk=50), []),
         "two": (lot(tmp_path, 300, "streaming", chunk=50), ["--workers", "2"]),
         "chunk": (lot(tmp_path, 300, "streaming", chunk=64), []),
+        "chosen": (lot(tmp_path, 300, "streaming", chunk=None), []),
     }
     summaries = {}
     for name, (path, extra) in runs.items():

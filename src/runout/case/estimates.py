@@ -523,7 +523,9 @@ def estimate_study(
     key = _study_key(case)
     streaming = (statistics or study_statistics(case)) == "streaming"
     if streaming:  # per sample nothing: the chunks in flight (two per core) and the sketches
-        in_flight = 2 * max(1, os.cpu_count() or 1) * min(points, case.study.chunk_size)
+        # a chosen chunk size is at most MAX_CHOSEN_CHUNK samples: the bound where none is given
+        chunk = case.study.chunk_size or MAX_CHOSEN_CHUNK
+        in_flight = 2 * max(1, os.cpu_count() or 1) * min(points, chunk)
         kept_runs = float(in_flight)
         sketches = stream_columns(case) * SKETCH_BYTES_PER_COLUMN
     else:
