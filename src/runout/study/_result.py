@@ -8,7 +8,7 @@ from __future__ import annotations
 import csv
 import json
 import math
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, TextIO
@@ -484,18 +484,7 @@ class StudyResult:
         two labels that give one name are numbered in the order of their keys, which does not
         depend on the samples' values.
         """
-        names: dict[str, str] = {}
-        taken = set(RUNOUT_KEYS) | {"sample", "model"}
-        for key in sorted(self.lines):
-            direction, _, label = key.partition("|")
-            base = line_column(direction, label)
-            name, n = base, 1
-            while name in taken:
-                n += 1
-                name = f"{base}_{n}"
-            taken.add(name)
-            names[key] = name
-        return names
+        return line_column_names(self.lines)
 
     def stiffness_columns(self) -> list[tuple[str, list[Any]]]:
         """The table of ``stiffness.csv``: one row per equilibrium point that ran.
@@ -554,6 +543,27 @@ class StudyResult:
                 writer.writerows(zip(*cells, strict=True))
 
         return write_atomic(path, rows)
+
+
+def line_column_names(keys: Iterable[str]) -> dict[str, str]:
+    """Column name of every line key (``"direction|label"`` -> name), unique and stable.
+
+    Names come from the direction and label (:func:`runout.io.study_columns.line_column`);
+    two labels that give one name are numbered in the order of their keys, which does not
+    depend on the samples' values.
+    """
+    names: dict[str, str] = {}
+    taken = set(RUNOUT_KEYS) | {"sample", "model"}
+    for key in sorted(keys):
+        direction, _, label = key.partition("|")
+        base = line_column(direction, label)
+        name, n = base, 1
+        while name in taken:
+            n += 1
+            name = f"{base}_{n}"
+        taken.add(name)
+        names[key] = name
+    return names
 
 
 #: What a streaming study answers where per-sample values are asked for.
@@ -679,8 +689,9 @@ class StreamedStudyResult(StudyResult):
         raise StudyError(PER_SAMPLE_REFUSAL.format(what="the columns of samples.csv"))
 
     def write(self, directory: Path, plots: bool = True) -> list[Path]:
-        """Write ``summary.json`` (samples.csv and the figures need per-sample values: their
-        absence is said in ``notes``)."""
+        """Write ``summary.json`` (the figures need per-sample values: their absence is said
+        in ``notes``; a study with ``--out`` writes ``samples.csv`` and
+        ``samples_columns.json`` from its chunk files, :func:`runout.study.run.run_study`)."""
         directory.mkdir(parents=True, exist_ok=True)
         return [self._write_summary(directory)]
 

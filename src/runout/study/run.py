@@ -60,6 +60,7 @@ percentiles and histograms from a quantile sketch of relative accuracy 1e-4.
 
 from __future__ import annotations
 
+import csv
 import dataclasses
 import hashlib
 import itertools
@@ -132,8 +133,18 @@ from runout.study._plan import (
     sample_rng,
     sample_uniforms,
 )
+from runout.study._result import (
+    COLUMNS_FILE,
+    COLUMNS_FORMAT,
+    CSV_BLOCK,
+    StreamedStudyResult,
+    StudyResult,
+    _cells,
+    _write_text,
+    line_column_names,
+    statistics,
+)
 from runout.study._result import YIELD_CONFIDENCE as YIELD_CONFIDENCE
-from runout.study._result import StreamedStudyResult, StudyResult, _write_text, statistics
 from runout.study._result import (
     _dumps as _dumps,  # runout.models.dynamic's sweep
 )
@@ -503,8 +514,10 @@ def _streaming_notes(case: Case, workers: int) -> tuple[str, ...]:
         f"within a relative {QUANTILE_RELATIVE_ERROR:g} of the exact ones and each histogram "
         "counts the sketch's buckets (a sample within that of a bin edge may be counted in "
         "the next bin)",
-        "per-sample values are not kept: samples.csv, samples_columns.json, stiffness.csv and "
-        'the figures are not written (set study.statistics = "exact" for them)',
+        "per-sample values are not kept in memory: with --out, samples.csv and "
+        "samples_columns.json are written from the chunk files afterwards, one chunk at a "
+        'time; stiffness.csv and the figures are not written (set study.statistics = "exact" '
+        "for them)",
     )
 
 
@@ -648,9 +661,67 @@ def _run(
         _write_text(directory / "manifest.json", _dumps(manifest, indent=2))
         try:
             result.write(directory, plots=plots)
+            if isinstance(result, StreamedStudyResult):
+                _write_streamed_samples(directory, case, plan, result)
         except OSError as exc:  # a plot or the directory (summary and CSV name their file)
             raise OutputError(f"{directory}: cannot write ({exc.strerror or exc})") from None
     return result
+
+
+def _write_streamed_samples(
+    directory: Path, case: Case, plan: _Plan, result: StreamedStudyResult
+) -> None:
+    """``samples.csv`` and ``samples_columns.json`` of a streaming study, from its chunk files.
+
+    One chunk in memory at a time, in sample order: each is read back (and checked, as a
+    resume checks it), turned into the columns an exact study has (:class:`_Assembly` over the
+    chunk alone) with the line columns of the whole study (0 where a line is not in the chunk,
+    as the exact mode has it), and appended. The files are those the exact mode writes for the
+    same study, but for the order of lines whose mean p-p tie to round-off.
+    """
+    keys = list(result.line_statistics)
+    order = [f"{d}|{label}" for d, _, label, _ in result._line_order()]
+    names = line_column_names(keys)
+    header: list[str] | None = None
+    described: dict[str, Any] | None = None
+
+    def rows(fh: Any) -> None:
+        nonlocal header, described
+        writer = csv.writer(fh, lineterminator="\n")
+        for task in plan.tasks:
+            path = _chunk_path(directory, task.index)
+            chunk = read_json(path, [directory])
+            problem = _chunk_problem(chunk, task, plan.digest)
+            if problem is not None:  # written by this run a moment ago: someone changed it
+                raise OutputError(f"{path}: {problem}; run the study again")
+            n = task.stop - task.start
+            part = _Assembly(case, dataclasses.replace(plan, total=n))
+            part.add(0, {**chunk, "start": 0, "stop": n})
+            sub = part.result()
+            table = [c for c in sub._column_table() if "direction" not in c[3]]
+            table[0] = ("sample", np.arange(task.start, task.stop), "-", {})
+            for key in order:
+                pp = sub.lines[key][1] if key in sub.lines else np.zeros(n)
+                direction, _, label = key.partition("|")
+                frequency = result.line_statistics[key][0]
+                info = {"direction": direction, "frequency_hz": frequency, "label": label}
+                table.append((names[key], pp, "m", info))
+            if header is None:
+                header = [name for name, _, _, _ in table]
+                writer.writerow(header)
+                described = {
+                    "format": COLUMNS_FORMAT,
+                    "units": {name: unit for name, _, unit, _ in table},
+                    "columns": {name: info for name, _, _, info in table if info},
+                }
+            for start in range(0, n, CSV_BLOCK):
+                block = slice(start, start + CSV_BLOCK)
+                writer.writerows(zip(*(_cells(col[block]) for _, col, _, _ in table), strict=True))
+
+    write_atomic(directory / "samples.csv", rows)
+    if described is not None:
+        text = json.dumps(described, indent=2, allow_nan=False) + "\n"
+        _write_text(directory / COLUMNS_FILE, text)
 
 
 #: Least time between two rewrites of ``manifest.json`` during a study [s] (and at its end).
