@@ -176,7 +176,7 @@ case = lot(n)
 R.run_study(lot(300)).to_json()
 b = _with_batch(R._plan(case, None).tasks)[0].batch
 sizes = 1e-7 * np.random.default_rng(1).standard_normal((n, b.z))
-size = case.study.chunk_size
+size = R._plan(case, None).size  # the chunks the study runs (chosen from the cost)
 
 def kernel():
     for i in range(0, n, size):
