@@ -584,6 +584,15 @@ KEYS: tuple[KeyConvention, ...] = (
         _table_key("analysis", "bands"),
     ),
     KeyConvention(
+        "analysis.limit_bore",
+        "Bore d of the bearing, which selects the K_ia row of an ISO 492 tolerance class limit "
+        '(limit = "P4"; ISO 492:2014, 2.5 mm < d <= 120 mm).',
+        "m",
+        (H, H, H, R, H, H, H),
+        {"equilibrium": _NOT_SOLVED + ": it gives no runout to compare"},
+        _table_key("analysis", "limit_bore"),
+    ),
+    KeyConvention(
         'analysis.limit_on = "axial_pp"',
         "A spec limit on the axial runout p-p.",
         "-",
@@ -607,15 +616,6 @@ KEYS: tuple[KeyConvention, ...] = (
         (H, H, H, R, H, H, H),
         {"equilibrium": _NOT_SOLVED + ": it gives no runout to compare"},
         _table_key("analysis", "limit"),
-    ),
-    KeyConvention(
-        "analysis.limit_bore",
-        "Bore d of the bearing, which selects the K_ia row of an ISO 492 tolerance class limit "
-        '(limit = "P4"; ISO 492:2014, 2.5 mm < d <= 120 mm).',
-        "m",
-        (H, H, H, R, H, H, H),
-        {"equilibrium": _NOT_SOLVED + ": it gives no runout to compare"},
-        _table_key("analysis", "limit_bore"),
     ),
     KeyConvention(
         "spindle, bearings",

@@ -236,7 +236,9 @@ def class_limit(name: str, bore: float) -> ClassLimit:
             f"unknown tolerance class {text!r} (ISO 492 classes: {', '.join(TOLERANCE_CLASSES)})"
             + _close(text, list(TOLERANCE_CLASSES))
         )
-    d_mm = bore * 1e3
+    # to 1 nm: a bore given as "18 mm" is 0.018 m, whose 1e3 multiple is 18.000000000000004
+    # and would fall into the next range
+    d_mm = round(bore * 1e3, 6)
     edges = KIA_BORE_EDGES_MM
     if not edges[0] < d_mm <= edges[-1]:
         raise StandardsError(
