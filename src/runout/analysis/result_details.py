@@ -1133,6 +1133,9 @@ class Verdict:
         True when ``value <= limit``.
     unit : {"m", "um/s"}
         Unit of ``limit`` and ``value`` (JSON ``limit_m`` / ``limit_um_per_s``).
+    tolerance_class : dict or None
+        For an ISO 492 tolerance class limit: ``{"class", "bore_m", "source"}`` (JSON keys
+        of the same names); None for a numeric limit.
     """
 
     quantity: str
@@ -1140,6 +1143,7 @@ class Verdict:
     value: float
     passed: bool
     unit: Literal["m", "um/s"] = "m"
+    tolerance_class: dict[str, Any] | None = None
 
     def to_json(self) -> dict[str, Any]:
         """JSON ``verdict``.
@@ -1148,7 +1152,8 @@ class Verdict:
         -------
         dict
             ``quantity``, ``limit_m`` and ``value_m`` [m] (``limit_um_per_s`` and
-            ``value_um_per_s`` [um/s] for a band) and ``pass``.
+            ``value_um_per_s`` [um/s] for a band) and ``pass``; for a tolerance class also
+            ``class``, ``bore_m`` and ``source`` (ISO 492:2014 and the bore range).
         """
         suffix = "m" if self.unit == "m" else "um_per_s"
         return {
@@ -1156,6 +1161,7 @@ class Verdict:
             f"limit_{suffix}": self.limit,
             f"value_{suffix}": self.value,
             "pass": self.passed,
+            **(self.tolerance_class or {}),
         }
 
     @classmethod
@@ -1172,12 +1178,14 @@ class Verdict:
         Verdict
         """
         if "limit_m" in doc:
+            grade: dict[str, Any] = {k: doc[k] for k in ("class", "bore_m", "source") if k in doc}
             return cls(
                 str(doc["quantity"]),
                 float(doc["limit_m"]),
                 float(doc["value_m"]),
                 bool(doc["pass"]),
                 "m",
+                grade or None,
             )
         return cls(
             str(doc["quantity"]),

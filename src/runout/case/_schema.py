@@ -23,6 +23,12 @@ from pydantic import (
 
 from runout.base.units import UnitError, to_si
 from runout.case.limits import MAX_BINS, MAX_ELEMENTS, MAX_ENTRIES, MAX_ORDER
+from runout.case.standards import (
+    StandardsError,
+    ball_grade,
+    class_limit,
+    is_class_name,
+)
 
 TWO_PI = 2.0 * math.pi
 #: Largest groove conformity f = r / D: a groove radius of a whole ball diameter is no longer
@@ -493,6 +499,33 @@ class ElementsSpec(_Table):
             "(angle 0 along +x of the bearing for every element; seed 004 eq. 7)."
         ),
     )
+    grade: str | None = Field(
+        None,
+        description=(
+            'ISO 3290-1 grade of the balls (e.g. "G5"; G3 to G200): a run draws no ball sizes '
+            "and says so in notes; a Monte Carlo draws them with [study.vary] ball_grade "
+            "(sigma = V_DWL / grade_sigma_divisor); docs/studies.md."
+        ),
+    )
+    grade_sigma_divisor: float | None = Field(
+        None,
+        gt=0.0,
+        le=1e3,
+        description=(
+            "The lot diameter variation V_DWL of a ball grade taken as this many standard "
+            "deviations of the balls' diameters (default 6: +-3 sigma)."
+        ),
+    )
+
+    @field_validator("grade")
+    @classmethod
+    def _known_grade(cls, value: str | None) -> str | None:
+        if value is None:
+            return value
+        try:
+            return ball_grade(value).name
+        except StandardsError as exc:
+            raise ValueError(str(exc)) from None
 
 
 RawQuantity = int | float | str
@@ -615,8 +648,10 @@ class AnalysisSpec(_Table):
         None,
         description=(
             'Spec limit on limit_on: a length (e.g. "0.5 um") for a runout p-p, a velocity '
-            '(e.g. "50 um/s") for a band. run: JSON verdict (pass: value <= limit); study: '
-            "JSON yield with a Clopper-Pearson 95 % interval."
+            '(e.g. "50 um/s") for a band, or an ISO 492 tolerance class ("Normal", "P6", "P5", '
+            '"P4", "P2": its K_ia for the bore limit_bore; limit_on then defaults to "rro_pp"). '
+            "run: JSON verdict (pass: value <= limit); study: JSON yield with a "
+            "Clopper-Pearson 95 % interval."
         ),
     )
     limit_on: LimitQuantity = Field(
@@ -624,9 +659,37 @@ class AnalysisSpec(_Table):
         description=(
             'Quantity the limit applies to: "radial_pp", "rro_pp", "nrro_pp", "axial_pp" '
             '(runout p-p [m]) or "iso15242.L", "iso15242.M", "iso15242.H" (band rms, needs '
-            'bands = "iso15242"; run only).'
+            'bands = "iso15242"; run only). Default "radial_pp", "rro_pp" with a tolerance class.'
         ),
     )
+    limit_bore: Length | None = Field(
+        None,
+        description=(
+            "Bore d of the bearing [m] (2.5 mm < d <= 120 mm), which selects the K_ia row of a "
+            "tolerance class limit (ISO 492:2014)."
+        ),
+    )
+
+    @model_validator(mode="before")
+    @classmethod
+    def _class_quantity(cls, value: object) -> object:
+        # K_ia is the repeatable runout of the rotating inner ring: the default quantity of a
+        # class limit (an explicit limit_on is kept and checked below)
+        if (
+            isinstance(value, dict)
+            and isinstance(value.get("limit"), str)
+            and is_class_name(value["limit"])
+            and "limit_on" not in value
+        ):
+            return {**value, "limit_on": "rro_pp"}
+        return value
+
+    @property
+    def tolerance_class(self) -> str | None:
+        """The ISO 492 class ``limit`` names, or None for a numeric limit (or none)."""
+        if isinstance(self.limit, str) and is_class_name(self.limit):
+            return self.limit
+        return None
 
     @model_validator(mode="after")
     def _check_limit(self) -> AnalysisSpec:
@@ -634,13 +697,73 @@ class AnalysisSpec(_Table):
             # a case re-serialised with its defaults (study variants) names the default
             if self.limit_on != "radial_pp":
                 raise _KeyedError("limit_on", "needs analysis.limit (the spec limit)")
+            if self.limit_bore is not None:
+                raise _KeyedError("limit_bore", 'needs a tolerance class limit (e.g. "P4")')
             return self
+        if self.tolerance_class is not None:
+            analysis_limit(self)  # raises _KeyedError("limit" or "limit_bore", ...)
+            return self
+        if self.limit_bore is not None:
+            raise _KeyedError(
+                "limit_bore", 'only applies to a tolerance class limit (e.g. limit = "P4")'
+            )
         limit_si(self.limit, self.limit_on)  # raises _KeyedError("limit", ...)
         if is_band_quantity(self.limit_on) and self.bands != "iso15242":
             raise _KeyedError(
                 "limit_on", f'"{self.limit_on}" is a band: it needs bands = "iso15242"'
             )
         return self
+
+
+def analysis_limit(analysis: AnalysisSpec) -> tuple[float, dict[str, Any] | None]:
+    """The spec limit of ``[analysis]`` in SI and, for a tolerance class, what it is.
+
+    Parameters
+    ----------
+    analysis : AnalysisSpec
+        A table with a ``limit``.
+
+    Returns
+    -------
+    tuple
+        The limit ([m] for a runout p-p, [m/s] for a band) and None, or for an ISO 492 class
+        K_ia [m] and ``{"class", "bore_m", "source"}`` (the verdict's and yield's keys).
+
+    Raises
+    ------
+    _KeyedError
+        ``limit``: an unknown class (close matches), a class on a quantity other than the
+        radial runout; ``limit_bore``: missing, or outside the table.
+    """
+    assert analysis.limit is not None
+    name = analysis.tolerance_class
+    if name is None:
+        return limit_si(analysis.limit, analysis.limit_on), None
+    if analysis.limit_on not in ("rro_pp", "radial_pp"):
+        raise _KeyedError(
+            "limit_on",
+            f'"{analysis.limit_on}": an ISO 492 class limits K_ia, the radial runout of the '
+            'inner ring: limit_on = "rro_pp" (its default) or "radial_pp"',
+        )
+    try:
+        class_limit(name, 0.025)  # the class name first: its error names limit
+    except StandardsError as exc:
+        raise _KeyedError("limit", str(exc)) from None
+    if analysis.limit_bore is None:
+        raise _KeyedError(
+            "limit_bore",
+            f'required with limit = "{name}": the bearing\'s bore d (e.g. limit_bore = '
+            '"25 mm"), which selects the K_ia row of ISO 492',
+        )
+    try:
+        found = class_limit(name, analysis.limit_bore)
+    except StandardsError as exc:
+        raise _KeyedError("limit_bore", str(exc)) from None
+    return found.limit, {
+        "class": found.tolerance_class,
+        "bore_m": found.bore,
+        "source": found.source,
+    }
 
 
 class DynamicsSpec(_Table):
@@ -724,6 +847,10 @@ class VarySpec(_Table):
 STUDY_SHORTHANDS = {
     "element_diameter_sigma": (
         "standard deviation [m] of a normal error added to every element's diameter error"
+    ),
+    "ball_grade": (
+        'ISO 3290-1 grade of the balls (e.g. "G5"): element_diameter_sigma = V_DWL / '
+        "grade_sigma_divisor ([elements], default 6)"
     ),
 }
 #: A spindle bearing's per-element key: ``elements.<name>.diameter_errors`` (or pitch_errors).
@@ -903,7 +1030,8 @@ class StudySpec(_Table):
         description=(
             'Quantities to vary: "table.key" = {distribution = ...} (Monte Carlo) or '
             "{values = [...]} or {start, stop, num or step} (sweep); shorthand "
-            'element_diameter_sigma = "0.1 um" (a spindle: "element_diameter_sigma.<bearing>"). '
+            'element_diameter_sigma = "0.1 um" (a spindle: "element_diameter_sigma.<bearing>") '
+            'or ball_grade = "G5" (ISO 3290-1; a spindle: "ball_grade.<bearing>"). '
             "Keys of each entry: docs/studies.md."
         ),
     )
@@ -1019,6 +1147,16 @@ class StudySpec(_Table):
             if split_shorthand(key) is not None:
                 if self.kind != "montecarlo":
                     raise _KeyedError(where, 'shorthands apply to kind = "montecarlo" only')
+                if split_shorthand(key)[0] == "ball_grade":  # type: ignore[index]
+                    if not isinstance(entry, str):
+                        raise _KeyedError(
+                            where, f'must be a grade (e.g. "G5"), got {_Short(entry)!r}'
+                        )
+                    try:
+                        ball_grade(entry)
+                    except StandardsError as exc:
+                        raise _KeyedError(where, str(exc)) from None
+                    continue
                 if isinstance(entry, VarySpec):
                     raise _KeyedError(where, 'must be a length (e.g. "0.1 um"), not a table')
                 try:
@@ -1085,6 +1223,14 @@ def _check_allocation(study: StudySpec) -> None:
             "allocate", f"'{study.allocate}' is not a [study.vary] key (the case varies: {keys})"
         )
     entry = study.vary[study.allocate]
+    shorthand = split_shorthand(study.allocate)
+    if shorthand is not None and shorthand[0] == "ball_grade":
+        raise _KeyedError(
+            "allocate",
+            f"'{study.allocate}' is a ball grade: a grade is a table row, not a tolerance to "
+            "allocate; allocate element_diameter_sigma (the grade's sigma is V_DWL / 6) and read "
+            "the grade off docs/studies.md",
+        )
     if isinstance(entry, VarySpec) and entry.distribution == "sample":
         raise _KeyedError(
             "allocate",

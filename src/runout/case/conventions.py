@@ -145,6 +145,25 @@ def _table_key(table: str, name: str) -> Any:
     return present
 
 
+#: Why a run does not apply ``[elements] grade`` (its note).
+_GRADE_IN_A_RUN = (
+    "one bearing has one set of balls, and the grade gives only their scatter: a run draws no "
+    "ball sizes (elements.diameter_errors are used as given); a Monte Carlo study draws them "
+    "with [study.vary] ball_grade. The grade's roundness t_Dw is not applied either: it "
+    'gives no lobe order (give ball waviness as [[waviness]] part = "ball")'
+)
+
+
+def _grade_keys(spec: CaseSpec) -> list[str]:
+    """``present`` of ``[elements] grade`` and ``grade_sigma_divisor``."""
+    return [
+        f"{prefix}.{name}"
+        for prefix, table in spec.element_tables
+        for name in ("grade", "grade_sigma_divisor")
+        if getattr(table, name) is not None
+    ]
+
+
 def _table(table: str) -> Any:
     def present(spec: CaseSpec) -> list[str]:
         return [table] if getattr(spec, table, None) is not None else []
@@ -503,6 +522,16 @@ KEYS: tuple[KeyConvention, ...] = (
         _table_key("elements", "phase_frame"),
     ),
     KeyConvention(
+        "elements.grade, grade_sigma_divisor",
+        "ISO 3290-1 grade of the balls (G3 to G200) and the number of standard deviations its "
+        "lot diameter variation V_DWL is taken as (default 6): a Monte Carlo draws the balls' "
+        "diameters with sigma = V_DWL / divisor ([study.vary] ball_grade).",
+        "-",
+        (N, N, N, N, N, N, N),
+        {m: _GRADE_IN_A_RUN for m in MODELS},
+        _grade_keys,
+    ),
+    KeyConvention(
         "analysis.revolutions, samples",
         "Length of the record in revolutions of the rotating ring, and its number of instants.",
         "-",
@@ -553,6 +582,15 @@ KEYS: tuple[KeyConvention, ...] = (
         (H, H, H, R, H, H, H),
         {"equilibrium": _NO_LINES},
         _table_key("analysis", "bands"),
+    ),
+    KeyConvention(
+        "analysis.limit_bore",
+        "Bore d of the bearing, which selects the K_ia row of an ISO 492 tolerance class limit "
+        '(limit = "P4"; ISO 492:2014, 2.5 mm < d <= 120 mm).',
+        "m",
+        (H, H, H, R, H, H, H),
+        {"equilibrium": _NOT_SOLVED + ": it gives no runout to compare"},
+        _table_key("analysis", "limit_bore"),
     ),
     KeyConvention(
         'analysis.limit_on = "axial_pp"',

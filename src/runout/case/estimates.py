@@ -359,7 +359,10 @@ def batched_study(case: Any) -> bool:
         study.kind == "montecarlo"
         and models == ("quasi_static_2d",)
         and case.operation.radial_load == 0.0
-        and all(key in ("element_diameter_sigma", "elements.diameter_errors") for key in study.vary)
+        and all(
+            key in ("element_diameter_sigma", "ball_grade", "elements.diameter_errors")
+            for key in study.vary
+        )
     )
 
 

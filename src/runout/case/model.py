@@ -51,6 +51,7 @@ from runout.case._schema import (
     VarySpec,
     WavinessSpec,
     WavinessSpectrumSpec,
+    analysis_limit,
     first_validation_error,
     is_band_quantity,
     limit_si,
@@ -216,6 +217,9 @@ class Analysis:
     limit_on : str
         Quantity the limit applies to: ``"radial_pp"``, ``"rro_pp"``, ``"nrro_pp"``,
         ``"axial_pp"`` or ``"iso15242.<band>"``.
+    limit_class : dict or None
+        For an ISO 492 tolerance class limit: ``{"class", "bore_m", "source"}`` (the limit is
+        its K_ia for the bore, ISO 492:2014); None for a numeric limit.
     """
 
     model: str = "quasi_static_3d"
@@ -227,6 +231,7 @@ class Analysis:
     bands: str | None = None
     limit: float | None = None
     limit_on: str = "radial_pp"
+    limit_class: dict[str, Any] | None = None
 
 
 @dataclass(frozen=True)
@@ -568,6 +573,9 @@ def parse_case(
         raise CaseError(path, exc.key, exc.message) from None
     except ValueError as exc:
         raise CaseError(path, "", str(exc)) from None
+    limit_m, limit_class = (
+        (None, None) if spec.analysis.limit is None else analysis_limit(spec.analysis)
+    )
     analysis = Analysis(
         model=spec.analysis.model,
         revolutions=spec.analysis.revolutions,
@@ -577,12 +585,9 @@ def parse_case(
         # unset: the model's own (free; the case re-serialised for a study keeps it unset)
         ring_tilt=spec.analysis.ring_tilt or "free",
         bands=spec.analysis.bands,
-        limit=(
-            None
-            if spec.analysis.limit is None
-            else limit_si(spec.analysis.limit, spec.analysis.limit_on)
-        ),
+        limit=limit_m,
         limit_on=spec.analysis.limit_on,
+        limit_class=limit_class,
     )
     case = Case(
         path=path,

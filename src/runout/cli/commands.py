@@ -885,9 +885,19 @@ def _print_study(summary: dict[str, Any], title: str, out: str | None) -> None:
             *(fmt(comp["pp_m"][k]) for k in stat_keys),
         )
     _out.print(table)
+    for grade in summary.get("ball_grades", []):  # the sigma a ball grade drew with
+        sigma = format_length(grade["sigma_m"], length_unit([grade["sigma_m"]]))
+        _out.print(
+            f"ball grade {grade['grade']} ({grade['key']}): ball diameter sigma {sigma} "
+            f"({grade['source']})",
+            soft_wrap=True,
+            highlight=False,
+        )
     lot = summary.get("yield")
     if lot is not None:
         limit = format_length(lot["limit_m"], length_unit([lot["limit_m"]]))
+        if "class" in lot:  # K_ia of an ISO 492 tolerance class for the bore
+            limit += f" (ISO 492 class {lot['class']}, bore {lot['bore_m'] * 1e3:g} mm)"
         if lot["fraction"] is None:
             _out.print(f"yield: no sample succeeded (limit {limit} on {lot['quantity']})")
         else:

@@ -768,4 +768,8 @@ def verdict_line(verdict: Verdict) -> str:
     else:
         value = f"{_plain(verdict.value, 4)} um/s"
         limit = f"{_plain(verdict.limit, 4)} um/s"
-    return f"{word}: {verdict.quantity} = {value} {relation} the limit {limit}"
+    text = f"{word}: {verdict.quantity} = {value} {relation} the limit {limit}"
+    if verdict.tolerance_class is not None:  # K_ia of an ISO 492 class for the bore
+        bore = f"{float(verdict.tolerance_class['bore_m']) * 1e3:g} mm"
+        text += f" (K_ia of ISO 492 class {verdict.tolerance_class['class']}, bore {bore})"
+    return text

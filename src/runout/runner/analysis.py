@@ -214,6 +214,9 @@ def apply_analysis(result: RunResult, case: Case) -> RunResult:
     if limit is not None:
         probe = replace(result, iso15242=iso15242)
         verdict = verdict_of(probe, float(limit), limit_on)
+        tolerance_class = getattr(analysis, "limit_class", None)
+        if tolerance_class is not None:  # an ISO 492 class: its name, bore and source
+            verdict = replace(verdict, tolerance_class=dict(tolerance_class))
         if verdict.passed:
             _refuse_unseen_pass(probe, case.path, limit_on)
     return replace(result, iso15242=iso15242, verdict=verdict, anderon=anderon, element=element)

@@ -18,6 +18,7 @@ from runout.base.errors import CaseError, RunoutError
 from runout.base.units import to_si
 from runout.case._schema import split_shorthand
 from runout.case.model import Case, CaseSpec, StudySpec, VarySpec, parse_vary_key
+from runout.case.standards import ISO_3290_SOURCE
 
 #: Runout figures kept per sample, in this order (the keys of
 #: :class:`runout.analysis.results.Runout`).
@@ -145,6 +146,10 @@ class Quantity:
     values : tuple
         ``"sample"``: the measured values; ``"sweep"``: the swept values (SI floats or the
         literal strings of a text key).
+    grade : dict or None
+        A ball-size draw of a bearing with a ball grade (``ball_grade``, or
+        ``element_diameter_sigma`` on a bearing whose ``[elements] grade`` is set): the study
+        JSON's ``ball_grades`` entry (:func:`_grade_of`).
     """
 
     key: str
@@ -154,6 +159,7 @@ class Quantity:
     mean: NDArray[np.float64] = field(default_factory=lambda: np.zeros(0))
     spread: tuple[float, ...] = ()
     values: tuple[Any, ...] = ()
+    grade: dict[str, Any] | None = None
 
     def from_uniforms(self, u: NDArray[np.float64]) -> NDArray[np.float64]:
         """Values of a block of samples from their uniform numbers [SI].
@@ -280,10 +286,19 @@ def plan_quantities(case: Case, data: dict[str, Any] | None = None) -> list[Quan
         if shorthand is not None:
             assert not isinstance(entry, VarySpec)
             imperfections, z = _bearing_of(case, key, where, shorthand[1])
-            sigma = to_si(entry, "length")
-            base = np.asarray(imperfections.diameter_errors, dtype=np.float64)
             table = "elements" if shorthand[1] is None else f"elements.{shorthand[1]}"
-            out.append(Quantity(key, (table, None, "diameter_errors"), z, "normal", base, (sigma,)))
+            grade = _grade_of(case, table, key, entry, where)
+            sigma = (
+                float(grade["sigma_m"])
+                if grade is not None and shorthand[0] == "ball_grade"
+                else to_si(entry, "length")
+            )
+            base = np.asarray(imperfections.diameter_errors, dtype=np.float64)
+            out.append(
+                Quantity(
+                    key, (table, None, "diameter_errors"), z, "normal", base, (sigma,), grade=grade
+                )
+            )
             continue
         assert isinstance(entry, VarySpec)
         path = parse_vary_key(key)
@@ -345,6 +360,58 @@ def plan_quantities(case: Case, data: dict[str, Any] | None = None) -> list[Quan
                 f"varies the same quantity as study.vary.{drawn_by[q.path]}; keep one",
             )
         drawn_by[q.path] = q.key
+    return out
+
+
+def _grade_of(case: Case, table: str, key: str, entry: Any, where: str) -> dict[str, Any] | None:
+    """The ``ball_grades`` JSON entry of a ball-size shorthand, None without a grade.
+
+    ``ball_grade = "G5"`` draws with sigma = V_DWL / divisor (ISO 3290-1:2014; divisor the
+    bearing's ``grade_sigma_divisor``, default 6). ``element_diameter_sigma`` on a bearing
+    whose ``[elements] grade`` is set draws the sigma it gives, which wins over the grade's:
+    the entry says so in ``note``.
+
+    Raises
+    ------
+    CaseError
+        ``ball_grade`` naming another grade than the bearing's ``[elements] grade``.
+    """
+    from runout.case.standards import DEFAULT_GRADE_SIGMA_DIVISOR, ball_grade, grade_sigma
+
+    own = dict(case.spec.element_tables).get(table)
+    own_grade = own.grade if own is not None else None
+    divisor = (
+        own.grade_sigma_divisor
+        if own is not None and own.grade_sigma_divisor is not None
+        else DEFAULT_GRADE_SIGMA_DIVISOR
+    )
+    explicit = not key.startswith("ball_grade")
+    if explicit and own_grade is None:
+        return None
+    grade = ball_grade(str(own_grade) if explicit else str(entry))
+    if not explicit and own_grade is not None and own_grade != grade.name:
+        raise CaseError(
+            case.path,
+            where,
+            f'"{grade.name}" contradicts {table}.grade = "{own_grade}": the balls have one '
+            "grade; keep one of the two",
+        )
+    sigma = grade_sigma(grade, divisor)
+    out: dict[str, Any] = {
+        "key": key,
+        "grade": grade.name,
+        "lot_diameter_variation_m": grade.lot_diameter_variation,
+        "sigma_divisor": divisor,
+        "sigma_m": sigma,
+        "source": f"{ISO_3290_SOURCE}; sigma = V_DWL / {divisor:g}",
+    }
+    if explicit:
+        given = to_si(entry, "length")
+        out["sigma_m"] = given
+        out["note"] = (
+            f"{where} = {given * 1e6:.6g} um is drawn: it wins over {table}.grade = "
+            f'"{grade.name}", whose sigma would be V_DWL / {divisor:g} = {sigma * 1e6:.6g} um'
+        )
     return out
 
 

@@ -120,6 +120,9 @@ class StudyResult:
         Sample index -> ``{"radial_stiffness": {...}, "axial_stiffness_n_per_m": K_aa}`` for
         every equilibrium sample that ran (the run JSON's ``radial_stiffness`` [N/m, rpm] and
         the axial diagonal of its ``stiffness_matrix`` [N/m]); written as ``stiffness.csv``.
+    limit_class : dict or None
+        ``{"class", "bore_m", "source"}`` when the limit is an ISO 492 tolerance class's K_ia
+        (the ``yield`` object carries them).
     """
 
     kind: str
@@ -134,6 +137,7 @@ class StudyResult:
     bins: int = 20
     limit: tuple[str, float] | None = None
     stiffness: dict[int, dict[str, Any]] = field(default_factory=dict)
+    limit_class: dict[str, Any] | None = None
 
     @property
     def samples(self) -> int:
@@ -179,7 +183,17 @@ class StudyResult:
             "quantities": [q.key for q in self.quantities],
             "runout": runout,
             "components": comps,
+            **self._grade_keys(),
         }
+
+    def _grade_keys(self) -> dict[str, Any]:
+        """``ball_grades`` (the grade and sigma of each ball-size draw of a graded bearing)
+        and ``notes`` (an explicit sigma winning over a grade), when the study has them."""
+        grades = [dict(q.grade) for q in self.quantities if q.grade is not None]
+        if not grades:
+            return {}
+        notes = [g["note"] for g in grades if "note" in g]
+        return {"ball_grades": grades, **({"notes": notes} if notes else {})}
 
     def error_list(self, limit: int = ERRORS_SHOWN) -> list[dict[str, Any]]:
         """The first ``limit`` failed samples as ``{"sample": i, "error": "Type: message"}``.
@@ -223,7 +237,7 @@ class StudyResult:
             out["points"] = self.points()
         elif self.limit is not None:
             out["yield"] = self.lot_yield()
-        return out | self._streaming_keys()
+        return out | self._grade_keys() | self._streaming_keys()
 
     def _streaming_keys(self) -> dict[str, Any]:
         """Keys a streaming study adds to its JSON (none here: exact statistics)."""
@@ -253,6 +267,7 @@ class StudyResult:
         return {
             "quantity": quantity,
             "limit_m": limit,
+            **(self.limit_class or {}),
             "passed": k,
             "samples": n,
             "fraction": k / n if n else None,
@@ -655,6 +670,7 @@ class StreamedStudyResult(StudyResult):
             "quantities": [q.key for q in self.quantities],
             "runout": runout,
             "components": comps,
+            **self._grade_keys(),
             **self._streaming_keys(),
         }
 
@@ -662,7 +678,7 @@ class StreamedStudyResult(StudyResult):
         return {
             "statistics": "streaming",
             "quantile_relative_error": QUANTILE_RELATIVE_ERROR,
-            "notes": list(self.notes),
+            "notes": [*self._grade_keys().get("notes", []), *self.notes],
         }
 
     def _passed(self, quantity: str, limit: float) -> tuple[int, int]:

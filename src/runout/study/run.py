@@ -1073,6 +1073,7 @@ class _Assembly:
             bins=study.bins,
             limit=study_limit(self.case),
             stiffness=dict(sorted(self.stiffness.items())),
+            limit_class=getattr(self.case.analysis, "limit_class", None),
         )
 
 
@@ -1146,6 +1147,7 @@ class _Streaming:
             errors=self.errors,
             bins=study.bins,
             limit=self.limit,
+            limit_class=getattr(self.case.analysis, "limit_class", None),
             sample_count=self.plan.total,
             failed_count=self.failed,
             models_run=tuple(sorted(self.models)),

@@ -106,6 +106,12 @@ def _axial_limit(data: Data) -> None:
     data["analysis"]["limit_on"] = "axial_pp"
 
 
+def _class_limit(data: Data, model: str) -> None:
+    # a P4 limit at a bore of 8 mm (K_ia 2.5 um); the change moves the bore to 40 mm (4 um)
+    data["analysis"]["limit"] = "P4"
+    data["analysis"]["limit_bore"] = "8 mm"
+
+
 #: key -> (patch of the base for this key, the change of the key alone)
 CHANGES: dict[str, tuple[Callable[[Data, str], None], Callable[[Data], None]]] = {
     'bearing.type = "cylindrical_roller"': (_no_patch, _roller),
@@ -158,6 +164,8 @@ CHANGES: dict[str, tuple[Callable[[Data, str], None], Callable[[Data], None]]] =
     "analysis.bands": (_no_patch, _set("analysis.bands", "iso15242")),
     'analysis.limit_on = "axial_pp"': (_held_axially, _axial_limit),
     "analysis.limit": (_no_patch, _set("analysis.limit", "1 um")),
+    "elements.grade, grade_sigma_divisor": (_no_patch, _set("elements.grade", "G5")),
+    "analysis.limit_bore": (_class_limit, _set("analysis.limit_bore", "40 mm")),
     # run on a spindle case: tests/unit/case/test_spindle_conventions.py
     "spindle, bearings": (_no_patch, lambda d: None),
 }

@@ -118,6 +118,12 @@ def _none(data: Data) -> None:
     return None
 
 
+def _class_limit(data: Data) -> None:
+    # a P4 limit at a bore of 8 mm (K_ia 2.5 um); the change moves the bore to 40 mm (4 um)
+    data["analysis"]["limit"] = "P4"
+    data["analysis"]["limit_bore"] = "8 mm"
+
+
 #: key -> (patch of the base, the change of the key alone)
 CHANGES: dict[str, tuple[Callable[[Data], None], Callable[[Data], None]]] = {
     'bearing.type = "cylindrical_roller"': (_none, _roller),
@@ -161,6 +167,8 @@ CHANGES: dict[str, tuple[Callable[[Data], None], Callable[[Data], None]]] = {
     "analysis.bands": (_none, _set("analysis.bands", "iso15242")),
     'analysis.limit_on = "axial_pp"': (_none, _axial_limit),
     "analysis.limit": (_none, _set("analysis.limit", "1 um")),
+    "elements.grade, grade_sigma_divisor": (_none, _front_elements("grade", "G5")),
+    "analysis.limit_bore": (_class_limit, _set("analysis.limit_bore", "40 mm")),
     "spindle, bearings": (_none, _set("spindle.nose_position", -20e-3)),
 }
 
