@@ -210,10 +210,18 @@ BAD = {
         _replace("elements = 7", "elements = 20000"),
         "bearing.elements: must be at most 10000",
     ),
+    # the columns of 10^10 samples do not fit: statistics = "auto" streams them (memory
+    # independent of the samples), and the time is what refuses them
     "study_samples_beyond_the_budget": (
         VALID + '[analysis]\nmodel = "linear"\n[study]\nkind = "montecarlo"\n'
         'samples = 10000000000\n[study.vary]\nelement_diameter_sigma = "0.1 um"\n',
-        "study.samples: would need about",
+        "study.samples: would take about",
+    ),
+    "study_exact_statistics_beyond_the_memory_budget": (
+        VALID + '[analysis]\nmodel = "linear"\n[study]\nkind = "montecarlo"\n'
+        'samples = 10000000000\nstatistics = "exact"\n'
+        '[study.vary]\nelement_diameter_sigma = "0.1 um"\n',
+        "study.statistics: ",
     ),
 }
 

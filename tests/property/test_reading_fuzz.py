@@ -198,8 +198,10 @@ def test_tampered_study_resumes_or_is_refused(
         result = runner.invoke(
             app, ["study", str(study_dir / "case.toml"), "--out", str(out), "--resume"]
         )
-        # a file of the directory, or the directory (a manifest of another study)
-        _check(result, (f"{out}/", f"--resume: {out} "), time.perf_counter() - start)
+        # a file of the directory, or the directory (a manifest of another study), or the
+        # manifest of an earlier sampling version ("--resume: DIR/manifest.json: ...")
+        prefixes = (f"{out}/", f"--resume: {out} ", f"--resume: {out}/manifest.json: ")
+        _check(result, prefixes, time.perf_counter() - start)
     finally:
         (out / name).write_text(kept, encoding="utf-8")
 

@@ -490,7 +490,18 @@ def _per_run(case: Any) -> ResourceEstimate:
 
 def stream_columns(case: Any) -> int:
     """Columns a streaming study summarises: the four runout figures and every line in x and
-    y (:attr:`Sizes.lines`, an upper bound)."""
+    y (:attr:`Sizes.lines`, an upper bound).
+
+    Parameters
+    ----------
+    case : Case
+        A validated case with a ``[study]``.
+
+    Returns
+    -------
+    int
+        The number of columns, each one :class:`runout.study._stream.StreamStatistics`.
+    """
     return 4 + 2 * int(sizes_of(case).lines)
 
 

@@ -140,6 +140,16 @@ def _close(name: str, known: list[str]) -> str:
 def ball_grade(name: str) -> BallGrade:
     """The ISO 3290-1 grade ``name`` (``"G5"``; ``"g5"`` and ``"5"`` are read as ``"G5"``).
 
+    Parameters
+    ----------
+    name : str
+        The grade as a case writes it.
+
+    Returns
+    -------
+    BallGrade
+        Its tabulated values [m].
+
     Raises
     ------
     StandardsError
@@ -180,8 +190,19 @@ def grade_sigma(grade: BallGrade, divisor: float = DEFAULT_GRADE_SIGMA_DIVISOR) 
 
 
 def is_class_name(text: str) -> bool:
-    """True when ``text`` reads as a tolerance class name rather than a length: it does not
-    start with a digit, a sign or a decimal point (``"P4"``, ``"Normal"``, ``"P3"``)."""
+    """Whether ``text`` reads as a tolerance class name rather than a length.
+
+    Parameters
+    ----------
+    text : str
+        An ``[analysis] limit`` as written.
+
+    Returns
+    -------
+    bool
+        True when it does not start with a digit, a sign or a decimal point (``"P4"``,
+        ``"Normal"``, ``"P3"``; a class the table lacks is refused later, by name).
+    """
     stripped = text.strip()
     return bool(stripped) and not (stripped[0].isdigit() or stripped[0] in "+-.")
 
