@@ -650,6 +650,7 @@ def _run_sections(result: RunResult) -> list[tuple[str, Rows]]:
 
 _ANGLE_KEYS = ("nominal_contact_angle", "contact_angle")
 _PLAIN_KEYS = ("elements", "inner_conformity", "outer_conformity")
+_DIMENSIONS = ("bore_diameter_m", "outside_diameter_m", "width_m")
 
 
 def _source_value(key: str, value: float) -> tuple[str, str]:
@@ -683,6 +684,8 @@ def bearing_source_sections(
     documents = [source] if isinstance(source, dict) else list(source)
     sections: list[tuple[str, Rows]] = []
     for doc in documents:
+        if not all(k in doc for k in ("designation", *_DIMENSIONS)):
+            continue  # an edited result.json: nothing to show, not an error
         provenance = doc.get("provenance", {})
         given = doc.get("given_in_case", {})
         requested = doc.get("requested", doc["designation"])
