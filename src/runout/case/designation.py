@@ -23,7 +23,7 @@ from runout.catalogue import (
     active_catalogue,
 )
 
-__all__ = ["BearingSource", "Pending", "expand", "sources"]
+__all__ = ["BearingSource", "Pending", "blame", "expand", "sources"]
 
 #: Keys whose values are angles [rad] (shown in degrees).
 _ANGLES = ("nominal_contact_angle", "contact_angle")
@@ -251,3 +251,33 @@ def sources(spec: Any, pending: list[Pending]) -> tuple[BearingSource, ...]:
             )
         out.append(BearingSource(p.key, p.entry, given, tuple(notes), p.name, dict(p.dropped)))
     return tuple(out)
+
+
+def blame(pending: list[Pending], key: str, message: str) -> tuple[str, str]:
+    """The key and message of a refusal, naming the catalogue row when the value came from it.
+
+    Parameters
+    ----------
+    pending : list of Pending
+        From :func:`expand`.
+    key, message : str
+        The refusal as the schema or the geometry gives it (``bearing.elements``, ...).
+
+    Returns
+    -------
+    (str, str)
+        ``key`` and ``message`` as given, or, for a value the case did not give itself,
+        ``<table>.designation`` and a message that names the row and its catalogue.
+    """
+    for p in pending:
+        prefix = f"{p.key}."
+        if not key.startswith(prefix):
+            continue
+        name = key[len(prefix) :]
+        if name in p.entry.values and name not in p.given:
+            return (
+                f"{p.key}.designation",
+                f"the catalogue row {p.entry.designation} ({p.entry.catalogue}) gives "
+                f"{name}: {message}",
+            )
+    return key, message

@@ -59,7 +59,7 @@ from runout.case._schema import (
     sweep_count,
 )
 from runout.case._schema import _table_type as _table_type  # runout.api, runout.report.plotting
-from runout.case.designation import BearingSource, expand, sources
+from runout.case.designation import BearingSource, blame, expand, sources
 from runout.case.estimates import check_limits
 from runout.case.limits import MAX_CASE_FILE_BYTES, MAX_TOML_DEPTH, case_budget, format_bytes
 from runout.catalogue import Catalogue
@@ -536,7 +536,7 @@ def parse_case(
     try:
         spec = CaseSpec.model_validate(data)
     except ValidationError as exc:
-        key, message = first_validation_error(exc)
+        key, message = blame(pending, *first_validation_error(exc))
         raise CaseError(path, key, message) from None
     try:
         limits = case_budget(spec)
@@ -553,7 +553,8 @@ def parse_case(
         try:
             bearing = _build_bearing(spec)
         except GeometryError as exc:
-            raise CaseError(path, _GEOMETRY_KEYS.get(exc.key, exc.key), exc.message) from None
+            key, message = blame(pending, _GEOMETRY_KEYS.get(exc.key, exc.key), exc.message)
+            raise CaseError(path, key, message) from None
     try:
         operation = Operation(
             rotating_ring=spec.operation.rotating_ring,

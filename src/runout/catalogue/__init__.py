@@ -367,7 +367,7 @@ def _entry(row: dict[str, str], file: str, line: int, catalogue: str) -> Catalog
         values[key] = value
         provenance[key] = source
     for key, (value, rule) in estimate(kind, bore, outside, given).items():
-        values[key] = round(value, 12)  # a length to the picometre: 0.012, not 0.011999...
+        values[key] = value
         provenance[key] = rule
     if "elements" in values:
         values["elements"] = int(values["elements"])

@@ -71,6 +71,11 @@ RULES = {
 }
 
 
+def _rounded(length: float) -> float:
+    """A length to the picometre (0.012, not 0.011999999999999999) [m]."""
+    return round(length, 12)
+
+
 def _fit_count(pitch_angle: float, span: float) -> int:
     # a hair of tolerance: a count that fits exactly is not lost to round-off
     return math.floor(span / pitch_angle * (1.0 + 1e-12))
@@ -100,27 +105,37 @@ def estimate(
     if kind == "cylindrical_roller":
         d_w = given.get("element_diameter")
         if d_w is None:
-            d_w = ROLLER_SECTION_FACTOR * (outside - bore)
+            d_w = _rounded(ROLLER_SECTION_FACTOR * (outside - bore))
             out["element_diameter"] = (d_w, RULES["roller_section"])
         if "inner_raceway_diameter" in given and "outer_raceway_diameter" in given:
             pitch = 0.5 * (given["inner_raceway_diameter"] + given["outer_raceway_diameter"])
         else:
             pitch = 0.5 * (bore + outside)
-            for key, sign in (("inner_raceway_diameter", -1.0), ("outer_raceway_diameter", 1.0)):
+            inner = given.get("inner_raceway_diameter", _rounded(pitch - d_w))
+            outer = given.get("outer_raceway_diameter", _rounded(pitch + d_w))
+            # zero clearance to the last bit: never a negative one by round-off
+            while outer - inner - 2.0 * d_w < 0.0 and "outer_raceway_diameter" not in given:
+                outer = math.nextafter(outer, math.inf)
+            while outer - inner - 2.0 * d_w < 0.0:
+                inner = math.nextafter(inner, -math.inf)
+            for key, value in (
+                ("inner_raceway_diameter", inner),
+                ("outer_raceway_diameter", outer),
+            ):
                 if key not in given:
-                    out[key] = (pitch + sign * d_w, RULES["roller_raceways"])
+                    out[key] = (value, RULES["roller_raceways"])
         if "elements" not in given:
             angle = 2.0 * math.asin(min(1.0, ROLLER_PITCH_FACTOR * d_w / pitch))
             out["elements"] = (float(_fit_count(angle, 2.0 * math.pi)), RULES["cage_pitch_roller"])
         return out
     ball_pitch = given.get("pitch_diameter")
     if ball_pitch is None:
-        ball_pitch = 0.5 * (bore + outside)
+        ball_pitch = _rounded(0.5 * (bore + outside))
         out["pitch_diameter"] = (ball_pitch, RULES["pitch_mean"])
     pitch = ball_pitch
     ball = given.get("element_diameter")
     if ball is None:
-        ball = BALL_SECTION_FACTOR * (outside - bore)
+        ball = _rounded(BALL_SECTION_FACTOR * (outside - bore))
         out["element_diameter"] = (ball, RULES["ball_section"])
     d_w = ball
     if "elements" not in given:
