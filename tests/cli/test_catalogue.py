@@ -158,7 +158,7 @@ def test_suffixes_are_named_in_notes(tmp_path: Path) -> None:
 
 def test_unknown_designation_is_refused_with_close_matches(tmp_path: Path) -> None:
     path = _case(tmp_path, 'designation = "6250"')
-    code, out, err = _invoke("check", str(path))
+    code, _, err = _invoke("check", str(path))
     assert code == 2
     line = err.strip()
     assert "\n" not in line

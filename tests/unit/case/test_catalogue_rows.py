@@ -13,9 +13,9 @@ from hypothesis import strategies as st
 import runout
 from runout.base.errors import CaseError
 from runout.base.reading import InputFileError
+from runout.case.model import parse_case
 from runout.catalogue import lookup, parse_catalogue, search, shipped_catalogue
 from runout.catalogue._rules import estimate
-from runout.case.model import parse_case
 from runout.geometry.bearing import BallBearing, RollerBearing
 
 ROWS = [e.designation for e in shipped_catalogue()]
