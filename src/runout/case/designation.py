@@ -69,7 +69,13 @@ class BearingSource:
     not_applied: Mapping[str, str] = field(default_factory=dict)
 
     def provenance(self) -> dict[str, str]:
-        """Per key: the catalogue's provenance, or ``"case file"`` for a value the case gives."""
+        """Per key: the catalogue's provenance, or the case's own value or key instead.
+
+        Returns
+        -------
+        dict of str to str
+            ``"dimensions"`` and each key of the entry's values -> where its value comes from.
+        """
         out = dict(self.entry.provenance)
         for key in self.given:
             out[key] = "case file (replaces the catalogue's value)"
@@ -78,7 +84,14 @@ class BearingSource:
         return out
 
     def to_json(self) -> dict[str, Any]:
-        """The JSON ``bearing_source`` object (docs/outputs.md)."""
+        """The JSON ``bearing_source`` object.
+
+        Returns
+        -------
+        dict
+            The entry's designation, d, D, B [m], values (SI) and provenance, the keys the
+            case replaces (``given_in_case``) and the notes (docs/outputs.md).
+        """
         doc = self.entry.to_json()
         doc.pop("notes", None)
         doc["provenance"] = self.provenance()
@@ -91,7 +104,21 @@ class BearingSource:
 
 @dataclass(frozen=True)
 class Pending:
-    """A table expanded before validation: its key, entry and the keys the case gave."""
+    """A table expanded before validation, waiting for the validated values.
+
+    Attributes
+    ----------
+    key : str
+        ``"bearing"`` or ``"bearings[i]"``.
+    entry : CatalogueEntry
+        The catalogue entry of its designation.
+    given : tuple of str
+        The catalogue keys the case gives itself.
+    dropped : tuple of (str, str)
+        Catalogue keys not applied and the case key given instead.
+    name : str or None
+        The spindle bearing's name.
+    """
 
     key: str
     entry: CatalogueEntry

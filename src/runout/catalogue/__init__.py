@@ -179,7 +179,14 @@ class CatalogueEntry:
         return RollerBearing(**self.values)  # type: ignore[arg-type]
 
     def to_json(self) -> dict[str, Any]:
-        """The entry as JSON: designation, boundary dimensions [m], values (SI), provenance."""
+        """The entry as JSON.
+
+        Returns
+        -------
+        dict
+            Designation (and as requested), kind, type, d, D, B [m], the catalogue it was read
+            from, values (SI), provenance, and the suffix and notes where there are any.
+        """
         out: dict[str, Any] = {
             "designation": self.designation,
             "requested": self.requested or self.designation,
@@ -225,8 +232,18 @@ class Catalogue:
         return len(self.entries)
 
     def extended(self, other: Catalogue) -> Catalogue:
-        """This catalogue with ``other``'s rows added; a row of the same designation is replaced
-        and says so in its notes."""
+        """This catalogue with another's rows added.
+
+        Parameters
+        ----------
+        other : Catalogue
+            Rows to add; one of a designation already here replaces that row, and says so in
+            its notes.
+
+        Returns
+        -------
+        Catalogue
+        """
         merged = dict(self.entries)
         for key, entry in other.entries.items():
             if key in merged:
@@ -240,7 +257,22 @@ class Catalogue:
         return Catalogue(merged, (*self.files, *other.files))
 
     def lookup(self, designation: str) -> CatalogueEntry:
-        """The entry of ``designation`` (see :func:`lookup`)."""
+        """The entry of a designation, a suffix after the basic one noted (see :func:`lookup`).
+
+        Parameters
+        ----------
+        designation : str
+            As the case gives it (case and spaces aside).
+
+        Returns
+        -------
+        CatalogueEntry
+
+        Raises
+        ------
+        UnknownDesignationError
+            Naming the closest designations.
+        """
         requested = " ".join(str(designation).split())
         key = _normal(requested)
         entry = self.entries.get(key)
@@ -261,7 +293,17 @@ class Catalogue:
         raise UnknownDesignationError(requested, [self.entries[c].designation for c in close])
 
     def search(self, pattern: str = "") -> list[CatalogueEntry]:
-        """Rows whose designation matches ``pattern`` (see :func:`search`)."""
+        """Rows whose designation matches a pattern (see :func:`search`).
+
+        Parameters
+        ----------
+        pattern : str
+            A glob or a substring, case aside; empty: every row.
+
+        Returns
+        -------
+        list of CatalogueEntry
+        """
         text = _normal(pattern)
         if not text:
             return list(self.entries.values())
