@@ -307,3 +307,34 @@ def test_user_catalogue_link_out_of_its_directory_is_refused(tmp_path: Path) -> 
     code, _, err = _invoke("catalogue", "--catalogue", str(inside / "link.csv"))
     assert code == 2
     assert err.count("\n") == 1 and str(inside / "link.csv") in err
+
+
+def test_report_shows_where_the_bearing_came_from(tmp_path: Path) -> None:
+    out = tmp_path / "out"
+    case = str(ROOT / "examples" / "cwru_6205_drive_end.toml")
+    code, _, err = _invoke("run", case, "--out", str(out), "--report")
+    assert code == 0, err
+    page = (out / "report.html").read_text(encoding="utf-8")
+    assert "Bearing 6205-2RS JEM SKF from the catalogue" in page
+    assert "Where the values of 6205-2RS JEM SKF come from" in page
+    assert "Case Western Reserve University" in page
+    stored = json.loads((out / "result.json").read_text(encoding="utf-8"))
+    assert stored["bearing_source"]["designation"] == "6205-2RS JEM SKF"
+
+
+def test_study_says_which_catalogue_values_the_case_replaces(tmp_path: Path) -> None:
+    path = _case(
+        tmp_path,
+        'designation = "7205C"\nelement_diameter = "7.9375 mm"',
+        '[analysis]\nmodel = "quasi_static_2d"\nrevolutions = 4\nsamples = 512\n'
+        '[study]\nkind = "montecarlo"\nsamples = 4\nseed = 1\n'
+        '[study.vary]\nelement_diameter_sigma = "0.1 um"\n',
+    )
+    path.write_text(path.read_text().replace('radial_load = "100 N"', 'axial_load = "50 N"'))
+    code, out, err = _invoke("study", str(path), "--json")
+    assert code == 0, err
+    assert json.loads(out)["samples"] == 4
+    assert (
+        "note: bearing.element_diameter: 7.9375 mm given in the case replaces the catalogue's "
+        "8.1 mm (7205C)" in err
+    )

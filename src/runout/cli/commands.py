@@ -613,6 +613,9 @@ def study_command(
         scheduler_address(scheduler)
     use_catalogue(catalogue)
     case = _load_allocating(case_file, model, sets, allocate, target_yield)
+    for source in case.bearing_sources:  # [bearing] designation: what was replaced or not applied
+        for line in source.notes:
+            _note(line)
     if case.study is None:
         _fail(f"{case_file}: study: the case has no [study] table (see docs/studies.md)")
     if case.study.kind == "arrangement":
