@@ -3,9 +3,9 @@
 The package is a stack of stage packages, each importing only those below it (the contract is
 checked by ``make test``; docs/architecture.md draws it): ``base`` (errors, units, display,
 glossary) -> ``geometry`` (bearing, imperfections, kinematics, Hertz contact, loading) ->
-``catalogue`` (bearings by designation) -> ``case`` and ``analysis`` (case files; spectra, lines and results) -> ``models`` (the physics)
--> ``runner``, ``io``, ``diagnose`` -> ``api``, ``examples`` -> ``report`` -> ``study`` ->
-``validation`` -> ``cli``.
+``catalogue`` (bearings by designation) -> ``case`` and ``analysis`` (case files; spectra,
+lines and results) -> ``models`` (the physics) -> ``runner``, ``io``, ``diagnose`` -> ``api``,
+``examples`` -> ``report`` -> ``study`` -> ``validation`` -> ``cli``.
 
 From Python, :func:`run` runs a model on a bearing built in code, :func:`load_case` reads a
 case file, and :class:`Imperfections` builds the imperfection tables of a case file
