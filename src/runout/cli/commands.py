@@ -436,6 +436,7 @@ def report_command(
     directory: Annotated[
         Path, typer.Argument(help="Directory written by `runout run CASE --out DIR`.")
     ],
+    catalogue: CatalogueOpt = None,
 ) -> None:
     """Write DIR/report.html: one self-contained page with inputs, results and figures.
 
@@ -446,6 +447,7 @@ def report_command(
     from runout.io.output_dir import output_directory, write_owned
     from runout.report.page import report_html
 
+    use_catalogue(catalogue)  # the case's designation, when a user catalogue gave it
     text = report_html(directory)  # refuses a directory that is not a run's or a study's
     output_directory(directory, option="report")
     path = write_owned(directory, "report.html", lambda fh: fh.write(text))
