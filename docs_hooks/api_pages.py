@@ -22,6 +22,7 @@ API = ROOT / "docs" / "api"
 PACKAGES = [
     ("base", "Base (errors, units, display, glossary)"),
     ("geometry", "Geometry and physics of one bearing"),
+    ("catalogue", "The bearing catalogue"),
     ("case", "Case files"),
     ("analysis", "Spectra, lines and results"),
     ("models", "Models"),

@@ -3,13 +3,14 @@
 The package is a stack of stage packages, each importing only those below it (the contract is
 checked by ``make test``; docs/architecture.md draws it): ``base`` (errors, units, display,
 glossary) -> ``geometry`` (bearing, imperfections, kinematics, Hertz contact, loading) ->
-``case`` and ``analysis`` (case files; spectra, lines and results) -> ``models`` (the physics)
--> ``runner``, ``io``, ``diagnose`` -> ``api``, ``examples`` -> ``report`` -> ``study`` ->
-``validation`` -> ``cli``.
+``catalogue`` (bearings by designation) -> ``case`` and ``analysis`` (case files; spectra,
+lines and results) -> ``models`` (the physics) -> ``runner``, ``io``, ``diagnose`` -> ``api``,
+``examples`` -> ``report`` -> ``study`` -> ``validation`` -> ``cli``.
 
 From Python, :func:`run` runs a model on a bearing built in code, :func:`load_case` reads a
 case file, and :class:`Imperfections` builds the imperfection tables of a case file
-(:mod:`runout.api`, docs/python.md). They are imported on first use, so that ``import runout``
+(:mod:`runout.api`, docs/python.md); ``runout.catalogue.lookup("6204")`` gives a catalogue
+bearing with the provenance of its values. They are imported on first use, so that ``import runout``
 stays light.
 """
 
@@ -44,10 +45,15 @@ _LAZY = {
 }
 
 
-def __getattr__(name: str) -> Any:
-    if name in _LAZY:
-        import importlib
+#: Subpackages reachable as attributes of ``runout`` (``runout.catalogue.lookup``), imported
+#: on first use.
+_SUBPACKAGES = ("catalogue",)
 
+
+def __getattr__(name: str) -> Any:
+    if name in _SUBPACKAGES:
+        return importlib.import_module(f"runout.{name}")
+    if name in _LAZY:
         value = getattr(importlib.import_module(_LAZY[name]), name)
         globals()[name] = value
         return value

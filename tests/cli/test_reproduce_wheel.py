@@ -82,6 +82,7 @@ def installed(tmp_path_factory: pytest.TempPathFactory) -> Path:
     names = zipfile.ZipFile(wheel).namelist()
     shipped = {Path(n).name for n in names if n.startswith("runout/examples/data/")}
     assert {p.name for p in EXAMPLES.glob("*.toml")} <= shipped, "the wheel lacks case files"
+    assert "runout/catalogue/bearings.csv" in names, "the wheel lacks the bearing catalogue"
     venv = tmp_path_factory.mktemp("venv")
     _run([sys.executable, "-m", "venv", "--without-pip", str(venv)], dist)
     python = venv / ("Scripts/python.exe" if os.name == "nt" else "bin/python")
@@ -185,6 +186,11 @@ def test_every_command_runs_from_a_plain_install(installed: Path, tmp_path: Path
     doc = json.loads(_run([str(runout), "study", str(study), *small, "--json"], tmp_path, _env()))
     assert doc["samples"] == 8
     assert "runout" in _run([str(runout), "--help"], tmp_path, _env())
+    # [bearing] designation reads the catalogue the wheel ships
+    cwru = EXAMPLES / "cwru_6205_drive_end.toml"
+    assert "Case Western" in _run([str(runout), "check", str(cwru)], tmp_path, _env())
+    listing = _run([str(runout), "catalogue", "NU2"], tmp_path, _env())
+    assert "NU209" in listing
 
 
 def test_installed_wheel_reproduces_validation_md(installed: Path, tmp_path: Path) -> None:

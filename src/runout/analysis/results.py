@@ -164,6 +164,11 @@ class RunResult:
         Contact angle of a result read back, as its JSON states it [deg] (``to_json`` writes
         it again: not every value in degrees is ``math.degrees`` of a float). None for a
         model's result.
+    bearing_source : dict, list of dict, or None
+        Where the bearing's values come from when the case names a ``designation``
+        (:meth:`runout.case.designation.BearingSource.to_json`): one object for
+        ``[bearing]`` (JSON ``bearing_source``), a list for a spindle's ``[[bearings]]`` (JSON
+        ``bearing_sources``); None without a designation.
     """
 
     model: str
@@ -184,6 +189,7 @@ class RunResult:
     record_mean: tuple[float, ...] | None = None
     solver_resolution_m: float | None = None
     stated_contact_angle_deg: float | None = None
+    bearing_source: dict[str, Any] | list[dict[str, Any]] | None = None
 
     # ---------------------------------------------------------------- analysis
     @property
@@ -426,6 +432,10 @@ class RunResult:
             out["iso15242"] = self.iso15242.to_json()
         if self.verdict is not None:
             out["verdict"] = self.verdict.to_json()
+        if isinstance(self.bearing_source, dict):
+            out["bearing_source"] = self.bearing_source
+        elif self.bearing_source is not None:
+            out["bearing_sources"] = list(self.bearing_source)
         if self.notes:
             out["notes"] = list(self.notes)
         return out
@@ -504,6 +514,7 @@ class RunResult:
             record_mean=record_mean,
             solver_resolution_m=_optional_float(doc.get("solver_resolution_m")),
             stated_contact_angle_deg=float(doc["contact_angle_deg"]),
+            bearing_source=doc.get("bearing_source", doc.get("bearing_sources")),
         )
         if model == "linear" and cls is RunResult:
             # the linear model's result type lives with the model (a layer above), by name

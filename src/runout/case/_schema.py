@@ -90,11 +90,23 @@ class _Table(BaseModel):
 class BearingSpec(_Table):
     """``[bearing]``: the geometry of the bearing."""
 
+    designation: str | None = Field(
+        None,
+        description=(
+            'Catalogue designation ("6204", "7014C", "NU209", "6205-2RS JEM SKF"): alone a '
+            "whole bearing (type and geometry from the catalogue, `runout catalogue` lists "
+            "it); a key given beside it replaces the catalogue's value, with a note."
+        ),
+    )
     type: Literal["ball", "cylindrical_roller"] = Field(
         "ball", description='"ball" (deep-groove or angular-contact) or "cylindrical_roller".'
     )
-    elements: int = Field(description="Number of balls or rollers Z (3 to 10 000).")
-    element_diameter: Length = Field(description="Ball or roller diameter [m].")
+    elements: int = Field(
+        description="Number of balls or rollers Z (3 to 10 000); required without designation."
+    )
+    element_diameter: Length = Field(
+        description="Ball or roller diameter [m]; required without designation."
+    )
     pitch_diameter: Length | None = Field(
         None, description="Pitch diameter d_m [m] (ball bearings; rollers derive it)."
     )

@@ -60,8 +60,10 @@ from runout.case._schema import (
     sweep_count,
 )
 from runout.case._schema import _table_type as _table_type  # runout.api, runout.report.plotting
+from runout.case.designation import BearingSource, blame, expand, sources
 from runout.case.estimates import check_limits
 from runout.case.limits import MAX_CASE_FILE_BYTES, MAX_TOML_DEPTH, case_budget, format_bytes
+from runout.catalogue import Catalogue
 from runout.geometry.bearing import BallBearing, Bearing, Material, Operation, RollerBearing
 from runout.geometry.imperfections import BearingImperfections
 from runout.geometry.spindle_layout import SpindleBearing, SpindleLayout
@@ -265,6 +267,9 @@ class Case:
     spindle : SpindleLayout or None
         A spindle case's bearings, positions and preload (``[spindle]``, ``[[bearings]]``);
         ``bearing`` and ``imperfections`` are then its first bearing's. None otherwise.
+    bearing_sources : tuple of BearingSource
+        One per bearing table that names a ``designation``: its catalogue entry, the keys the
+        case replaces and the notes (:mod:`runout.case.designation`); empty otherwise.
     """
 
     path: str
@@ -276,6 +281,7 @@ class Case:
     spec: CaseSpec = field(repr=False)
     profile_data: ProfileData = field(default_factory=dict, repr=False, compare=False)
     spindle: SpindleLayout | None = field(default=None, repr=False)
+    bearing_sources: tuple[BearingSource, ...] = field(default=(), repr=False, compare=False)
 
     @property
     def dynamics(self) -> DynamicsSpec | None:
@@ -498,6 +504,7 @@ def parse_case(
     base_dir: Path | None = None,
     *,
     profile_data: ProfileData | None = None,
+    catalogue: Catalogue | None = None,
 ) -> Case:
     """Validate a parsed TOML document and build the domain objects.
 
@@ -513,6 +520,9 @@ def parse_case(
     profile_data : mapping, optional
         Profiles given as arrays: ``[[profile]] file`` name -> (angles, deviations) in the
         units of the entry, used instead of reading that file.
+    catalogue : runout.catalogue.Catalogue, optional
+        The catalogue a ``designation`` is looked up in; default the shipped one extended by
+        the file ``RUNOUT_CATALOGUE`` names (:func:`runout.catalogue.active_catalogue`).
 
     Returns
     -------
@@ -526,10 +536,12 @@ def parse_case(
     """
     if _depth(data, MAX_TOML_DEPTH) > MAX_TOML_DEPTH:
         raise CaseError(path, "", f"tables and arrays are nested deeper than {MAX_TOML_DEPTH}")
+    # [bearing] designation: the keys the table leaves out, from the catalogue
+    data, pending = expand(data, path, catalogue)
     try:
         spec = CaseSpec.model_validate(data)
     except ValidationError as exc:
-        key, message = first_validation_error(exc)
+        key, message = blame(pending, *first_validation_error(exc))
         raise CaseError(path, key, message) from None
     try:
         limits = case_budget(spec)
@@ -540,13 +552,14 @@ def parse_case(
         # a spindle: each bearing read as its own single-bearing case (the lead one stands
         # for the case's bearing in summaries; the model reads case.spindle)
 
-        spindle, own_cases = build_layout(spec, path, base_dir, profile_data)
+        spindle, own_cases = build_layout(spec, path, base_dir, profile_data, catalogue)
         bearing = own_cases[0].bearing
     else:
         try:
             bearing = _build_bearing(spec)
         except GeometryError as exc:
-            raise CaseError(path, _GEOMETRY_KEYS.get(exc.key, exc.key), exc.message) from None
+            key, message = blame(pending, _GEOMETRY_KEYS.get(exc.key, exc.key), exc.message)
+            raise CaseError(path, key, message) from None
     try:
         operation = Operation(
             rotating_ring=spec.operation.rotating_ring,
@@ -599,6 +612,7 @@ def parse_case(
         spec=spec,
         profile_data=dict(profile_data or {}),
         spindle=spindle,
+        bearing_sources=sources(spec, pending),
     )
     try:
         check_limits(case)
@@ -933,6 +947,7 @@ def build_layout(
     path: str,
     base_dir: Path | None,
     profile_data: ProfileData | None,
+    catalogue: Catalogue | None = None,
 ) -> tuple[SpindleLayout, list[Case]]:
     """The spindle of a validated spindle case, and each bearing's own case.
 
@@ -946,6 +961,8 @@ def build_layout(
         Directory that relative profile files are resolved against.
     profile_data : mapping or None
         Profiles given as arrays: ``[[profile]] file`` name -> (angles, deviations).
+    catalogue : runout.catalogue.Catalogue, optional
+        The catalogue the bearings' designations were looked up in.
 
     Returns
     -------
@@ -966,7 +983,7 @@ def build_layout(
     for index, b in enumerate(spec.bearings, start=1):
         own, entries = bearing_document(document, b.name)
         try:
-            case = parse_case(own, path, base_dir, profile_data=profile_data)
+            case = parse_case(own, path, base_dir, profile_data=profile_data, catalogue=catalogue)
         except CaseError as exc:
             raise CaseError(path, _remap(exc.key, b.name, index, entries), exc.message) from None
         bearings.append(SpindleBearing(b.name, b.position, case.bearing, case.imperfections))

@@ -28,6 +28,7 @@ from rich.markup import escape
 from rich.table import Table
 
 from runout import __version__
+from runout.cli.catalogue import CatalogueOpt, use_catalogue
 from runout.cli.common import (
     PIPE_WIDTH,
     CaseArg,
@@ -85,6 +86,7 @@ def check(
     as_json: JsonOpt = False,
     model: ModelOpt = None,
     sets: SetOpt = None,
+    catalogue: CatalogueOpt = None,
 ) -> None:
     """Validate a case file and print the derived geometry, contact constants and frequencies.
 
@@ -95,9 +97,10 @@ def check(
     Example: runout check examples/seed001_kim_spindle.toml --json
     """
     from runout.base.errors import CaseError
-    from runout.report.summary import bearing_summary, model_use
+    from runout.report.summary import bearing_source_sections, bearing_summary, model_use
     from runout.runner.checks import validate
 
+    use_catalogue(catalogue)
     case = _load(case_file, model, sets)
     summary = bearing_summary(case.bearing, case.operation)
     use = model_use(case)
@@ -108,10 +111,15 @@ def check(
         raise CaseError(str(case_file), key, message)
     # the model's own input checks, the budget and the Hertz validity, as `run` does them
     notes = list(validate(case, strict=named))
+    sources = [s.to_json() for s in case.bearing_sources]
     if as_json:
         payload = {"title": case.title, "case": str(case_file), **summary.to_json()}
         payload["model_use"] = use.to_json()
         payload["warnings"] = notes
+        if sources and case.spindle is None:
+            payload["bearing_source"] = sources[0]
+        elif sources:
+            payload["bearing_sources"] = sources
         _print_json(payload)
         return
     _warn(case_file, notes)
@@ -120,6 +128,15 @@ def check(
         f"[bold]{escape(case.title or str(case_file))}[/]  ({escape(str(case_file))}) is valid.",
         soft_wrap=True,
     )
+    # a designation: d, D, B and where each value comes from, before the derived geometry
+    _print_sections(
+        bearing_source_sections(
+            sources[0] if len(sources) == 1 and case.spindle is None else sources or None
+        )
+    )
+    catalogue_notes = [n for s in case.bearing_sources for n in s.notes]
+    if catalogue_notes:
+        _print_sections([("Catalogue notes", [(n, "", "") for n in catalogue_notes])])
     for title, rows in summary.sections():
         _out.print(_rows_table(title, rows))
     _out.print(_rows_table(f"As the {use.model} model uses it", use.rows()))
@@ -152,7 +169,9 @@ def _imperfection_table(imperfections: Any, title: str = "Imperfections") -> Tab
 
 @app.command()
 @_guard
-def frequencies(case_file: CaseArg, as_json: JsonOpt = False) -> None:
+def frequencies(
+    case_file: CaseArg, as_json: JsonOpt = False, catalogue: CatalogueOpt = None
+) -> None:
     """Print cage, element-spin and element-pass frequencies in Hz and in orders.
 
     A roller bearing's JSON also has roller_pass_inner/roller_pass_outer (equal to
@@ -166,6 +185,7 @@ def frequencies(case_file: CaseArg, as_json: JsonOpt = False) -> None:
     from runout.geometry.kinematics import bearing_frequencies
     from runout.report.summary import bearing_summary
 
+    use_catalogue(catalogue)
     case = load_case(case_file)
     # (name, bearing, contact angle): a spindle's bearings each at the angle its model uses
     sets: list[tuple[str | None, Any, float]]
@@ -271,6 +291,7 @@ def run(
             help="Revolutions of the rotating ring the time-history figure shows (the last ones).",
         ),
     ] = 3.0,
+    catalogue: CatalogueOpt = None,
 ) -> None:
     r"""Run the model named in the case's \[analysis] table (or --model).
 
@@ -287,6 +308,7 @@ def run(
     from runout.report.summary import result_sections
     from runout.runner import run_model
 
+    use_catalogue(catalogue)
     case = _load(case_file, model, sets)
     if report and out is None:
         out = str(Path("out") / case_file.stem)
@@ -414,6 +436,7 @@ def report_command(
     directory: Annotated[
         Path, typer.Argument(help="Directory written by `runout run CASE --out DIR`.")
     ],
+    catalogue: CatalogueOpt = None,
 ) -> None:
     """Write DIR/report.html: one self-contained page with inputs, results and figures.
 
@@ -424,6 +447,7 @@ def report_command(
     from runout.io.output_dir import output_directory, write_owned
     from runout.report.page import report_html
 
+    use_catalogue(catalogue)  # the case's designation, when a user catalogue gave it
     text = report_html(directory)  # refuses a directory that is not a run's or a study's
     output_directory(directory, option="report")
     path = write_owned(directory, "report.html", lambda fh: fh.write(text))
@@ -569,6 +593,7 @@ def study_command(
             "study.target_yield).",
         ),
     ] = None,
+    catalogue: CatalogueOpt = None,
 ) -> None:
     r"""Run the case's \[study]: Monte Carlo over drawn quantities or a sweep (docs/studies.md).
 
@@ -588,7 +613,11 @@ def study_command(
         from runout.study.scheduler import scheduler_address
 
         scheduler_address(scheduler)
+    use_catalogue(catalogue)
     case = _load_allocating(case_file, model, sets, allocate, target_yield)
+    for source in case.bearing_sources:  # [bearing] designation: what was replaced or not applied
+        for line in source.notes:
+            _note(line)
     if case.study is None:
         _fail(f"{case_file}: study: the case has no [study] table (see docs/studies.md)")
     if case.study.kind == "arrangement":
@@ -1027,6 +1056,11 @@ def warm_command() -> None:
 from runout.cli.diagnose import register as _register_diagnose  # noqa: E402
 
 _register_diagnose(app)
+
+# `runout catalogue`: the bearing catalogue behind [bearing] designation
+from runout.cli.catalogue import register as _register_catalogue  # noqa: E402
+
+_register_catalogue(app)
 
 
 def main() -> None:

@@ -56,6 +56,33 @@ _LINE = {
     ],
 }
 _RUNOUT = {k: "number" for k in ("radial_pp_m", "axial_pp_m", "rro_pp_m", "nrro_pp_m")}
+_CATALOGUE_KEYS = (
+    "elements",
+    "element_diameter",
+    "pitch_diameter",
+    "inner_conformity",
+    "outer_conformity",
+    "inner_raceway_diameter",
+    "outer_raceway_diameter",
+    "nominal_contact_angle",
+)
+#: ``bearing_source`` ([bearing] designation, :mod:`runout.case.designation`)
+_SOURCE: dict[str, Any] = {
+    "designation": "string",
+    "requested": "string",
+    "kind": "string",
+    "type": "string",
+    "bore_diameter_m": "number",
+    "outside_diameter_m": "number",
+    "width_m": "number",
+    "catalogue": "string",
+    "suffix": "string",
+    "name": "string",
+    "values": {k: "number" for k in _CATALOGUE_KEYS},
+    "given_in_case": {k: "number" for k in _CATALOGUE_KEYS},
+    "provenance": {k: "string" for k in ("dimensions", *_CATALOGUE_KEYS)},
+    "notes": ["string"],
+}
 #: The shape of ``result.json`` that readers rely on (:func:`runout.base.reading.check_shape`):
 #: a value of another type (a string where an object belongs) is refused naming its key, an
 #: unknown key is free (the contract is extended, not broken).
@@ -70,6 +97,8 @@ RESULT_SHAPE: dict[str, Any] = {
     "runout": _RUNOUT,
     "components": [_LINE],
     "notes": ["string"],
+    "bearing_source": _SOURCE,
+    "bearing_sources": [_SOURCE],
     "displacement_of": "string",
     "mean_displacement_m": ["number"],
     "anderon": {k: "number" for k in "URLMHEA"},

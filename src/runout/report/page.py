@@ -172,6 +172,24 @@ def _read_json(path: Path, shape: dict[str, Any]) -> dict[str, Any]:
     return loaded
 
 
+def _bearing_source_section(result: dict[str, Any]) -> list[str]:
+    """``[bearing] designation``: the catalogue row, d, D, B and where each value comes from."""
+    from runout.report._html import table
+    from runout.report.summary import bearing_source_sections
+
+    source = result.get("bearing_source", result.get("bearing_sources"))
+    if not isinstance(source, dict | list):
+        return []
+    parts: list[str] = []
+    for title, rows in bearing_source_sections(source):
+        parts.append(f"<h2>{esc(title)}</h2>")
+        if rows and all(not value and not unit for _, value, unit in rows):
+            parts += [f"<p class='note'>{esc(text)}</p>" for text, _, _ in rows]
+        else:
+            parts.append(table(["quantity", "value", "unit"], rows, numeric=(1,)))
+    return parts
+
+
 def _load_case(directory: Path) -> tuple[Any, str | None]:
     """The validated case of the directory's ``case.toml`` (None when it cannot be loaded)
     and, when it cannot, why.
@@ -235,6 +253,7 @@ def _report_body(directory: Path) -> tuple[str, str]:
     else:
         parts += _run_first_screen(result, summary, case, directory)
         parts += inputs_section(result, summary, case)
+        parts += _bearing_source_section(result)
         parts += _lines_section(result)
         parts += _other_results(result, summary)
     parts += _figures(directory)

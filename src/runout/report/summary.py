@@ -637,6 +637,7 @@ def _run_sections(result: RunResult) -> list[tuple[str, Rows]]:
         )
     if result.verdict is not None:
         sections.append(("Spec limit", [(verdict_line(result.verdict), "", "")]))
+    sections += bearing_source_sections(result.bearing_source)
     notes = list(result.notes)
     if zeroed and resolution is not None:
         from runout.base.display import resolution_note
@@ -644,6 +645,70 @@ def _run_sections(result: RunResult) -> list[tuple[str, Rows]]:
         notes.insert(0, resolution_note(resolution, unit))
     if notes:
         sections.append(("Notes", [(note, "", "") for note in notes]))
+    return sections
+
+
+_ANGLE_KEYS = ("nominal_contact_angle", "contact_angle")
+_PLAIN_KEYS = ("elements", "inner_conformity", "outer_conformity")
+_DIMENSIONS = ("bore_diameter_m", "outside_diameter_m", "width_m")
+
+
+def _source_value(key: str, value: float) -> tuple[str, str]:
+    if key in _ANGLE_KEYS:
+        return f"{math.degrees(value):.6g}", "deg"
+    if key in _PLAIN_KEYS:
+        return f"{value:.6g}", ""
+    return f"{value * 1e3:.6g}", "mm"
+
+
+def bearing_source_sections(
+    source: dict[str, Any] | list[dict[str, Any]] | None,
+) -> list[tuple[str, Rows]]:
+    """Readable tables of a ``bearing_source`` (one per bearing from the catalogue).
+
+    Parameters
+    ----------
+    source : dict, list of dict, or None
+        The JSON ``bearing_source`` object, or a spindle's ``bearing_sources`` list
+        (:meth:`runout.case.designation.BearingSource.to_json`).
+
+    Returns
+    -------
+    list of (title, rows)
+        Per bearing, a table (quantity, value, unit) of d, D, B and the values the catalogue
+        sets (a value the case replaces shown beside the catalogue's), then the list of where
+        they come from, one line per source.
+    """
+    if source is None:
+        return []
+    documents = [source] if isinstance(source, dict) else list(source)
+    sections: list[tuple[str, Rows]] = []
+    for doc in documents:
+        if not all(k in doc for k in ("designation", *_DIMENSIONS)):
+            continue  # an edited result.json: nothing to show, not an error
+        provenance = doc.get("provenance", {})
+        given = doc.get("given_in_case", {})
+        requested = doc.get("requested", doc["designation"])
+        title = doc["designation"]
+        if requested != title:
+            title = f"{requested} (catalogue row {doc['designation']})"
+        name = f", {doc['name']} bearing" if doc.get("name") else ""
+        rows: Rows = [
+            ("bore d", f"{doc['bore_diameter_m'] * 1e3:.6g}", "mm"),
+            ("outside diameter D", f"{doc['outside_diameter_m'] * 1e3:.6g}", "mm"),
+            ("width B", f"{doc['width_m'] * 1e3:.6g}", "mm"),
+        ]
+        for key, value in doc.get("values", {}).items():
+            shown, unit = _source_value(key, float(value))
+            if key in given:
+                shown = f"{_source_value(key, float(given[key]))[0]} (catalogue {shown})"
+            rows.append((key, shown, unit))
+        sections.append((f"Bearing {title} from the catalogue{name}", rows))
+        by_source: dict[str, list[str]] = {}
+        for key, text in provenance.items():
+            by_source.setdefault(str(text), []).append("d, D, B" if key == "dimensions" else key)
+        lines = [(f"{', '.join(keys)}: {text}", "", "") for text, keys in by_source.items()]
+        sections.append((f"Where the values of {doc['designation']} come from", lines))
     return sections
 
 

@@ -65,7 +65,15 @@ def run_model(case: Case) -> RunResult:
         result = module.run(case)
     except GeometryError as exc:  # an input check inside the model: name the file and key
         raise as_case_error(case, exc) from None
-    if notes or warnings:
-        result = dataclasses.replace(result, notes=(*result.notes, *warnings, *notes))
+    # [bearing] designation: where the values come from, and each catalogue value replaced
+    catalogue_notes = tuple(n for source in case.bearing_sources for n in source.notes)
+    if notes or warnings or catalogue_notes:
+        result = dataclasses.replace(
+            result, notes=(*result.notes, *catalogue_notes, *warnings, *notes)
+        )
+    if case.bearing_sources:
+        documents = [source.to_json() for source in case.bearing_sources]
+        single = case.spindle is None and len(documents) == 1
+        result = dataclasses.replace(result, bearing_source=documents[0] if single else documents)
     # the case's [analysis] outputs beyond the model: bands, verdict, passage names
     return apply_analysis(result, case)

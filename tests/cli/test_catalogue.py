@@ -1,0 +1,340 @@
+"""[bearing] designation, `runout catalogue` and user catalogues through the command line.
+
+The Case Western Reserve University data set's bearings by designation give the data center's
+published defect orders; a standard designation shows d, D, B and the provenance of every
+value; a key given beside a designation replaces the catalogue's value with a note; an unknown
+designation or a bad user catalogue is refused in one line.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from runout.catalogue import CATALOGUE_ENV
+from runout.cli.commands import app
+
+ROOT = Path(__file__).resolve().parents[2]
+runner = CliRunner()
+
+
+@pytest.fixture(autouse=True)
+def _no_user_catalogue(monkeypatch: pytest.MonkeyPatch) -> None:
+    # --catalogue passes the file on through the environment: restore it after each test
+    monkeypatch.setenv(CATALOGUE_ENV, "")
+
+
+def _case(tmp_path: Path, bearing: str, rest: str = "", name: str = "case.toml") -> Path:
+    path = tmp_path / name
+    path.write_text(
+        f'[bearing]\n{bearing}\n[operation]\nspeed = "1797 rpm"\nradial_load = "100 N"\n{rest}',
+        encoding="utf-8",
+    )
+    return path
+
+
+def _invoke(*args: str) -> tuple[int, str, str]:
+    result = runner.invoke(app, list(args))
+    return result.exit_code, result.stdout, result.stderr
+
+
+# the data center's orders of shaft speed (inner ring turning, contact angle 0)
+CWRU = {
+    "6205-2RS JEM SKF": {"bpfi": 5.4152, "bpfo": 3.5848, "ftf": 0.39828, "ball": 4.7135},
+    "6203-2RS JEM SKF": {"bpfi": 4.9469, "bpfo": 3.0530, "ftf": 0.3817, "ball": 3.9874},
+}
+
+
+@pytest.mark.parametrize("designation", sorted(CWRU))
+def test_cwru_bearings_by_designation_give_the_published_orders(
+    tmp_path: Path, designation: str
+) -> None:
+    path = _case(tmp_path, f'designation = "{designation}"')
+    code, out, err = _invoke("frequencies", str(path), "--json")
+    assert code == 0, err
+    doc = json.loads(out)
+    assert doc["contact_angle_deg"] == 0.0
+    orders = doc["orders"]
+    published = CWRU[designation]
+    # the data center rounds to 4-5 digits: 0.1 % holds them all (FTF 0.3817 is 0.01 % off)
+    assert orders["ball_pass_inner"] == pytest.approx(published["bpfi"], rel=1e-3)
+    assert orders["ball_pass_outer"] == pytest.approx(published["bpfo"], rel=1e-3)
+    assert orders["cage"] == pytest.approx(published["ftf"], rel=1e-3)
+    # the data center's "ball" frequency is twice runout's ball spin (a flaw meets both races)
+    assert 2.0 * orders["ball_spin"] == pytest.approx(published["ball"], rel=1e-3)
+
+
+def test_cwru_example_runs_with_its_source_and_the_bpfo_line() -> None:
+    code, out, err = _invoke("run", str(ROOT / "examples" / "cwru_6205_drive_end.toml"), "--json")
+    assert code == 0, err
+    doc = json.loads(out)
+    source = doc["bearing_source"]
+    assert source["designation"] == "6205-2RS JEM SKF"
+    assert source["values"]["elements"] == 9
+    assert source["values"]["element_diameter"] == pytest.approx(0.3126 * 0.0254, rel=1e-12)
+    assert source["values"]["pitch_diameter"] == pytest.approx(1.537 * 0.0254, rel=1e-12)
+    assert "Case Western Reserve University" in source["provenance"]["elements"]
+    assert source["provenance"]["inner_conformity"].startswith("estimate (rule typical_conformity")
+    rotation = doc["frequencies_hz"]["rotation"]
+    top = doc["components"][0]
+    assert top["frequency_hz"] / rotation == pytest.approx(3.5848, rel=1e-3)  # BPFO
+
+
+def test_check_shows_boundary_dimensions_and_provenance(tmp_path: Path) -> None:
+    path = _case(tmp_path, 'designation = "6204"', '[analysis]\nmodel = "linear"\n')
+    code, out, err = _invoke("check", str(path))
+    assert code == 0, err
+    assert "Bearing 6204 from the catalogue" in out
+    for row in ("bore d", "outside diameter D", "width B"):
+        assert row in out
+    assert "d, D, B: ISO 15 boundary dimensions" in out
+    assert "estimate (rule ball_section: D_w = 0.3 (D - d))" in out
+    assert "estimate (rule conrad_fill" in out
+    code, out, err = _invoke("check", str(path), "--json")
+    assert code == 0, err
+    source = json.loads(out)["bearing_source"]
+    assert (source["bore_diameter_m"], source["outside_diameter_m"], source["width_m"]) == (
+        pytest.approx(0.020),
+        pytest.approx(0.047),
+        pytest.approx(0.014),
+    )
+    assert source["provenance"]["dimensions"] == "ISO 15 boundary dimensions"
+    assert set(source["provenance"]) == {"dimensions", *source["values"]}
+
+
+def test_explicit_keys_replace_catalogue_values_with_a_note(tmp_path: Path) -> None:
+    path = _case(
+        tmp_path,
+        'designation = "6204"\nelement_diameter = "7.938 mm"\nelements = 8\n'
+        'inner_groove_radius = "4.2 mm"',
+        '[analysis]\nmodel = "linear"\n',
+    )
+    code, out, err = _invoke("run", str(path), "--json")
+    assert code == 0, err
+    doc = json.loads(out)
+    notes = doc["notes"]
+    assert any(
+        n.startswith(
+            "bearing.element_diameter: 7.938 mm given in the case replaces the catalogue's 8.1 mm"
+        )
+        for n in notes
+    ), notes
+    # elements = 8 is the catalogue's own value: nothing replaced, nothing said
+    assert not any(n.startswith("bearing.elements") for n in notes)
+    assert any(
+        n.startswith(
+            "bearing.inner_groove_radius: given in the case, so the catalogue's inner_conformity"
+        )
+        for n in notes
+    )
+    source = doc["bearing_source"]
+    assert source["given_in_case"] == {"element_diameter": pytest.approx(7.938e-3)}
+    assert source["provenance"]["element_diameter"].startswith("case file")
+    assert source["provenance"]["inner_conformity"].startswith("not applied")
+    code, out, err = _invoke("run", str(path))
+    assert code == 0, err
+    assert "7.938 mm given in the case replaces" in out  # the readable notes
+    assert "7.938 (catalogue 8.1)" in out
+
+
+def test_suffixes_are_named_in_notes(tmp_path: Path) -> None:
+    path = _case(tmp_path, 'designation = "6204-2RS C3"', '[analysis]\nmodel = "linear"\n')
+    code, out, err = _invoke("check", str(path), "--json")
+    assert code == 0, err
+    source = json.loads(out)["bearing_source"]
+    assert (source["designation"], source["requested"], source["suffix"]) == (
+        "6204",
+        "6204-2RS C3",
+        "2RS C3",
+    )
+    notes = " ".join(source["notes"])
+    assert "suffix 2RS: seals or shields" in notes
+    assert "suffix C3: radial clearance class not applied" in notes
+
+
+def test_unknown_designation_is_refused_with_close_matches(tmp_path: Path) -> None:
+    path = _case(tmp_path, 'designation = "6250"')
+    code, _, err = _invoke("check", str(path))
+    assert code == 2
+    line = err.strip()
+    assert "\n" not in line
+    assert line.startswith(f"error: {path}: bearing.designation: '6250' is not in the catalogue")
+    assert "close: 625, " in line
+
+
+def test_a_type_the_catalogue_contradicts_is_refused(tmp_path: Path) -> None:
+    path = _case(tmp_path, 'designation = "NU209"\ntype = "ball"')
+    code, _, err = _invoke("check", str(path))
+    assert code == 2
+    assert "bearing.type: NU209 is a cylindrical_roller bearing in the catalogue" in err
+
+
+def test_roller_and_angular_contact_designations(tmp_path: Path) -> None:
+    path = _case(tmp_path, 'designation = "NU209"', '[analysis]\nmodel = "roller_constraint"\n')
+    code, out, err = _invoke("check", str(path), "--json")
+    assert code == 0, err
+    doc = json.loads(out)
+    assert doc["bearing_source"]["values"] == {
+        "elements": 14,
+        "element_diameter": pytest.approx(0.010),
+        "inner_raceway_diameter": pytest.approx(0.054991),
+        "outer_raceway_diameter": pytest.approx(0.075032),
+    }
+    assert "Yu et al." in doc["bearing_source"]["provenance"]["elements"]
+    path = _case(tmp_path, 'designation = "7205B"', name="ac.toml")
+    code, out, err = _invoke("check", str(path), "--json")
+    assert code == 0, err
+    doc = json.loads(out)
+    assert doc["bearing_source"]["values"]["nominal_contact_angle"] == pytest.approx(
+        0.6981317007977318
+    )
+
+
+def test_spindle_bearings_by_designation(tmp_path: Path) -> None:
+    text = (ROOT / "examples" / "spindle_machine_tool.toml").read_text(encoding="utf-8")
+    keys = (
+        'type = "ball"\nelements = 20\nelement_diameter = "11.1125 mm"\npitch_diameter = "90 mm"\n'
+        'inner_conformity = 0.52\nouter_conformity = 0.53\nnominal_contact_angle = "25 deg"\n'
+    )
+    assert text.count(keys) == 2
+    path = tmp_path / "spindle.toml"
+    path.write_text(text.replace(keys, 'designation = "7014AC"\n'), encoding="utf-8")
+    code, out, err = _invoke("check", str(path), "--json")
+    assert code == 0, err
+    sources = json.loads(out)["bearing_sources"]
+    assert [s["name"] for s in sources] == ["A", "B"]
+    assert all(s["designation"] == "7014AC" for s in sources)
+    path.write_text(text.replace(keys, 'designation = "7014XX"\n', 1), encoding="utf-8")
+    code, _, err = _invoke("check", str(path))
+    assert code == 2
+    assert f"{path}: bearings[1].designation: '7014XX' is not in the catalogue" in err
+
+
+def test_catalogue_lists_and_shows(tmp_path: Path) -> None:
+    code, out, err = _invoke("catalogue", "620?", "--json")
+    assert code == 0, err
+    names = [e["designation"] for e in json.loads(out)["entries"]]
+    assert names == [f"620{k}" for k in range(10)]
+    code, out, err = _invoke("catalogue", "62*", "--json")
+    names = [e["designation"] for e in json.loads(out)["entries"]]
+    assert {"625", "6220", "6205-2RS JEM SKF"} <= set(names) and "6305" not in names
+    code, out, err = _invoke("catalogue", "NU2")
+    assert code == 0, err
+    assert "NU209" in out and "NU320" not in out and "designations" in out
+    code, out, err = _invoke("catalogue", "6205-2RS JEM SKF")  # one match: the whole entry
+    assert code == 0, err
+    assert "Where the values of 6205-2RS JEM SKF come from" in out
+    code, _, err = _invoke("catalogue", "6250X")
+    assert code == 2
+    assert err.count("\n") == 1 and "close:" in err
+
+
+USER = """\
+# a user's catalogue: a bearing runout does not ship, and a 6204 measured on a drawing
+designation,kind,d_mm,D_mm,B_mm,elements,element_diameter_mm,pitch_diameter_mm,source
+X-17,deep_groove,17,40,12,,,,
+6204,deep_groove,20,47,14,8,7.938,33.5,drawing 4711 rev. B
+"""
+
+
+def test_user_catalogue_extends_and_replaces(tmp_path: Path) -> None:
+    user = tmp_path / "mine.csv"
+    user.write_text(USER, encoding="utf-8")
+    path = _case(tmp_path, 'designation = "6204"', '[analysis]\nmodel = "linear"\n')
+    code, out, err = _invoke("check", str(path), "--json", "--catalogue", str(user))
+    assert code == 0, err
+    source = json.loads(out)["bearing_source"]
+    assert source["values"]["element_diameter"] == pytest.approx(7.938e-3)
+    assert source["provenance"]["element_diameter"] == "drawing 4711 rev. B"
+    assert source["catalogue"] == str(user)
+    assert any(
+        f"catalogue row 6204 of {user} replaces the row of runout" in n for n in source["notes"]
+    )
+    os.environ[CATALOGUE_ENV] = ""  # a new command in this process: --catalogue set it
+    new = _case(tmp_path, 'designation = "X-17"', name="x.toml")
+    code, _, err = _invoke("check", str(new))
+    assert code == 2 and "'X-17' is not in the catalogue" in err  # not without the file
+    os.environ[CATALOGUE_ENV] = str(user)  # the environment variable (restored by the fixture)
+    code, out, err = _invoke("check", str(new), "--json")
+    assert code == 0, err
+    assert json.loads(out)["bearing_source"]["values"]["elements"] == 8
+    code, out, err = _invoke("catalogue", "X-*")
+    assert code == 0 and "X-17" in out
+
+
+@pytest.mark.parametrize(
+    ("row", "where", "what"),
+    [
+        (
+            "6204,deep_groove,20,47,14,8,abc,33.5,x",
+            "row 3, column element_diameter_mm",
+            "must be a number",
+        ),
+        ("6204,deep_groove,20,47,14,8,7.9,33.5,", "row 3, column source", "need their source"),
+        ("6204,ball,20,47,14,,,,", "row 3, column kind", "must be one of deep_groove"),
+        ("6204,deep_groove,20,47,14,8,30,33.5,x", "row 3", "does not fit the section"),
+        ("6204,deep_groove,20,47,14,40,7.9,33.5,x", "row 3", "do not fit round the pitch circle"),
+        ("6204,deep_groove,47,20,14,,,,", "row 3, column D_mm", "must exceed the bore"),
+        ("6204,deep_groove,20,47", "row 3", "has 4 cells, the header 9"),
+    ],
+)
+def test_bad_user_catalogue_is_refused_in_one_line(
+    tmp_path: Path, row: str, where: str, what: str
+) -> None:
+    user = tmp_path / "bad.csv"
+    user.write_text(USER.splitlines()[1] + "\n\n" + row + "\n", encoding="utf-8")
+    path = _case(tmp_path, 'designation = "6204"')
+    for args in (["--catalogue", str(user)], []):
+        if not args:
+            os.environ[CATALOGUE_ENV] = str(user)
+        code, _, err = _invoke("check", str(path), *args)
+        assert code == 2
+        assert err.count("\n") == 1, err
+        assert f"{user}: {where}: " in err and what in err, err
+
+
+def test_user_catalogue_link_out_of_its_directory_is_refused(tmp_path: Path) -> None:
+    outside = tmp_path / "elsewhere"
+    outside.mkdir()
+    (outside / "real.csv").write_text(USER, encoding="utf-8")
+    inside = tmp_path / "here"
+    inside.mkdir()
+    (inside / "link.csv").symlink_to(outside / "real.csv")
+    code, _, err = _invoke("catalogue", "--catalogue", str(inside / "link.csv"))
+    assert code == 2
+    assert err.count("\n") == 1 and str(inside / "link.csv") in err
+
+
+def test_report_shows_where_the_bearing_came_from(tmp_path: Path) -> None:
+    out = tmp_path / "out"
+    case = str(ROOT / "examples" / "cwru_6205_drive_end.toml")
+    code, _, err = _invoke("run", case, "--out", str(out), "--report")
+    assert code == 0, err
+    page = (out / "report.html").read_text(encoding="utf-8")
+    assert "Bearing 6205-2RS JEM SKF from the catalogue" in page
+    assert "Where the values of 6205-2RS JEM SKF come from" in page
+    assert "Case Western Reserve University" in page
+    stored = json.loads((out / "result.json").read_text(encoding="utf-8"))
+    assert stored["bearing_source"]["designation"] == "6205-2RS JEM SKF"
+
+
+def test_study_says_which_catalogue_values_the_case_replaces(tmp_path: Path) -> None:
+    path = _case(
+        tmp_path,
+        'designation = "7205C"\nelement_diameter = "7.9375 mm"',
+        '[analysis]\nmodel = "quasi_static_2d"\nrevolutions = 4\nsamples = 512\n'
+        '[study]\nkind = "montecarlo"\nsamples = 4\nseed = 1\n'
+        '[study.vary]\nelement_diameter_sigma = "0.1 um"\n',
+    )
+    path.write_text(path.read_text().replace('radial_load = "100 N"', 'axial_load = "50 N"'))
+    code, out, err = _invoke("study", str(path), "--json")
+    assert code == 0, err
+    assert json.loads(out)["samples"] == 4
+    assert (
+        "note: bearing.element_diameter: 7.9375 mm given in the case replaces the catalogue's "
+        "8.1 mm (7205C)" in err
+    )
