@@ -338,3 +338,26 @@ def test_study_says_which_catalogue_values_the_case_replaces(tmp_path: Path) -> 
         "note: bearing.element_diameter: 7.9375 mm given in the case replaces the catalogue's "
         "8.1 mm (7205C)" in err
     )
+
+
+def test_a_tolerance_class_takes_the_designations_bore(tmp_path: Path) -> None:
+    """``limit = "P4"`` is tabulated by bore: a designation gives it (ISO 15 d), with a note;
+    a ``limit_bore`` the case gives stays, without one."""
+    analysis = '[analysis]\nmodel = "linear"\nlimit = "P4"\n'
+    waviness = '[[waviness]]\npart = "inner"\norder = 7\namplitude = "0.2 um"\n'
+    path = _case(tmp_path, 'designation = "6204"', analysis + waviness)
+    code, out, err = _invoke("run", str(path), "--json")
+    assert code == 0, err
+    doc = json.loads(out)
+    assert doc["verdict"]["class"] == "P4" and doc["verdict"]["bore_m"] == pytest.approx(0.020)
+    assert doc["verdict"]["limit_m"] == pytest.approx(3e-6)  # 18 mm < d <= 30 mm
+    assert any(n.startswith("analysis.limit_bore: the bore of 6204") for n in doc["notes"])
+    path = _case(
+        tmp_path, 'designation = "6204"', analysis + 'limit_bore = "10 mm"\n' + waviness, "b.toml"
+    )
+    code, out, err = _invoke("run", str(path), "--json")
+    assert code == 0, err
+    doc = json.loads(out)
+    assert doc["verdict"]["bore_m"] == pytest.approx(0.010)
+    assert doc["verdict"]["limit_m"] == pytest.approx(2.5e-6)
+    assert not any("limit_bore" in n for n in doc.get("notes", []))

@@ -678,7 +678,8 @@ class AnalysisSpec(_Table):
         None,
         description=(
             "Bore d of the bearing [m] (2.5 mm < d <= 120 mm), which selects the K_ia row of a "
-            "tolerance class limit (ISO 492:2014)."
+            "tolerance class limit (ISO 492:2014); default with [bearing] designation: its "
+            "catalogue bore (with a note)."
         ),
     )
 

@@ -9,6 +9,7 @@ summary, ``runout check``).
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -16,6 +17,7 @@ from typing import Any
 
 from runout.base.errors import CaseError
 from runout.base.reading import InputFileError
+from runout.case.standards import is_class_name
 from runout.catalogue import (
     Catalogue,
     CatalogueEntry,
@@ -118,6 +120,8 @@ class Pending:
         Catalogue keys not applied and the case key given instead.
     name : str or None
         The spindle bearing's name.
+    bore_for_limit : bool
+        ``[analysis] limit_bore`` was set from the entry's bore (a tolerance class limit).
     """
 
     key: str
@@ -127,6 +131,7 @@ class Pending:
         tuple[str, str], ...
     ]  # (catalogue key not applied, the case key that replaced it)
     name: str | None = None
+    bore_for_limit: bool = False
 
 
 def _expand_table(
@@ -213,6 +218,17 @@ def expand(
     if has:
         assert isinstance(bearing, dict)
         out["bearing"], p = _expand_table(bearing, "bearing", path, catalogue)
+        analysis = data.get("analysis")
+        limit = analysis.get("limit") if isinstance(analysis, dict) else None
+        if (
+            isinstance(analysis, dict)
+            and isinstance(limit, str)
+            and is_class_name(limit)
+            and "limit_bore" not in analysis
+        ):
+            # a tolerance class is tabulated by bore: the designation's d (ISO 15)
+            out["analysis"] = {**analysis, "limit_bore": p.entry.bore_diameter}
+            p = dataclasses.replace(p, bore_for_limit=True)
         pending.append(p)
     if listed:
         assert isinstance(bearings, list)
@@ -275,6 +291,11 @@ def sources(spec: Any, pending: list[Pending]) -> tuple[BearingSource, ...]:
             notes.append(
                 f"{p.key}.{by}: given in the case, so the catalogue's {dropped} "
                 f"{_shown(dropped, catalogue_value)} ({p.entry.designation}) is not applied"
+            )
+        if p.bore_for_limit:
+            notes.append(
+                f"analysis.limit_bore: the bore of {p.entry.designation} from the catalogue, "
+                f"{_shown('bore', p.entry.bore_diameter)}, for the tolerance class limit"
             )
         out.append(BearingSource(p.key, p.entry, given, tuple(notes), p.name, dict(p.dropped)))
     return tuple(out)
