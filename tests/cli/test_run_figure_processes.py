@@ -83,3 +83,21 @@ def test_a_drawing_process_that_dies_is_an_error_not_a_hang(
     assert len(lines) == 1
     assert "orbit.png" in lines[0] and "ended early" in lines[0]
     assert not (out / "history.png").exists()
+
+
+def test_spawned_processes_draw_the_same_files(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
+    """Where processes are not forked (macOS, Windows) each is spawned and warms itself."""
+    from runout.report._figure_workers import FigureWorkers
+    from runout.report.run_files import warm_figures
+
+    result = run_model(load_case(EXAMPLES / "seed001_kim_spindle.toml"))
+    monkeypatch.setattr("sys.platform", "darwin")
+    with FigureWorkers(2, warm_figures) as workers:
+        spawned = write_result(result, tmp_path / "spawned", workers=workers)
+    monkeypatch.undo()
+    here = write_result(result, tmp_path / "here")
+    assert [p.name for p in spawned] == [p.name for p in here]
+    for a, b in zip(spawned, here, strict=True):
+        assert a.read_bytes() == b.read_bytes(), a.name

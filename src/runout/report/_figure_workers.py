@@ -33,10 +33,15 @@ __all__ = ["SILENCE_S", "FigureError", "FigureWorkers", "figure_processes"]
 #: are an error (a figure of a 2^20-instant record takes well under a second).
 SILENCE_S = 300.0
 
-#: A figure job: the file name and what it needs beyond the run's result (or None).
+#: A figure job: the file name and what it needs beyond the run's result (or None); those
+#: returned by ``later`` travel on the job queue and must be small (the order sweep's table).
 Job = tuple[str, Any]
 #: Draws one figure: (result, directory, name, extra) -> the file written.
 Draw = Callable[[Any, Path, str, Any], Path]
+
+
+#: A queued job whose data came with the result (:meth:`FigureWorkers.draw`).
+_IN_PAYLOAD = "in the payload"
 
 
 class FigureError(RuntimeError):
@@ -66,11 +71,13 @@ class FigureWorkers:
     Notes
     -----
     On Linux the processes are forked (they share the command's imports; the command has
-    started no thread yet); elsewhere they are spawned.
+    started no thread yet): the first imports matplotlib and forks the others; elsewhere
+    they are spawned and each imports its own.
     """
 
     def __init__(self, processes: int, warm: Callable[[], None]) -> None:
-        forks = hasattr(os, "fork") and "fork" in multiprocessing.get_all_start_methods()
+        # fork on Linux only: macOS's system libraries are not safe to use in a forked child
+        forks = sys.platform.startswith("linux")
         context: Any = multiprocessing.get_context("fork" if forks else "spawn")
         for stream in (sys.stdout, sys.stderr):  # nothing buffered is copied into a fork
             with contextlib.suppress(Exception):
@@ -132,7 +139,10 @@ class FigureWorkers:
             The first figure's error, as raised in its process; :class:`FigureError` when a
             process dies or is silent for :data:`SILENCE_S` seconds.
         """
-        payload = pickle.dumps((draw, result, directory), protocol=pickle.HIGHEST_PROTOCOL)
+        # the data travels once to each process with the result; the queue carries names
+        # only (a pipe holds 64 KiB: a large job would block this process on a dead queue)
+        first = {name: extra for name, extra in jobs}
+        payload = pickle.dumps((draw, result, directory, first), protocol=pickle.HIGHEST_PROTOCOL)
         # sent on a thread: a process reads it once matplotlib is imported, and meanwhile
         # this one writes the tables (a record of 2^20 instants is 33 MB)
         sending = threading.Thread(
@@ -140,8 +150,8 @@ class FigureWorkers:
         )
         sending.start()
         queued = list(jobs)
-        for job in queued:
-            self._jobs.put(job)
+        for name, _ in queued:
+            self._jobs.put((name, _IN_PAYLOAD))
         if later is not None:
             extra = list(later())
             for job in extra:
@@ -228,10 +238,10 @@ def _serve(
     from runout.base._lifetime import die_with_parent
 
     die_with_parent(parent)
-    try:
+    with contextlib.suppress(Exception):
+        # only a head start: what fails here fails again in the first figure, which is
+        # reported as that figure's error
         warm()
-    except BaseException:
-        os._exit(1)  # the command sees the pipes close and says which figures are missing
     # the heap that matplotlib's import built stays shared with the forked processes: the
     # collector, untouched by it, copies none of its pages
     gc.freeze()
@@ -258,9 +268,11 @@ def _draw_jobs(conn: Connection, jobs: Any) -> int:  # pragma: no cover - in the
     """Receive the result on ``conn`` and draw the jobs of ``jobs`` until None: exit code."""
     code = 0
     try:
-        draw, result, directory = pickle.loads(conn.recv_bytes())
+        draw, result, directory, first = pickle.loads(conn.recv_bytes())
         while (job := jobs.get()) is not None:
             name, extra = job
+            if isinstance(extra, str) and extra == _IN_PAYLOAD:
+                extra = first[name]
             try:
                 path = draw(result, directory, name, extra)
             except BaseException as exc:  # the command's error: sent back, not printed
