@@ -19,11 +19,13 @@ CASE = Path(__file__).resolve().parents[2] / "examples" / "seed000_tada_fig7.tom
 def test_the_option_reaches_the_history_figure(
     monkeypatch: pytest.MonkeyPatch, tmp_path: Path
 ) -> None:
-    seen: list[float] = []
+    # recorded in a file: the figures are drawn by processes forked from this one
+    seen = tmp_path / "seen.txt"
     drawn = plotting.plot_time_history
 
     def recording(result: Any, ax: Any = None, revolutions: float = 3.0) -> Any:
-        seen.append(revolutions)
+        with seen.open("a") as fh:
+            fh.write(f"{revolutions!r}\n")
         return drawn(result, ax, revolutions=revolutions)
 
     monkeypatch.setattr(plotting, "plot_time_history", recording)
@@ -32,7 +34,7 @@ def test_the_option_reaches_the_history_figure(
         app, ["run", str(CASE), "--out", str(out), "--history-revolutions", "10"]
     )
     assert result.exit_code == 0, result.stderr
-    assert seen == [10.0]
+    assert seen.read_text().split() == ["10.0"]
     assert (out / "history.png").stat().st_size > 10_000
 
 

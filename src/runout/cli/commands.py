@@ -19,7 +19,7 @@ import os
 import re
 import shutil
 import sys
-from contextlib import nullcontext
+from contextlib import ExitStack, nullcontext
 from pathlib import Path
 from typing import Annotated, Any, NoReturn
 
@@ -315,18 +315,30 @@ def run(
     case_text = _case_text(case_file, case, model, sets)
     # checked before the model runs: a refused directory costs nothing and is left untouched
     directory = None if out is None else _run_directory(out, case_file, force, case_text)
-    result = run_model(case)  # with the case's [analysis] outputs (bands, verdict)
-    if as_json:
-        _print_json(result.to_json())
-    else:
-        _print_sections(result_sections(result))
-    if directory is not None:
-        written = _write_run(
-            result, case, case_file, case_text, directory, report, history_revolutions
-        )
-        if not as_json:
-            for path in written:
-                _out.print(f"wrote {escape(str(path))}")
+    with ExitStack() as stack:
+        # the figures' processes import matplotlib while the model runs (--out only)
+        workers = None if directory is None else stack.enter_context(_figure_workers())
+        result = run_model(case)  # with the case's [analysis] outputs (bands, verdict)
+        if as_json:
+            _print_json(result.to_json())
+        else:
+            _print_sections(result_sections(result))
+        if directory is not None:
+            written = _write_run(
+                result, case, case_file, case_text, directory, report, history_revolutions,
+                workers,
+            )  # fmt: skip
+            if not as_json:
+                for path in written:
+                    _out.print(f"wrote {escape(str(path))}")
+
+
+def _figure_workers() -> Any:
+    """Processes that draw the figures of ``run --out`` (:mod:`runout.report._figure_workers`)."""
+    from runout.report._figure_workers import FigureWorkers, figure_processes
+    from runout.report.run_files import warm_figures
+
+    return FigureWorkers(figure_processes(), warm_figures)
 
 
 def _write_run(
@@ -337,6 +349,7 @@ def _write_run(
     directory: Path,
     report: bool,
     history_revolutions: float,
+    workers: Any = None,
 ) -> list[Path]:
     """Write the files of ``run --out``: all of them, or none (docs/outputs.md).
 
@@ -349,7 +362,9 @@ def _write_run(
     from runout.report.summary import bearing_summary
 
     with staged(directory) as stage:
-        written = write_result(result, stage.path, history_revolutions=history_revolutions)
+        written = write_result(
+            result, stage.path, history_revolutions=history_revolutions, workers=workers
+        )
         # The inputs travel with the results, so a report can be rebuilt from the directory.
         summary = bearing_summary(case.bearing, case.operation)
         (stage.path / "summary.json").write_text(

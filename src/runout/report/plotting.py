@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 import textwrap
+from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -32,6 +33,8 @@ if TYPE_CHECKING:
     from runout.analysis.results import RunResult
 
 __all__ = [
+    "LINEAR_FIGURES",
+    "STANDARD_FIGURES",
     "animate_bearing",
     "place_labels",
     "plot_anderon_spectrum",
@@ -55,7 +58,9 @@ __all__ = [
     "pyplot",
     "result_figures",
     "save_figure",
+    "standard_figure_names",
     "study_figures",
+    "write_figure",
     "write_figures",
 ]
 
@@ -648,6 +653,28 @@ def plot_ball_loads(
 FLOOR_FRACTION = 1e-4
 
 
+#: A log axis spanning more than this ratio gets minor ticks at 2 and 5 of each decade only.
+THIN_MINOR_SPAN = 100.0
+
+
+def _thin_log_minor(ax: Any, which: str = "y") -> None:
+    """Minor ticks of a log axis of ``ax`` at 2 and 5 of each decade, not 2 … 9.
+
+    Only on an axis (``"x"`` or ``"y"``, limits already set) spanning more than
+    :data:`THIN_MINOR_SPAN`, where matplotlib labels no minor tick anyway: each tick is
+    an object laid out and drawn at every pass (a five-decade axis has about 40 minor ticks,
+    a fifth of such a figure's drawing time), and 1-2-5 still reads the values between the
+    decades.
+    """
+    from matplotlib.ticker import LogLocator
+
+    lo, hi = ax.get_xlim() if which == "x" else ax.get_ylim()
+    lo, hi = min(lo, hi), max(lo, hi)
+    if lo > 0 and hi > THIN_MINOR_SPAN * lo:
+        axis = ax.xaxis if which == "x" else ax.yaxis
+        axis.set_minor_locator(LogLocator(10.0, subs=(2.0, 5.0)))
+
+
 def _line_labels(
     components: list[Any],
     top: int,
@@ -733,6 +760,7 @@ def plot_lines(result: RunResult, ax: Any = None, top: int = 6) -> Any:
     if comps:
         ax.set_ylim(floor_m * scale, peak_m * scale * 6.0)  # headroom for labels above the top
         ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
+        _thin_log_minor(ax)
         if below:
             floor_text += f"; {below:,} smaller lines not drawn"
     else:
@@ -794,17 +822,77 @@ def result_figures(result: RunResult, *, history_revolutions: float = 3.0) -> di
     dict
         File name -> matplotlib Figure (the caller saves or closes them).
     """
+    return {
+        name: _standard_figure(result, name, history_revolutions)
+        for name in standard_figure_names(result, history_revolutions)
+    }
+
+
+#: The file names of the standard figures of a time-history result, in the order written.
+STANDARD_FIGURES = ("history.png", "orbit.png", "lines.png")
+
+
+def standard_figure_names(result: RunResult, history_revolutions: float = 3.0) -> list[str]:
+    """The standard figures ``result`` gets (:func:`result_figures`): none for one instant.
+
+    Parameters
+    ----------
+    result : RunResult
+        The result.
+    history_revolutions : float
+        Revolutions of the rotating ring shown by the history (> 0; checked here).
+
+    Returns
+    -------
+    list of str
+        File names, from :data:`STANDARD_FIGURES`.
+    """
     if not (math.isfinite(history_revolutions) and history_revolutions > 0):
         raise ValueError(
             f"history_revolutions must be a positive number, got {history_revolutions!r}"
         )
     if result.time.size < 2:  # a single instant (equilibrium model): nothing to draw
-        return {}
-    return {
-        "history.png": _finish(plot_time_history(result, revolutions=history_revolutions).figure),
-        "orbit.png": _finish(plot_orbit(result).figure),
-        "lines.png": _finish(plot_lines(result).figure),
-    }
+        return []
+    return list(STANDARD_FIGURES)
+
+
+def _standard_figure(result: RunResult, name: str, history_revolutions: float) -> Any:
+    """One standard figure, laid out (:func:`result_figures`)."""
+    if name == "history.png":
+        return _finish(plot_time_history(result, revolutions=history_revolutions).figure)
+    if name == "orbit.png":
+        return _finish(plot_orbit(result).figure)
+    if name == "lines.png":
+        return _finish(plot_lines(result).figure)
+    raise ValueError(f"no standard figure {name!r}; they are {', '.join(STANDARD_FIGURES)}")
+
+
+@style.styled
+def write_figure(
+    result: RunResult, directory: Path, name: str, *, history_revolutions: float = 3.0
+) -> Path:
+    """Save one standard figure of a result (``name``, of :data:`STANDARD_FIGURES`) as PNG.
+
+    The same file :func:`write_figures` writes under that name; figures drawn one by one can
+    be drawn by several processes.
+
+    Parameters
+    ----------
+    result : RunResult
+        A time-history result.
+    directory : Path
+        Existing output directory.
+    name : str
+        File name, one of :data:`STANDARD_FIGURES`.
+    history_revolutions : float
+        Revolutions of the rotating ring shown by the history (> 0).
+
+    Returns
+    -------
+    Path
+        ``directory / name``.
+    """
+    return _save(_standard_figure(result, name, history_revolutions), directory / name)
 
 
 @style.styled
@@ -924,6 +1012,8 @@ def plot_anderon_spectrum(
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_ylim(floor, 3.0 * max([top, *bars]))
+    _thin_log_minor(ax, "x")
+    _thin_log_minor(ax)
     ax.set_xlabel(style.axis_label("order", "waves per revolution"))
     ax.set_ylabel("lines [µin/rad], bands [Anderon]")
     ax.grid(alpha=0.3, which="both")
@@ -998,6 +1088,7 @@ def plot_band_values(
     if log:
         ax.set_yscale("log")
         ax.set_ylim(min(positive) / 3.0, max(positive) * 8.0)  # room for the values on top
+        _thin_log_minor(ax)
     elif positive:
         ax.set_ylim(0.0, max(positive) * 1.3)
     ax.set_xlabel(style.axis_label("band (edges)" if edges else "band", edge_unit))
@@ -1022,6 +1113,7 @@ def plot_linear_figures(
     line_rms_uin_per_rad: np.ndarray,
     bands: dict[str, tuple[float, float]],
     band_values: dict[str, dict[str, float]],
+    names: Sequence[str] | None = None,
 ) -> list[Path]:
     """Save the linear model's waveform, Anderon spectrum and band chart as PNG files.
 
@@ -1046,23 +1138,34 @@ def plot_linear_figures(
         Band name -> (low, high) edges [waves per revolution].
     band_values : dict
         Series name -> band name -> Anderon value [Anderon] (at least one series).
+    names : sequence of str, optional
+        The figures to draw, of :data:`LINEAR_FIGURES` (default all of them).
 
     Returns
     -------
     list of Path
         ``density_waveform.png``, ``anderon_spectrum.png`` and ``anderon_bands.png`` in
-        ``directory``.
+        ``directory`` (those of ``names``, in its order).
     """
     first = next(iter(band_values.values()))
-    figures = (
-        ("density_waveform.png", plot_density_waveform(revolutions, density_um_per_rad, title)),
-        (
-            "anderon_spectrum.png",
-            plot_anderon_spectrum(orders, line_rms_uin_per_rad, bands, first, title),
+    builders = {
+        "density_waveform.png": lambda: plot_density_waveform(
+            revolutions, density_um_per_rad, title
         ),
-        ("anderon_bands.png", plot_band_values(band_values, title, edges=bands)),
-    )
-    return [_save(ax.figure, directory / name) for name, ax in figures]
+        "anderon_spectrum.png": lambda: plot_anderon_spectrum(
+            orders, line_rms_uin_per_rad, bands, first, title
+        ),
+        "anderon_bands.png": lambda: plot_band_values(band_values, title, edges=bands),
+    }
+    chosen = LINEAR_FIGURES if names is None else names
+    unknown = [n for n in chosen if n not in builders]
+    if unknown:
+        raise ValueError(f"no linear figure {unknown[0]!r}; they are {', '.join(builders)}")
+    return [_save(builders[name]().figure, directory / name) for name in chosen]
+
+
+#: The file names of the linear model's figures (:func:`plot_linear_figures`), in order.
+LINEAR_FIGURES = ("density_waveform.png", "anderon_spectrum.png", "anderon_bands.png")
 
 
 # ---------------------------------------------------------------- roller_constraint model
@@ -1291,6 +1394,7 @@ def plot_dynamic_spectrum(result: RunResult, ax: Any = None, f_max: float | None
         ax.set_yscale("log")
         ax.set_ylim(floor, peak_m * scale * 6.0)
         ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
+        _thin_log_minor(ax)
     else:
         # a spectrum of numerical noise is not a result: say so instead of drawing it
         ax.set_yscale("log")

@@ -27,16 +27,22 @@ from runout.analysis.results import RunResult
 from runout.analysis.spectrum import ANDERON_BANDS, amplitude_spectrum
 from runout.io.result_files import HISTORY_COLUMNS, write_columns
 from runout.models.linear import LinearResult
+from runout.report import _plot_style as style
 from runout.report import plotting
 
 if TYPE_CHECKING:
     from runout.models.roller_constraint import OrderSweep, Solution
+    from runout.report._figure_workers import FigureWorkers
 
-__all__ = ["model_files", "write_result"]
+__all__ = ["draw_figure", "model_files", "warm_figures", "write_result"]
 
 
 def write_result(
-    result: RunResult, directory: Path, *, history_revolutions: float = 3.0
+    result: RunResult,
+    directory: Path,
+    *,
+    history_revolutions: float = 3.0,
+    workers: FigureWorkers | None = None,
 ) -> list[Path]:
     """Write ``result.json``, ``history.csv``, ``lines.csv``, the figures and the model's files.
 
@@ -48,20 +54,26 @@ def write_result(
         Output directory (created).
     history_revolutions : float
         Revolutions of the rotating ring the time-history figure shows (the last ones).
+    workers : FigureWorkers, optional
+        Processes that draw the figures while this one writes the tables (``runout run
+        --out`` starts them before the model runs); by default the figures are drawn here.
+        The files are the same either way.
 
     Returns
     -------
     list of Path
         The files written.
     """
+    figures = [
+        *plotting.standard_figure_names(result, history_revolutions),
+        *_model_figure_names(result),
+    ]
     directory.mkdir(parents=True, exist_ok=True)
-    written: list[Path] = []
     path = directory / "result.json"
     path.write_text(json.dumps(result.to_json(), indent=2, allow_nan=False) + "\n")
-    written.append(path)
     # the record's CSV is formatted by compiled code that releases the GIL: written on a
     # second thread while the figures are drawn (a record of 2^20 instants: 0.3 s each); so
-    # is the rigid model's order sweep (about a hundred solves, 1.5 s on two cores)
+    # is the rigid model's order sweep (about a hundred solves)
     history = directory / "history.csv"
     pool = ThreadPoolExecutor(2, thread_name_prefix="runout-files")
     pending = pool.submit(
@@ -69,22 +81,48 @@ def write_result(
     )
     solution = _roller_solution(result)
     sweep = None if solution is None else pool.submit(_order_sweep, solution)
+    tables: list[Path] = []
+
+    def write_tables() -> list[tuple[str, Any]]:
+        """The tables (this process), and the figures that need what they computed."""
+        tables.append(_write_lines(result, directory))
+        written, swept = _model_tables(result, directory, sweep)
+        tables.extend(written)
+        return [(name, swept) for name in figures if name in _AFTER_TABLES]
+
     try:
-        written += _write_rest(result, directory, history_revolutions, sweep)
+        linear = _linear_inputs(result) if plotting.LINEAR_FIGURES[0] in figures else None
+        extras: dict[str, Any] = {name: history_revolutions for name in plotting.STANDARD_FIGURES}
+        extras.update({name: linear for name in plotting.LINEAR_FIGURES})
+        first = [
+            (name, extras.get(name))
+            for name in sorted(figures, key=lambda n: n not in _SLOWEST)
+            if name not in _AFTER_TABLES
+        ]
+        if workers is None:
+            drawn = {name: draw_figure(result, directory, name, extra) for name, extra in first}
+            drawn.update(
+                {name: draw_figure(result, directory, name, x) for name, x in write_tables()}
+            )
+        else:
+            drawn = workers.draw(draw_figure, result, directory, first, later=write_tables)
     finally:
         pool.shutdown(wait=True)
     pending.result()  # its error, if any (disk full), is this call's
-    return [written[0], history, *written[1:]]
+    standard = [drawn[n] for n in figures if n in plotting.STANDARD_FIGURES]
+    own = [drawn[n] for n in figures if n not in plotting.STANDARD_FIGURES]
+    return [path, history, tables[0], *standard, *tables[1:], *own]
 
 
-def _write_rest(
-    result: RunResult,
-    directory: Path,
-    history_revolutions: float,
-    sweep: Future[OrderSweep] | None,
-) -> list[Path]:
-    """``lines.csv``, the figures and the model's own files (:func:`write_result`)."""
-    written: list[Path] = []
+#: The slowest figures (0.2-0.35 s each): queued first, so that two drawing processes end
+#: together rather than one drawing the slowest last.
+_SLOWEST = frozenset({"bearing.gif", "anderon_spectrum.png", "lines.png"})
+#: Figures drawn from what the tables computed (the rigid model's order sweep).
+_AFTER_TABLES = frozenset({"order_sweep.png"})
+
+
+def _write_lines(result: RunResult, directory: Path) -> Path:
+    """``lines.csv``: every line of the result (:func:`write_result`)."""
     path = directory / "lines.csv"
     with path.open("w", newline="") as fh:
         w = csv.writer(fh)
@@ -100,10 +138,76 @@ def _write_rest(
                     c.label,
                 ]
             )
-    written.append(path)
-    written += plotting.write_figures(result, directory, history_revolutions=history_revolutions)
-    written += _model_files(result, directory, sweep)
-    return written
+    return path
+
+
+def draw_figure(result: RunResult, directory: Path, name: str, extra: Any = None) -> Path:
+    """Draw one figure of ``result`` (a standard figure or the model's own) into ``directory``.
+
+    Parameters
+    ----------
+    result : RunResult
+        The result.
+    directory : Path
+        Existing output directory.
+    name : str
+        File name: one of :data:`runout.report.plotting.STANDARD_FIGURES` or of the model's
+        figures.
+    extra : object
+        The history's revolutions for ``history.png`` (a float; each standard figure takes
+        it), the order sweep for ``order_sweep.png``, the inputs of the linear model's
+        figures (computed from ``result`` when None), else None.
+
+    Returns
+    -------
+    Path
+        ``directory / name``.
+    """
+    if name in plotting.STANDARD_FIGURES:
+        return plotting.write_figure(result, directory, name, history_revolutions=float(extra))
+    details = result.details
+    if name in plotting.LINEAR_FIGURES:
+        inputs = _linear_inputs(result) if extra is None else extra
+        (path,) = plotting.plot_linear_figures(directory, **inputs, names=[name])
+        return path
+    if name == "bearing.gif" and isinstance(details, QuasiStaticDetails):
+        return plotting.animate_bearing(
+            result, directory / "bearing.gif", n_elements=details.n_elements
+        )
+    if name == "balls.png" and isinstance(details, EquilibriumDetails):
+        return _balls_figure(result, details, directory)
+    if name == "spectrum.png" and isinstance(details, DynamicDetails):
+        (path,) = plotting.plot_dynamic_figures(result, directory)
+        return path
+    solution = _roller_solution(result)
+    if solution is not None and name in _ROLLER_FIGURES:
+        return _roller_figure(solution, directory, name, extra)
+    raise ValueError(f"a {result.model} result has no figure {name!r}")
+
+
+def warm_figures() -> None:
+    """Import and initialise what drawing a figure needs: a drawing process's start.
+
+    matplotlib, Pillow's drawing and its image plugins (loaded at the first save), NumPy's
+    FFT (the dynamic model's spectrum), the font and the mathtext parser of log axes (built
+    at the first text drawn: 0.1-0.2 s): done once, before the processes that draw are
+    forked from the one that does this (:mod:`runout.report._figure_workers`).
+    """
+    import io
+
+    import matplotlib
+
+    matplotlib.use("Agg", force=False)
+    import matplotlib.pyplot as plt
+    import numpy.fft  # noqa: F401
+    from PIL import ImageDraw  # noqa: F401
+
+    with matplotlib.rc_context(style.RC):  # type: ignore[arg-type]
+        fig = plt.figure(figsize=(1, 1))
+        fig.text(0.5, 0.5, "0.5 µm [-]")
+        fig.text(0.5, 0.2, r"$\mathdefault{10^{-1}}$", rotation=90)
+        fig.savefig(io.BytesIO(), format="png", pil_kwargs={"compress_level": 1})
+        plt.close(fig)
 
 
 def _roller_solution(result: RunResult) -> Solution | None:
@@ -143,52 +247,74 @@ def _model_files(
     result: RunResult, directory: Path, sweep: Future[OrderSweep] | None
 ) -> list[Path]:
     """:func:`model_files`, with the rigid model's order sweep already under way (or None)."""
+    tables, swept = _model_tables(result, directory, sweep)
+    figures = [
+        draw_figure(result, directory, name, swept if name in _AFTER_TABLES else None)
+        for name in _model_figure_names(result)
+    ]
+    return [*tables, *figures]
+
+
+#: The rigid model's figures, in the order written.
+_ROLLER_FIGURES = ("displacement.png", "contact_pattern.png", "order_sweep.png")
+
+
+def _model_figure_names(result: RunResult) -> list[str]:
+    """The file names of the model's own figures of ``result`` (:func:`draw_figure`)."""
     details = result.details
     if isinstance(result, LinearResult):
-        return _linear_files(result, directory)
+        lines = result.spectral_lines
+        return [] if lines is None or not len(lines) else list(plotting.LINEAR_FIGURES)
     if isinstance(details, QuasiStaticDetails):
-        return [
-            plotting.animate_bearing(
-                result, directory / "bearing.gif", n_elements=details.n_elements
-            )
-        ]
+        return ["bearing.gif"]
     if isinstance(details, EquilibriumDetails):
-        return _equilibrium_files(result, details, directory)
+        return ["balls.png"]
     if isinstance(details, DynamicDetails):
-        return _dynamic_files(result, details, directory)
+        return ["spectrum.png"]
+    return [] if _roller_solution(result) is None else list(_ROLLER_FIGURES)
+
+
+def _model_tables(
+    result: RunResult, directory: Path, sweep: Future[OrderSweep] | None
+) -> tuple[list[Path], OrderSweep | None]:
+    """The model's own tables of ``result``, and the order sweep (rigid model; else None)."""
+    details = result.details
+    if isinstance(result, LinearResult) or isinstance(details, QuasiStaticDetails):
+        return [], None
+    if isinstance(details, EquilibriumDetails):
+        return _equilibrium_tables(details, directory), None
+    if isinstance(details, DynamicDetails):
+        return [_dynamic_table(result, details, directory)], None
     solution = _roller_solution(result)
-    if solution is not None:
-        return _roller_files(solution, directory, sweep)
-    return []
+    if solution is None:
+        return [], None
+    return _roller_tables(solution, directory, sweep)
 
 
-def _linear_files(result: Any, directory: Path) -> list[Path]:
-    """The linear model's waveform, spectrum and band plots."""
-    if result.spectral_lines is None or not len(result.spectral_lines):
-        return []
+def _linear_inputs(result: Any) -> dict[str, Any]:
+    """What the linear model's figures draw (:func:`plotting.plot_linear_figures`' inputs).
+
+    Computed by the process that ran the model (which has imported what computing them
+    needs) and sent with each linear figure to the process that draws it.
+    """
     theta, v = result.density_waveform()
     orders, rms = result.line_anderon_spectrum()
-    return list(
-        plotting.plot_linear_figures(
-            directory,
-            title=result.title or result.model,
-            revolutions=theta / (2.0 * math.pi),
-            density_um_per_rad=v * 1e6,
-            orders=orders,
-            line_rms_uin_per_rad=rms,
-            bands={b.name: (b.low, b.high) for b in ANDERON_BANDS.bands},
-            band_values={
-                "exact lines": result.anderon_lines().as_dict(),
-                "6-rev DFT": result.anderon_dft().as_dict(),
-            },
-        )
-    )
+    return {
+        "title": result.title or result.model,
+        "revolutions": theta / (2.0 * math.pi),
+        "density_um_per_rad": v * 1e6,
+        "orders": orders,
+        "line_rms_uin_per_rad": rms,
+        "bands": {b.name: (b.low, b.high) for b in ANDERON_BANDS.bands},
+        "band_values": {
+            "exact lines": result.anderon_lines().as_dict(),
+            "6-rev DFT": result.anderon_dft().as_dict(),
+        },
+    }
 
 
-def _equilibrium_files(
-    result: RunResult, details: EquilibriumDetails, directory: Path
-) -> list[Path]:
-    """``balls.csv``, ``stiffness.csv`` and ``balls.png`` of the equilibrium model."""
+def _balls_figure(result: RunResult, details: EquilibriumDetails, directory: Path) -> Path:
+    """``balls.png`` of the equilibrium model: each ball's loads and contact angles."""
     table = details.balls
 
     def column(key: str) -> NDArray[np.float64]:
@@ -202,7 +328,12 @@ def _equilibrium_files(
         column("outer_contact_angle_deg"),
         result.title,
     )
-    png = plotting.save_figure(ax, directory / "balls.png")
+    return plotting.save_figure(ax, directory / "balls.png")
+
+
+def _equilibrium_tables(details: EquilibriumDetails, directory: Path) -> list[Path]:
+    """``balls.csv`` and ``stiffness.csv`` of the equilibrium model."""
+    table = details.balls
     path = directory / "balls.csv"
     with path.open("w", newline="") as fh:
         w = csv.DictWriter(fh, fieldnames=list(table[0]))
@@ -216,11 +347,11 @@ def _equilibrium_files(
         w2.writerow(["", *dofs])
         for name, krow in zip(dofs, details.stiffness_matrix.matrix, strict=True):
             w2.writerow([name, *(f"{v:.12g}" for v in krow)])
-    return [path, kpath, png]
+    return [path, kpath]
 
 
-def _dynamic_files(result: RunResult, details: DynamicDetails, directory: Path) -> list[Path]:
-    """``spectrum.csv`` (p-p of x, y, z per frequency) and ``spectrum.png`` of a dynamic run."""
+def _dynamic_table(result: RunResult, details: DynamicDetails, directory: Path) -> Path:
+    """``spectrum.csv`` (p-p of x, y, z per frequency) of a dynamic run."""
     rate = details.sample_rate_hz
     if rate is None:  # read back: the record's spacing
         rate = 1.0 / float(result.time[1] - result.time[0])
@@ -229,11 +360,11 @@ def _dynamic_files(result: RunResult, details: DynamicDetails, directory: Path) 
     rows = np.column_stack([spec.frequencies, 2.0 * spec.amplitude.T])
     header = "frequency_hz,x_pp_m,y_pp_m,z_pp_m"
     np.savetxt(spectrum_csv, rows, delimiter=",", header=header, comments="", fmt="%.10g")
-    return [spectrum_csv, *plotting.plot_dynamic_figures(result, directory)]
+    return spectrum_csv
 
 
 def _order_sweep(sol: Solution) -> OrderSweep:
-    """The order sweep of the rigid model's files (:func:`_roller_files`).
+    """The order sweep of the rigid model's files (:func:`_roller_tables`).
 
     One revolution of the turning ring at the run's angular step (at most 720 angles) and
     1 µm on each part, orders 2 … 3Z.
@@ -245,16 +376,15 @@ def _order_sweep(sol: Solution) -> OrderSweep:
     return order_sweep(sol.geometry, rotation_angles(1.0, n1))
 
 
-def _roller_files(
+def _roller_tables(
     sol: Solution, directory: Path, sweep: Future[OrderSweep] | None = None
-) -> list[Path]:
-    """``contacts.csv``, ``order_sweep.csv`` and the rigid model's plots.
+) -> tuple[list[Path], OrderSweep]:
+    """``contacts.csv`` and ``order_sweep.csv`` of the rigid model, and the sweep.
 
     The order sweep is :func:`_order_sweep`'s, computed here unless ``sweep`` is already
-    computing it (on another thread, while the standard figures are drawn).
+    computing it (on another thread, while the figures are drawn).
     """
     directory.mkdir(parents=True, exist_ok=True)
-    written: list[Path] = []
     path = directory / "contacts.csv"
     z = sol.geometry.n_elements
     with path.open("w", newline="") as fh:
@@ -276,36 +406,30 @@ def _roller_files(
                     *(f"{g:.6g}" for g in sol.gaps[i]),
                 ]
             )
-    written.append(path)
     swept = _order_sweep(sol) if sweep is None else sweep.result()
-    written.append(_write_order_sweep(swept, directory / "order_sweep.csv"))
+    return [path, _write_order_sweep(swept, directory / "order_sweep.csv")], swept
+
+
+def _roller_figure(sol: Solution, directory: Path, name: str, swept: OrderSweep | None) -> Path:
+    """One of the rigid model's figures (:data:`_ROLLER_FIGURES`); ``order_sweep.png`` needs
+    the sweep."""
     angle_deg = np.degrees(sol.alpha)
-    written.append(
-        plotting.save_figure(
-            plotting.plot_constraint_displacement(angle_deg, sol.radial, sol.horizontal),
-            directory / "displacement.png",
+    if name == "displacement.png":
+        ax = plotting.plot_constraint_displacement(angle_deg, sol.radial, sol.horizontal)
+    elif name == "contact_pattern.png":
+        ax = plotting.plot_contact_pattern(angle_deg, sol.touching, sol.pair)
+    else:
+        if swept is None:
+            raise ValueError("order_sweep.png is drawn from the order sweep, none was given")
+        ax = plotting.plot_order_sweep(
+            swept.orders,
+            swept.runout,
+            swept.parts,
+            swept.baseline,
+            swept.n_elements,
+            solved=swept.solved,
         )
-    )
-    written.append(
-        plotting.save_figure(
-            plotting.plot_contact_pattern(angle_deg, sol.touching, sol.pair),
-            directory / "contact_pattern.png",
-        )
-    )
-    written.append(
-        plotting.save_figure(
-            plotting.plot_order_sweep(
-                swept.orders,
-                swept.runout,
-                swept.parts,
-                swept.baseline,
-                swept.n_elements,
-                solved=swept.solved,
-            ),
-            directory / "order_sweep.png",
-        )
-    )
-    return written
+    return plotting.save_figure(ax, directory / name)
 
 
 def _write_order_sweep(sweep: OrderSweep, path: Path) -> Path:
