@@ -172,11 +172,17 @@ class StudyResult:
             }
             for d, f, label, pp in self.line_table()
         ]
+        return self._summary_document(sorted(set(self.model)), runout, comps)
+
+    def _summary_document(
+        self, models: list[str], runout: dict[str, Any], comps: list[dict[str, Any]]
+    ) -> dict[str, Any]:
+        """The summary's keys around its statistics (both kinds of result)."""
         return {
             "title": self.title,
             "kind": self.kind,
             "seed": self.seed,
-            "models": sorted(set(self.model)),
+            "models": models,
             "samples": self.samples,
             "failed": self.failed,
             "errors": self.error_list(),
@@ -659,20 +665,8 @@ class StreamedStudyResult(StudyResult):
             {"direction": d, "frequency_hz": f, "label": label, "pp_m": stats.summary(self.bins)}
             for d, f, label, stats in self._line_order()
         ]
-        return {
-            "title": self.title,
-            "kind": self.kind,
-            "seed": self.seed,
-            "models": sorted(self.models_run),
-            "samples": self.samples,
-            "failed": self.failed,
-            "errors": self.error_list(),
-            "quantities": [q.key for q in self.quantities],
-            "runout": runout,
-            "components": comps,
-            **self._grade_keys(),
-            **self._streaming_keys(),
-        }
+        summary = self._summary_document(sorted(self.models_run), runout, comps)
+        return {**summary, **self._streaming_keys()}
 
     def _streaming_keys(self) -> dict[str, Any]:
         return {
