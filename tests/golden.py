@@ -85,7 +85,17 @@ KINEMATIC = [["components", "frequency_hz"], ["attribution", "frequency_hz"], ["
 STIFFNESS = "stiffness [N/m]"
 ANDERON = "Anderon bands"
 #: ``*_m`` keys that are geometry (inputs and positions along a shaft), not motions.
-GEOMETRY = {"radial_clearance_m", "position_m", "pressure_centre_m", "nose_position_m"}
+GEOMETRY = {
+    "radial_clearance_m",
+    "position_m",
+    "pressure_centre_m",
+    "nose_position_m",
+    # a catalogue bearing's boundary dimensions and a tolerance class's bore: inputs, not motion
+    "bore_diameter_m",
+    "outside_diameter_m",
+    "width_m",
+    "bore_m",
+}
 #: Strings that quote computed values (compared number by number).
 QUOTING = {"notes", "label", "formula"}
 

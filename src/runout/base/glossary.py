@@ -54,6 +54,14 @@ TERMS: tuple[Term, ...] = (
         "BallBearing or RollerBearing",
     ),
     Term(
+        ("designation",),
+        "–",
+        "–",
+        'a bearing\'s catalogue designation ("6204", "7014C", "NU209"): alone a whole '
+        "bearing description from runout's catalogue (ISO 15 boundary dimensions, internal "
+        "geometry published or estimated by a named rule); keys given beside it override",
+    ),
+    Term(
         ("elements",),
         "Z",
         "–",
