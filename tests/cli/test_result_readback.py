@@ -4,6 +4,7 @@ writes like the one the model returned."""
 from __future__ import annotations
 
 import io
+import json
 from pathlib import Path
 
 import numpy as np
@@ -120,3 +121,18 @@ def test_read_result_refuses_an_unknown_measuring_direction(tmp_path: Path) -> N
     (out / "case.toml").unlink()
     with pytest.raises(RunoutError, match="measuring direction"):
         read_result(out)
+
+
+def test_report_refuses_a_negative_solver_resolution(tmp_path: Path) -> None:
+    """Found by the reading fuzz test: ``solver_resolution_m = -1`` in an edited result.json
+    passed the shape check (a number) and crashed the report (internal error, exit 70)."""
+    out = tmp_path / "run"
+    done = runner.invoke(app, ["run", str(EXAMPLES / "seed002_608.toml"), "--out", str(out)])
+    assert done.exit_code == 0, done.stderr
+    doc = json.loads((out / "result.json").read_text(encoding="utf-8"))
+    doc["solver_resolution_m"] = -1
+    (out / "result.json").write_text(json.dumps(doc), encoding="utf-8")
+    done = runner.invoke(app, ["report", str(out)])
+    assert done.exit_code == 2, done.stderr
+    (line,) = done.stderr.strip().splitlines()
+    assert "result.json: solver_resolution_m: expected a finite number >= 0, found -1" in line

@@ -407,6 +407,10 @@ SHAPE_TYPES: Mapping[str, Callable[[Any], bool]] = {
     "object": lambda v: isinstance(v, dict),
     "list": lambda v: isinstance(v, list),
     "number": lambda v: isinstance(v, int | float) and not isinstance(v, bool),
+    # a size or resolution: the readers' arithmetic takes it as one
+    "nonnegative": lambda v: (
+        isinstance(v, int | float) and not isinstance(v, bool) and math.isfinite(v) and v >= 0
+    ),
     "string": lambda v: isinstance(v, str),
     "bool": lambda v: isinstance(v, bool),
     "scalar": lambda v: isinstance(v, str | int | float | bool),
@@ -417,6 +421,7 @@ _WORDS = {
     "object": "an object",
     "list": "an array",
     "number": "a number",
+    "nonnegative": "a finite number >= 0",
     "string": "a string",
     "bool": "true or false",
     "scalar": "a number or a string",
@@ -477,6 +482,8 @@ def check_shape(doc: Any, shape: Any, name: str, key: str = "") -> None:
 def _mismatch(name: str, key: str, value: Any, expected: str) -> InputFileError:
     kinds = {dict: "an object", list: "an array", str: "a string", bool: "true or false"}
     found = "null" if value is None else kinds.get(type(value), "a number")
+    if found == "a number":  # its value says what is wrong with it (e.g. -1 for a size)
+        found = _shown_key(repr(value))
     return InputFileError(
         name, key or "(the document)", f"expected {expected}, found {found} (an edited file?)"
     )

@@ -93,7 +93,7 @@ RESULT_SHAPE: dict[str, Any] = {
     "frequencies_hz": "object",
     "contact_angle_deg": "number",
     "radial_clearance_m": "number",
-    "solver_resolution_m": "number",
+    "solver_resolution_m": "nonnegative",
     "runout": _RUNOUT,
     "components": [_LINE],
     "notes": ["string"],
