@@ -15,6 +15,7 @@ import sys
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 import pytest
 
 from runout.case.standards import BALL_GRADES, KIA_UM
@@ -141,7 +142,49 @@ def test_run_with_a_grade_draws_nothing_and_says_so(tmp_path: Path) -> None:
     graded = ok_json("run", str(graded_case))
     assert graded["runout"] == plain["runout"]
     (note,) = [n for n in graded["notes"] if n.startswith("elements.grade")]
-    assert "draws no ball sizes" in note and "t_Dw is not applied" in note
+    assert "draws no ball sizes" in note and "applies no form from the grade" in note
+
+
+@pytest.mark.parametrize(
+    ("order", "bound"),
+    [
+        (2, 0.25e-6 / 4.0),  # even: V_DWs / 4 = 0.0625 um is below t_Dw / 2 = 0.125 um
+        (3, 0.25e-6 / 2.0),  # odd: a ball of constant width, t_Dw / 2 alone
+    ],
+)
+def test_grade_form_order_draws_each_balls_form_within_the_grade(
+    tmp_path: Path, order: int, bound: float
+) -> None:
+    case = kim_case(tmp_path, 'ball_grade = "G10"', f"grade_form_order = {order}", samples=12)
+    out_dir = tmp_path / "lot"
+    done = cli("study", str(case), "--out", str(out_dir))
+    assert done.returncode == 0, done.stderr
+    summary = json.loads((out_dir / "summary.json").read_text(encoding="utf-8"))
+    (entry,) = summary["ball_grades"]
+    # ISO 3290-1:2014 G10: V_DWs = t_Dw = 0.25 um
+    assert entry["form_order"] == order
+    assert entry["form_amplitude_max_m"] == pytest.approx(bound, rel=1e-12)
+    assert entry["form_entries"] == [1, 10]
+    assert "lobes" in done.stdout and "(0-peak)" in done.stdout
+    columns = np.genfromtxt(out_dir / "samples.csv", delimiter=",", names=True)
+    amplitudes = np.array([columns[f"waviness_{k}_amplitude"] for k in range(1, 11)])
+    phases = np.array([columns[f"waviness_{k}_phase"] for k in range(1, 11)])
+    # every ball of every bearing has its own draw, within the grade's bound and a turn
+    assert amplitudes.shape == (10, 12)
+    assert np.all((amplitudes >= 0.0) & (amplitudes <= bound))
+    assert np.all((phases >= 0.0) & (phases < 2.0 * np.pi))
+    assert np.unique(amplitudes).size == amplitudes.size
+    labels = " ".join(c["label"] for c in summary["components"])
+    if order == 2:  # an even ball form changes the ball's diameter: lines at 2 f_b +- f_c
+        assert "ball lobes: 2n f_b" in labels
+    else:  # an odd one keeps the ball's diameter: no line from it in the 2-D model
+        assert "ball lobes" not in labels
+
+
+def test_grade_form_order_without_a_grade_draw_is_refused(tmp_path: Path) -> None:
+    case = kim_case(tmp_path, 'element_diameter_sigma = "0.1 um"', "grade_form_order = 2")
+    line = refused("study", str(case))
+    assert str(case) in line and "elements.grade_form_order" in line and "ball_grade" in line
 
 
 @pytest.mark.parametrize(
@@ -236,3 +279,16 @@ def test_tables_are_the_tabulated_ones() -> None:
     assert (g10.roughness, g10.lot_diameter_variation) == pytest.approx((0.02e-6, 0.5e-6))
     assert g10.gauge_interval == pytest.approx(1e-6)
     assert KIA_UM["P4"][0] == 2.5 and KIA_UM["Normal"][2] == 13.0
+
+
+def test_grade_form_bound_by_order() -> None:
+    from runout.case.standards import StandardsError, grade_form_amplitude
+
+    for grade in BALL_GRADES.values():
+        odd = grade_form_amplitude(grade, 3)
+        even = grade_form_amplitude(grade, 2)
+        assert odd == 0.5 * grade.spherical_form
+        assert even == min(0.5 * grade.spherical_form, 0.25 * grade.diameter_variation)
+        assert even <= odd
+    with pytest.raises(StandardsError):
+        grade_form_amplitude(BALL_GRADES["G5"], 1)

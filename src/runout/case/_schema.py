@@ -528,6 +528,23 @@ class ElementsSpec(_Table):
             "deviations of the balls' diameters (default 6: +-3 sigma)."
         ),
     )
+    grade_form_order: int | None = Field(
+        None,
+        ge=2,
+        description=(
+            "Lobes of the balls' form error drawn from the grade: a Monte Carlo's ball_grade "
+            "(or element_diameter_sigma on a graded bearing) also gives each ball one harmonic "
+            "of this order, amplitude uniform from 0 to the grade's bound (t_Dw / 2; even "
+            "orders also V_DWs / 4) and a uniform phase; default: no form drawn."
+        ),
+    )
+
+    @field_validator("grade_form_order")
+    @classmethod
+    def _bounded_form_order(cls, value: int | None) -> int | None:
+        if value is not None:
+            _order_at_most(value)
+        return value
 
     @field_validator("grade")
     @classmethod

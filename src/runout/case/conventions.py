@@ -149,8 +149,9 @@ def _table_key(table: str, name: str) -> Any:
 _GRADE_IN_A_RUN = (
     "one bearing has one set of balls, and the grade gives only their scatter: a run draws no "
     "ball sizes (elements.diameter_errors are used as given); a Monte Carlo study draws them "
-    "with [study.vary] ball_grade. The grade's roundness t_Dw is not applied either: it "
-    'gives no lobe order (give ball waviness as [[waviness]] part = "ball")'
+    "with [study.vary] ball_grade, and each ball's form when grade_form_order names its "
+    "lobes. A run applies no form from the grade either (one ball's form is not a scatter: "
+    'give it as [[waviness]] part = "ball")'
 )
 
 
@@ -159,7 +160,7 @@ def _grade_keys(spec: CaseSpec) -> list[str]:
     return [
         f"{prefix}.{name}"
         for prefix, table in spec.element_tables
-        for name in ("grade", "grade_sigma_divisor")
+        for name in ("grade", "grade_sigma_divisor", "grade_form_order")
         if getattr(table, name) is not None
     ]
 
@@ -522,10 +523,11 @@ KEYS: tuple[KeyConvention, ...] = (
         _table_key("elements", "phase_frame"),
     ),
     KeyConvention(
-        "elements.grade, grade_sigma_divisor",
+        "elements.grade, grade_sigma_divisor, grade_form_order",
         "ISO 3290-1 grade of the balls (G3 to G200) and the number of standard deviations its "
         "lot diameter variation V_DWL is taken as (default 6): a Monte Carlo draws the balls' "
-        "diameters with sigma = V_DWL / divisor ([study.vary] ball_grade).",
+        "diameters with sigma = V_DWL / divisor ([study.vary] ball_grade), and with "
+        "grade_form_order each ball's form harmonic up to the grade's bound.",
         "-",
         (N, N, N, N, N, N, N),
         {m: _GRADE_IN_A_RUN for m in MODELS},

@@ -363,7 +363,18 @@ def batched_study(case: Any) -> bool:
             key in ("element_diameter_sigma", "ball_grade", "elements.diameter_errors")
             for key in study.vary
         )
+        and not _draws_ball_form(case)
     )
+
+
+def _draws_ball_form(case: Any) -> bool:
+    """Whether a ball-size draw also draws each ball's form (``[elements] grade_form_order``
+    on a graded bearing: runout.study._plan), which the batched kernel does not model."""
+    elements = case.spec.elements
+    if getattr(elements, "grade_form_order", None) is None:  # none, or a spindle's tables
+        return False
+    vary = case.study.vary
+    return "ball_grade" in vary or ("element_diameter_sigma" in vary and elements.grade)
 
 
 #: Bytes one pass of :func:`runout.study._pool.evaluate_rows` holds per bearing and instant:

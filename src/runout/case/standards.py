@@ -42,6 +42,7 @@ __all__ = [
     "StandardsError",
     "ball_grade",
     "class_limit",
+    "grade_form_amplitude",
     "grade_sigma",
     "is_class_name",
 ]
@@ -187,6 +188,39 @@ def grade_sigma(grade: BallGrade, divisor: float = DEFAULT_GRADE_SIGMA_DIVISOR) 
     smallest ball of a lot; the models draw each ball's diameter error from N(0, sigma^2).
     """
     return grade.lot_diameter_variation / divisor
+
+
+def grade_form_amplitude(grade: BallGrade, order: int) -> float:
+    """Largest zero-to-peak amplitude of a ball's form harmonic of ``order`` lobes that the
+    grade allows [m].
+
+    Parameters
+    ----------
+    grade : BallGrade
+        The grade.
+    order : int
+        Lobes k >= 2 of the harmonic r(θ) = R + a cos(kθ + φ) on a great circle of the ball.
+
+    Returns
+    -------
+    float
+        ``t_Dw / 2`` for odd k; ``min(t_Dw / 2, V_DWs / 4)`` for even k [m].
+
+    Notes
+    -----
+    ISO 3290-1:2014 bounds a ball's form by its deviation from spherical form t_Dw (the
+    radial distance between the circumscribed and inscribed spheres, 2a for one harmonic) and
+    its single diameter variation V_DWs. The diameter through θ is 2R + a (cos kθ + cos k(θ +
+    π)): it varies by 4a for even k and not at all for odd k (a ball of constant width), so
+    only even orders are bounded by V_DWs as well. The grade gives no lobe order; the case
+    names it (``[elements] grade_form_order``).
+    """
+    if order < 2:
+        raise StandardsError(f"a ball's form order must be >= 2, got {order}")
+    bound = 0.5 * grade.spherical_form
+    if order % 2 == 0:
+        bound = min(bound, 0.25 * grade.diameter_variation)
+    return bound
 
 
 def is_class_name(text: str) -> bool:

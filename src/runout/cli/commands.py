@@ -931,8 +931,15 @@ def _print_study(summary: dict[str, Any], title: str, out: str | None) -> None:
     _out.print(table)
     for grade in summary.get("ball_grades", []):  # the sigma a ball grade drew with
         sigma = format_length(grade["sigma_m"], length_unit([grade["sigma_m"]]))
+        form = ""
+        if "form_order" in grade:  # each ball's form drawn too ([elements] grade_form_order)
+            bound = grade["form_amplitude_max_m"]
+            form = (
+                f", each ball's form {grade['form_order']} lobes up to "
+                f"{format_length(bound, length_unit([bound]))} (0-peak)"
+            )
         _out.print(
-            f"ball grade {grade['grade']} ({grade['key']}): ball diameter sigma {sigma} "
+            f"ball grade {grade['grade']} ({grade['key']}): ball diameter sigma {sigma}{form} "
             f"({grade['source']})",
             soft_wrap=True,
             highlight=False,

@@ -279,6 +279,7 @@ def plan_quantities(case: Case, data: dict[str, Any] | None = None) -> list[Quan
     study = _study_of(case)
     data = _case_data(case) if data is None else data
     out: list[Quantity] = []
+    formed: set[str] = set()  # element tables whose balls' form is drawn (grade_form_order)
     for key in sorted(study.vary):
         entry = study.vary[key]
         where = f"study.vary.{key}"
@@ -299,6 +300,11 @@ def plan_quantities(case: Case, data: dict[str, Any] | None = None) -> list[Quan
                     key, (table, None, "diameter_errors"), z, "normal", base, (sigma,), grade=grade
                 )
             )
+            if grade is not None:
+                form = _form_draws(case, data, table, z, grade)
+                if form:
+                    formed.add(table)
+                out.extend(form)
             continue
         assert isinstance(entry, VarySpec)
         path = parse_vary_key(key)
@@ -349,6 +355,15 @@ def plan_quantities(case: Case, data: dict[str, Any] | None = None) -> list[Quan
                 for i, v in enumerate(entry.values)
             ]
             out.append(Quantity(key, path, size, "sample", values=tuple(values)))
+    for table, elements in case.spec.element_tables:
+        if elements.grade_form_order is not None and table not in formed:
+            raise CaseError(
+                case.path,
+                f"{table}.grade_form_order",
+                "draws each ball's form from the balls' grade in a Monte Carlo's ball-size "
+                f"draw: give [study.vary] ball_grade (or {table}.grade with "
+                "element_diameter_sigma), or remove the key",
+            )
     # two keys on one case quantity (element_diameter_sigma and elements.diameter_errors):
     # the later draw would silently replace the other's
     drawn_by: dict[tuple[str, int | None, str], str] = {}
@@ -413,6 +428,61 @@ def _grade_of(case: Case, table: str, key: str, entry: Any, where: str) -> dict[
             f'"{grade.name}", whose sigma would be V_DWL / {divisor:g} = {sigma * 1e6:.6g} um'
         )
     return out
+
+
+def _form_draws(
+    case: Case, data: dict[str, Any], table: str, z: int, grade: dict[str, Any]
+) -> list[Quantity]:
+    """Each ball's form error drawn from its grade, when ``[elements] grade_form_order`` is set.
+
+    Appends Z ``[[waviness]] part = "ball"`` entries (one per ball, amplitude 0) to the case
+    document ``data`` and returns the quantities that draw their amplitudes, uniform from 0 to
+    the grade's bound (:func:`runout.case.standards.grade_form_amplitude`), and their phases,
+    uniform over a turn. Records the order and the bound in the ``ball_grades`` entry
+    ``grade``. None of it without ``grade_form_order``.
+    """
+    from runout.case.standards import ball_grade, grade_form_amplitude
+
+    own = dict(case.spec.element_tables).get(table)
+    order = own.grade_form_order if own is not None else None
+    if order is None:
+        return []
+    bound = grade_form_amplitude(ball_grade(str(grade["grade"])), int(order))
+    bearing = table.partition(".")[2]
+    entries = data.setdefault("waviness", [])
+    first = len(entries) + 1
+    quantities: list[Quantity] = []
+    for j in range(z):
+        entry: dict[str, Any] = {
+            "part": "ball",
+            "order": int(order),
+            "amplitude": 0.0,
+            "phase": 0.0,
+            "element": j + 1,
+        }
+        if bearing:
+            entry["bearing"] = bearing
+        entries.append(entry)
+        index = first + j
+        for name, high in (("amplitude", bound), ("phase", 2.0 * math.pi)):
+            quantities.append(
+                Quantity(
+                    f"waviness[{index}].{name}",
+                    ("waviness", index, name),
+                    1,
+                    "uniform",
+                    spread=(0.0, high),
+                )
+            )
+    grade["form_order"] = int(order)
+    grade["form_amplitude_max_m"] = bound
+    grade["form_entries"] = [first, first + z - 1]
+    grade["source"] = (
+        f"{grade['source']}; each ball's form: one harmonic of {order} lobes, amplitude uniform "
+        f"from 0 to {'min(t_Dw / 2, V_DWs / 4)' if order % 2 == 0 else 't_Dw / 2'}, phase "
+        "uniform"
+    )
+    return quantities
 
 
 #: The two keys that each describe a ball bearing's play: either one, never both (the

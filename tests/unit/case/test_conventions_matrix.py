@@ -164,7 +164,10 @@ CHANGES: dict[str, tuple[Callable[[Data, str], None], Callable[[Data], None]]] =
     "analysis.bands": (_no_patch, _set("analysis.bands", "iso15242")),
     'analysis.limit_on = "axial_pp"': (_held_axially, _axial_limit),
     "analysis.limit": (_no_patch, _set("analysis.limit", "1 um")),
-    "elements.grade, grade_sigma_divisor": (_no_patch, _set("elements.grade", "G5")),
+    "elements.grade, grade_sigma_divisor, grade_form_order": (
+        _no_patch,
+        _set("elements.grade", "G5"),
+    ),
     "analysis.limit_bore": (_class_limit, _set("analysis.limit_bore", "40 mm")),
     # run on a spindle case: tests/unit/case/test_spindle_conventions.py
     "spindle, bearings": (_no_patch, lambda d: None),

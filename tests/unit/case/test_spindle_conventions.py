@@ -167,7 +167,10 @@ CHANGES: dict[str, tuple[Callable[[Data], None], Callable[[Data], None]]] = {
     "analysis.bands": (_none, _set("analysis.bands", "iso15242")),
     'analysis.limit_on = "axial_pp"': (_none, _axial_limit),
     "analysis.limit": (_none, _set("analysis.limit", "1 um")),
-    "elements.grade, grade_sigma_divisor": (_none, _front_elements("grade", "G5")),
+    "elements.grade, grade_sigma_divisor, grade_form_order": (
+        _none,
+        _front_elements("grade", "G5"),
+    ),
     "analysis.limit_bore": (_class_limit, _set("analysis.limit_bore", "40 mm")),
     "spindle, bearings": (_none, _set("spindle.nose_position", -20e-3)),
 }
