@@ -333,7 +333,17 @@ def test_study_says_which_catalogue_values_the_case_replaces(tmp_path: Path) -> 
     path.write_text(path.read_text().replace('radial_load = "100 N"', 'axial_load = "50 N"'))
     code, out, err = _invoke("study", str(path), "--json")
     assert code == 0, err
-    assert json.loads(out)["samples"] == 4
+    document = json.loads(out)
+    assert document["samples"] == 4
+    # the study JSON says where the bearing comes from, as the run JSON does
+    source = document["bearing_source"]
+    assert source["designation"] == "7205C"
+    assert source["bore_diameter_m"] == pytest.approx(0.025, rel=1e-12)
+    assert source["given_in_case"] == {"element_diameter": pytest.approx(7.9375e-3, rel=1e-12)}
+    assert "estimate" in source["provenance"]["pitch_diameter"]
+    code, out, err = _invoke("study", str(path))
+    assert code == 0, err
+    assert "bearing 7205C from the runout catalogue (dimensions: ISO 15" in out
     assert (
         "note: bearing.element_diameter: 7.9375 mm given in the case replaces the catalogue's "
         "8.1 mm (7205C)" in err

@@ -283,6 +283,20 @@ class Case:
     spindle: SpindleLayout | None = field(default=None, repr=False)
     bearing_sources: tuple[BearingSource, ...] = field(default=(), repr=False, compare=False)
 
+    def bearing_source(self) -> Any:
+        """The JSON ``bearing_source`` of a case whose bearings name a ``designation``.
+
+        Returns
+        -------
+        dict or list or None
+            One object (:meth:`runout.case.designation.BearingSource.to_json`) for a single
+            bearing, a list for a spindle (``bearing_sources``); None without a designation.
+        """
+        if not self.bearing_sources:
+            return None
+        documents = [source.to_json() for source in self.bearing_sources]
+        return documents[0] if self.spindle is None and len(documents) == 1 else documents
+
     @property
     def dynamics(self) -> DynamicsSpec | None:
         """The ``[dynamics]`` table, if any."""

@@ -929,6 +929,15 @@ def _print_study(summary: dict[str, Any], title: str, out: str | None) -> None:
             *(fmt(comp["pp_m"][k]) for k in stat_keys),
         )
     _out.print(table)
+    source = summary.get("bearing_sources", summary.get("bearing_source"))
+    for entry in source if isinstance(source, list) else [source] if source else []:
+        provenance = "; ".join(f"{k}: {v}" for k, v in entry["provenance"].items())
+        _out.print(
+            f"bearing {entry['designation']} from the {entry['catalogue']} catalogue "
+            f"({provenance})",
+            soft_wrap=True,
+            highlight=False,
+        )
     for grade in summary.get("ball_grades", []):  # the sigma a ball grade drew with
         sigma = format_length(grade["sigma_m"], length_unit([grade["sigma_m"]]))
         form = ""

@@ -72,8 +72,6 @@ def run_model(case: Case) -> RunResult:
             result, notes=(*result.notes, *catalogue_notes, *warnings, *notes)
         )
     if case.bearing_sources:
-        documents = [source.to_json() for source in case.bearing_sources]
-        single = case.spindle is None and len(documents) == 1
-        result = dataclasses.replace(result, bearing_source=documents[0] if single else documents)
+        result = dataclasses.replace(result, bearing_source=case.bearing_source())
     # the case's [analysis] outputs beyond the model: bands, verdict, passage names
     return apply_analysis(result, case)

@@ -123,6 +123,9 @@ class StudyResult:
     limit_class : dict or None
         ``{"class", "bore_m", "source"}`` when the limit is an ISO 492 tolerance class's K_ia
         (the ``yield`` object carries them).
+    bearing_source : dict or list or None
+        Where the base case's bearing comes from when it names a ``designation``: the run
+        JSON's ``bearing_source`` object (a spindle: a list, one per catalogue bearing).
     """
 
     kind: str
@@ -138,6 +141,7 @@ class StudyResult:
     limit: tuple[str, float] | None = None
     stiffness: dict[int, dict[str, Any]] = field(default_factory=dict)
     limit_class: dict[str, Any] | None = None
+    bearing_source: Any = None
 
     @property
     def samples(self) -> int:
@@ -190,7 +194,17 @@ class StudyResult:
             "runout": runout,
             "components": comps,
             **self._grade_keys(),
+            **self._source_keys(),
         }
+
+    def _source_keys(self) -> dict[str, Any]:
+        """``bearing_source`` (a catalogue bearing's provenance; a spindle's list:
+        ``bearing_sources``), as in the run JSON."""
+        if self.bearing_source is None:
+            return {}
+        if isinstance(self.bearing_source, list):
+            return {"bearing_sources": self.bearing_source}
+        return {"bearing_source": self.bearing_source}
 
     def _grade_keys(self) -> dict[str, Any]:
         """``ball_grades`` (the grade and sigma of each ball-size draw of a graded bearing)
@@ -243,7 +257,7 @@ class StudyResult:
             out["points"] = self.points()
         elif self.limit is not None:
             out["yield"] = self.lot_yield()
-        return out | self._grade_keys() | self._streaming_keys()
+        return out | self._grade_keys() | self._source_keys() | self._streaming_keys()
 
     def _streaming_keys(self) -> dict[str, Any]:
         """Keys a streaming study adds to its JSON (none here: exact statistics)."""

@@ -1074,6 +1074,7 @@ class _Assembly:
             limit=study_limit(self.case),
             stiffness=dict(sorted(self.stiffness.items())),
             limit_class=getattr(self.case.analysis, "limit_class", None),
+            bearing_source=self.case.bearing_source(),
         )
 
 
@@ -1148,6 +1149,7 @@ class _Streaming:
             bins=study.bins,
             limit=self.limit,
             limit_class=getattr(self.case.analysis, "limit_class", None),
+            bearing_source=self.case.bearing_source(),
             sample_count=self.plan.total,
             failed_count=self.failed,
             models_run=tuple(sorted(self.models)),
