@@ -17,11 +17,11 @@ Sources
   and 2 (P6, P5, P4, P2 in maker's notation), column K_ia (radial runout of the assembled
   bearing inner ring), bores 2.5 mm < d <= 120 mm.
 
-The ISO 3290-1 values were checked against two ball makers' reproductions of its tables. Of the
-K_ia table, the Normal, P6 and P5 rows up to 80 mm, the P2 row and the P4 row up to 18 mm were
-checked against bearing makers' reproductions; the P4 values above 18 mm and the Normal, P6 and
-P5 values above 80 mm were written down by two engineers independently from makers' tables
-(they agree) and are not yet compared with a reproduction (docs/studies.md says so).
+The ISO 3290-1 values were checked against two ball makers' reproductions of its tables. Every
+K_ia value up to 80 mm and the Normal, P6, P5 and P2 values from 80 to 120 mm were checked
+against bearing makers' reproductions; the P4 value from 80 to 120 mm was written down by two
+engineers independently from makers' tables (they agree) and is not yet compared with a
+reproduction (docs/studies.md says so).
 """
 
 from __future__ import annotations
