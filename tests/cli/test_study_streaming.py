@@ -61,11 +61,12 @@ def test_streaming_summary_is_the_same_for_any_workers_and_chunk_size(tmp_path: 
         assert done.returncode == 0, done.stderr
         summaries[name] = (out / "summary.json").read_text()
         assert (out / "samples.csv").is_file()  # from the chunk files
-        assert not (out / "histograms.png").exists()  # said in notes, not silently
+        # drawn from the summary's bins (the per-sample values are not kept)
+        assert (out / "histograms.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     assert summaries["one"] == summaries["two"] == summaries["chunk"] == summaries["chosen"]
     summary = json.loads(summaries["one"])
     assert summary["statistics"] == "streaming" and summary["quantile_relative_error"] == ALPHA
-    assert any("the figures are not written" in note for note in summary["notes"])
+    assert any("histograms.png is drawn from the summary's bins" in n for n in summary["notes"])
     assert summary["components"], "the f_c lines must be there to be compared"
 
 
@@ -201,3 +202,32 @@ def test_streaming_memory_does_not_grow_with_samples(tmp_path: Path) -> None:
     # streaming: nothing per sample; what remains is allocator noise, well under the
     # columns of the 60,000 samples the larger lot adds
     assert growth["streaming"] < growth["exact"] / 4, growth
+
+
+def test_streamed_histograms_have_the_exact_modes_panels(tmp_path: Path) -> None:
+    """The streaming figure draws the exact mode's panels, from bins holding every sample."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from runout.report.plotting import streamed_histograms, study_figures
+    from runout.study.run import run_study
+
+    stream = run_study(load_case(lot(tmp_path, 120, "streaming", 40)), plots=False)
+    exact = run_study(load_case(lot(tmp_path, 120, "exact", 40)), plots=False)
+    summary = stream.summary()
+    figure = streamed_histograms(summary, limit_quantity="nrro_pp_m", limit_m=2e-7)
+    reference = study_figures(exact, limit_quantity="nrro_pp_m", limit_m=2e-7)["histograms.png"]
+
+    def titles(fig: object) -> list[str]:
+        return [ax.get_title() for ax in fig.axes if ax.get_visible()]  # type: ignore[attr-defined]
+
+    assert titles(figure) == titles(reference) and titles(figure)
+    for ax in figure.axes:
+        if not ax.get_visible():
+            continue
+        (stairs,) = ax.patches
+        # one bin per histogram bin, holding every sample that ran
+        heights = stairs.get_data().values
+        assert heights.sum() == summary["samples"] - summary["failed"]
+    limits = [line for ax in figure.axes for line in ax.get_lines() if "limit" in line.get_label()]
+    assert len(limits) == 1

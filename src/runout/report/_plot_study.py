@@ -25,7 +25,14 @@ from runout.report._plot_style import (
     pyplot,
 )
 
-__all__ = ["STUDY_KINDS", "plot_dynamic_sweep", "plot_study", "plot_study_kind", "study_figures"]
+__all__ = [
+    "STUDY_KINDS",
+    "plot_dynamic_sweep",
+    "plot_study",
+    "plot_study_kind",
+    "streamed_histograms",
+    "study_figures",
+]
 
 
 def _sweep_panels(points: list[Any], key: str, title: str, path: Path) -> Path:
@@ -350,6 +357,175 @@ def study_figures(
         fig.suptitle(f"{heading}: {result.samples} samples{note}")
         return {"histograms.png": _finish(fig)}
     return _sweep_figures(result, top)
+
+
+def _binned_panel(
+    ax: Any,
+    title: str,
+    quantity: str,
+    stats: dict[str, Any],
+    count: int,
+    law: str,
+    limit_m: float | None,
+) -> None:
+    """One histogram drawn from its bins (a streaming study's, from the quantile sketch).
+
+    ``stats`` is a summary statistics object (``mean``, ``std``, ``histogram`` with ``edges``
+    [m] and ``counts``) of ``count`` samples. The fitted law is that of
+    :func:`_histogram_panel` from the exact moments: normal (mean, std) or Rayleigh with
+    sigma^2 = mean(x^2) / 2 = ((n - 1) std^2 / n + mean^2) / 2.
+    """
+    edges_m = np.asarray(stats["histogram"]["edges"], dtype=np.float64)
+    counts = np.asarray(stats["histogram"]["counts"], dtype=np.float64)
+    # the scale of the values (the bins of a lot with one value span +-0.5 m around it)
+    unit, scale = style.length_scale(
+        [float(stats["min"]), float(stats["max"]), *([limit_m] if limit_m is not None else [])]
+    )
+    edges = edges_m * scale
+    low, high = float(stats["min"]) * scale, float(stats["max"]) * scale
+    flat = high - low <= 1e-9 * max(abs(low), abs(high), 1e-300)
+    if flat:  # one value for the whole lot, as _histogram_panel draws it
+        half = max(0.5 * abs(low), 1.0)
+        ax.stairs(
+            [float(counts.sum())],
+            [low - 0.03 * half, low + 0.03 * half],
+            fill=True,
+            color=style.HIST_COLOUR,
+            alpha=0.8,
+        )
+        ax.set_xlim(low - half, low + half)
+        title = f"{_shorten(title, 48)}: {_fmt(float(stats['min']), unit, scale)} in every sample"
+    else:
+        ax.stairs(counts, edges, fill=True, color=style.HIST_COLOUR, alpha=0.8)
+    mean, std = float(stats["mean"]) * scale, float(stats["std"]) * scale
+    if not flat and counts.size > 1 and count >= 2 and std > 0.0:
+        width = float(edges[1] - edges[0])
+        grid = np.linspace(float(edges[0]), float(edges[-1]), 200)
+        if law == "rayleigh":
+            s2 = ((count - 1) / count * std**2 + mean**2) / 2.0
+            pdf = grid / s2 * np.exp(-(grid**2) / (2.0 * s2))
+            fit = f"Rayleigh fit, σ = {math.sqrt(s2):.3g} {unit}"
+        else:
+            pdf = np.exp(-0.5 * ((grid - mean) / std) ** 2) / (std * math.sqrt(2.0 * math.pi))
+            fit = f"normal fit, σ = {std:.3g} {unit}"
+        ax.plot(grid, pdf * count * width, color=style.FIT_COLOUR, lw=1.1, label=fit)
+    if limit_m is not None:
+        x = limit_m * scale
+        ax.axvline(
+            x,
+            color=style.LIMIT_COLOUR,
+            lw=1.4,
+            ls="--",
+            label=f"limit {_fmt(limit_m, unit, scale)}",
+        )
+        lo, hi = ax.get_xlim()
+        pad = 0.05 * max(hi - lo, abs(x), 1e-300)
+        ax.set_xlim(min(lo, x - pad), max(hi, x + pad))
+    ax.set_ylim(0, max(float(np.max(counts, initial=0.0)), 1.0) * 1.5)
+    ax.set_title(_shorten(title, 70), fontsize=8)
+    ax.set_xlabel(style.axis_label(quantity, unit))
+    ax.set_ylabel(style.axis_label("bearings", "count per bin"))
+    if ax.get_legend_handles_labels()[0]:
+        ax.legend(loc="upper right", fontsize=6.5)
+
+
+@style.styled
+def streamed_histograms(
+    summary: dict[str, Any],
+    top: int = 4,
+    *,
+    limit_quantity: str | None = None,
+    limit_m: float | None = None,
+) -> Any:
+    """``histograms.png`` of a Monte Carlo reduced by streaming statistics.
+
+    The panels of :func:`study_figures` (radial p-p, RRO, NRRO, axial p-p when it moves, the
+    ``top`` largest lines in x and z, identical outputs drawn once), each from the bins of its
+    summary: edges from the exact minimum and maximum, counts from the quantile sketch's
+    buckets (a value within the sketch's relative accuracy of an edge may sit in the next
+    bin), the fitted law from the exact moments.
+
+    Parameters
+    ----------
+    summary : dict
+        :meth:`runout.study._result.StreamedStudyResult.summary`.
+    top : int
+        Number of lines drawn.
+    limit_quantity : str, optional
+        Runout key whose histogram carries the spec limit ``limit_m`` [m].
+    limit_m : float, optional
+        The spec limit [m].
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    plt = pyplot()
+    heading = _shorten(summary.get("title") or "study", 110)
+    ran = int(summary["samples"]) - int(summary["failed"])
+    runout = summary["runout"]
+    candidates: list[tuple[str, str, dict[str, Any], str, str | None]] = [
+        (name, name, runout[key], "normal", key)
+        for key, name in _RUNOUT_NAMES.items()
+        if key in runout
+        and runout[key]["histogram"]["counts"]
+        and (key != "axial_pp_m" or runout[key]["max"] != 0.0)
+    ]
+    rows = [c for c in summary["components"] if c["direction"] in ("x", "z")][:top]
+    names = _unique_names([(c["direction"], c["label"]) for c in rows])
+    candidates += [
+        (f"{name} ({c['frequency_hz']:.4g} Hz)", "line p-p", c["pp_m"], "rayleigh", None)
+        for name, c in zip(names, rows, strict=True)
+        if c["pp_m"]["histogram"]["counts"]
+    ]
+    panels: list[tuple[list[str], str, dict[str, Any], str, str | None]] = []
+    for title, quantity, stats, law, key in candidates:
+        for i, entry in enumerate(panels):
+            if stats == entry[2]:  # the same output (every bin, every moment)
+                entry[0].append(title)
+                if key is not None and entry[4] is None:
+                    panels[i] = (entry[0], entry[1], entry[2], entry[3], key)
+                break
+        else:
+            panels.append(([title], quantity, stats, law, key))
+    if limit_quantity is not None and not any(p[4] == limit_quantity for p in panels):
+        name = _RUNOUT_NAMES.get(limit_quantity, limit_quantity)
+        if runout.get(limit_quantity, {}).get("histogram", {}).get("counts"):
+            panels.append(([name], name, runout[limit_quantity], "normal", limit_quantity))
+    if not panels:
+        fig, ax = plt.subplots(figsize=(6, 2))
+        ax.set_axis_off()
+        ax.text(
+            0.5,
+            0.5,
+            f"all {summary['samples']} samples failed: nothing to draw\n"
+            "(their errors are in summary.json)",
+            ha="center",
+            va="center",
+            transform=ax.transAxes,
+        )
+        fig.suptitle(heading)
+        return _finish(fig)
+    cols = 2
+    n_rows = (len(panels) + 1) // 2
+    fig, axes = plt.subplots(n_rows, cols, figsize=(10, 3.1 * n_rows), squeeze=False)
+    for ax, (titles, quantity, stats, law, key) in zip(axes.flat, panels, strict=False):
+        if len(titles) > 1:
+            title = " = ".join(t.split(" (")[0] for t in titles) + " (the same in every sample)"
+            quantity = "p-p"
+        else:
+            title = titles[0]
+        limit = limit_m if key is not None and key == limit_quantity else None
+        _binned_panel(ax, title, quantity, stats, ran, law, limit)
+    for ax in list(axes.flat)[len(panels) :]:
+        ax.set_visible(False)
+    failed = int(summary["failed"])
+    note = f", {failed} failed, not drawn" if failed else ""
+    fig.suptitle(
+        f"{heading}: {summary['samples']} samples{note}\n(streaming statistics: bins from a "
+        f"quantile sketch of relative accuracy {summary['quantile_relative_error']:g})"
+    )
+    return _finish(fig)
 
 
 @style.styled

@@ -59,6 +59,7 @@ __all__ = [
     "result_figures",
     "save_figure",
     "standard_figure_names",
+    "streamed_histograms",
     "study_figures",
     "write_figure",
     "write_figures",
@@ -1520,5 +1521,6 @@ from runout.report._plot_study import (  # noqa: E402
     plot_dynamic_sweep,
     plot_study,
     plot_study_kind,
+    streamed_histograms,
     study_figures,
 )

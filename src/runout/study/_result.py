@@ -713,11 +713,23 @@ class StreamedStudyResult(StudyResult):
         raise StudyError(PER_SAMPLE_REFUSAL.format(what="the columns of samples.csv"))
 
     def write(self, directory: Path, plots: bool = True) -> list[Path]:
-        """Write ``summary.json`` (the figures need per-sample values: their absence is said
-        in ``notes``; a study with ``--out`` writes ``samples.csv`` and
-        ``samples_columns.json`` from its chunk files, :func:`runout.study.run.run_study`)."""
+        """Write ``summary.json`` and, with ``plots``, ``histograms.png`` drawn from the
+        summary's bins (:func:`runout.report.plotting.streamed_histograms`); a study with
+        ``--out`` writes ``samples.csv`` and ``samples_columns.json`` from its chunk files
+        (:func:`runout.study.run.run_study`)."""
         directory.mkdir(parents=True, exist_ok=True)
-        return [self._write_summary(directory)]
+        written = [self._write_summary(directory)]
+        if plots and self.kind == "montecarlo":
+            from runout.report._plot_style import _save
+            from runout.report.plotting import streamed_histograms
+
+            quantity = None if self.limit is None else f"{self.limit[0]}_m"
+            limit_m = None if self.limit is None else self.limit[1]
+            figure = streamed_histograms(
+                _nan_to_none(self.summary()), limit_quantity=quantity, limit_m=limit_m
+            )
+            written.append(_save(figure, directory / "histograms.png", dpi=110))
+        return written
 
 
 def _si_unit(q: Quantity) -> str:

@@ -516,8 +516,8 @@ def _streaming_notes(case: Case, workers: int) -> tuple[str, ...]:
         "the next bin)",
         "per-sample values are not kept in memory: with --out, samples.csv and "
         "samples_columns.json are written from the chunk files afterwards, one chunk at a "
-        'time; stiffness.csv and the figures are not written (set study.statistics = "exact" '
-        "for them)",
+        "time, and histograms.png is drawn from the summary's bins; stiffness.csv is not "
+        'written (set study.statistics = "exact" for it)',
     )
 
 
