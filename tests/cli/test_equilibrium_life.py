@@ -164,3 +164,15 @@ def test_python_api_carries_the_rating(tmp_path: Path) -> None:
     # the case it builds writes the key back (runout run of the saved case gives the same)
     text = Case.from_inputs(bearing, op, analysis={"model": "equilibrium"}).to_toml()
     assert "dynamic_load_rating = 23400.0" in text
+
+
+def test_report_shows_the_life(tmp_path: Path) -> None:
+    life = _run(tmp_path)["life"]
+    out = tmp_path / "out"
+    assert _invoke(tmp_path, "--out", str(out)).exit_code == 0  # type: ignore[attr-defined]
+    result = runner.invoke(app, ["report", str(out)])
+    assert result.exit_code == 0, result.stderr
+    page = (out / "report.html").read_text(encoding="utf-8")
+    assert "reference rating life L10r" in page
+    assert f"{life['l10r_mrev']:.4g} million rev" in page
+    assert "Reference rating life (ISO/TS 16281)" in page

@@ -116,7 +116,8 @@ References
 Kim, Choi & Yoon (seed 001), §2.1, eq. 1-9 and Fig. 2. T. A. Harris, *Rolling Bearing
 Analysis* (Jones's raceway-control theory, quasi-static equilibrium of high-speed ball
 bearings). ISO/TS 16281:2008, reference cases of an open implementation
-(github.com/minzhun/ISO16281, ``Test_BallBearing.py``).
+(github.com/minzhun/ISO16281, ``Test_BallBearing.py``); its reference rating life from the
+ball loads is :func:`rating_life` (:mod:`runout.geometry.life`).
 """
 
 from __future__ import annotations
@@ -1088,7 +1089,8 @@ def run(case: Case) -> RunResult:
         An :class:`EquilibriumResult` at one instant: the inner ring's displacement relative to
         the outer ring [m] (axial counted from the rings axially centred), no lines, zero
         runout, and :class:`~runout.analysis.result_details.EquilibriumDetails` (ring
-        displacement [m, rad], stiffness matrix, radial stiffness [N/m], per-ball table).
+        displacement [m, rad], stiffness matrix, radial stiffness [N/m], per-ball table and,
+        with ``[bearing] dynamic_load_rating``, the ISO/TS 16281 life, :func:`rating_life`).
 
     Raises
     ------
