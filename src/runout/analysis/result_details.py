@@ -21,6 +21,8 @@ from typing import TYPE_CHECKING, Any, Literal, Protocol, TypeAlias
 import numpy as np
 from numpy.typing import NDArray
 
+from runout.geometry.life import RatingLife
+
 if TYPE_CHECKING:
     from runout.analysis.lines import Runout
 
@@ -381,6 +383,9 @@ class EquilibriumDetails:
         (M_x, M_y) [N m]: the moment the tilt restraint exerts on the inner ring to hold it
         untilted, in the sense of ``moment_load`` (the moment load that would hold a free
         ring at zero tilt); (0, 0) when the tilt is free.
+    life : RatingLife or None
+        ISO/TS 16281 reference rating life and its parts (JSON ``life``; lives in 10^6
+        revolutions, loads [N]); None without ``[bearing] dynamic_load_rating``.
     """
 
     race_control: str
@@ -394,6 +399,7 @@ class EquilibriumDetails:
     ring_tilt: str = "free"
     held_dofs: tuple[str, ...] = ()
     reaction_moment_n_m: tuple[float, float] = (0.0, 0.0)
+    life: RatingLife | None = None
 
     def to_json(self) -> dict[str, Any]:
         """The equilibrium model's JSON entries.
@@ -403,9 +409,9 @@ class EquilibriumDetails:
         dict
             Race control, ring tilt (free or held), ring displacement [m, rad], held degrees of
             freedom, reaction moment [N m], stiffness matrices, contact angles [deg], per-ball
-            table and Newton iterations.
+            table, Newton iterations and, with a dynamic load rating, ``life``.
         """
-        return {
+        out = {
             "race_control": self.race_control,
             "ring_tilt": self.ring_tilt,
             "ring_displacement": self.ring_displacement.to_json(),
@@ -418,6 +424,9 @@ class EquilibriumDetails:
             "balls": [dict(row) for row in self.balls],
             "newton_iterations": self.newton_iterations,
         }
+        if self.life is not None:
+            out["life"] = self.life.to_json()
+        return out
 
     @classmethod
     def from_json(cls, doc: dict[str, Any]) -> EquilibriumDetails:
@@ -446,6 +455,8 @@ class EquilibriumDetails:
             ring_tilt=str(doc.get("ring_tilt", "free")),
             held_dofs=tuple(str(d) for d in doc.get("held_dofs", ())),
             reaction_moment_n_m=(float(moment[0]), float(moment[1])),
+            # results written before the life existed, or without a rating: none
+            life=None if doc.get("life") is None else RatingLife.from_json(doc["life"]),
         )
 
 

@@ -120,6 +120,13 @@ TERMS: tuple[Term, ...] = (
         "rad",
         "angle between the contact line and the radial plane",
     ),
+    Term(
+        ("dynamic_load_rating",),
+        "C",
+        "N",
+        "basic dynamic load rating of the bearing (catalogue, ISO 281): the load it carries for "
+        "10⁶ revolutions at 90 % survival; sets the contact ratings of the reference life",
+    ),
     # ------------------------------------------------------------------ [material]
     Term(
         ("material",),
@@ -299,6 +306,41 @@ TERMS: tuple[Term, ...] = (
         "N/m",
         "radial 2×2 block of `stiffness_matrix`, tilts held (`kxx_n_per_m` ...): the "
         "stiffness of a linear bearing element",
+    ),
+    Term(
+        ("life",),
+        "–",
+        "–",
+        "equilibrium model, with `dynamic_load_rating`: the ISO/TS 16281 basic reference rating "
+        "life and the loads it comes from (`l10r_mrev` ...)",
+    ),
+    Term(
+        ("l10r_mrev", "l10r_inner_mrev", "l10r_outer_mrev"),
+        "L10r, L10ri, L10re",
+        "10⁶ rev",
+        "basic reference rating life (ISO/TS 16281) of the bearing and of each ring, in "
+        "millions of revolutions of one ring relative to the other; L10r = (L10ri^−e + "
+        "L10re^−e)^(−1/e), e = 10/9",
+    ),
+    Term(
+        ("equivalent_inner_load_n", "equivalent_outer_load_n"),
+        "Q_ei, Q_ee",
+        "N",
+        "dynamic equivalent rolling-element load of a raceway: the cubic mean of the ball loads "
+        "on the ring turning relative to the load, the 10/3-power mean on the other",
+    ),
+    Term(
+        ("inner_contact_rating_n", "outer_contact_rating_n"),
+        "Q_ci, Q_ce",
+        "N",
+        "rolling-element load of the basic dynamic load rating of a raceway contact "
+        "(from C and the geometry, ISO/TS 16281)",
+    ),
+    Term(
+        ("equivalent_reference_load_n",),
+        "P_ref",
+        "N",
+        "dynamic equivalent reference load C L10r^(−1/3): the ISO 281 load of the same life",
     ),
     Term(
         ("kzz_n_per_m",),

@@ -135,6 +135,7 @@ def _build_bearing(spec: CaseSpec) -> Bearing:
         radial_clearance=clearance,
         contact_angle=b.contact_angle,
         material=material,
+        dynamic_load_rating=b.dynamic_load_rating,
     )
 
 

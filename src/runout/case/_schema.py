@@ -29,6 +29,7 @@ from runout.case.standards import (
     class_limit,
     is_class_name,
 )
+from runout.geometry.life import MAX_DYNAMIC_LOAD_RATING
 
 TWO_PI = 2.0 * math.pi
 #: Largest groove conformity f = r / D: a groove radius of a whole ball diameter is no longer
@@ -148,6 +149,13 @@ class BearingSpec(_Table):
     roller_length: Length | None = Field(
         None, description="Effective roller length [m] (cylindrical roller bearings)."
     )
+    dynamic_load_rating: Force | None = Field(
+        None,
+        description=(
+            "Basic dynamic load rating C [N] (catalogue, ISO 281): with it the equilibrium "
+            "model reports the ISO/TS 16281 reference rating life L10r (JSON life)."
+        ),
+    )
 
     @field_validator("elements", mode="before")
     @classmethod
@@ -158,6 +166,16 @@ class BearingSpec(_Table):
             raise ValueError(
                 f"must be at most {MAX_ELEMENTS} (the largest slewing bearings have a few "
                 f"hundred), got {value}"
+            )
+        return value
+
+    @field_validator("dynamic_load_rating")
+    @classmethod
+    def _rating(cls, value: float | None) -> float | None:
+        if value is not None and not 0.0 < value <= MAX_DYNAMIC_LOAD_RATING:
+            raise ValueError(
+                f"must be > 0 and at most {MAX_DYNAMIC_LOAD_RATING:.0e} N (the largest slewing "
+                f"bearings are rated at a few tens of MN), got {value!r} N"
             )
         return value
 

@@ -350,6 +350,20 @@ KEYS: tuple[KeyConvention, ...] = (
         {"roller_constraint": lambda spec: spec.lead_bearing.nominal_contact_angle is not None},
     ),
     KeyConvention(
+        "bearing.dynamic_load_rating",
+        "Basic dynamic load rating C of the bearing (catalogue, ISO 281): with it the "
+        "equilibrium model reports the ISO/TS 16281 reference rating life L10r (JSON life).",
+        "N",
+        (N, N, N, H, N, N, N),
+        {
+            m: "the ISO/TS 16281 reference rating life is computed from the equilibrium "
+            "model's ball loads only"
+            for m in MODELS
+            if m != "equilibrium"
+        },
+        _table_key("bearing", "dynamic_load_rating"),
+    ),
+    KeyConvention(
         "material.youngs_modulus, poisson_ratio",
         "Elastic constants of rings and elements (Hertz contact stiffness).",
         "Pa, -",

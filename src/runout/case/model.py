@@ -148,6 +148,7 @@ def _bearing_tables(bearing: Any) -> dict[str, Any]:
             "outer_conformity",
             "radial_clearance",
             "contact_angle",
+            "dynamic_load_rating",
         )
     elif isinstance(bearing, RollerBearing):
         table = {"type": "cylindrical_roller"}

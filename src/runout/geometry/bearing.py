@@ -36,6 +36,7 @@ import numpy as np
 
 from runout.base.errors import GeometryError
 from runout.geometry._harmonics import MAX_ELEMENTS
+from runout.geometry.life import MAX_DYNAMIC_LOAD_RATING
 
 __all__ = ["BallBearing", "Bearing", "Material", "Operation", "RollerBearing"]
 
@@ -279,6 +280,9 @@ class BallBearing:
         or from clearance and axial load (see :mod:`runout.geometry.loading`).
     material : Material
         Material of rings and balls.
+    dynamic_load_rating : float or None
+        Basic dynamic load rating C [N] (catalogue, ISO 281); with it the equilibrium model
+        reports the ISO/TS 16281 reference rating life (:mod:`runout.geometry.life`).
 
     Notes
     -----
@@ -297,6 +301,7 @@ class BallBearing:
     radial_clearance: float = 0.0
     contact_angle: float | None = None
     material: Material = field(default_factory=Material)
+    dynamic_load_rating: float | None = None
 
     kind = "ball"
 
@@ -312,6 +317,7 @@ class BallBearing:
             radial_clearance: float = 0.0,
             contact_angle: float | None = None,
             material: Material = ...,
+            dynamic_load_rating: float | None = None,
             *,
             inner_groove_radius: float = ...,
             outer_groove_radius: float = ...,
@@ -329,10 +335,19 @@ class BallBearing:
                 "outer_conformity",
                 "radial_clearance",
                 "contact_angle",
+                "dynamic_load_rating",
             ),
         )
         _positive("element_diameter", self.element_diameter)
         _positive("pitch_diameter", self.pitch_diameter)
+        if self.dynamic_load_rating is not None:
+            _positive("dynamic_load_rating", self.dynamic_load_rating)
+            if self.dynamic_load_rating > MAX_DYNAMIC_LOAD_RATING:
+                raise GeometryError(
+                    "dynamic_load_rating",
+                    f"must be at most {MAX_DYNAMIC_LOAD_RATING:.0e} N (the largest slewing "
+                    f"bearings are rated at a few tens of MN), got {self.dynamic_load_rating!r}",
+                )
         if self.element_diameter >= self.pitch_diameter:
             raise GeometryError(
                 "element_diameter",

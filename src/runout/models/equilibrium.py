@@ -116,7 +116,8 @@ References
 Kim, Choi & Yoon (seed 001), §2.1, eq. 1-9 and Fig. 2. T. A. Harris, *Rolling Bearing
 Analysis* (Jones's raceway-control theory, quasi-static equilibrium of high-speed ball
 bearings). ISO/TS 16281:2008, reference cases of an open implementation
-(github.com/minzhun/ISO16281, ``Test_BallBearing.py``).
+(github.com/minzhun/ISO16281, ``Test_BallBearing.py``); its reference rating life from the
+ball loads is :func:`rating_life` (:mod:`runout.geometry.life`).
 """
 
 from __future__ import annotations
@@ -140,6 +141,7 @@ from runout.base.errors import ConvergenceError, GeometryError, NumericalError
 from runout.geometry.bearing import BallBearing, Operation
 from runout.geometry.contact import ball_race_curvature, combined_stiffness, hertz_point_stiffness
 from runout.geometry.kinematics import bearing_frequencies
+from runout.geometry.life import MAX_RADIAL_CONTACT_ANGLE, RatingLife, reference_rating_life
 
 if TYPE_CHECKING:
     from runout.case.model import Case
@@ -151,6 +153,7 @@ __all__ = [
     "EquilibriumSolution",
     "ball_speeds",
     "radial_stiffness",
+    "rating_life",
     "run",
     "solve_equilibrium",
 ]
@@ -983,6 +986,95 @@ def radial_stiffness(sol: EquilibriumSolution, speed_hz: float) -> RadialStiffne
     )
 
 
+def rating_life(
+    bearing: BallBearing,
+    op: Operation,
+    sol: EquilibriumSolution,
+    nominal_contact_angle: float = 0.0,
+) -> tuple[RatingLife | None, list[str]]:
+    """ISO/TS 16281 reference rating life of the solved bearing, and the notes that go with it.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        The bearing; its ``dynamic_load_rating`` C [N] (None: no life).
+    op : Operation
+        The operating point (rotating ring, ring speeds [Hz]).
+    sol : EquilibriumSolution
+        The converged equilibrium: the inner ring takes the balls' inner contact loads, the
+        outer ring their outer contact loads [N].
+    nominal_contact_angle : float
+        Nominal contact angle of the rating [rad]: 0 for a deep-groove bearing, the case's
+        ``nominal_contact_angle`` for an angular-contact one.
+
+    Returns
+    -------
+    life : RatingLife or None
+        L10r [10^6 rev] and its parts (:func:`runout.geometry.life.reference_rating_life`);
+        None without C, or for a nominal angle beyond 45° (a thrust bearing).
+    notes : list of str
+        What the life assumes, or why there is none.
+
+    Notes
+    -----
+    ISO/TS 16281:2008 eq. 19-29 (:mod:`runout.geometry.life`) on the Jones–Harris loads.
+    """
+    rating = bearing.dynamic_load_rating
+    if rating is None:
+        return None, [
+            "no life: give [bearing] dynamic_load_rating (C) for the ISO/TS 16281 reference "
+            "rating life L10r"
+        ]
+    angle = math.degrees(nominal_contact_angle)
+    if nominal_contact_angle > MAX_RADIAL_CONTACT_ANGLE:
+        return None, [
+            f"bearing.dynamic_load_rating: no life: the nominal contact angle {angle:.6g} deg "
+            "exceeds 45 deg, a thrust ball bearing in ISO 281, whose ISO/TS 16281 formulas "
+            "runout does not implement"
+        ]
+    relative = op.inner_speed - op.outer_speed
+    life = reference_rating_life(
+        elements=bearing.elements,
+        element_diameter=bearing.element_diameter,
+        pitch_diameter=bearing.pitch_diameter,
+        inner_conformity=bearing.inner_conformity,
+        outer_conformity=bearing.outer_conformity,
+        nominal_contact_angle=nominal_contact_angle,
+        dynamic_load_rating=rating,
+        inner_loads=sol.inner_load,
+        outer_loads=sol.outer_load,
+        rotating_ring=op.rotating_ring,
+        relative_speed=relative,
+    )
+    free = math.degrees(bearing.free_contact_angle)
+    why = (
+        f" (the play's free contact angle {free:.4g} deg is not a rating angle: for an "
+        "angular-contact bearing give [bearing] nominal_contact_angle)"
+        if nominal_contact_angle == 0.0 and free > 0.0
+        else ""
+    )
+    notes = [
+        f"life: ISO/TS 16281 basic reference rating life L10r, rated at the nominal contact "
+        f"angle {angle:.6g} deg{why}; the lives count revolutions of one ring relative to the "
+        "other; not included: the modification factor a_ISO, contact ellipses truncated by the "
+        "groove shoulders (not checked: runout has no shoulder heights)"
+    ]
+    if op.inner_speed != 0.0 or op.outer_speed != 0.0:
+        f_c = float(sol.centrifugal_force.max())
+        notes.append(
+            "life: at speed each ring's equivalent load is formed from its own contact loads, "
+            f"the outer ones carrying the centrifugal force ({f_c:.4g} N per ball): ISO/TS "
+            "16281's loads are those of a static distribution, so this extends it"
+        )
+    if op.inner_speed != 0.0 and op.outer_speed != 0.0:
+        notes.append(
+            f"life: both rings turn; the equivalent loads take the {op.rotating_ring} ring "
+            "(operation.rotating_ring) as the one turning relative to the load, as ISO/TS "
+            "16281 rates one turning ring"
+        )
+    return life, notes
+
+
 def run(case: Case) -> RunResult:
     """Run the Jones–Harris equilibrium model (seed 001 §2.1) on a case.
 
@@ -997,7 +1089,8 @@ def run(case: Case) -> RunResult:
         An :class:`EquilibriumResult` at one instant: the inner ring's displacement relative to
         the outer ring [m] (axial counted from the rings axially centred), no lines, zero
         runout, and :class:`~runout.analysis.result_details.EquilibriumDetails` (ring
-        displacement [m, rad], stiffness matrix, radial stiffness [N/m], per-ball table).
+        displacement [m, rad], stiffness matrix, radial stiffness [N/m], per-ball table and,
+        with ``[bearing] dynamic_load_rating``, the ISO/TS 16281 life, :func:`rating_life`).
 
     Raises
     ------
@@ -1056,6 +1149,10 @@ def run(case: Case) -> RunResult:
             f"{int((~loaded).sum())} of {loaded.size} balls carry no inner-race load "
             "(pressed onto the outer groove by their centrifugal force only)"
         )
+    # the rating's nominal angle: the case's catalogue angle, else 0 (deep groove, ISO 281)
+    nominal = case.spec.lead_bearing.nominal_contact_angle
+    life, life_notes = rating_life(bearing, op, sol, 0.0 if nominal is None else nominal)
+    notes += life_notes
     details = EquilibriumDetails(
         race_control=control,
         ring_tilt=ring_tilt,
@@ -1078,6 +1175,7 @@ def run(case: Case) -> RunResult:
         outer_contact_angle_deg=tuple(math.degrees(v) for v in sol.outer_contact_angle),
         balls=tuple(sol.ball_table()),
         newton_iterations=sol.iterations,
+        life=life,
     )
     return EquilibriumResult(
         model=MODEL,

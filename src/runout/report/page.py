@@ -387,6 +387,17 @@ def _equilibrium_cards(result: dict[str, Any]) -> list[str]:
         k_axial = num(matrix[0][0]) if isinstance(matrix, list) and matrix and matrix[0] else None
         if k_axial:
             cards.append(card("axial stiffness", f"{k_axial * 1e-6:.4g} N/um"))
+    life = result.get("life")
+    if isinstance(life, dict):
+        l10r = num(life.get("l10r_mrev"))
+        rating = num(life.get("dynamic_load_rating_n"))
+        cards.append(
+            card(
+                "reference rating life L10r",
+                "n/a" if l10r is None else f"{l10r:.4g} million rev",
+                f"ISO/TS 16281, C = {fmt_number(rating, 5)} N",
+            )
+        )
     return cards
 
 
@@ -584,6 +595,13 @@ def _other_results(result: dict[str, Any], summary: dict[str, Any]) -> list[str]
                 table(["ball", *(k.replace("_", " ") for k in keys)], rows),
             )
         )
+    life = result.get("life")
+    if isinstance(life, dict):
+        rows = [
+            [esc(k.replace("_", " ")), esc(v if isinstance(v, str) else fmt_number(num(v), 6))]
+            for k, v in life.items()
+        ]
+        parts.append(details("Reference rating life (ISO/TS 16281)", table(["", ""], rows)))
     return parts
 
 

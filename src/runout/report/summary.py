@@ -29,6 +29,7 @@ from runout.geometry.contact import (
     roller_race_contacts,
 )
 from runout.geometry.kinematics import Frequencies, bearing_frequencies
+from runout.geometry.life import RatingLife
 from runout.geometry.loading import AxialLoading, operating_contact_angle
 
 __all__ = [
@@ -788,9 +789,45 @@ def _equilibrium_sections(result: RunResult, details: EquilibriumDetails) -> lis
             )
         )
     sections.append(("Balls (contact angles, loads, approaches)", rows))
+    if details.life is not None:
+        sections.append(("Reference rating life (ISO/TS 16281)", _life_rows(details.life)))
     if result.notes:
         sections.append(("Notes", [(n, "", "") for n in result.notes]))
     return sections
+
+
+def _life_rows(life: RatingLife) -> Rows:
+    """L10r, the rings' lives and the loads they come from (``n/a``: beyond range or none)."""
+
+    def figure(value: float | None) -> str:
+        return "n/a" if value is None else f"{value:.6g}"
+
+    rows: Rows = [
+        ("L10r", figure(life.l10r_mrev), "10⁶ rev"),
+        (
+            "L10r of the inner / outer ring",
+            f"{figure(life.l10r_inner_mrev)} / {figure(life.l10r_outer_mrev)}",
+            "10⁶ rev",
+        ),
+    ]
+    if life.l10r_hours is not None:
+        rows.append(("L10r at this speed", f"{life.l10r_hours:.6g}", "h"))
+    rows += [
+        (
+            "equivalent ball load Q_ei / Q_ee",
+            f"{life.equivalent_inner_load_n:.6g} / {life.equivalent_outer_load_n:.6g}",
+            "N",
+        ),
+        (
+            "contact ratings Q_ci / Q_ce",
+            f"{life.inner_contact_rating_n:.6g} / {life.outer_contact_rating_n:.6g}",
+            "N",
+        ),
+        ("dynamic load rating C", f"{life.dynamic_load_rating_n:.6g}", "N"),
+        ("equivalent reference load P_ref", figure(life.equivalent_reference_load_n), "N"),
+        ("nominal contact angle of the rating", f"{life.nominal_contact_angle_deg:.6g}", "deg"),
+    ]
+    return rows
 
 
 def _length_number(value: float | None, unit: tuple[str, float], resolution: float | None) -> str:

@@ -20,6 +20,7 @@ from runout.validation import (
     contact,
     cross_model,
     diagnosis,
+    iso_ts_16281,
     kinematics,
     seed000_tada,
     seed001_kim,
@@ -155,6 +156,12 @@ SECTIONS: list[Section] = [
                 seed001_kim.equilibrium_checks,
             ),
         ],
+    ),
+    Section(
+        "life",
+        "Reference rating life, ISO/TS 16281 (`runout.geometry.life`, `equilibrium`)",
+        iso_ts_16281.INTRO,
+        [Group("", "", iso_ts_16281.checks)],
     ),
     Section(
         "diagnosis",

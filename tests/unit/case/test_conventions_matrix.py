@@ -122,6 +122,7 @@ CHANGES: dict[str, tuple[Callable[[Data, str], None], Callable[[Data], None]]] =
         _no_patch,
         _set("bearing.inner_conformity", 0.515),
     ),
+    "bearing.dynamic_load_rating": (_no_patch, _set("bearing.dynamic_load_rating", 5000.0)),
     "material.youngs_modulus, poisson_ratio": (_no_patch, _set("material.youngs_modulus", 2e11)),
     "material.density": (_no_patch, _set("material.density", 7000.0)),
     "operation.rotating_ring": (_no_patch, _set("operation.rotating_ring", "outer")),

@@ -134,6 +134,7 @@ CHANGES: dict[str, tuple[Callable[[Data], None], Callable[[Data], None]]] = {
         _none,
         _bearings("inner_conformity", 0.515),
     ),
+    "bearing.dynamic_load_rating": (_none, _bearings("dynamic_load_rating", 5000.0)),
     "material.youngs_modulus, poisson_ratio": (_none, _set("material.youngs_modulus", 2e11)),
     "material.density": (_none, _set("material.density", 7000.0)),
     "operation.rotating_ring": (_none, _set("operation.rotating_ring", "outer")),
