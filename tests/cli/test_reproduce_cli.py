@@ -32,3 +32,13 @@ def test_reproduce_writes_and_checks(tmp_path: Path) -> None:
 def test_reproduce_unknown_section_is_a_clean_error(tmp_path: Path) -> None:
     res = runner.invoke(app, ["reproduce", "--only", "nope", "--out", str(tmp_path / "V.md")])
     assert res.exit_code == 2
+
+
+def test_only_help_names_every_section() -> None:
+    from runout.validation import section_keys
+
+    # the --only help is written by hand: it must name every section a user can pick
+    shown = runner.invoke(app, ["reproduce", "--help"], terminal_width=200)
+    assert shown.exit_code == 0
+    for key in section_keys():
+        assert key in shown.output, key
