@@ -188,7 +188,7 @@ def test_the_cheap_gap_bound_never_exceeds_the_exact_gap(
     ry = np.array([s * np.sin(direction)])
     sh = np.array(turns)
     cx, cy = centre
-    bound = rk._near_bound(mode, 0, cx, cy, rx, ry, bodies[0], dev)
+    bound = rk._gap_bound(mode, 0, cx, cy, rx, ry, bodies[0], dev, False)
     exact, _, _ = rk._constraint(mode, 0, cx, cy, rx, ry, sh, bodies)
     # to rounding: coordinates of 0.04 m round at 7e-18 m (the skip needs only a bound above
     # 0 to put the gap above -TOL_FEASIBLE = -1e-13 m)
