@@ -39,6 +39,8 @@ CPU before, 0.71 s after (BENCHMARKS.md, "Runs that write quickly").
   the roller's normal at the angle before (its first settling step). The stops are the
   same steps (1e-9 rad, 1e-10 m), so the solutions agree with the cold ones to round-off
   (2.9e-17 m on the sweep's runouts).
+* Roller directions shared (``radii``): cos β, sin β and the angle from the contact side of
+  every roller at every angle are the perfect bearing's (same rollers, cage and load).
 * No gap the search did not need (``exact`` false): the sweep reads no gaps.
 
 Rotating phasors (the profile's harmonics and the Newton angles δ and ψ advanced by
@@ -568,6 +570,8 @@ def _solve_all(
     iwork: NDArray[np.int64],
     settled: FloatArray,
     settle: int,
+    radii: FloatArray,
+    radii_given: bool,
     warm: bool,
     exact: bool,
 ) -> tuple[int, float, float]:
@@ -580,7 +584,10 @@ def _solve_all(
     only cost compilation time.
 
     ``settled`` (n, Z) receives each candidate roller's settled radius [m], or gives it
-    (``settle``: ``SETTLE_EACH``, ``SETTLE_GIVEN``, ``SETTLE_ONCE``); ``warm`` starts the
+    (``settle``: ``SETTLE_EACH``, ``SETTLE_GIVEN``, ``SETTLE_ONCE``); ``radii`` (n, Z, 3)
+    receives, or with ``radii_given`` gives, each roller's radius direction (cos β, sin β)
+    and its angle φ from the contact side [rad] (the same for every bearing with these
+    rollers, cage and load direction); ``warm`` starts the
     Newton solves from the solutions nearby; without ``exact`` the gaps the search did not
     compute are NaN (module docstring: the order sweep's savings). A run's solve passes
     ``SETTLE_EACH``, no ``warm`` and ``exact``.
@@ -625,9 +632,17 @@ def _solve_all(
         nc = 0
         for j in range(z):
             beta = beta0[j] + cage * alpha
-            ex = math.cos(beta)
-            ey = math.sin(beta)
-            phi[j] = math.atan2(wx * ey - wy * ex, wx * ex + wy * ey)
+            if radii_given:
+                ex = radii[n, j, 0]
+                ey = radii[n, j, 1]
+                phi[j] = radii[n, j, 2]
+            else:
+                ex = math.cos(beta)
+                ey = math.sin(beta)
+                phi[j] = math.atan2(wx * ey - wy * ex, wx * ex + wy * ey)
+                radii[n, j, 0] = ex
+                radii[n, j, 1] = ey
+                radii[n, j, 2] = phi[j]
             if abs(phi[j]) >= lim:
                 far[j] = True
                 turn[j] = math.nan

@@ -191,7 +191,9 @@ def _angles(alpha: Sequence[float] | FloatArray) -> FloatArray:
 def _solve_one(geo: ConstraintGeometry, al: FloatArray) -> Solution:
     """:func:`solve` on checked angles."""
     settled = np.empty((al.size, geo.n_elements))
-    out_c, out_pair, out_lam, out_gap, out_rc = _walk(geo, al, settled, SETTLE_EACH, False, True)
+    radii = np.empty((al.size, geo.n_elements, 3))
+    out = _walk(geo, al, settled, SETTLE_EACH, radii, False, False, True)
+    out_c, out_pair, out_lam, out_gap, out_rc = out
     return Solution(geo, al, out_c, out_pair, out_lam, out_gap, out_rc)
 
 
@@ -200,6 +202,8 @@ def _walk(
     al: FloatArray,
     settled: FloatArray,
     settle: int,
+    radii: FloatArray,
+    radii_given: bool,
     warm: bool,
     exact: bool,
 ) -> tuple[FloatArray, NDArray[np.int64], FloatArray, FloatArray, FloatArray]:
@@ -209,9 +213,11 @@ def _walk(
     ``settled`` (n, Z) receives the settled radius [m] of every roller near the contact side,
     or gives it (``settle``, ``_roller_kernels.SETTLE_EACH`` ...: with ``SETTLE_GIVEN`` the
     radii of a bearing whose fixed ring and rollers are those of ``geo``, over the same
-    angles); ``warm`` starts the Newton solves from the solutions nearby (the same stops: the
-    same solutions to round-off); without ``exact`` the gaps not computed by the search are
-    NaN (a caller that wants only the centres).
+    angles); ``radii`` (n, Z, 3) receives the rollers' directions, or gives them with
+    ``radii_given`` (``_roller_kernels._solve_all``); ``warm`` starts the Newton solves from
+    the solutions nearby (the same stops: the same solutions to round-off); without
+    ``exact`` the gaps not computed by the search are NaN (a caller that wants only the
+    centres).
     """
     z = geo.n_elements
     bodies = _pack(geo)
@@ -238,7 +244,7 @@ def _walk(
     for _ in range(n + 1):  # each pass solves at least one angle
         start, cx, cy = _solve_all(
             al, start, mode, bodies, beta, *kinematics, ux, uy, cx, cy, *out, out_rc,
-            out_status, dev, *work, settled, settle, warm, exact,
+            out_status, dev, *work, settled, settle, radii, radii_given, warm, exact,
         )  # fmt: skip
         if start >= n:
             break
@@ -659,9 +665,12 @@ def order_sweep(
     al = _angles(alpha)
     settled = np.empty((al.size, z))
     # the perfect bearing first: its failure is the bearing's (raised), its settled rollers
-    # are those of every geometry whose harmonic is on the loaded ring
-    baseline = _runout(perfect, _walk(perfect, al, settled, SETTLE_EACH, True, False)[0])
-    runouts = _runouts_or_none(geos, settles, al, settled)
+    # are those of every geometry whose harmonic is on the loaded ring, its rollers'
+    # directions those of every geometry
+    radii = np.empty((al.size, z, 3))
+    walk = _walk(perfect, al, settled, SETTLE_EACH, radii, False, True, False)
+    baseline = _runout(perfect, walk[0])
+    runouts = _runouts_or_none(geos, settles, al, settled, radii)
     solved = np.array([r is not None for r in runouts]).reshape(len(parts), ks.size)
     table = np.array([0.0 if r is None else r for r in runouts]).reshape(len(parts), ks.size)
     return OrderSweep(ks, tuple(parts), amplitude, table, solved, baseline, z)
@@ -677,9 +686,11 @@ def _runouts_or_none(
     settles: Sequence[int],
     al: FloatArray,
     settled: FloatArray,
+    radii: FloatArray,
 ) -> list[float | None]:
     """Runout [m] of each geometry over the checked angles ``al``, None for one without a
     stable position at some angle; on parallel threads (the compiled walk releases the GIL).
+    ``radii``: the rollers' directions of the perfect bearing (:func:`_walk`), the same in all.
 
     ``settles`` says how each geometry's rollers settle (``_roller_kernels.SETTLE_EACH`` ...);
     ``SETTLE_GIVEN`` takes them from ``settled`` (those of a bearing with the same fixed ring
@@ -691,7 +702,7 @@ def _runouts_or_none(
         g = geometries[i]
         own = settled if settles[i] == SETTLE_GIVEN else np.empty_like(settled)
         try:
-            return _runout(g, _walk(g, al, own, settles[i], True, False)[0])
+            return _runout(g, _walk(g, al, own, settles[i], radii, True, True, False)[0])
         except NumericalError:  # ConvergenceError included: jammed or unsettled
             return None
 
