@@ -13,11 +13,11 @@ with the body's current turn χ.
 Work saved per rotation angle (results bit for bit those of the direct method)
 --------------------------------------------------------------------------------
 * The gaps reported at the stable position are those the last feasibility check
-  (:func:`_worst`) computed at that very centre; only the two contact rollers are evaluated
-  again (about a quarter of the gap solves per angle).
+  (:func:`_worst`) computed at that very centre; only the others (the two contact rollers
+  and those it cleared by their bound) are computed there, once.
 * :func:`_worst` clears a roller by a certified lower bound on its gap (:func:`_gap_bound`,
-  the base circles less the largest deviations) before its exact Newton gap; the gaps it
-  cleared are computed at the accepted centre only (:func:`_gaps_at`).
+  the base circles less the largest deviations) before its exact Newton gap: a vertex the
+  walk rejects costs no exact gap of a roller that cannot interfere.
 * The candidate rollers are ordered by an insertion sort into a preallocated array.
 * :func:`_solve_all` releases the GIL, so independent solves (the order sweep of the
   model files) run on parallel threads (``roller_constraint.solve_many``).
@@ -25,8 +25,8 @@ Work saved per rotation angle (results bit for bit those of the direct method)
 Work saved per solve of the order sweep (centres to round-off of the direct method)
 -----------------------------------------------------------------------------------
 The sweep (``_roller_solve.order_sweep``: 123 solves of 721 angles for the NU209 example)
-wants only each solve's runout. Measured single-thread on the NU209 example: 1.90-1.98 s of
-CPU before, 0.71 s after (BENCHMARKS.md, "Runs that write quickly").
+wants only each solve's runout. Measured single-thread on the NU209 example: 1.87-1.90 s of
+CPU before, 0.60 s after (BENCHMARKS.md, "Runs that write quickly").
 
 * Settling shared (``settle``): with the harmonic on the loaded ring, the fixed ring and
   the rollers are the perfect bearing's, and so are the settled radii at every angle
