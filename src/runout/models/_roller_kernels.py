@@ -13,11 +13,35 @@ with the body's current turn χ.
 Work saved per rotation angle (results bit for bit those of the direct method)
 --------------------------------------------------------------------------------
 * The gaps reported at the stable position are those the last feasibility check
-  (:func:`_worst`) computed at that very centre; only the two contact rollers are evaluated
-  again (about a quarter of the gap solves per angle).
+  (:func:`_worst`) computed at that very centre; only the others (the two contact rollers
+  and those it cleared by their bound) are computed there, once.
+* :func:`_worst` clears a roller by a certified lower bound on its gap (:func:`_gap_bound`,
+  the base circles less the largest deviations) before its exact Newton gap: a vertex the
+  walk rejects costs no exact gap of a roller that cannot interfere.
 * The candidate rollers are ordered by an insertion sort into a preallocated array.
 * :func:`_solve_all` releases the GIL, so independent solves (the order sweep of the
   model files) run on parallel threads (``roller_constraint.solve_many``).
+
+Work saved per solve of the order sweep (centres to round-off of the direct method)
+-----------------------------------------------------------------------------------
+The sweep (``_roller_solve.order_sweep``: 123 solves of 721 angles for the NU209 example)
+wants only each solve's runout. Measured single-thread on the NU209 example: 1.87-1.90 s of
+CPU before, 0.60 s after (BENCHMARKS.md, "Runs that write quickly").
+
+* Settling shared (``settle``): with the harmonic on the loaded ring, the fixed ring and
+  the rollers are the perfect bearing's, and so are the settled radii at every angle
+  (``SETTLE_GIVEN``, bit for bit); a roller harmonic is the same on every roller in its
+  cage frame and the fixed ring is round, so every roller settles at the same radius at a
+  given angle: the first candidate settles, the others take its radius (``SETTLE_ONCE``).
+* Warm starts (``warm``): each support's Newton on δ starts from the support point of the
+  gap's iteration before; each gap's Newton on ψ from the normal of the Newton iteration
+  before (the vertex), the previous settling step's normal moved by dψ/ds (settling), or
+  the roller's normal at the angle before (its first settling step). The stops are the
+  same steps (1e-9 rad, 1e-10 m), so the solutions agree with the cold ones to round-off
+  (2.9e-17 m on the sweep's runouts).
+* Roller directions shared (``radii``): cos β, sin β and the angle from the contact side of
+  every roller at every angle are the perfect bearing's (same rollers, cage and load).
+* No gap the search did not need (``exact`` false): the sweep reads no gaps.
 
 Rotating phasors (the profile's harmonics and the Newton angles δ and ψ advanced by
 multiplication instead of sine and cosine) were tried: about 10 % faster here, but they move
@@ -44,6 +68,14 @@ Bodies = tuple[FloatArray, FloatArray, FloatArray, FloatArray, IntArray]
 TOL_FEASIBLE = 1e-13
 #: A KKT multiplier below ``-TOL_MULTIPLIER`` means the vertex is not the stable one [-].
 TOL_MULTIPLIER = 1e-9
+
+#: How :func:`_solve_all` settles the rollers: each by itself; from ``settled`` (the radii of
+#: a bearing with the same fixed ring and rollers); the first candidate by itself and the
+#: others at its radius (rollers alike in their cage frames on a round fixed ring: the module
+#: docstring).
+SETTLE_EACH = 0
+SETTLE_GIVEN = 1
+SETTLE_ONCE = 2
 
 # status codes of the compiled solver
 _OK = 0
@@ -77,15 +109,24 @@ def _profile(
 @register_jitable(no_cfunc_wrapper=True)
 def _support(b: int, bt: Bodies, shift: float, psi: float) -> tuple[float, float, float]:
     """Support value h(ψ), its derivative h'(ψ) and the radius of curvature at the support point."""
+    h, h1, rc, _ = _support_from(b, bt, shift, psi, 0.0)
+    return h, h1, rc
+
+
+@register_jitable(no_cfunc_wrapper=True)
+def _support_from(
+    b: int, bt: Bodies, shift: float, psi: float, delta: float
+) -> tuple[float, float, float, float]:
+    """:func:`_support` with Newton started from the support point at ψ + δ (δ = 0: the
+    direction itself); also returns the support point's δ (the start of a nearby ψ)."""
     r0, k, a, p, off = bt
     lo = off[b]
     hi = off[b + 1]
     if hi == lo:
-        return r0[b], 0.0, r0[b]
+        return r0[b], 0.0, r0[b], delta
     # Newton on the support condition ρ'cos δ - ρ sin δ = 0; quadratic convergence, so once
     # a step is below 1e-9 rad the next would be below ~1e-16 rad and we stop. h is taken at
     # the last evaluated δ (it is stationary there, error O(step² ρ)), h' at the updated δ.
-    delta = 0.0
     r = d1 = d2 = 0.0
     h = h1 = 0.0
     for _ in range(40):
@@ -101,7 +142,7 @@ def _support(b: int, bt: Bodies, shift: float, psi: float) -> tuple[float, float
             break
     h1 = r * math.sin(delta)
     rc = (r * r + d1 * d1) ** 1.5 / (r * r + 2.0 * d1 * d1 - r * d2)
-    return h, h1, rc
+    return h, h1, rc, delta
 
 
 @register_jitable(no_cfunc_wrapper=True)
@@ -121,14 +162,36 @@ def _gap(
     d·n − h_A(ψ) − h_B(ψ + π). ``inside=True``: A encloses B (roller in the outer raceway), the
     gap is h_A(ψ) − h_B(ψ) − d·n. Newton on ψ makes the gap stationary (support functions h).
     """
+    return _gap_from(ba, sa, bb, sb, dx, dy, bt, inside, math.atan2(dy, dx), False)
+
+
+@register_jitable(no_cfunc_wrapper=True)
+def _gap_from(
+    ba: int,
+    sa: float,
+    bb: int,
+    sb: float,
+    dx: float,
+    dy: float,
+    bt: Bodies,
+    inside: bool,
+    psi: float,
+    warm: bool,
+) -> tuple[float, float, float]:
+    """:func:`_gap` with Newton on ψ started from ``psi``; with ``warm`` each support's Newton
+    starts from the support point of the iteration before (δ = 0 otherwise), the same
+    stationary points to the same steps, from closer."""
     sign = -1.0 if inside else 1.0  # B's support enters with this sign, the gap with it too
     turn = 0.0 if inside else math.pi
-    psi = math.atan2(dy, dx)
     g = 0.0
     rk = 0.0
+    da = db = 0.0
     for _ in range(40):
-        ha, h1a, rca = _support(ba, bt, sa, psi)
-        hb, h1b, rcb = _support(bb, bt, sb, psi + turn)
+        ha, h1a, rca, ea = _support_from(ba, bt, sa, psi, da)
+        hb, h1b, rcb, eb = _support_from(bb, bt, sb, psi + turn, db)
+        if warm:
+            da = ea
+            db = eb
         c = math.cos(psi)
         s = math.sin(psi)
         nd = c * dx + s * dy
@@ -160,13 +223,33 @@ def _constraint(
     :func:`_gap` with run-time arguments for both modes: constant ones would compile a
     specialisation per value.
     """
+    g, gx, gy, _ = _constraint_from(mode, j, cx, cy, rx, ry, sh, bt, 0.0, False)
+    return g, gx, gy
+
+
+@register_jitable(no_cfunc_wrapper=True)
+def _constraint_from(
+    mode: int,
+    j: int,
+    cx: float,
+    cy: float,
+    rx: FloatArray,
+    ry: FloatArray,
+    sh: FloatArray,
+    bt: Bodies,
+    turn: float,
+    warm: bool,
+) -> tuple[float, float, float, float]:
+    """:func:`_constraint` by :func:`_gap_from` from the normal ``turn`` [rad] off the line
+    of centres (0: on it, as :func:`_gap`); also returns the normal's turn found."""
     dx = rx[j] - cx
     dy = ry[j] - cy
     inner_body = 2 + j + (bt[0].size - 2 - rx.size)  # seed 004's reading: see _pack
     roller = inner_body if mode == 0 else 2 + j
-    g, psi, _ = _gap(mode, sh[mode], roller, sh[2], dx, dy, bt, mode == 1)
+    line = math.atan2(dy, dx)
+    g, psi, _ = _gap_from(mode, sh[mode], roller, sh[2], dx, dy, bt, mode == 1, line + turn, warm)
     sign = -1.0 if mode == 0 else 1.0
-    return g, sign * math.cos(psi), sign * math.sin(psi)
+    return g, sign * math.cos(psi), sign * math.sin(psi), psi - line
 
 
 @register_jitable(no_cfunc_wrapper=True)
@@ -182,12 +265,20 @@ def _vertex(
     ry: FloatArray,
     sh: FloatArray,
     bt: Bodies,
+    warm: bool,
 ) -> tuple[float, float, float, float, bool]:
-    """Newton solve of C_a(c) = C_b(c) = 0; returns c, the KKT multipliers and success."""
+    """Newton solve of C_a(c) = C_b(c) = 0; returns c, the KKT multipliers and success.
+
+    With ``warm`` each gap's Newton starts from the normals of the iteration before, turned
+    as the line of centres turned (:func:`_constraint_from`)."""
     lam_a = lam_b = 0.0
+    pa = pb = 0.0
     for _ in range(60):
-        ca, gax, gay = _constraint(mode, ja, cx, cy, rx, ry, sh, bt)
-        cb, gbx, gby = _constraint(mode, jb, cx, cy, rx, ry, sh, bt)
+        ca, gax, gay, qa = _constraint_from(mode, ja, cx, cy, rx, ry, sh, bt, pa, warm)
+        cb, gbx, gby, qb = _constraint_from(mode, jb, cx, cy, rx, ry, sh, bt, pb, warm)
+        if warm:
+            pa = qa
+            pb = qb
         det = gax * gby - gay * gbx
         if abs(det) < 1e-10:
             return cx, cy, 0.0, 0.0, False
@@ -206,7 +297,7 @@ def _vertex(
 
 
 @register_jitable(no_cfunc_wrapper=True)
-def _far_bound(
+def _gap_bound(
     mode: int,
     j: int,
     cx: float,
@@ -215,19 +306,34 @@ def _far_bound(
     ry: FloatArray,
     r0: FloatArray,
     dev: FloatArray,
+    far: bool,
 ) -> float:
-    """Lower bound on the gap of a roller far from the load zone (placed at its nominal radius).
+    """Lower bound on the gap C_j(c) of roller j at its centre (rx, ry)[j] [m].
 
-    Settling moves the roller by at most dev(fixed ring) + dev(roller) along its radius, so
-    the gap is at least the circle gap minus twice the deviations involved.
+    ``far``: a roller far from the load zone, placed at its nominal radius. Settling moves
+    it by at most dev(fixed ring) + dev(roller) along its radius, so its settled gap is at
+    least the circle gap minus twice the deviations involved.
+
+    Otherwise the exact gap at that centre: a support value lies within the body's largest
+    deviation of its base radius (r0 - dev <= ρ <= h <= r0 + dev), so the gap, stationary in
+    ψ (the largest d·n - h_A - h_B of two separate bodies, the smallest h_A - h_B - d·n of one
+    inside the other), is at least the gap of the base circles less the two deviations.
+    (One function for both: each compiled function costs first-run compilation time.)
     """
     dist = math.hypot(rx[j] - cx, ry[j] - cy)
-    if mode == 0:
-        gap = dist - r0[0] - r0[2 + j]
+    if far:
+        if mode == 0:
+            gap = dist - r0[0] - r0[2 + j]
+        else:
+            gap = r0[1] - r0[2 + j] - dist
         slack = dev[0] + dev[1] + 2.0 * dev[2 + j]
     else:
-        gap = r0[1] - r0[2 + j] - dist
-        slack = dev[0] + dev[1] + 2.0 * dev[2 + j]
+        roller = 2 + j + (r0.size - 2 - rx.size) if mode == 0 else 2 + j  # as _constraint
+        if mode == 0:
+            gap = dist - r0[0] - r0[roller]
+        else:
+            gap = r0[1] - r0[roller] - dist
+        slack = dev[mode] + dev[roller]
     signed: float = gap - slack
     return signed
 
@@ -250,7 +356,8 @@ def _worst(
     """The roller that interferes most with the loaded ring at c (-1 if none).
 
     ``wg[j]`` receives the exact gap of every roller it evaluates, NaN for the others (the
-    skipped ones and the far ones cleared by their bound).
+    skipped ones, the far ones cleared by their bound and the settled ones cleared by
+    :func:`_gap_bound`: the exact gap of those could not change the answer).
     """
     worst = -1
     wgap = -TOL_FEASIBLE
@@ -258,9 +365,9 @@ def _worst(
         wg[j] = math.nan
         if j == skip1 or j == skip2:
             continue
-        if far[j] and _far_bound(mode, j, cx, cy, rx, ry, bt[0], dev) > 0.0:
-            continue
-        gj, _, _ = _constraint(mode, j, cx, cy, rx, ry, sh, bt)
+        if _gap_bound(mode, j, cx, cy, rx, ry, bt[0], dev, far[j]) > 0.0:
+            continue  # cannot interfere; its exact gap, if wanted, is _gaps_at's
+        gj, _, _, _ = _constraint_from(mode, j, cx, cy, rx, ry, sh, bt, 0.0, False)
         wg[j] = gj
         if gj < wgap:
             wgap = gj
@@ -289,8 +396,8 @@ def _single(
     psi = math.atan2(wy, wx)
     cw = math.cos(psi)
     sw = math.sin(psi)
-    he, h1e, _ = _support(ring, bt, sh[ring], psi)
-    hb, h1b, _ = _support(2 + j, bt, sh[2], psi)
+    he, h1e, _, _ = _support_from(ring, bt, sh[ring], psi, 0.0)
+    hb, h1b, _, _ = _support_from(2 + j, bt, sh[2], psi, 0.0)
     tx = -sw
     ty = cw
     dx = (he - hb) * wx + (h1e - h1b) * tx
@@ -300,7 +407,7 @@ def _single(
 
 def deviations(bt: Bodies) -> FloatArray:
     """Largest deviation of each body from its base radius, Σ|a| of its harmonics [m] (the
-    far-roller bound of :func:`_far_bound`), summed in order."""
+    gap bounds of :func:`_gap_bound`), summed in order."""
     _, _, a, _, off = bt
     amplitudes = np.abs(a).tolist()
     dev = []
@@ -314,20 +421,41 @@ def deviations(bt: Bodies) -> FloatArray:
 
 @register_jitable(no_cfunc_wrapper=True)
 def _settle(
-    mode: int, roller: int, s: float, ex: float, ey: float, sh: FloatArray, bt: Bodies
-) -> tuple[float, bool]:
+    mode: int,
+    roller: int,
+    s: float,
+    ex: float,
+    ey: float,
+    sh: FloatArray,
+    bt: Bodies,
+    psi: float,
+    warm: bool,
+) -> tuple[float, float, bool]:
     """Radius s [m] along (ex, ey) at which body ``roller`` touches the fixed ring (body
-    1 - mode) from s, by Newton's method on the gap; and whether it converged."""
+    1 - mode) from s, by Newton's method on the gap; and whether it converged. With ``warm``
+    each gap's Newton starts from the normal of the gap before (:func:`_gap_from`)."""
     fixed = 1 - mode
+    if math.isnan(psi):
+        psi = math.atan2(s * ey, s * ex)
     for _ in range(40):
-        g, psi, _ = _gap(fixed, sh[fixed], roller, sh[2], s * ex, s * ey, bt, mode == 0)
+        if not warm:
+            psi = math.atan2(s * ey, s * ex)
+        g, psi, rk = _gap_from(
+            fixed, sh[fixed], roller, sh[2], s * ex, s * ey, bt, mode == 0, psi, warm
+        )
+        sg = g
         if mode != 0:
             g = -g
         ds = g / (math.cos(psi) * ex + math.sin(psi) * ey)
         s += ds
+        if warm:
+            # the normal where the gap is stationary moves with s: dψ/ds = -(∂f1/∂s)/f2 of
+            # _gap_from's Newton, f2 = -(±g) - rk there; the next Newton starts on it
+            sign = -1.0 if mode == 0 else 1.0
+            psi += ds * (ey * math.cos(psi) - ex * math.sin(psi)) / (sign * sg + rk)
         if abs(ds) <= 1e-10:  # Newton on a nearly linear gap: next step < 1e-18 m
-            return s, True
-    return s, False
+            return s, psi, True
+    return s, psi, False
 
 
 @register_jitable(no_cfunc_wrapper=True)
@@ -343,21 +471,23 @@ def _gaps_at(
     bt: Bodies,
     kept: FloatArray,
     out: FloatArray,
+    exact: bool,
 ) -> bool:
     """The gap of every roller at the accepted centre c into ``out``: the bound of a far
-    roller, the gap the search computed there (``kept``) or, where it did not, a new one.
+    roller, the gap the search computed there (``kept``) or, where it did not, a new one
+    (NaN instead when not ``exact``: a caller that wants only the centre).
     False when a far roller's bound is not positive (contact beyond the contact side)."""
     clear = True
     for j in range(rx.size):
         if far[j]:
-            gj = _far_bound(mode, j, cx, cy, rx, ry, bt[0], dev)
+            gj = _gap_bound(mode, j, cx, cy, rx, ry, bt[0], dev, True)
             if gj <= 0.0:
                 clear = False
             out[j] = gj
             continue
         gj = kept[j]
-        if math.isnan(gj):  # else known from the accepted search's last _worst, same c
-            gj, _, _ = _constraint(mode, j, cx, cy, rx, ry, sh, bt)
+        if exact and math.isnan(gj):  # else known from the accepted search's last _worst
+            gj, _, _, _ = _constraint_from(mode, j, cx, cy, rx, ry, sh, bt, 0.0, False)
         out[j] = gj
     return clear
 
@@ -371,7 +501,7 @@ gap = kernel()(_gap)
 def work_arrays(z: int) -> tuple[NDArray[np.bool_], FloatArray, FloatArray, NDArray[np.int64]]:
     """The work space of :func:`_solve_all` for Z rollers: ``far``, ``sh``, ``fwork``,
     ``iwork``."""
-    return np.empty(z, dtype=np.bool_), np.empty(3), np.empty((5, z)), np.empty((2, z), np.int64)
+    return np.empty(z, dtype=np.bool_), np.empty(3), np.empty((6, z)), np.empty((2, z), np.int64)
 
 
 @register_jitable(no_cfunc_wrapper=True)
@@ -396,16 +526,19 @@ def _accept(
     out_lam: FloatArray,
     out_gap: FloatArray,
     out_status: NDArray[np.int64],
+    exact: bool,
 ) -> None:
     """The stable position (bx, by) of angle n, its contact pair and multipliers, and every
-    roller's gap there, into the outputs (a contact beyond the candidates: status)."""
+    roller's gap there (see :func:`_gaps_at`), into the outputs (a contact beyond the
+    candidates: status). For :func:`_solve_pairs`; :func:`_solve_all` has the same lines
+    written out (as a function of its own, ~0.1 s more of the run's first compilation)."""
     out_c[n, 0] = bx
     out_c[n, 1] = by
     out_pair[n, 0] = first
     out_pair[n, 1] = second
     out_lam[n, 0] = la
     out_lam[n, 1] = lb
-    if not _gaps_at(mode, bx, by, rx, ry, far, dev, sh, bt, kept, out_gap[n]):
+    if not _gaps_at(mode, bx, by, rx, ry, far, dev, sh, bt, kept, out_gap[n], exact):
         out_status[n] = _FAR_CONTACT
 
 
@@ -435,14 +568,29 @@ def _solve_all(
     sh: FloatArray,
     fwork: FloatArray,
     iwork: NDArray[np.int64],
+    settled: FloatArray,
+    settle: int,
+    radii: FloatArray,
+    radii_given: bool,
+    warm: bool,
+    exact: bool,
 ) -> tuple[int, float, float]:
     """The rotation angles from ``n_start`` on, in turn (see the module docstring), from the
     inner-ring centre (c0x, c0y) of the angle before.
 
     ``dev`` holds the largest deviation of each body from its base radius
-    (:func:`deviations`); ``far`` (Z,), ``sh`` (3,), ``fwork`` (5, Z) and ``iwork`` (2, Z) are
+    (:func:`deviations`); ``far`` (Z,), ``sh`` (3,), ``fwork`` (6, Z) and ``iwork`` (2, Z) are
     work space (:func:`work_arrays`). Both come from the caller: set-up that, compiled, would
     only cost compilation time.
+
+    ``settled`` (n, Z) receives each candidate roller's settled radius [m], or gives it
+    (``settle``: ``SETTLE_EACH``, ``SETTLE_GIVEN``, ``SETTLE_ONCE``); ``radii`` (n, Z, 3)
+    receives, or with ``radii_given`` gives, each roller's radius direction (cos β, sin β)
+    and its angle φ from the contact side [rad] (the same for every bearing with these
+    rollers, cage and load direction); ``warm`` starts the
+    Newton solves from the solutions nearby; without ``exact`` the gaps the search did not
+    compute are NaN (module docstring: the order sweep's savings). A run's solve passes
+    ``SETTLE_EACH``, no ``warm`` and ``exact``.
 
     Returns the number of angles, or the first angle whose active-set walk found no stable
     vertex, and the centre of the last angle solved: the search over every pair of
@@ -459,6 +607,9 @@ def _solve_all(
     rx = fwork[2]
     ry = fwork[3]
     phi = fwork[4]
+    turn = fwork[5]  # normal of each roller's last settled contact less its direction
+    for j in range(z):
+        turn[j] = math.nan
     cx = c0x
     cy = c0y
     # contact side: rollers around +u (inner ring loaded) or around -u (outer ring loaded)
@@ -481,11 +632,20 @@ def _solve_all(
         nc = 0
         for j in range(z):
             beta = beta0[j] + cage * alpha
-            ex = math.cos(beta)
-            ey = math.sin(beta)
-            phi[j] = math.atan2(wx * ey - wy * ex, wx * ex + wy * ey)
+            if radii_given:
+                ex = radii[n, j, 0]
+                ey = radii[n, j, 1]
+                phi[j] = radii[n, j, 2]
+            else:
+                ex = math.cos(beta)
+                ey = math.sin(beta)
+                phi[j] = math.atan2(wx * ey - wy * ex, wx * ex + wy * ey)
+                radii[n, j, 0] = ex
+                radii[n, j, 1] = ey
+                radii[n, j, 2] = phi[j]
             if abs(phi[j]) >= lim:
                 far[j] = True
+                turn[j] = math.nan
                 # nominal circle position, exact settling not needed for a bound
                 s = r0[1] - r0[2 + j] if mode == 0 else r0[0] + r0[2 + j]
                 rx[j] = s * ex
@@ -496,13 +656,22 @@ def _solve_all(
             far[j] = False
             cand[nc] = j
             nc += 1
-            if mode == 0:
-                s = r0[1] - r0[2 + j]
+            if settle == SETTLE_GIVEN:
+                s = settled[n, j]
+            elif settle == SETTLE_ONCE and nc > 1:
+                s = settled[n, cand[0]]
             else:
-                s = r0[0] + r0[2 + j]
-            s, ok = _settle(mode, 2 + j if mode == 0 else 2 + j + shift, s, ex, ey, sh, bt)
-            if not ok:
-                status = _SETTLE_FAIL
+                if mode == 0:
+                    s = r0[1] - r0[2 + j]
+                else:
+                    s = r0[0] + r0[2 + j]
+                roller = 2 + j if mode == 0 else 2 + j + shift
+                p0 = beta + turn[j] if warm else math.nan
+                s, p1, ok = _settle(mode, roller, s, ex, ey, sh, bt, p0, warm)
+                turn[j] = p1 - beta
+                if not ok:
+                    status = _SETTLE_FAIL
+                settled[n, j] = s
             rx[j] = s * ex
             ry[j] = s * ey
             out_rc[n, j, 0] = rx[j]
@@ -544,6 +713,7 @@ def _solve_all(
                 ry,
                 sh,
                 bt,
+                warm,
             )
             if not conv:
                 break
@@ -602,10 +772,15 @@ def _solve_all(
             return n, cx, cy  # 4. every pair of candidates: _solve_pairs
         cx = bx
         cy = by
-        first = sc[ia] if single < 0 else single
-        second = sc[ib] if single < 0 else single
-        args = (rx, ry, far, dev, sh, bt, kept, out_c, out_pair, out_lam, out_gap, out_status)
-        _accept(n, mode, bx, by, la, lb, first, second, *args)
+        # _accept written out: as a function of its own it costs the run ~0.1 s of compilation
+        out_c[n, 0] = bx
+        out_c[n, 1] = by
+        out_pair[n, 0] = sc[ia] if single < 0 else single
+        out_pair[n, 1] = sc[ib] if single < 0 else single
+        out_lam[n, 0] = la
+        out_lam[n, 1] = lb
+        if not _gaps_at(mode, bx, by, rx, ry, far, dev, sh, bt, kept, out_gap[n], exact):
+            out_status[n] = _FAR_CONTACT
     return alphas.size, cx, cy
 
 
@@ -628,6 +803,8 @@ def _solve_pairs(
     sh: FloatArray,
     fwork: FloatArray,
     iwork: NDArray[np.int64],
+    warm: bool,
+    exact: bool,
 ) -> tuple[float, float]:
     """Angle n where the active-set walk of :func:`_solve_all` found no stable vertex: the
     lowest admissible KKT vertex over every pair of candidate rollers (and, outer ring
@@ -668,6 +845,7 @@ def _solve_pairs(
                 ry,
                 sh,
                 bt,
+                warm,
             )
             if not conv or lam_a < -TOL_MULTIPLIER or lam_b < -TOL_MULTIPLIER:
                 continue
@@ -693,5 +871,5 @@ def _solve_pairs(
     first = sc[ia] if single < 0 else single
     second = sc[ib] if single < 0 else single
     args = (rx, ry, far, dev, sh, bt, kept, out_c, out_pair, out_lam, out_gap, out_status)
-    _accept(n, mode, bx, by, la, lb, first, second, *args)
+    _accept(n, mode, bx, by, la, lb, first, second, *args, exact)
     return bx, by

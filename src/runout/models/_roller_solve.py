@@ -25,6 +25,9 @@ from runout.models._roller_kernels import (
     _NO_STRADDLE,
     _NO_VERTEX,
     _SETTLE_FAIL,
+    SETTLE_EACH,
+    SETTLE_GIVEN,
+    SETTLE_ONCE,
     _solve_all,
     _solve_pairs,
     deviations,
@@ -187,6 +190,35 @@ def _angles(alpha: Sequence[float] | FloatArray) -> FloatArray:
 
 def _solve_one(geo: ConstraintGeometry, al: FloatArray) -> Solution:
     """:func:`solve` on checked angles."""
+    settled = np.empty((al.size, geo.n_elements))
+    radii = np.empty((al.size, geo.n_elements, 3))
+    out = _walk(geo, al, settled, SETTLE_EACH, radii, False, False, True)
+    out_c, out_pair, out_lam, out_gap, out_rc = out
+    return Solution(geo, al, out_c, out_pair, out_lam, out_gap, out_rc)
+
+
+def _walk(
+    geo: ConstraintGeometry,
+    al: FloatArray,
+    settled: FloatArray,
+    settle: int,
+    radii: FloatArray,
+    radii_given: bool,
+    warm: bool,
+    exact: bool,
+) -> tuple[FloatArray, NDArray[np.int64], FloatArray, FloatArray, FloatArray]:
+    """The compiled walk over the checked angles ``al``: centres, pairs, multipliers, gaps and
+    roller centres (:class:`Solution`'s arrays).
+
+    ``settled`` (n, Z) receives the settled radius [m] of every roller near the contact side,
+    or gives it (``settle``, ``_roller_kernels.SETTLE_EACH`` ...: with ``SETTLE_GIVEN`` the
+    radii of a bearing whose fixed ring and rollers are those of ``geo``, over the same
+    angles); ``radii`` (n, Z, 3) receives the rollers' directions, or gives them with
+    ``radii_given`` (``_roller_kernels._solve_all``); ``warm`` starts the Newton solves from
+    the solutions nearby (the same stops: the same solutions to round-off); without
+    ``exact`` the gaps not computed by the search are NaN (a caller that wants only the
+    centres).
+    """
     z = geo.n_elements
     bodies = _pack(geo)
     beta0 = geo.element_positions
@@ -212,13 +244,15 @@ def _solve_one(geo: ConstraintGeometry, al: FloatArray) -> Solution:
     for _ in range(n + 1):  # each pass solves at least one angle
         start, cx, cy = _solve_all(
             al, start, mode, bodies, beta, *kinematics, ux, uy, cx, cy, *out, out_rc,
-            out_status, dev, *work,
+            out_status, dev, *work, settled, settle, radii, radii_given, warm, exact,
         )  # fmt: skip
         if start >= n:
             break
         # an angle the active-set walk could not place: every pair of candidates (compiled
         # only in a run that needs it), then on with the next angle
-        cx, cy = _solve_pairs(start, mode, bodies, cx, cy, ux, uy, *out, out_status, dev, *work)
+        cx, cy = _solve_pairs(
+            start, mode, bodies, cx, cy, ux, uy, *out, out_status, dev, *work, warm, exact
+        )
         start += 1
     bad = np.flatnonzero(out_status)
     if bad.size:
@@ -231,7 +265,7 @@ def _solve_one(geo: ConstraintGeometry, al: FloatArray) -> Solution:
             instant=i,
             time=float(al[i]),
         )
-    return Solution(geo, al, out_c, out_pair, out_lam, out_gap, out_rc)
+    return out_c, out_pair, out_lam, out_gap, out_rc
 
 
 # --------------------------------------------------------------------------------------------
@@ -582,6 +616,15 @@ def order_sweep(
     ------
     NumericalError, ConvergenceError
         When the perfect bearing itself has no stable position.
+
+    Notes
+    -----
+    Each entry is the runout :func:`solve` gives for that geometry alone, to round-off: the
+    solves share the perfect bearing's settled rollers where they are the same, settle alike
+    rollers once per angle, start their Newton solves warm and compute no gaps
+    (``_roller_kernels`` module docstring). Model: Yu et al., "Prediction method for the
+    radial runout of inner ring in cylindrical roller bearings", Math. Probl. Eng., 2017
+    (seed 004), eq. 1-16 and §5.
     """
     z = geo.n_elements
     ks = np.arange(2, 3 * z + 1) if orders is None else np.asarray(orders, dtype=np.int64)
@@ -592,7 +635,9 @@ def order_sweep(
         element_radii=np.full(z, 0.5 * geo.element_diameter),
         pitch_errors=np.zeros(z),
     )
-    geos = [perfect]
+    loaded = "inner" if geo.rotating_ring == "inner" else "outer"
+    geos: list[ConstraintGeometry] = []
+    settles: list[int] = []
     for part in parts:
         for kk in ks:
             h = single_harmonic(int(kk), amplitude)
@@ -607,31 +652,64 @@ def order_sweep(
             else:
                 raise GeometryError("order_sweep.parts", f"unknown part {part!r}")
             geos.append(g)
-    solutions = _solve_many_or_none(geos, alpha)
-    if solutions[0] is None:  # the perfect bearing: the failure is the bearing's, say it
-        solve(perfect, alpha)
-    runouts = np.array([0.0 if sol is None else sol.runout for sol in solutions])
-    solved = np.array([sol is not None for sol in solutions[1:]]).reshape(len(parts), ks.size)
-    table = runouts[1:].reshape(len(parts), ks.size)
-    return OrderSweep(ks, tuple(parts), amplitude, table, solved, float(runouts[0]), z)
-
-
-def _solve_many_or_none(
-    geometries: Sequence[ConstraintGeometry], alpha: FloatArray
-) -> list[Solution | None]:
-    """:func:`solve_many`, None for a geometry without a stable position at some angle."""
+            # the fixed ring and the rollers of a harmonic on the loaded ring are the perfect
+            # bearing's: so are the settled rollers; a roller harmonic is the same on every
+            # roller in its cage frame, and the fixed ring is round: every roller settles at
+            # the same radius at a given angle (module docstring of _roller_kernels)
+            if part == loaded:
+                settles.append(SETTLE_GIVEN)
+            elif part in ("roller", "element", "ball"):
+                settles.append(SETTLE_ONCE)
+            else:
+                settles.append(SETTLE_EACH)
     al = _angles(alpha)
+    settled = np.empty((al.size, z))
+    # the perfect bearing first: its failure is the bearing's (raised), its settled rollers
+    # are those of every geometry whose harmonic is on the loaded ring, its rollers'
+    # directions those of every geometry
+    radii = np.empty((al.size, z, 3))
+    walk = _walk(perfect, al, settled, SETTLE_EACH, radii, False, True, False)
+    baseline = _runout(perfect, walk[0])
+    runouts = _runouts_or_none(geos, settles, al, settled, radii)
+    solved = np.array([r is not None for r in runouts]).reshape(len(parts), ks.size)
+    table = np.array([0.0 if r is None else r for r in runouts]).reshape(len(parts), ks.size)
+    return OrderSweep(ks, tuple(parts), amplitude, table, solved, baseline, z)
 
-    def one(g: ConstraintGeometry) -> Solution | None:
+
+def _runout(geo: ConstraintGeometry, centre: FloatArray) -> float:
+    """:attr:`Solution.runout` of the centres ``centre`` (n, 2) [m]."""
+    return float(np.ptp(np.asarray(centre @ geo.load_direction)))
+
+
+def _runouts_or_none(
+    geometries: Sequence[ConstraintGeometry],
+    settles: Sequence[int],
+    al: FloatArray,
+    settled: FloatArray,
+    radii: FloatArray,
+) -> list[float | None]:
+    """Runout [m] of each geometry over the checked angles ``al``, None for one without a
+    stable position at some angle; on parallel threads (the compiled walk releases the GIL).
+    ``radii``: the rollers' directions of the perfect bearing (:func:`_walk`), the same in all.
+
+    ``settles`` says how each geometry's rollers settle (``_roller_kernels.SETTLE_EACH`` ...);
+    ``SETTLE_GIVEN`` takes them from ``settled`` (those of a bearing with the same fixed ring
+    and rollers, :func:`_walk`). Only the centres are wanted: the Newton solves start warm and
+    the gaps the search did not need are not computed.
+    """
+
+    def one(i: int) -> float | None:
+        g = geometries[i]
+        own = settled if settles[i] == SETTLE_GIVEN else np.empty_like(settled)
         try:
-            return _solve_one(g, al)
+            return _runout(g, _walk(g, al, own, settles[i], radii, True, True, False)[0])
         except NumericalError:  # ConvergenceError included: jammed or unsettled
             return None
 
     threads = min(len(geometries), max(1, numba.get_num_threads()))
     if threads <= 1:
-        return [one(g) for g in geometries]
+        return [one(i) for i in range(len(geometries))]
     from concurrent.futures import ThreadPoolExecutor
 
     with ThreadPoolExecutor(max_workers=threads) as pool:
-        return list(pool.map(one, geometries))
+        return list(pool.map(one, range(len(geometries))))
