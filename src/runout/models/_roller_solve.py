@@ -38,6 +38,7 @@ from runout.models._roller_kernels import (
 from runout.models._roller_setup import (
     ConstraintGeometry,
     _bodies,
+    _check_convex,
     _pack,
     _turns,
     absolute_spin_ratio,
@@ -567,7 +568,8 @@ class OrderSweep:
 
     def rows(self) -> list[dict[str, float | int | None]]:
         """One row per order: ``order``, ``order_over_z`` and ``<part>_pp_m`` for each part
-        (None where that harmonic jams the rollers: no runout to state)."""
+        (None where that harmonic jams the rollers or makes its part non-convex: no runout to
+        state)."""
         out: list[dict[str, float | int | None]] = []
         for i, kk in enumerate(self.orders):
             row: dict[str, float | int | None] = {
@@ -608,9 +610,11 @@ def order_sweep(
     -------
     OrderSweep
         A harmonic under which the rollers have no stable position at some angle (an
-        amplitude comparable with the clearance jams them) is marked unsolved
-        (:attr:`OrderSweep.solved`) rather than failing the sweep: the sweep is an aid to read
-        the run's bearing, whose own solution stands.
+        amplitude comparable with the clearance jams them), or which makes its part
+        non-convex (amplitude x order^2 comparable with the radius: outside the rigid model,
+        as a run's ``geometry_from`` refuses), is marked unsolved (:attr:`OrderSweep.solved`)
+        rather than failing the sweep: the sweep is an aid to read the run's bearing, whose
+        own solution stands.
 
     Raises
     ------
@@ -700,6 +704,12 @@ def _runouts_or_none(
 
     def one(i: int) -> float | None:
         g = geometries[i]
+        try:
+            # a part the harmonic makes non-convex is outside the rigid model (geometry_from
+            # refuses it in a run): its support functions have several stationary points
+            _check_convex(g)
+        except GeometryError:
+            return None
         own = settled if settles[i] == SETTLE_GIVEN else np.empty_like(settled)
         try:
             return _runout(g, _walk(g, al, own, settles[i], radii, True, True, False)[0])

@@ -1279,7 +1279,8 @@ def plot_order_sweep(
     """Runout against the harmonic order of each part, with multiples of Z marked.
 
     One curve per part, the perfect bearing's runout as a dotted line and the multiples of Z as
-    dashed ones; an order whose harmonic jams the rollers (``solved`` false) is a gap in its
+    dashed ones; an order whose harmonic jams the rollers or makes its part non-convex
+    (``solved`` false) is a gap in its
     curve, marked by an x on the axis.
 
     Parameters
@@ -1314,7 +1315,7 @@ def plot_order_sweep(
         if jammed.size:
             ax.plot(
                 jammed, np.zeros(jammed.size), "x", color=curve.get_color(), ms=5,
-                label=f"{part}: jams the rollers",
+                label=f"{part}: jammed or not convex",
             )  # fmt: skip
     ax.axhline(baseline * 1e6, color="k", lw=0.6, ls=":", label="perfect parts")
     for m in range(1, int(orders.max()) // n_elements + 1):

@@ -6,6 +6,9 @@ per angle for a roller harmonic (alike rollers on a round fixed ring), starts it
 solves warm and computes no gap the search did not need. Each entry must be the runout that
 :func:`~runout.models.roller_constraint.solve` gives for that geometry alone.
 
+A harmonic that makes its part non-convex is outside the rigid model (a run refuses such a
+part): the sweep leaves it unsolved, and so does the reference here.
+
 Tolerance: the Newton stops (vertex step 1e-10 m, settling step 1e-10 m, normals 1e-9 rad,
 all quadratic) leave the centres within ~1e-18 m of the exact stable position, and
 rounding of coordinates of ~0.03 m is ~4e-18 m an operation: warm and cold starts agree to
@@ -19,7 +22,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from runout.base.errors import NumericalError
@@ -34,6 +37,15 @@ EXAMPLE = Path(__file__).resolve().parents[3] / "examples" / "seed004_nu209.toml
 def _nu209() -> rc.ConstraintGeometry:
     case = load_case(EXAMPLE)
     return rc.geometry_from(case.bearing, case.imperfections, case.operation)
+
+
+def _convexity_margin(geo: rc.ConstraintGeometry) -> float:
+    """The smallest convexity margin of the parts (the model refuses one below 0.05)."""
+    from runout.models._roller_setup import _convexity_margin as margin
+
+    parts = [(geo.inner_radius, geo.inner), (geo.outer_radius, geo.outer)]
+    parts += [(float(r), h) for r, h in zip(geo.element_radii, geo.elements, strict=True)]
+    return min(margin(r, h) for r, h in parts)
 
 
 def _one_by_one(
@@ -65,6 +77,8 @@ def _one_by_one(
                 g = perfect.replace(
                     elements=rc.elements_to_fixed_frame((h,) * z, perfect.element_positions)
                 )
+            if _convexity_margin(g) < 0.05:  # outside the rigid model: not solved
+                continue
             try:
                 runout[i, m] = rc.solve(g, alpha).runout
                 solved[i, m] = True
@@ -128,6 +142,10 @@ def test_tight_clearance_sweep_equals_one_solve_per_geometry() -> None:
     spin=st.one_of(st.none(), st.floats(-4.0, 4.0)),
     n=st.integers(2, 60),
 )
+# a roller of 37 lobes of 4.7 um on 5 mm is not convex: both leave it unsolved (CI found a
+# warm and a cold start disagreeing on such a part, whose support has several stationary
+# points; the model refuses it in a run)
+@example("inner", "both_ends", [37], 4.67403112257499e-06, 4.6226530974125895e-05, 0.0, None, 3)
 def test_any_sweep_equals_one_solve_per_geometry(
     ring: str,
     contacts: str,
