@@ -465,25 +465,25 @@ def _roller_tables(
     directory.mkdir(parents=True, exist_ok=True)
     path = directory / "contacts.csv"
     z = sol.geometry.n_elements
+    header = ["angle_deg", "radial_m", "horizontal_m", "roller_a", "roller_b", "lambda_a",
+              "lambda_b", *(f"gap_{j + 1}_m" for j in range(z))]  # fmt: skip
+    table = np.column_stack(
+        [
+            np.degrees(sol.alpha),
+            sol.radial,
+            sol.horizontal,
+            sol.pair[:, 0] + 1,
+            sol.pair[:, 1] + 1,
+            sol.multipliers,
+            sol.gaps,
+        ]
+    )
+    # "%.6g" % v is f"{v:.6g}": the bytes a csv.writer of those strings writes (CRLF), one
+    # %-format per row instead of one f-string per cell
+    formats = ["%.6g", "%.12g", "%.12g", "%d", "%d", "%.6g", "%.6g", *["%.6g"] * z]
     with path.open("w", newline="") as fh:
-        w = csv.writer(fh)
-        w.writerow(
-            ["angle_deg", "radial_m", "horizontal_m", "roller_a", "roller_b", "lambda_a",
-             "lambda_b", *(f"gap_{j + 1}_m" for j in range(z))]
-        )  # fmt: skip
-        for i in range(sol.alpha.size):
-            w.writerow(
-                [
-                    f"{math.degrees(sol.alpha[i]):.6g}",
-                    f"{sol.radial[i]:.12g}",
-                    f"{sol.horizontal[i]:.12g}",
-                    int(sol.pair[i, 0]) + 1,
-                    int(sol.pair[i, 1]) + 1,
-                    f"{sol.multipliers[i, 0]:.6g}",
-                    f"{sol.multipliers[i, 1]:.6g}",
-                    *(f"{g:.6g}" for g in sol.gaps[i]),
-                ]
-            )
+        fh.write(",".join(header) + "\r\n")
+        np.savetxt(fh, table, fmt=formats, delimiter=",", newline="\r\n")
     swept = _order_sweep(sol) if sweep is None else sweep.result()
     return [path, _write_order_sweep(swept, directory / "order_sweep.csv")], swept
 
