@@ -318,8 +318,6 @@ def run(
     with ExitStack() as stack:
         # the figures' processes import matplotlib while the model runs (--out only)
         workers = None if directory is None else stack.enter_context(_figure_workers())
-        # the rigid model's order sweep (--out) needs the case only: it runs meanwhile too
-        early_sweep = None if directory is None else _early_sweep(case, stack)
         result = run_model(case)  # with the case's [analysis] outputs (bands, verdict)
         if as_json:
             _print_json(result.to_json())
@@ -328,24 +326,11 @@ def run(
         if directory is not None:
             written = _write_run(
                 result, case, case_file, case_text, directory, report, history_revolutions,
-                workers, early_sweep,
+                workers,
             )  # fmt: skip
             if not as_json:
                 for path in written:
                     _out.print(f"wrote {escape(str(path))}")
-
-
-def _early_sweep(case: Any, stack: ExitStack) -> Any:
-    """The rigid model's order sweep started now (:func:`runout.report.run_files.
-    start_order_sweep`), on a thread the stack joins; None for another model."""
-    if case.analysis.model != "roller_constraint":
-        return None
-    from concurrent.futures import ThreadPoolExecutor
-
-    from runout.report.run_files import start_order_sweep
-
-    pool = stack.enter_context(ThreadPoolExecutor(1, thread_name_prefix="runout-sweep"))
-    return start_order_sweep(case, pool)
 
 
 def _figure_workers() -> Any:
@@ -365,7 +350,6 @@ def _write_run(
     report: bool,
     history_revolutions: float,
     workers: Any = None,
-    early_sweep: Any = None,
 ) -> list[Path]:
     """Write the files of ``run --out``: all of them, or none (docs/outputs.md).
 
@@ -379,11 +363,7 @@ def _write_run(
 
     with staged(directory) as stage:
         written = write_result(
-            result,
-            stage.path,
-            history_revolutions=history_revolutions,
-            workers=workers,
-            early_sweep=early_sweep,
+            result, stage.path, history_revolutions=history_revolutions, workers=workers
         )
         # The inputs travel with the results, so a report can be rebuilt from the directory.
         summary = bearing_summary(case.bearing, case.operation)

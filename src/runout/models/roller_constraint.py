@@ -164,7 +164,6 @@ __all__ = [
     "run",
     "solve",
     "solve_many",
-    "solved_geometry",
     "support_function",
 ]
 
@@ -285,32 +284,6 @@ def _components(
     return fit.components, residual, fit.explained_fraction
 
 
-def solved_geometry(case: Case) -> tuple[ConstraintGeometry, float]:
-    """The geometry :func:`run` solves for ``case``, and the sign of the shaft's displacement.
-
-    runout's frame: the load key is the load on the shaft, the displacement the shaft's
-    centre relative to the outer ring's. A turning outer ring is the loaded one here: the same
-    relative push is the outer ring loaded the opposite way (``load_angle`` turned by π), and
-    its centre relative to the inner ring is minus the reported displacement (sign -1).
-
-    Parameters
-    ----------
-    case : Case
-        A validated case.
-
-    Returns
-    -------
-    geometry : ConstraintGeometry
-        What :func:`solve` is given.
-    shaft : float
-        +1, or -1 with a turning outer ring [-].
-    """
-    geo = geometry_from(case.bearing, case.imperfections, case.operation)
-    if geo.rotating_ring == "outer":
-        return dataclasses.replace(geo, load_angle=geo.load_angle + math.pi), -1.0
-    return geo, 1.0
-
-
 def run(case: Case) -> RunResult:
     """Run the rigid constraint model on a case (``[analysis] model = "roller_constraint"``).
 
@@ -338,8 +311,15 @@ def run(case: Case) -> RunResult:
     module docstring describes.
     """
     notes: list[str] = []
-    geo, shaft = solved_geometry(case)
-    if shaft < 0.0:
+    geo = geometry_from(case.bearing, case.imperfections, case.operation)
+    # runout's frame: the load key is the load on the shaft, the displacement the shaft's
+    # centre relative to the outer ring's. A turning outer ring is the loaded one here: the same
+    # relative push is the outer ring loaded the opposite way, and its centre relative to the
+    # inner ring is minus the reported displacement.
+    shaft = 1.0
+    if geo.rotating_ring == "outer":
+        shaft = -1.0
+        geo = dataclasses.replace(geo, load_angle=geo.load_angle + math.pi)
         notes.append(
             "outer ring turning and loaded: the measuring load acts on it opposite to "
             "radial_load_direction (the key gives the load on the shaft); the displacement is "

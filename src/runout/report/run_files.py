@@ -43,7 +43,6 @@ def write_result(
     *,
     history_revolutions: float = 3.0,
     workers: FigureWorkers | None = None,
-    early_sweep: Future[Any] | None = None,
 ) -> list[Path]:
     """Write ``result.json``, ``history.csv``, ``lines.csv``, the figures and the model's files.
 
@@ -59,9 +58,6 @@ def write_result(
         Processes that draw the figures while this one writes the tables (``runout run
         --out`` starts them before the model runs); by default the figures are drawn here.
         The files are the same either way.
-    early_sweep : Future, optional
-        The rigid model's order sweep started before the model ran
-        (:func:`start_order_sweep`): used when it is the sweep of ``result``'s solution.
 
     Returns
     -------
@@ -84,7 +80,7 @@ def write_result(
         write_columns, history, HISTORY_COLUMNS, [result.time, *result.displacement]
     )
     solution = _roller_solution(result)
-    sweep = None if solution is None else _matching_sweep(solution, early_sweep, pool)
+    sweep = None if solution is None else pool.submit(_order_sweep, solution)
     tables: list[Path] = []
 
     def write_tables() -> list[tuple[str, Any]]:
@@ -367,47 +363,6 @@ def _dynamic_table(result: RunResult, details: DynamicDetails, directory: Path) 
     return spectrum_csv
 
 
-def _matching_sweep(
-    sol: Solution, early: Future[Any] | None, pool: ThreadPoolExecutor
-) -> Future[OrderSweep]:
-    """The order sweep of ``sol`` on ``pool``: the early one (:func:`start_order_sweep`) when
-    it was computed for the same perfect bearing and angles, else a new one (waited for on
-    the pool: the figures that do not need it are drawn meanwhile)."""
-
-    def resolve() -> OrderSweep:
-        if early is not None:
-            key, swept = early.result()  # its error (no stable position) is this run's
-            if key == _sweep_key(sol.geometry, _sweep_angles(sol.alpha)):
-                return swept
-        return _order_sweep(sol)
-
-    return pool.submit(resolve)
-
-
-def _sweep_angles(alpha: np.ndarray) -> int:
-    """Angles of the order sweep for a run at the angles ``alpha`` [rad]: one revolution at the
-    run's step, 64 to 720 steps, both ends."""
-    step = float(np.median(np.diff(alpha))) if alpha.size > 1 else math.radians(0.25)
-    return int(min(720, max(64, round(2.0 * math.pi / step)))) + 1
-
-
-def _sweep_key(geo: Any, n1: int) -> tuple[Any, ...]:
-    """What the order sweep depends on: the angles and the perfect bearing (the sweep drops
-    every imperfection of ``geo``: :func:`runout.models.roller_constraint.order_sweep`)."""
-    return (
-        n1,
-        geo.n_elements,
-        geo.element_diameter,
-        geo.pitch_diameter,
-        geo.inner_radius,
-        geo.outer_radius,
-        geo.rotating_ring,
-        geo.load_angle,
-        geo.spin_ratio,
-        geo.roller_contacts,
-    )
-
-
 def _order_sweep(sol: Solution) -> OrderSweep:
     """The order sweep of the rigid model's files (:func:`_roller_tables`).
 
@@ -416,42 +371,9 @@ def _order_sweep(sol: Solution) -> OrderSweep:
     """
     from runout.models.roller_constraint import order_sweep, rotation_angles
 
-    return order_sweep(sol.geometry, rotation_angles(1.0, _sweep_angles(sol.alpha)))
-
-
-def start_order_sweep(case: Any, pool: ThreadPoolExecutor) -> Future[Any] | None:
-    """The rigid model's order sweep of ``case``, started on ``pool`` before the model runs.
-
-    ``runout run --out`` starts it with the figures' processes: it depends on the bearing's
-    perfect geometry and the run's angular step only, both known from the case, so it runs
-    while this process imports and solves the model (its kernels release the GIL).
-    :func:`write_result` uses it when it is the sweep of the solution the model returned
-    (:func:`_sweep_key`), and computes the sweep itself otherwise.
-
-    Parameters
-    ----------
-    case : Case
-        The case about to run.
-    pool : ThreadPoolExecutor
-        Where it runs.
-
-    Returns
-    -------
-    Future or None
-        Of ``(key, OrderSweep)``; None for another model than ``roller_constraint``.
-    """
-    if case.analysis.model != "roller_constraint":
-        return None
-
-    def sweep() -> tuple[tuple[Any, ...], OrderSweep]:
-        from runout.models.roller_constraint import order_sweep, rotation_angles, solved_geometry
-
-        geo, _ = solved_geometry(case)
-        alpha = rotation_angles(case.analysis.revolutions, case.analysis.samples)
-        n1 = _sweep_angles(alpha)
-        return _sweep_key(geo, n1), order_sweep(geo, rotation_angles(1.0, n1))
-
-    return pool.submit(sweep)
+    step = float(np.median(np.diff(sol.alpha))) if sol.alpha.size > 1 else math.radians(0.25)
+    n1 = int(min(720, max(64, round(2.0 * math.pi / step)))) + 1
+    return order_sweep(sol.geometry, rotation_angles(1.0, n1))
 
 
 def _roller_tables(
