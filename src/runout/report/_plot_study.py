@@ -198,17 +198,48 @@ def _histogram_panel(
     else:
         counts, edges, _ = ax.hist(v, bins=bins, color=style.HIST_COLOUR, alpha=0.8)
     if not flat and v.size >= 2:
-        width = float(edges[1] - edges[0])
-        grid = np.linspace(float(edges[0]), float(edges[-1]), 200)
-        if law == "rayleigh":
-            s2 = float(np.mean(v**2)) / 2.0
-            pdf = grid / s2 * np.exp(-(grid**2) / (2.0 * s2))
-            fit = f"Rayleigh fit, σ = {math.sqrt(s2):.3g} {unit}"
-        else:
-            mean, std = float(np.mean(v)), float(np.std(v, ddof=1))
-            pdf = np.exp(-0.5 * ((grid - mean) / std) ** 2) / (std * math.sqrt(2.0 * math.pi))
-            fit = f"normal fit, σ = {std:.3g} {unit}"
-        ax.plot(grid, pdf * v.size * width, color=style.FIT_COLOUR, lw=1.1, label=fit)
+        mean, std = float(np.mean(v)), float(np.std(v, ddof=1))
+        _fitted_law(ax, edges, law, mean, std, float(np.mean(v**2)), v.size, unit)
+    if flat:  # one value for every bearing: say which
+        title = f"{_shorten(title, 48)}: {_fmt(float(values_m[0]), unit, scale)} in every sample"
+    _frame_histogram(ax, title, quantity, unit, scale, limit_m, counts)
+
+
+def _fitted_law(
+    ax: Any,
+    edges: np.ndarray,
+    law: str,
+    mean: float,
+    std: float,
+    mean_square: float,
+    count: int,
+    unit: str,
+) -> None:
+    """The fitted law over a histogram of ``count`` samples with bin ``edges`` (values at the
+    axis scale): ``"rayleigh"`` (sigma^2 = mean(x^2) / 2, by maximum likelihood) or
+    ``"normal"`` (``mean``, ``std``), drawn as density x count x bin width."""
+    width = float(edges[1] - edges[0])
+    grid = np.linspace(float(edges[0]), float(edges[-1]), 200)
+    if law == "rayleigh":
+        s2 = mean_square / 2.0
+        pdf = grid / s2 * np.exp(-(grid**2) / (2.0 * s2))
+        fit = f"Rayleigh fit, σ = {math.sqrt(s2):.3g} {unit}"
+    else:
+        pdf = np.exp(-0.5 * ((grid - mean) / std) ** 2) / (std * math.sqrt(2.0 * math.pi))
+        fit = f"normal fit, σ = {std:.3g} {unit}"
+    ax.plot(grid, pdf * count * width, color=style.FIT_COLOUR, lw=1.1, label=fit)
+
+
+def _frame_histogram(
+    ax: Any,
+    title: str,
+    quantity: str,
+    unit: str,
+    scale: float,
+    limit_m: float | None,
+    counts: np.ndarray,
+) -> None:
+    """A histogram panel's spec-limit line, limits, title, axis labels and legend."""
     if limit_m is not None:
         x = limit_m * scale
         ax.axvline(
@@ -223,8 +254,6 @@ def _histogram_panel(
         ax.set_xlim(min(lo, x - pad), max(hi, x + pad))
     # headroom above the tallest bar for the legend (it holds the fit and the limit's text)
     ax.set_ylim(0, max(float(np.max(counts, initial=0.0)), 1.0) * 1.5)
-    if flat:  # one value for every bearing: say which
-        title = f"{_shorten(title, 48)}: {_fmt(float(values_m[0]), unit, scale)} in every sample"
     ax.set_title(_shorten(title, 70), fontsize=8)
     ax.set_xlabel(style.axis_label(quantity, unit))
     ax.set_ylabel(style.axis_label("bearings", "count per bin"))
@@ -399,34 +428,9 @@ def _binned_panel(
         ax.stairs(counts, edges, fill=True, color=style.HIST_COLOUR, alpha=0.8)
     mean, std = float(stats["mean"]) * scale, float(stats["std"]) * scale
     if not flat and counts.size > 1 and count >= 2 and std > 0.0:
-        width = float(edges[1] - edges[0])
-        grid = np.linspace(float(edges[0]), float(edges[-1]), 200)
-        if law == "rayleigh":
-            s2 = ((count - 1) / count * std**2 + mean**2) / 2.0
-            pdf = grid / s2 * np.exp(-(grid**2) / (2.0 * s2))
-            fit = f"Rayleigh fit, σ = {math.sqrt(s2):.3g} {unit}"
-        else:
-            pdf = np.exp(-0.5 * ((grid - mean) / std) ** 2) / (std * math.sqrt(2.0 * math.pi))
-            fit = f"normal fit, σ = {std:.3g} {unit}"
-        ax.plot(grid, pdf * count * width, color=style.FIT_COLOUR, lw=1.1, label=fit)
-    if limit_m is not None:
-        x = limit_m * scale
-        ax.axvline(
-            x,
-            color=style.LIMIT_COLOUR,
-            lw=1.4,
-            ls="--",
-            label=f"limit {_fmt(limit_m, unit, scale)}",
-        )
-        lo, hi = ax.get_xlim()
-        pad = 0.05 * max(hi - lo, abs(x), 1e-300)
-        ax.set_xlim(min(lo, x - pad), max(hi, x + pad))
-    ax.set_ylim(0, max(float(np.max(counts, initial=0.0)), 1.0) * 1.5)
-    ax.set_title(_shorten(title, 70), fontsize=8)
-    ax.set_xlabel(style.axis_label(quantity, unit))
-    ax.set_ylabel(style.axis_label("bearings", "count per bin"))
-    if ax.get_legend_handles_labels()[0]:
-        ax.legend(loc="upper right", fontsize=6.5)
+        mean_square = (count - 1) / count * std**2 + mean**2
+        _fitted_law(ax, edges, law, mean, std, mean_square, count, unit)
+    _frame_histogram(ax, title, quantity, unit, scale, limit_m, counts)
 
 
 @style.styled
