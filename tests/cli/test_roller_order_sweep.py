@@ -59,3 +59,29 @@ def test_a_sweep_order_that_jams_the_rollers_is_an_empty_cell_not_a_failed_run(
             if r[f"{part}_pp_m"]:
                 assert float(r[f"{part}_pp_m"]) > 0.0
     assert (out / "order_sweep.png").stat().st_size > 0
+
+
+def test_a_sweep_harmonic_that_makes_a_part_non_convex_is_an_empty_cell(tmp_path: Path) -> None:
+    """1 µm of 22 to 24 lobes on a ball of 0.5 mm radius is not convex (a k^2 near the radius):
+    outside the rigid model, which refuses such a part in a run; the sweep leaves it empty
+    rather than state a runout its warm and cold Newton starts can disagree on."""
+    from runout.geometry.imperfections import single_harmonic
+    from runout.models._roller_setup import _convexity_margin
+
+    case = tmp_path / "case.toml"
+    case.write_text(CASE, encoding="utf-8")
+    out = tmp_path / "out"
+    done = subprocess.run(
+        [sys.executable, "-m", "runout.cli", "run", str(case), "--out", str(out)],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert done.returncode == 0, done.stderr
+    header, *rows = (out / "order_sweep.csv").read_text(encoding="utf-8").splitlines()
+    assert "or makes its part non-convex (outside the rigid model)" in header
+    table = {int(r["order"]): r for r in csv.DictReader(rows)}
+    non_convex = [k for k in table if _convexity_margin(0.5e-3, single_harmonic(k, 1e-6)) < 0.05]
+    assert non_convex, "orders near 3Z make the 1 mm balls non-convex"
+    for k in non_convex:
+        assert table[k]["roller_pp_m"] == "", k
