@@ -447,10 +447,12 @@ class StudyResult:
                 )
         return written
 
-    def _write_summary(self, directory: Path) -> Path:
-        summary = _nan_to_none(self.summary())  # every sample failed: no statistics, null
+    def _write_summary(self, directory: Path, summary: dict[str, Any] | None = None) -> Path:
+        """``summary.json`` of ``summary`` (default :meth:`summary`, NaN written as null)."""
+        if summary is None:
+            summary = _nan_to_none(self.summary())  # every sample failed: no statistics
         if self.limit is not None and self.kind == "montecarlo":
-            summary["yield"] = self.lot_yield()
+            summary = {**summary, "yield": self.lot_yield()}
         return _write_text(directory / "summary.json", _dumps(summary, indent=2))
 
     def columns(self) -> list[tuple[str, NDArray[Any]]]:
@@ -718,16 +720,15 @@ class StreamedStudyResult(StudyResult):
         ``--out`` writes ``samples.csv`` and ``samples_columns.json`` from its chunk files
         (:func:`runout.study.run.run_study`)."""
         directory.mkdir(parents=True, exist_ok=True)
-        written = [self._write_summary(directory)]
+        summary = _nan_to_none(self.summary())  # the file's and the figure's, computed once
+        written = [self._write_summary(directory, summary)]
         if plots and self.kind == "montecarlo":
             from runout.report._plot_style import _save
             from runout.report.plotting import streamed_histograms
 
             quantity = None if self.limit is None else f"{self.limit[0]}_m"
             limit_m = None if self.limit is None else self.limit[1]
-            figure = streamed_histograms(
-                _nan_to_none(self.summary()), limit_quantity=quantity, limit_m=limit_m
-            )
+            figure = streamed_histograms(summary, limit_quantity=quantity, limit_m=limit_m)
             written.append(_save(figure, directory / "histograms.png", dpi=110))
         return written
 
