@@ -260,3 +260,21 @@ def test_tampered_records_diagnose_or_are_refused(record_dir: Path, text: str) -
     result = runner.invoke(app, ["diagnose", str(case), "--record", str(path), "--json"])
     # the record, or the case when the record's content contradicts it (its speed)
     _check(result, (f"{path}: ", f"{case}: "), time.perf_counter() - start)
+
+
+@pytest.mark.parametrize(
+    ("key", "value"), [("element_diameter_m", 1e308), ("pitch_diameter_m", -0.015)]
+)
+def test_summary_with_an_impossible_bearing_size_is_refused(
+    run_dir: Path, tmp_path: Path, key: str, value: float
+) -> None:
+    # found by the fuzz test above in CI: 1e308 m shown in mm overflowed to infinity (exit 70)
+    directory = tmp_path / "run"
+    shutil.copytree(run_dir, directory)
+    summary = json.loads((directory / "summary.json").read_text(encoding="utf-8"))
+    summary["bearing"][key] = value
+    (directory / "summary.json").write_text(json.dumps(summary), encoding="utf-8")
+    result = runner.invoke(app, ["report", str(directory)])
+    assert result.exit_code == 2, result.stderr
+    (line,) = result.stderr.strip().splitlines()
+    assert f"bearing.{key}" in line and "summary.json" in line

@@ -400,6 +400,10 @@ def _shown_key(key: str) -> str:
     return text if len(text) <= 60 else text[:57] + "..."
 
 
+#: Largest part size a reader accepts [m] (shape ``"length"``): the largest slewing bearings
+#: are a few metres across; a kilometre is an edited file.
+MAX_READ_LENGTH_M = 1e3
+
 #: A shape: one of these names, a tuple of them (any of), a list of one shape (every item),
 #: or a dict of key to shape (an object whose listed keys, when present, have those shapes;
 #: other keys are free). ``null`` is accepted wherever a value may be missing.
@@ -410,6 +414,13 @@ SHAPE_TYPES: Mapping[str, Callable[[Any], bool]] = {
     # a size or resolution: the readers' arithmetic takes it as one
     "nonnegative": lambda v: (
         isinstance(v, int | float) and not isinstance(v, bool) and math.isfinite(v) and v >= 0
+    ),
+    # a part's size [m]: shown at the bearing's scale (mm), so bounded as any bearing is
+    "length": lambda v: (
+        isinstance(v, int | float)
+        and not isinstance(v, bool)
+        and math.isfinite(v)
+        and 0 <= v <= MAX_READ_LENGTH_M
     ),
     "string": lambda v: isinstance(v, str),
     "bool": lambda v: isinstance(v, bool),
@@ -422,6 +433,7 @@ _WORDS = {
     "list": "an array",
     "number": "a number",
     "nonnegative": "a finite number >= 0",
+    "length": "a length from 0 to 1000 m",
     "string": "a string",
     "bool": "true or false",
     "scalar": "a number or a string",

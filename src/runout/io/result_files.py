@@ -146,9 +146,9 @@ SUMMARY_SHAPE: dict[str, Any] = {
     "bearing": {
         "type": "string",
         "elements": "number",
-        "element_diameter_m": "number",
-        "pitch_diameter_m": "number",
-        "radial_clearance_m": "number",
+        "element_diameter_m": "length",
+        "pitch_diameter_m": "length",
+        "radial_clearance_m": "length",
         "inner_conformity": "number",
         "outer_conformity": "number",
     },
