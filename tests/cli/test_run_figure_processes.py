@@ -101,3 +101,30 @@ def test_spawned_processes_draw_the_same_files(
     assert [p.name for p in spawned] == [p.name for p in here]
     for a, b in zip(spawned, here, strict=True):
         assert a.read_bytes() == b.read_bytes(), a.name
+
+
+@pytest.mark.skipif(not hasattr(os, "nice"), reason="niceness is a Unix process attribute")
+def test_the_drawing_processes_yield_to_the_command(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
+    """The model and the order sweep go first on busy cores: the figures draw at a lower
+    priority (the figure drawn from the sweep is not left waiting at the end)."""
+    from runout.report._figure_workers import FIGURE_NICENESS
+
+    seen = tmp_path / "niceness"
+    drawn = plotting.plot_orbit
+
+    def recording(*args: Any, **kwargs: Any) -> Any:
+        seen.write_text(str(os.nice(0)))  # os.nice(0) reads the process's niceness
+        return drawn(*args, **kwargs)
+
+    monkeypatch.setattr(plotting, "plot_orbit", recording)
+    out = tmp_path / "out"
+    result = runner.invoke(
+        app, ["run", str(EXAMPLES / "seed001_kim_spindle.toml"), "--out", str(out)]
+    )
+    assert result.exit_code == 0, result.stderr
+    assert (out / "orbit.png").is_file()
+    # at most 19, the lowest priority: a command already that nice draws at 19
+    assert int(seen.read_text()) == min(19, os.nice(0) + FIGURE_NICENESS)
+    assert FIGURE_NICENESS > 0
