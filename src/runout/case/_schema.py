@@ -681,6 +681,15 @@ class AnalysisSpec(_Table):
             "reaction_moment_n_m); refused with a moment_load."
         ),
     )
+    moment_arm: Literal["curvature_centres", "pitch_radius"] = Field(
+        "curvature_centres",
+        description=(
+            "model = \"equilibrium\" only: arm of the balls' axial forces in the inner ring's "
+            'moment equations: "curvature_centres" (default; the radius of the inner groove '
+            'curvature centres, Harris) or "pitch_radius" (d_m/2, as ISO/TS 16281 writes its '
+            "moment equilibrium; a given moment_load then loads the balls slightly more)."
+        ),
+    )
     bands: Literal["anderon", "iso15242"] | None = Field(
         None,
         description=(

@@ -571,6 +571,15 @@ KEYS: tuple[KeyConvention, ...] = (
         "it is an equilibrium-model option",
         _table_key("analysis", "race_control"),
     ),
+    _option_of(
+        "equilibrium",
+        "analysis.moment_arm",
+        "Arm of the balls' axial forces in the moment equations: radius of the inner groove "
+        "curvature centres (Harris) or the pitch radius (ISO/TS 16281).",
+        "-",
+        "it is an equilibrium-model option",
+        _table_key("analysis", "moment_arm"),
+    ),
     KeyConvention(
         "analysis.ring_tilt",
         "The inner ring's tilts in the equilibrium model: \"free\" (default; the balls' moment "

@@ -107,9 +107,14 @@ Notes
   they are evaluated at |α|. The Newton start is the tilt about the moment vector that carries
   M with the ring centred in the axial play (:func:`_moment_start`); nothing is added to the
   loads.
-* Tilt radius and moment arm are Harris's ℜ_i. Codes that use the pitch radius d_m/2 for both
-  (e.g. the ISO/TS 16281 reference suite compared in the tests) obtain tilts larger by about
-  (ℜ_i/(d_m/2))^(5/4) under a pure moment on a zero-clearance bearing.
+* Tilt radius and moment arm are Harris's ℜ_i by default: a ball's contact force acts along
+  the line through the groove curvature centres, and the inner one lies at ℜ_i. ISO/TS
+  16281:2008 moves the groove centres by ℜ_i θ in its rolling-element displacement (eq. 12 of
+  the open implementation github.com/minzhun/ISO16281, its ``R_i``) but writes the moment
+  equilibrium with the pitch radius, :math:`M = \tfrac12 D_{pw}\sum_j Q_j\sin\alpha_j
+  \cos\psi_j` (its eq. 18); ``[analysis] moment_arm = "pitch_radius"`` takes that arm. A
+  given moment then loads the balls by about ℜ_i/(d_m/2) more (1.06 % on the reference
+  suite's bearing, 2.4 % in its pure-moment life).
 
 References
 ----------
@@ -146,8 +151,13 @@ from runout.geometry.life import MAX_RADIAL_CONTACT_ANGLE, RatingLife, reference
 if TYPE_CHECKING:
     from runout.case.model import Case
 
+#: ``[analysis] moment_arm``: the arm of the balls' axial forces in the moment equations,
+#: Harris's ℜ_i (default) or ISO/TS 16281's pitch radius d_m/2.
+MOMENT_ARMS = ("curvature_centres", "pitch_radius")
+
 __all__ = [
     "DOF_NAMES",
+    "MOMENT_ARMS",
     "RING_TILTS",
     "EquilibriumResult",
     "EquilibriumSolution",
@@ -371,7 +381,12 @@ class _Ring:
     """
 
     def __init__(
-        self, bearing: BallBearing, op: Operation, control: str, speed_on: bool = True
+        self,
+        bearing: BallBearing,
+        op: Operation,
+        control: str,
+        speed_on: bool = True,
+        moment_arm: str = "curvature_centres",
     ) -> None:
         self.bearing = bearing
         d = bearing.element_diameter
@@ -380,6 +395,8 @@ class _Ring:
         self.ri0 = (bearing.inner_conformity - 0.5) * d
         self.ro0 = (bearing.outer_conformity - 0.5) * d
         self.rad_i = 0.5 * bearing.pitch_diameter + self.ri0 * math.cos(self.alpha0)
+        # the arm of the balls' axial forces in the moment equations (module docstring)
+        self.arm = self.rad_i if moment_arm == "curvature_centres" else 0.5 * bearing.pitch_diameter
         z = bearing.elements
         self.psi = TWO_PI * np.arange(z) / z
         self.cos_psi, self.sin_psi = np.cos(self.psi), np.sin(self.psi)
@@ -420,6 +437,7 @@ class _Ring:
             self.a * math.cos(self.alpha0),
             self.rad_i,
             self.a,
+            self.arm,
         )
         self._k_cache: dict[float, tuple[float, float]] = {}
         self.x = np.zeros((z, 2))
@@ -813,7 +831,12 @@ def _check_ring_tilt(ring_tilt: str, op: Operation) -> None:
 
 
 def solve_equilibrium(
-    bearing: BallBearing, op: Operation, *, race_control: str = "outer", ring_tilt: str = "free"
+    bearing: BallBearing,
+    op: Operation,
+    *,
+    race_control: str = "outer",
+    ring_tilt: str = "free",
+    moment_arm: str = "curvature_centres",
 ) -> EquilibriumSolution:
     """Jones–Harris equilibrium of ``bearing`` at the loads and speed of ``op``.
 
@@ -828,6 +851,11 @@ def solve_equilibrium(
     ring_tilt : {"free", "held"}
         "free": the five ring equations are solved; "held": θ_x = θ_y = 0 and the three force
         equations are solved, the balls' moment being the restraint's reaction.
+    moment_arm : {"curvature_centres", "pitch_radius"}
+        Arm of the balls' axial forces in the two moment equations: Harris's ℜ_i (the
+        locus of inner groove curvature centres), or the pitch radius d_m/2 as ISO/TS
+        16281's moment equilibrium takes it. The tilt moves the groove centres by ℜ_i θ
+        either way.
 
     Returns
     -------
@@ -850,11 +878,16 @@ def solve_equilibrium(
             "analysis.race_control", f'must be "outer", "inner" or "none", got {race_control!r}'
         )
     _check_ring_tilt(ring_tilt, op)
+    if moment_arm not in MOMENT_ARMS:
+        raise GeometryError(
+            "analysis.moment_arm",
+            f'must be "curvature_centres" or "pitch_radius", got {moment_arm!r}',
+        )
     solved = _SOLVED[ring_tilt]
     load = _external(op)
     q, alpha = _initial_displacement(bearing, op)
     total = 0
-    ring = _Ring(bearing, op, race_control, speed_on=False)
+    ring = _Ring(bearing, op, race_control, speed_on=False, moment_arm=moment_arm)
     stages = ["static"]
     if op.inner_speed != 0.0 or op.outer_speed != 0.0:
         stages.append("at speed")
@@ -1110,7 +1143,10 @@ def run(case: Case) -> RunResult:
         raise GeometryError("bearing.type", "the equilibrium model needs a ball bearing")
     control = case.analysis.race_control
     ring_tilt = case.analysis.ring_tilt
-    sol = solve_equilibrium(bearing, op, race_control=control, ring_tilt=ring_tilt)
+    moment_arm = case.analysis.moment_arm
+    sol = solve_equilibrium(
+        bearing, op, race_control=control, ring_tilt=ring_tilt, moment_arm=moment_arm
+    )
     loaded = sol.loaded
     # |α|: under a moment some balls press on the other flank (negative angles)
     mean_alpha = float(
@@ -1143,6 +1179,14 @@ def run(case: Case) -> RunResult:
             "solved); the balls' moment on it is a reaction of the restraint, reaction_moment_n_m "
             f"= ({reaction[0]:.6g}, {reaction[1]:.6g}) N m about x, y; stiffness_matrix is the "
             "5×5 at this solution, tilt rows and columns included"
+        )
+    if moment_arm == "pitch_radius":
+        notes.append(
+            'analysis.moment_arm = "pitch_radius": the balls\' axial forces act on the inner '
+            f"ring's moment at the pitch radius d_m/2 = {0.5e3 * bearing.pitch_diameter:.6g} mm, "
+            "as ISO/TS 16281's moment equilibrium takes it, not at the radius of the inner "
+            "groove curvature centres (Harris, the default); the tilt still moves those "
+            "centres, so a given moment loads the balls more"
         )
     if not loaded.all():
         notes.append(

@@ -94,6 +94,12 @@ def _radial_load_for_equilibrium(data: Data, model: str) -> None:
         data["operation"]["radial_load"] = 2.0
 
 
+def _moment_load_for_equilibrium(data: Data, model: str) -> None:
+    # without a moment load the balls' moments sum to 0 whatever their arm
+    if model == "equilibrium":
+        data["operation"]["moment_load"] = 0.05
+
+
 def _held_axially(data: Data, model: str) -> None:
     # the dynamic column's cell: its rotor held axially (with the default spring preload it
     # moves axially and honours the key, condition honoured_when)
@@ -157,6 +163,10 @@ CHANGES: dict[str, tuple[Callable[[Data, str], None], Callable[[Data], None]]] =
     "analysis.revolutions, samples": (_no_patch, _set("analysis.revolutions", 3)),
     "analysis.linear_variant": (_no_patch, _set("analysis.linear_variant", "force_balance")),
     "analysis.race_control": (_no_patch, _set("analysis.race_control", "inner")),
+    "analysis.moment_arm": (
+        _moment_load_for_equilibrium,
+        _set("analysis.moment_arm", "pitch_radius"),
+    ),
     "analysis.ring_tilt": (_radial_load_for_equilibrium, _set("analysis.ring_tilt", "held")),
     "dynamics": (
         _no_patch,
