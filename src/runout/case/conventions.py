@@ -364,6 +364,25 @@ KEYS: tuple[KeyConvention, ...] = (
         _table_key("bearing", "dynamic_load_rating"),
     ),
     KeyConvention(
+        "bearing.fatigue_load_limit, lubrication, analysis.reliability",
+        "Inputs of the modified reference rating life L_nmr = a_1 a_ISO L10r (ISO 281): fatigue "
+        "load limit C_u, viscosity ratio (or operating viscosity), contamination factor, "
+        "reliability.",
+        "N, -, m^2/s, %",
+        (N, N, N, H, N, N, N),
+        {
+            m: "the modified life multiplies the ISO/TS 16281 reference rating life, which is "
+            "computed from the equilibrium model's ball loads only"
+            for m in MODELS
+            if m != "equilibrium"
+        },
+        lambda spec: (
+            _table_key("bearing", "fatigue_load_limit")(spec)
+            + _table("lubrication")(spec)
+            + _table_key("analysis", "reliability")(spec)
+        ),
+    ),
+    KeyConvention(
         "material.youngs_modulus, poisson_ratio",
         "Elastic constants of rings and elements (Hertz contact stiffness).",
         "Pa, -",

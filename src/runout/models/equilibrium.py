@@ -146,7 +146,13 @@ from runout.base.errors import ConvergenceError, GeometryError, NumericalError
 from runout.geometry.bearing import BallBearing, Operation
 from runout.geometry.contact import ball_race_curvature, combined_stiffness, hertz_point_stiffness
 from runout.geometry.kinematics import bearing_frequencies
-from runout.geometry.life import MAX_RADIAL_CONTACT_ANGLE, RatingLife, reference_rating_life
+from runout.geometry.life import (
+    MAX_RADIAL_CONTACT_ANGLE,
+    RatingLife,
+    modified_reference_life,
+    rated_viscosity,
+    reference_rating_life,
+)
 
 if TYPE_CHECKING:
     from runout.case.model import Case
@@ -161,6 +167,7 @@ __all__ = [
     "RING_TILTS",
     "EquilibriumResult",
     "EquilibriumSolution",
+    "LifeModification",
     "ball_speeds",
     "radial_stiffness",
     "rating_life",
@@ -1019,11 +1026,110 @@ def radial_stiffness(sol: EquilibriumSolution, speed_hz: float) -> RadialStiffne
     )
 
 
+@dataclass(frozen=True)
+class LifeModification:
+    """The inputs of the modified reference rating life L_nmr = a_1 a_ISO L10r (ISO 281:2007).
+
+    Attributes
+    ----------
+    reliability : float
+        Reliability [%] (``[analysis] reliability``; a row of ISO 281's a_1 table).
+    viscosity_ratio : float or None
+        κ [-] (``[lubrication] viscosity_ratio``).
+    operating_viscosity, rated_viscosity : float or None
+        ν and ν_1 [m²/s] (``[lubrication]``); κ = ν/ν_1, ν_1 by default ISO 281's.
+    contamination_factor : float or None
+        e_C [-] (``[lubrication] contamination_factor``).
+    fatigue_load_limit : float or None
+        C_u [N] (``[bearing] fatigue_load_limit``).
+    """
+
+    reliability: float = 90.0
+    viscosity_ratio: float | None = None
+    operating_viscosity: float | None = None
+    rated_viscosity: float | None = None
+    contamination_factor: float | None = None
+    fatigue_load_limit: float | None = None
+
+    @classmethod
+    def of_case(cls, case: Case) -> LifeModification:
+        """The case's ``[analysis] reliability``, ``[lubrication]`` and C_u.
+
+        Parameters
+        ----------
+        case : Case
+            A validated case.
+
+        Returns
+        -------
+        LifeModification
+        """
+        spec = case.spec
+        lube = spec.lubrication
+        return cls(
+            reliability=spec.analysis.reliability,
+            viscosity_ratio=None if lube is None else lube.viscosity_ratio,
+            operating_viscosity=None if lube is None else lube.operating_viscosity,
+            rated_viscosity=None if lube is None else lube.rated_viscosity,
+            contamination_factor=None if lube is None else lube.contamination_factor,
+            fatigue_load_limit=spec.lead_bearing.fatigue_load_limit,
+        )
+
+
+def _modified(
+    life: RatingLife, bearing: BallBearing, op: Operation, mod: LifeModification
+) -> tuple[RatingLife, list[str]]:
+    """``life`` with a_1 and, where its inputs are given, a_ISO and L_nmr; and the notes."""
+    kappa = mod.viscosity_ratio
+    notes: list[str] = []
+    if mod.operating_viscosity is not None:
+        relative = op.inner_speed - op.outer_speed
+        if mod.rated_viscosity is None and relative == 0.0:
+            notes.append(
+                "life: no modified life L_nmr: lubrication.operating_viscosity needs the rated "
+                "viscosity ν_1, which ISO 281 gives for a turning bearing only; give "
+                "lubrication.rated_viscosity or viscosity_ratio"
+            )
+            return modified_reference_life(life, reliability_percent=mod.reliability)[0], notes
+        else:
+            nu1 = (
+                mod.rated_viscosity
+                if mod.rated_viscosity is not None
+                else rated_viscosity(relative, bearing.pitch_diameter)
+            )
+            kappa = mod.operating_viscosity / nu1
+            source = (
+                "lubrication.rated_viscosity"
+                if mod.rated_viscosity is not None
+                else f"ISO 281's at {60.0 * abs(relative):.6g} r/min and d_m "
+                f"{bearing.pitch_diameter * 1e3:.6g} mm"
+            )
+            notes.append(
+                f"life: viscosity ratio κ = ν/ν_1 = {mod.operating_viscosity * 1e6:.6g} / "
+                f"{nu1 * 1e6:.6g} mm²/s = {kappa:.4g} (ν_1 {source})"
+            )
+    modified, more = modified_reference_life(
+        life,
+        reliability_percent=mod.reliability,
+        viscosity_ratio=kappa,
+        contamination_factor=mod.contamination_factor,
+        fatigue_load_limit=mod.fatigue_load_limit,
+    )
+    if modified.a_iso is None and mod.reliability != 90.0 and not more:
+        more = [
+            f"life: analysis.reliability = {mod.reliability:g} % is not applied: the modified "
+            "life L_nmr needs bearing.fatigue_load_limit and [lubrication] "
+            "contamination_factor and viscosity_ratio (or operating_viscosity)"
+        ]
+    return modified, notes + more
+
+
 def rating_life(
     bearing: BallBearing,
     op: Operation,
     sol: EquilibriumSolution,
     nominal_contact_angle: float = 0.0,
+    modification: LifeModification | None = None,
 ) -> tuple[RatingLife | None, list[str]]:
     """ISO/TS 16281 reference rating life of the solved bearing, and the notes that go with it.
 
@@ -1039,12 +1145,16 @@ def rating_life(
     nominal_contact_angle : float
         Nominal contact angle of the rating [rad]: 0 for a deep-groove bearing, the case's
         ``nominal_contact_angle`` for an angular-contact one.
+    modification : LifeModification or None
+        Reliability and the a_ISO inputs; None: 90 %, no a_ISO.
 
     Returns
     -------
     life : RatingLife or None
-        L10r [10^6 rev] and its parts (:func:`runout.geometry.life.reference_rating_life`);
-        None without C, or for a nominal angle beyond 45° (a thrust bearing).
+        L10r [10^6 rev] and its parts (:func:`runout.geometry.life.reference_rating_life`),
+        with a_1, a_ISO and L_nmr where their inputs are given
+        (:func:`runout.geometry.life.modified_reference_life`); None without C, or for a
+        nominal angle beyond 45° (a thrust bearing).
     notes : list of str
         What the life assumes, or why there is none.
 
@@ -1089,9 +1199,11 @@ def rating_life(
     notes = [
         f"life: ISO/TS 16281 basic reference rating life L10r, rated at the nominal contact "
         f"angle {angle:.6g} deg{why}; the lives count revolutions of one ring relative to the "
-        "other; not included: the modification factor a_ISO, contact ellipses truncated by the "
-        "groove shoulders (not checked: runout has no shoulder heights)"
+        "other; not included: contact ellipses truncated by the groove shoulders (not checked: "
+        "runout has no shoulder heights)"
     ]
+    life, modified_notes = _modified(life, bearing, op, modification or LifeModification())
+    notes += modified_notes
     if op.inner_speed != 0.0 or op.outer_speed != 0.0:
         f_c = float(sol.centrifugal_force.max())
         notes.append(
@@ -1195,7 +1307,9 @@ def run(case: Case) -> RunResult:
         )
     # the rating's nominal angle: the case's catalogue angle, else 0 (deep groove, ISO 281)
     nominal = case.spec.lead_bearing.nominal_contact_angle
-    life, life_notes = rating_life(bearing, op, sol, 0.0 if nominal is None else nominal)
+    life, life_notes = rating_life(
+        bearing, op, sol, 0.0 if nominal is None else nominal, LifeModification.of_case(case)
+    )
     notes += life_notes
     details = EquilibriumDetails(
         race_control=control,

@@ -398,6 +398,17 @@ def _equilibrium_cards(result: dict[str, Any]) -> list[str]:
                 f"ISO/TS 16281, C = {fmt_number(rating, 5)} N",
             )
         )
+        lnmr = num(life.get("lnmr_mrev"))
+        a_iso = num(life.get("a_iso"))
+        a1 = num(life.get("a1"))
+        if lnmr is not None and a_iso is not None and a1 is not None:
+            cards.append(
+                card(
+                    "modified life L_nmr",
+                    f"{lnmr:.4g} million rev",
+                    f"a_1 = {fmt_number(a1, 4)}, a_ISO = {fmt_number(a_iso, 4)} (ISO 281)",
+                )
+            )
     return cards
 
 

@@ -827,6 +827,23 @@ def _life_rows(life: RatingLife) -> Rows:
         ("equivalent reference load P_ref", figure(life.equivalent_reference_load_n), "N"),
         ("nominal contact angle of the rating", f"{life.nominal_contact_angle_deg:.6g}", "deg"),
     ]
+    if life.a_iso is not None and life.lnmr_mrev is not None:
+        rows += [
+            ("modified life L_nmr = a_1 a_ISO L10r", figure(life.lnmr_mrev), "10⁶ rev"),
+            (
+                "a_1 / a_ISO",
+                f"{life.a1:.4g} ({life.reliability_percent:g} %) / {life.a_iso:.4g}",
+                "-",
+            ),
+            (
+                "κ / e_C / C_u",
+                f"{life.viscosity_ratio:.4g} / {life.contamination_factor:.4g} / "
+                f"{life.fatigue_load_limit_n:.6g}",
+                "- / - / N",
+            ),
+        ]
+        if life.lnmr_hours is not None:
+            rows.append(("L_nmr at this speed", f"{life.lnmr_hours:.6g}", "h"))
     return rows
 
 
