@@ -154,7 +154,8 @@ class BearingSpec(_Table):
         None,
         description=(
             "Basic dynamic load rating C [N] (catalogue, ISO 281): with it the equilibrium "
-            "model reports the ISO/TS 16281 reference rating life L10r (JSON life)."
+            "model reports the ISO/TS 16281 reference rating life L10r (JSON life), the spindle "
+            "model each such bearing's (JSON bearings[].life)."
         ),
     )
 

@@ -352,14 +352,15 @@ KEYS: tuple[KeyConvention, ...] = (
     KeyConvention(
         "bearing.dynamic_load_rating",
         "Basic dynamic load rating C of the bearing (catalogue, ISO 281): with it the "
-        "equilibrium model reports the ISO/TS 16281 reference rating life L10r (JSON life).",
+        "equilibrium model reports the ISO/TS 16281 reference rating life L10r (JSON life), "
+        "the spindle model each bearing's (JSON bearings[].life).",
         "N",
-        (N, N, N, H, N, N, N),
+        (N, N, N, H, N, N, H),
         {
-            m: "the ISO/TS 16281 reference rating life is computed from the equilibrium "
-            "model's ball loads only"
+            m: "the ISO/TS 16281 reference rating life is computed from the equilibrium and "
+            "spindle models' ball loads only"
             for m in MODELS
-            if m != "equilibrium"
+            if m not in ("equilibrium", "spindle")
         },
         _table_key("bearing", "dynamic_load_rating"),
     ),
@@ -369,12 +370,12 @@ KEYS: tuple[KeyConvention, ...] = (
         "load limit C_u, viscosity ratio (or operating viscosity), contamination factor, "
         "reliability.",
         "N, -, m^2/s, %",
-        (N, N, N, H, N, N, N),
+        (N, N, N, H, N, N, H),
         {
             m: "the modified life multiplies the ISO/TS 16281 reference rating life, which is "
-            "computed from the equilibrium model's ball loads only"
+            "computed from the equilibrium and spindle models' ball loads only"
             for m in MODELS
-            if m != "equilibrium"
+            if m not in ("equilibrium", "spindle")
         },
         lambda spec: (
             _table_key("bearing", "fatigue_load_limit")(spec)

@@ -168,6 +168,7 @@ __all__ = [
     "EquilibriumResult",
     "EquilibriumSolution",
     "LifeModification",
+    "ball_loads_life",
     "ball_speeds",
     "radial_stiffness",
     "rating_life",
@@ -1124,6 +1125,79 @@ def _modified(
     return modified, notes + more
 
 
+def ball_loads_life(
+    bearing: BallBearing,
+    op: Operation,
+    inner_loads: NDArray[np.float64],
+    outer_loads: NDArray[np.float64],
+    nominal_contact_angle: float,
+    modification: LifeModification | None = None,
+    *,
+    table: str = "[bearing]",
+) -> tuple[RatingLife, list[str]]:
+    """ISO/TS 16281 reference rating life (and the modified life) from one bearing's ball loads.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        The bearing, with its ``dynamic_load_rating`` C [N] (not None).
+    op : Operation
+        The operating point (rotating ring, ring speeds [Hz]).
+    inner_loads, outer_loads : ndarray, shape (Z,)
+        Each ball's inner and outer contact load [N].
+    nominal_contact_angle : float
+        Nominal contact angle of the rating [rad], 0 to 45°.
+    modification : LifeModification or None
+        Reliability and the a_ISO inputs; None: 90 %, no a_ISO.
+    table : str
+        How the notes name the bearing's table (``[bearing]``, ``bearings[2]``).
+
+    Returns
+    -------
+    life : RatingLife
+        L10r and its parts; a_1, a_ISO and L_nmr where their inputs are given.
+    notes : list of str
+        What the life assumes.
+
+    Notes
+    -----
+    ISO/TS 16281:2008 eq. 19-29 and ISO 281:2007's a_1, a_ISO (:mod:`runout.geometry.life`).
+    """
+    rating = bearing.dynamic_load_rating
+    assert rating is not None
+    angle = math.degrees(nominal_contact_angle)
+    relative = op.inner_speed - op.outer_speed
+    life = reference_rating_life(
+        elements=bearing.elements,
+        element_diameter=bearing.element_diameter,
+        pitch_diameter=bearing.pitch_diameter,
+        inner_conformity=bearing.inner_conformity,
+        outer_conformity=bearing.outer_conformity,
+        nominal_contact_angle=nominal_contact_angle,
+        dynamic_load_rating=rating,
+        inner_loads=inner_loads,
+        outer_loads=outer_loads,
+        rotating_ring=op.rotating_ring,
+        relative_speed=relative,
+    )
+    free = math.degrees(bearing.free_contact_angle)
+    why = (
+        f" (the play's free contact angle {free:.4g} deg is not a rating angle: for an "
+        f"angular-contact bearing give {table} nominal_contact_angle)"
+        if nominal_contact_angle == 0.0 and free > 0.0
+        else ""
+    )
+    notes = [
+        f"life: ISO/TS 16281 basic reference rating life L10r, rated at the nominal contact "
+        f"angle {angle:.6g} deg{why}; the lives count revolutions of one ring relative to the "
+        "other; not included: contact ellipses truncated by the groove shoulders (not checked: "
+        "runout has no shoulder heights)"
+    ]
+    life, modified_notes = _modified(life, bearing, op, modification or LifeModification())
+    notes += modified_notes
+    return life, notes
+
+
 def rating_life(
     bearing: BallBearing,
     op: Operation,
@@ -1175,35 +1249,14 @@ def rating_life(
             "exceeds 45 deg, a thrust ball bearing in ISO 281, whose ISO/TS 16281 formulas "
             "runout does not implement"
         ]
-    relative = op.inner_speed - op.outer_speed
-    life = reference_rating_life(
-        elements=bearing.elements,
-        element_diameter=bearing.element_diameter,
-        pitch_diameter=bearing.pitch_diameter,
-        inner_conformity=bearing.inner_conformity,
-        outer_conformity=bearing.outer_conformity,
-        nominal_contact_angle=nominal_contact_angle,
-        dynamic_load_rating=rating,
-        inner_loads=sol.inner_load,
-        outer_loads=sol.outer_load,
-        rotating_ring=op.rotating_ring,
-        relative_speed=relative,
+    life, notes = ball_loads_life(
+        bearing,
+        op,
+        sol.inner_load,
+        sol.outer_load,
+        nominal_contact_angle,
+        modification,
     )
-    free = math.degrees(bearing.free_contact_angle)
-    why = (
-        f" (the play's free contact angle {free:.4g} deg is not a rating angle: for an "
-        "angular-contact bearing give [bearing] nominal_contact_angle)"
-        if nominal_contact_angle == 0.0 and free > 0.0
-        else ""
-    )
-    notes = [
-        f"life: ISO/TS 16281 basic reference rating life L10r, rated at the nominal contact "
-        f"angle {angle:.6g} deg{why}; the lives count revolutions of one ring relative to the "
-        "other; not included: contact ellipses truncated by the groove shoulders (not checked: "
-        "runout has no shoulder heights)"
-    ]
-    life, modified_notes = _modified(life, bearing, op, modification or LifeModification())
-    notes += modified_notes
     if op.inner_speed != 0.0 or op.outer_speed != 0.0:
         f_c = float(sol.centrifugal_force.max())
         notes.append(

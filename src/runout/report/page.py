@@ -644,6 +644,32 @@ def _spindle_section(result: dict[str, Any]) -> list[str]:
         "axial p-p",
     ]
     parts = ["<h2>Spindle: the shaft on its bearings</h2>", table(head, rows, (1, 3, 4, 5, 6, 7))]
+    lives = []
+    for b in result["bearings"]:
+        life = b.get("life")
+        if isinstance(life, dict):
+            l10r, lnmr = num(life.get("l10r_mrev")), num(life.get("lnmr_mrev"))
+            lives.append(
+                [
+                    esc(b.get("name", "")),
+                    esc("n/a" if l10r is None else f"{l10r:.4g}"),
+                    esc("n/a" if lnmr is None else f"{lnmr:.4g}"),
+                    esc(fmt_number(num(life.get("dynamic_load_rating_n")), 5)),
+                ]
+            )
+    if lives:
+        parts.append(
+            table(
+                [
+                    "bearing",
+                    "reference rating life L10r [million rev] (ISO/TS 16281)",
+                    "modified life L_nmr [million rev]",
+                    "C [N]",
+                ],
+                lives,
+                (1, 2, 3),
+            )
+        )
     tilt = result.get("tilt_pp_rad") or {}
     parts.append(
         f"<p><b>tilt p-p</b>: θx {esc(fmt_number(num(tilt.get('x')), 4))} rad, "

@@ -118,6 +118,14 @@ def _none(data: Data) -> None:
     return None
 
 
+def _life_modification(data: Data) -> None:
+    # the modified life multiplies each rated bearing's L10r
+    for b in data["bearings"]:
+        b["fatigue_load_limit"] = 200.0
+    data["lubrication"] = {"viscosity_ratio": 1.5, "contamination_factor": 0.5}
+    data["analysis"]["reliability"] = 99.0
+
+
 def _class_limit(data: Data) -> None:
     # a P4 limit at a bore of 8 mm (K_ia 2.5 um); the change moves the bore to 40 mm (4 um)
     data["analysis"]["limit"] = "P4"
@@ -136,8 +144,8 @@ CHANGES: dict[str, tuple[Callable[[Data], None], Callable[[Data], None]]] = {
     ),
     "bearing.dynamic_load_rating": (_none, _bearings("dynamic_load_rating", 5000.0)),
     "bearing.fatigue_load_limit, lubrication, analysis.reliability": (
-        _none,
-        _bearings("fatigue_load_limit", 200.0),
+        _bearings("dynamic_load_rating", 5000.0),
+        _life_modification,
     ),
     "material.youngs_modulus, poisson_ratio": (_none, _set("material.youngs_modulus", 2e11)),
     "material.density": (_none, _set("material.density", 7000.0)),
