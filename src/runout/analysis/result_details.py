@@ -773,6 +773,9 @@ class SpindleBearingResult:
         The shaft's runout at its plane (relative to the housing) [m].
     mean_displacement_m : tuple of float
         Mean (x, y, z) of the shaft at its plane [m].
+    life : RatingLife or None
+        Its ISO/TS 16281 reference rating life from its ball loads at the static position
+        (JSON ``life``, only with its ``dynamic_load_rating``).
     """
 
     name: str
@@ -784,6 +787,7 @@ class SpindleBearingResult:
     pressure_centre_m: float
     runout: Runout
     mean_displacement_m: tuple[float, float, float]
+    life: RatingLife | None = None
 
     def to_json(self) -> dict[str, Any]:
         """JSON row of ``bearings``.
@@ -803,7 +807,7 @@ class SpindleBearingResult:
             "pressure_centre_m": self.pressure_centre_m,
             "runout": self.runout.to_json(),
             "mean_displacement_m": list(self.mean_displacement_m),
-        }
+        } | ({} if self.life is None else {"life": self.life.to_json()})
 
     @classmethod
     def from_json(cls, doc: dict[str, Any]) -> SpindleBearingResult:
@@ -831,6 +835,8 @@ class SpindleBearingResult:
             pressure_centre_m=float(doc["pressure_centre_m"]),
             runout=Runout(**{k: float(v) for k, v in doc["runout"].items()}),
             mean_displacement_m=(x, y, z),
+            # rows written before the spindle's life, or without a rating: none
+            life=None if doc.get("life") is None else RatingLife.from_json(doc["life"]),
         )
 
 

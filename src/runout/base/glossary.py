@@ -127,6 +127,13 @@ TERMS: tuple[Term, ...] = (
         "basic dynamic load rating of the bearing (catalogue, ISO 281): the load it carries for "
         "10⁶ revolutions at 90 % survival; sets the contact ratings of the reference life",
     ),
+    Term(
+        ("fatigue_load_limit", "fatigue_load_limit_n"),
+        "C_u",
+        "N",
+        "fatigue load limit of the bearing (catalogue, ISO 281): the load below which the "
+        "raceways do not fatigue; enters a_ISO",
+    ),
     # ------------------------------------------------------------------ [material]
     Term(
         ("material",),
@@ -341,6 +348,27 @@ TERMS: tuple[Term, ...] = (
         "P_ref",
         "N",
         "dynamic equivalent reference load C L10r^(−1/3): the ISO 281 load of the same life",
+    ),
+    Term(
+        ("lnmr_mrev", "lnmr_hours"),
+        "L_nmr",
+        "10⁶ rev",
+        "modified reference rating life a_1 a_ISO L10r (ISO 281's factors on the ISO/TS 16281 "
+        "life), also in hours at the run's speed",
+    ),
+    Term(
+        ("a_iso",),
+        "a_ISO",
+        "–",
+        "life modification factor of ISO 281 (lubrication, contamination, fatigue load limit) "
+        "at P_ref, 0.1 to 50",
+    ),
+    Term(
+        ("a1", "reliability_percent"),
+        "a_1",
+        "–",
+        "ISO 281's life modification factor for reliability (1 at 90 %) and the reliability "
+        "it is for [%]",
     ),
     Term(
         ("kzz_n_per_m",),

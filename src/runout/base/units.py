@@ -78,6 +78,11 @@ KINDS: dict[str, tuple[str, str, str]] = {
     "mass_length": ("[mass] * [length]", "kg*m", "an unbalance (mass x length)"),
     "frequency": ("1 / [time]", "Hz", "a frequency"),
     "velocity": ("[length] / [time]", "m/s", 'a velocity (e.g. "50 um/s")'),
+    "kinematic_viscosity": (
+        "[length] ** 2 / [time]",
+        "m^2/s",
+        'a kinematic viscosity (e.g. "20 mm^2/s" or "20 cSt")',
+    ),
     "angle": ("", "rad", "an angle"),
     "speed": ("1 / [time]", "Hz", "a rotational speed"),
     "dimensionless": ("", "", "a plain number"),

@@ -29,7 +29,7 @@ from runout.case.standards import (
     class_limit,
     is_class_name,
 )
-from runout.geometry.life import MAX_DYNAMIC_LOAD_RATING
+from runout.geometry.life import MAX_DYNAMIC_LOAD_RATING, RELIABILITY_FACTORS
 
 TWO_PI = 2.0 * math.pi
 #: Largest groove conformity f = r / D: a groove radius of a whole ball diameter is no longer
@@ -72,6 +72,7 @@ Speed = Annotated[float, _quantity("speed")]
 Unbalance = Annotated[float, _quantity("mass_length")]
 Plain = Annotated[float, _quantity("dimensionless")]
 MomentQ = Annotated[float, _quantity("moment")]
+KinematicViscosity = Annotated[float, _quantity("kinematic_viscosity")]
 MemoryQ = Annotated[float, _quantity("memory")]
 
 
@@ -153,7 +154,18 @@ class BearingSpec(_Table):
         None,
         description=(
             "Basic dynamic load rating C [N] (catalogue, ISO 281): with it the equilibrium "
-            "model reports the ISO/TS 16281 reference rating life L10r (JSON life)."
+            "model reports the ISO/TS 16281 reference rating life L10r (JSON life), the spindle "
+            "model each such bearing's (JSON bearings[].life)."
+        ),
+    )
+
+    fatigue_load_limit: Force | None = Field(
+        None,
+        description=(
+            "Fatigue load limit C_u [N] (catalogue, ISO 281): with [lubrication] "
+            "contamination_factor and viscosity_ratio (or operating_viscosity), the "
+            "equilibrium model reports the modified reference rating life L_nmr = a_1 a_ISO "
+            "L10r (JSON life.lnmr_mrev)."
         ),
     )
 
@@ -169,7 +181,7 @@ class BearingSpec(_Table):
             )
         return value
 
-    @field_validator("dynamic_load_rating")
+    @field_validator("dynamic_load_rating", "fatigue_load_limit")
     @classmethod
     def _rating(cls, value: float | None) -> float | None:
         if value is not None and not 0.0 < value <= MAX_DYNAMIC_LOAD_RATING:
@@ -367,6 +379,87 @@ class OperationSpec(_Table):
                 f"must be 0 (at rest) or at least {MIN_SPEED_HZ:g} Hz, got {value!r} Hz"
             )
         return value
+
+
+#: Largest viscosity ratio κ read [-]: ISO 281 takes anything above 4 as 4; beyond 1000 the
+#: number is a typing slip, not a lubricant.
+MAX_VISCOSITY_RATIO_READ = 1000.0
+#: Largest kinematic viscosity read [m²/s] (10^6 mm²/s: bitumen, not a bearing lubricant).
+MAX_KINEMATIC_VISCOSITY = 1.0
+
+
+class LubricationSpec(_Table):
+    """``[lubrication]``: the inputs of ISO 281's life modification factor a_ISO."""
+
+    viscosity_ratio: Plain | None = Field(
+        None,
+        description=(
+            "Viscosity ratio κ = ν/ν_1 [-] at the operating temperature (ISO 281), > 0; above "
+            "4 it is taken as 4, below 0.1 there is no a_ISO (a note says so). Or give "
+            "operating_viscosity."
+        ),
+    )
+    operating_viscosity: KinematicViscosity | None = Field(
+        None,
+        description=(
+            "Kinematic viscosity ν of the lubricant at the operating temperature [m²/s] (e.g. "
+            '"20 mm^2/s" or "20 cSt"): κ = ν/ν_1, ν_1 = rated_viscosity or ISO 281\'s from '
+            "the speed and pitch diameter. Not with viscosity_ratio."
+        ),
+    )
+    rated_viscosity: KinematicViscosity | None = Field(
+        None,
+        description=(
+            "Rated (reference) viscosity ν_1 [m²/s], only with operating_viscosity; default "
+            "ISO 281's ν_1 at the relative ring speed and pitch diameter."
+        ),
+    )
+    contamination_factor: Plain | None = Field(
+        None,
+        description=(
+            "Contamination factor e_C [-], 0 (severe) to 1 (extreme cleanliness), ISO 281's tables."
+        ),
+    )
+
+    @field_validator("viscosity_ratio")
+    @classmethod
+    def _ratio(cls, value: float | None) -> float | None:
+        if value is not None and not 0.0 < value <= MAX_VISCOSITY_RATIO_READ:
+            raise ValueError(
+                f"must be > 0 and at most {MAX_VISCOSITY_RATIO_READ:g}, got {_Short(value)!r}"
+            )
+        return value
+
+    @field_validator("operating_viscosity", "rated_viscosity")
+    @classmethod
+    def _viscosity(cls, value: float | None) -> float | None:
+        if value is not None and not 0.0 < value <= MAX_KINEMATIC_VISCOSITY:
+            raise ValueError(
+                f"must be > 0 and at most {MAX_KINEMATIC_VISCOSITY:g} m^2/s, got "
+                f"{_Short(value)!r} m^2/s"
+            )
+        return value
+
+    @field_validator("contamination_factor")
+    @classmethod
+    def _contamination(cls, value: float | None) -> float | None:
+        if value is not None and not 0.0 <= value <= 1.0:
+            raise ValueError(f"must lie in [0, 1], got {_Short(value)!r}")
+        return value
+
+    @model_validator(mode="after")
+    def _one_viscosity(self) -> LubricationSpec:
+        if self.viscosity_ratio is not None and self.operating_viscosity is not None:
+            raise _KeyedError(
+                "operating_viscosity",
+                "give viscosity_ratio or operating_viscosity, not both",
+            )
+        if self.rated_viscosity is not None and self.operating_viscosity is None:
+            raise _KeyedError(
+                "rated_viscosity",
+                "only with operating_viscosity (κ = operating_viscosity / rated_viscosity)",
+            )
+        return self
 
 
 Part = Literal["inner", "outer", "ball", "roller"]
@@ -681,6 +774,23 @@ class AnalysisSpec(_Table):
             "reaction_moment_n_m); refused with a moment_load."
         ),
     )
+    reliability: Plain = Field(
+        90.0,
+        description=(
+            "Reliability of the modified reference rating life [%]: "
+            + ", ".join(f"{p:g}" for p in RELIABILITY_FACTORS)
+            + " (ISO 281's a_1 table; 90: a_1 = 1)."
+        ),
+    )
+    moment_arm: Literal["curvature_centres", "pitch_radius"] = Field(
+        "curvature_centres",
+        description=(
+            "model = \"equilibrium\" only: arm of the balls' axial forces in the inner ring's "
+            'moment equations: "curvature_centres" (default; the radius of the inner groove '
+            'curvature centres, Harris) or "pitch_radius" (d_m/2, as ISO/TS 16281 writes its '
+            "moment equilibrium; a given moment_load then loads the balls slightly more)."
+        ),
+    )
     bands: Literal["anderon", "iso15242"] | None = Field(
         None,
         description=(
@@ -717,6 +827,16 @@ class AnalysisSpec(_Table):
             "catalogue bore (with a note)."
         ),
     )
+
+    @field_validator("reliability")
+    @classmethod
+    def _reliability_row(cls, value: float) -> float:
+        if value not in RELIABILITY_FACTORS:
+            rows = ", ".join(f"{p:g}" for p in RELIABILITY_FACTORS)
+            raise ValueError(
+                f"must be one of {rows} (%; ISO 281's a_1 table), got {_Short(value)!r}"
+            )
+        return value
 
     @model_validator(mode="before")
     @classmethod
@@ -1340,6 +1460,7 @@ class CaseSpec(_Table):
     slant: SlantSpec | None = None
     elements: ElementsSpec | dict[str, ElementsSpec] | None = None
     analysis: AnalysisSpec = Field(default_factory=AnalysisSpec)
+    lubrication: LubricationSpec | None = None
     dynamics: DynamicsSpec | None = None
     study: StudySpec | None = None
 

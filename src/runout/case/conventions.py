@@ -352,16 +352,36 @@ KEYS: tuple[KeyConvention, ...] = (
     KeyConvention(
         "bearing.dynamic_load_rating",
         "Basic dynamic load rating C of the bearing (catalogue, ISO 281): with it the "
-        "equilibrium model reports the ISO/TS 16281 reference rating life L10r (JSON life).",
+        "equilibrium model reports the ISO/TS 16281 reference rating life L10r (JSON life), "
+        "the spindle model each bearing's (JSON bearings[].life).",
         "N",
-        (N, N, N, H, N, N, N),
+        (N, N, N, H, N, N, H),
         {
-            m: "the ISO/TS 16281 reference rating life is computed from the equilibrium "
-            "model's ball loads only"
+            m: "the ISO/TS 16281 reference rating life is computed from the equilibrium and "
+            "spindle models' ball loads only"
             for m in MODELS
-            if m != "equilibrium"
+            if m not in ("equilibrium", "spindle")
         },
         _table_key("bearing", "dynamic_load_rating"),
+    ),
+    KeyConvention(
+        "bearing.fatigue_load_limit, lubrication, analysis.reliability",
+        "Inputs of the modified reference rating life L_nmr = a_1 a_ISO L10r (ISO 281): fatigue "
+        "load limit C_u, viscosity ratio (or operating viscosity), contamination factor, "
+        "reliability.",
+        "N, -, m^2/s, %",
+        (N, N, N, H, N, N, H),
+        {
+            m: "the modified life multiplies the ISO/TS 16281 reference rating life, which is "
+            "computed from the equilibrium and spindle models' ball loads only"
+            for m in MODELS
+            if m not in ("equilibrium", "spindle")
+        },
+        lambda spec: (
+            _table_key("bearing", "fatigue_load_limit")(spec)
+            + _table("lubrication")(spec)
+            + _table_key("analysis", "reliability")(spec)
+        ),
     ),
     KeyConvention(
         "material.youngs_modulus, poisson_ratio",
@@ -570,6 +590,15 @@ KEYS: tuple[KeyConvention, ...] = (
         "-",
         "it is an equilibrium-model option",
         _table_key("analysis", "race_control"),
+    ),
+    _option_of(
+        "equilibrium",
+        "analysis.moment_arm",
+        "Arm of the balls' axial forces in the moment equations: radius of the inner groove "
+        "curvature centres (Harris) or the pitch radius (ISO/TS 16281).",
+        "-",
+        "it is an equilibrium-model option",
+        _table_key("analysis", "moment_arm"),
     ),
     KeyConvention(
         "analysis.ring_tilt",

@@ -213,6 +213,9 @@ class Analysis:
     ring_tilt : {"free", "held"}
         The inner ring's tilts free (the balls' moment balances the moment load) or held at
         0 (equilibrium model).
+    moment_arm : {"curvature_centres", "pitch_radius"}
+        Arm of the balls' axial forces in the moment equations (equilibrium model): Harris's
+        ℜ_i or ISO/TS 16281's d_m/2.
     bands : {"anderon", "iso15242"} or None
         Band values formed from the lines, if any.
     limit : float or None
@@ -231,6 +234,7 @@ class Analysis:
     linear_variant: str = "radial_spring"
     race_control: str = "outer"
     ring_tilt: str = "free"
+    moment_arm: str = "curvature_centres"
     bands: str | None = None
     limit: float | None = None
     limit_on: str = "radial_pp"
@@ -612,6 +616,7 @@ def parse_case(
         race_control=spec.analysis.race_control,
         # unset: the model's own (free; the case re-serialised for a study keeps it unset)
         ring_tilt=spec.analysis.ring_tilt or "free",
+        moment_arm=spec.analysis.moment_arm,
         bands=spec.analysis.bands,
         limit=limit_m,
         limit_on=spec.analysis.limit_on,

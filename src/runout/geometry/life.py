@@ -51,13 +51,37 @@ Notes
 * The TS's ball loads come from a static load distribution. A caller at speed passes each
   ring its own contact loads (the outer ones carry the balls' centrifugal force): that is an
   extension of the TS, which the caller states.
-* Not covered: the life modification factor a_ISO (lubrication, contamination, fatigue load
-  limit), contacts truncated by the groove shoulders, and thrust bearings (nominal α > 45°,
-  whose TS formulas differ).
+* Not covered: contacts truncated by the groove shoulders, and thrust bearings (nominal
+  α > 45°, whose TS formulas differ).
+
+Modified reference rating life (ISO/TS 16281:2008 with ISO 281:2007's factors):
+:math:`L_{nmr} = a_1\,a_{ISO}\,L_{10r}` (:func:`modified_reference_life`). a_1 is ISO 281's
+reliability factor (:data:`RELIABILITY_FACTORS`, 90 to 99.95 %); a_ISO is ISO 281's life
+modification factor of a radial ball bearing (:func:`life_modification_factor`) from the
+viscosity ratio κ, the contamination factor e_C, the fatigue load limit C_u and, for the TS,
+the dynamic equivalent reference load P_ref (the load that gives L10r through ISO 281's
+:math:`L_{10} = (C/P)^3`):
+
+.. math::
+    a_{ISO} = 0.1\Big[1 - \big(2.5671 - c_1\,\kappa^{-c_2}\big)^{0.83}
+              \Big(\frac{e_C C_u}{P_{ref}}\Big)^{1/3}\Big]^{-9.3},\quad
+    (c_1, c_2) = \begin{cases}
+        (2.2649, 0.054381) & 0.1 \le \kappa < 0.4\\
+        (1.9987, 0.19087) & 0.4 \le \kappa < 1\\
+        (1.9987, 0.071739) & 1 \le \kappa \le 4,
+    \end{cases}
+
+capped at 50; ISO 281 takes κ > 4 as 4 and gives no a_ISO below κ = 0.1. The constants are
+those two open implementations of ISO 281:2007 use (one of them misprints 0.19087 as
+0.019087). The rated viscosity, when κ is formed from the operating viscosity ν, is ISO 281's
+:math:`\nu_1 = 45000\,n^{-0.83} D_{pw}^{-0.5}` for n < 1000 r/min and
+:math:`4500\,n^{-0.5} D_{pw}^{-0.5}` above [mm²/s, n in r/min, D_pw in mm]
+(:func:`rated_viscosity`).
 """
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass
@@ -69,15 +93,23 @@ from numpy.typing import ArrayLike
 from runout.base.errors import GeometryError
 
 __all__ = [
+    "A_ISO_CAP",
     "LIFE_EXPONENT",
     "MAX_DYNAMIC_LOAD_RATING",
     "MAX_RADIAL_CONTACT_ANGLE",
+    "MAX_VISCOSITY_RATIO",
     "METHOD",
+    "MIN_VISCOSITY_RATIO",
+    "RELIABILITY_FACTORS",
     "WEIBULL_EXPONENT",
     "RatingLife",
     "contact_load_ratings",
     "equivalent_element_loads",
+    "life_modification_factor",
+    "modified_reference_life",
+    "rated_viscosity",
     "reference_rating_life",
+    "reliability_factor",
 ]
 
 #: Life exponent of a ball (point) contact, L = (Q_c / Q_e)^3 [-].
@@ -90,6 +122,32 @@ MAX_DYNAMIC_LOAD_RATING = 1e9
 #: Largest nominal contact angle of a radial ball bearing (ISO 281) [rad]; beyond it the TS
 #: rates a thrust ball bearing with other formulas.
 MAX_RADIAL_CONTACT_ANGLE = math.radians(45.0)
+#: Largest life modification factor a_ISO (ISO 281:2007) [-].
+A_ISO_CAP = 50.0
+#: Smallest viscosity ratio κ for which ISO 281:2007 gives a_ISO [-].
+MIN_VISCOSITY_RATIO = 0.1
+#: Viscosity ratio beyond which ISO 281:2007 takes κ = 4 [-].
+MAX_VISCOSITY_RATIO = 4.0
+#: ISO 281:2007's life modification factor for reliability a_1 by reliability [%] (its
+#: table; 90 % is the basic rating life's).
+RELIABILITY_FACTORS: dict[float, float] = {
+    90.0: 1.0,
+    95.0: 0.64,
+    96.0: 0.55,
+    97.0: 0.47,
+    98.0: 0.37,
+    99.0: 0.25,
+    99.2: 0.22,
+    99.4: 0.19,
+    99.6: 0.16,
+    99.8: 0.12,
+    99.9: 0.093,
+    99.92: 0.087,
+    99.94: 0.08,
+    99.95: 0.077,
+}
+# a_ISO constants of a radial ball bearing (module docstring): upper κ of the range, c_1, c_2
+_A_ISO_RANGES = ((0.4, 2.2649, 0.054381), (1.0, 1.9987, 0.19087), (math.inf, 1.9987, 0.071739))
 #: The method, as the JSON ``life.method`` names it.
 METHOD = "ISO/TS 16281:2008 basic reference rating life (radial ball bearing, eq. 19-29)"
 
@@ -258,6 +316,20 @@ class RatingLife:
         L10r in hours at the run's relative ring speed [h]; None at rest.
     method : str
         The standard and equations (:data:`METHOD`).
+    reliability_percent, a1 : float or None
+        Reliability of the modified life [%] and ISO 281's factor a_1 for it [-].
+    viscosity_ratio : float or None
+        The viscosity ratio κ a_ISO was evaluated at (κ > 4 taken as 4) [-].
+    contamination_factor : float or None
+        e_C [-].
+    fatigue_load_limit_n : float or None
+        C_u [N].
+    a_iso : float or None
+        ISO 281's life modification factor a_ISO [-] (at P_ref).
+    lnmr_mrev, lnmr_hours : float or None
+        Modified reference rating life L_nmr = a_1 a_ISO L10r [10^6 rev] and in hours [h].
+        All of these are None when the modified life is not asked for or cannot be formed
+        (the notes say why).
     """
 
     l10r_mrev: float | None
@@ -273,6 +345,14 @@ class RatingLife:
     rotating_ring: str
     l10r_hours: float | None = None
     method: str = METHOD
+    reliability_percent: float | None = None
+    a1: float | None = None
+    viscosity_ratio: float | None = None
+    contamination_factor: float | None = None
+    fatigue_load_limit_n: float | None = None
+    a_iso: float | None = None
+    lnmr_mrev: float | None = None
+    lnmr_hours: float | None = None
 
     def to_json(self) -> dict[str, Any]:
         """JSON ``life``.
@@ -296,6 +376,14 @@ class RatingLife:
             "rotating_ring": self.rotating_ring,
             "l10r_hours": self.l10r_hours,
             "method": self.method,
+            "reliability_percent": self.reliability_percent,
+            "a1": self.a1,
+            "viscosity_ratio": self.viscosity_ratio,
+            "contamination_factor": self.contamination_factor,
+            "fatigue_load_limit_n": self.fatigue_load_limit_n,
+            "a_iso": self.a_iso,
+            "lnmr_mrev": self.lnmr_mrev,
+            "lnmr_hours": self.lnmr_hours,
         }
 
     @classmethod
@@ -330,6 +418,15 @@ class RatingLife:
             rotating_ring=str(doc["rotating_ring"]),
             l10r_hours=number("l10r_hours"),
             method=str(doc.get("method", METHOD)),
+            # results written before the modified life existed: none
+            reliability_percent=number("reliability_percent"),
+            a1=number("a1"),
+            viscosity_ratio=number("viscosity_ratio"),
+            contamination_factor=number("contamination_factor"),
+            fatigue_load_limit_n=number("fatigue_load_limit_n"),
+            a_iso=number("a_iso"),
+            lnmr_mrev=number("lnmr_mrev"),
+            lnmr_hours=number("lnmr_hours"),
         )
 
 
@@ -423,4 +520,232 @@ def reference_rating_life(
         nominal_contact_angle_deg=math.degrees(nominal_contact_angle),
         rotating_ring=rotating_ring,
         l10r_hours=hours,
+    )
+
+
+def reliability_factor(reliability_percent: float) -> float:
+    """ISO 281:2007's life modification factor for reliability a_1.
+
+    Parameters
+    ----------
+    reliability_percent : float
+        Reliability [%]: one of the table's values, 90 to 99.95.
+
+    Returns
+    -------
+    float
+        a_1 [-] (1 at 90 %).
+
+    Raises
+    ------
+    GeometryError
+        A reliability that is not in the table (ISO 281 gives no values between its rows).
+
+    Notes
+    -----
+    ISO 281:2007, the table of a_1 (:data:`RELIABILITY_FACTORS`).
+    """
+    for percent, factor in RELIABILITY_FACTORS.items():
+        if reliability_percent == percent:
+            return factor
+    rows = ", ".join(f"{p:g}" for p in RELIABILITY_FACTORS)
+    raise GeometryError(
+        "analysis.reliability",
+        f"{reliability_percent!r} %: ISO 281 gives a_1 for {rows} % only",
+    )
+
+
+def life_modification_factor(
+    viscosity_ratio: float,
+    contamination_factor: float,
+    fatigue_load_limit: float,
+    load: float,
+) -> float:
+    r"""ISO 281:2007 life modification factor a_ISO of a radial ball bearing.
+
+    Parameters
+    ----------
+    viscosity_ratio : float
+        κ = ν/ν_1 [-], >= 0.1; above 4 it is taken as 4.
+    contamination_factor : float
+        e_C [-], 0 to 1.
+    fatigue_load_limit : float
+        C_u [N], >= 0.
+    load : float
+        Dynamic equivalent load P [N] (P_ref for ISO/TS 16281), > 0.
+
+    Returns
+    -------
+    float
+        a_ISO [-], from 0.1 (e_C C_u / P = 0) up to :data:`A_ISO_CAP` (50); increasing in κ
+        (up to 4), e_C and C_u, decreasing in P.
+
+    Raises
+    ------
+    GeometryError
+        κ below 0.1 (outside ISO 281's a_ISO), e_C outside [0, 1], a negative C_u or a load
+        that is not positive; any input not finite.
+
+    Notes
+    -----
+    ISO 281:2007, a_ISO of radial ball bearings, its three κ ranges (module docstring). The
+    bracket reaches 0 at a finite e_C C_u / P, beyond which a_ISO would be unbounded: the cap
+    holds it at 50 there.
+    """
+    for key, value in (
+        ("viscosity_ratio", viscosity_ratio),
+        ("contamination_factor", contamination_factor),
+        ("fatigue_load_limit", fatigue_load_limit),
+        ("load", load),
+    ):
+        if not math.isfinite(value):
+            raise GeometryError(key, f"must be finite, got {value!r}")
+    if viscosity_ratio < MIN_VISCOSITY_RATIO:
+        raise GeometryError(
+            "lubrication.viscosity_ratio",
+            f"{viscosity_ratio:.6g}: ISO 281 gives no a_ISO below κ = {MIN_VISCOSITY_RATIO:g}",
+        )
+    if not 0.0 <= contamination_factor <= 1.0:
+        raise GeometryError(
+            "lubrication.contamination_factor", f"must lie in [0, 1], got {contamination_factor!r}"
+        )
+    if fatigue_load_limit < 0.0:
+        raise GeometryError(
+            "bearing.fatigue_load_limit", f"must be >= 0, got {fatigue_load_limit!r}"
+        )
+    if not load > 0.0:
+        raise GeometryError("load", f"must be > 0, got {load!r}")
+    kappa = min(viscosity_ratio, MAX_VISCOSITY_RATIO)
+    c1, c2 = next((c1, c2) for top, c1, c2 in _A_ISO_RANGES if kappa < top)
+    ratio = contamination_factor * fatigue_load_limit / load
+    bracket = 1.0 - (2.5671 - c1 * kappa**-c2) ** 0.83 * ratio ** (1.0 / 3.0)
+    # 0.1 bracket^-9.3 >= 50 where bracket <= (500)^(-1/9.3); below it (or <= 0) the cap
+    if bracket <= (A_ISO_CAP / 0.1) ** (-1.0 / 9.3):
+        return A_ISO_CAP
+    return 0.1 * bracket**-9.3
+
+
+def rated_viscosity(relative_speed: float, pitch_diameter: float) -> float:
+    r"""ISO 281:2007's rated (reference) kinematic viscosity ν_1 of the lubricant.
+
+    Parameters
+    ----------
+    relative_speed : float
+        Speed of one ring relative to the other [Hz] (its size is used), > 0.
+    pitch_diameter : float
+        D_pw [m], > 0.
+
+    Returns
+    -------
+    float
+        ν_1 [m²/s].
+
+    Raises
+    ------
+    GeometryError
+        At rest (ν_1 is defined for a turning bearing).
+
+    Notes
+    -----
+    ISO 281:2007: :math:`\nu_1 = 45000\,n^{-0.83} D_{pw}^{-0.5}` for n < 1000 r/min,
+    :math:`4500\,n^{-0.5} D_{pw}^{-0.5}` from 1000 r/min [mm²/s; n in r/min, D_pw in mm].
+    """
+    rpm = 60.0 * abs(relative_speed)
+    if not (math.isfinite(rpm) and rpm > 0.0):
+        raise GeometryError(
+            "lubrication.operating_viscosity",
+            "the rated viscosity ν_1 needs a turning bearing (operation.speed > 0); give "
+            "lubrication.viscosity_ratio instead",
+        )
+    d_mm = pitch_diameter * 1e3
+    nu1_mm2_s = (
+        45000.0 * rpm**-0.83 * d_mm**-0.5 if rpm < 1000.0 else 4500.0 * rpm**-0.5 * d_mm**-0.5
+    )
+    return nu1_mm2_s * 1e-6
+
+
+def modified_reference_life(
+    life: RatingLife,
+    *,
+    reliability_percent: float = 90.0,
+    viscosity_ratio: float | None = None,
+    contamination_factor: float | None = None,
+    fatigue_load_limit: float | None = None,
+) -> tuple[RatingLife, list[str]]:
+    """The life with ISO 281's a_1 and a_ISO applied: L_nmr = a_1 a_ISO L10r.
+
+    Parameters
+    ----------
+    life : RatingLife
+        The reference rating life (:func:`reference_rating_life`).
+    reliability_percent : float
+        Reliability [%] (a row of :data:`RELIABILITY_FACTORS`).
+    viscosity_ratio, contamination_factor, fatigue_load_limit : float or None
+        κ [-], e_C [-], C_u [N]; all three are needed for a_ISO.
+
+    Returns
+    -------
+    life : RatingLife
+        ``life`` with the modified-life fields filled (a_ISO and L_nmr None when an input is
+        missing, κ < 0.1 or L10r is beyond the floating-point range).
+    notes : list of str
+        What was assumed or why there is no L_nmr.
+
+    Notes
+    -----
+    ISO/TS 16281:2008 with ISO 281:2007: a_ISO is evaluated at the dynamic equivalent
+    reference load P_ref = C L10r^(-1/3).
+    """
+    a1 = reliability_factor(reliability_percent)
+    out = dataclasses.replace(life, reliability_percent=reliability_percent, a1=a1)
+    given = {
+        "lubrication.viscosity_ratio (or operating_viscosity)": viscosity_ratio,
+        "lubrication.contamination_factor": contamination_factor,
+        "bearing.fatigue_load_limit": fatigue_load_limit,
+    }
+    missing = [key for key, value in given.items() if value is None]
+    if missing:
+        if len(missing) == len(given):
+            return out, []
+        return out, ["life: no modified life L_nmr: a_ISO needs " + ", ".join(missing) + " as well"]
+    assert viscosity_ratio is not None
+    assert contamination_factor is not None
+    assert fatigue_load_limit is not None
+    out = dataclasses.replace(
+        out, contamination_factor=contamination_factor, fatigue_load_limit_n=fatigue_load_limit
+    )
+    if viscosity_ratio < MIN_VISCOSITY_RATIO:
+        return dataclasses.replace(out, viscosity_ratio=viscosity_ratio), [
+            f"life: no modified life L_nmr: the viscosity ratio κ = {viscosity_ratio:.4g} is "
+            f"below {MIN_VISCOSITY_RATIO:g}, where ISO 281 gives no a_ISO (the lubricant film "
+            "does not separate the surfaces)"
+        ]
+    p_ref = life.equivalent_reference_load_n
+    if p_ref is None or life.l10r_mrev is None:
+        return dataclasses.replace(out, viscosity_ratio=viscosity_ratio), [
+            "life: no modified life L_nmr: L10r is beyond the floating-point range"
+        ]
+    notes = []
+    kappa = viscosity_ratio
+    if kappa > MAX_VISCOSITY_RATIO:
+        notes.append(
+            f"life: viscosity ratio κ = {kappa:.4g} taken as {MAX_VISCOSITY_RATIO:g} in a_ISO, "
+            "as ISO 281 prescribes"
+        )
+        kappa = MAX_VISCOSITY_RATIO
+    a_iso = life_modification_factor(kappa, contamination_factor, fatigue_load_limit, p_ref)
+    if a_iso == A_ISO_CAP:
+        notes.append(f"life: a_ISO reached ISO 281's cap {A_ISO_CAP:g}")
+    lnmr = a1 * a_iso * life.l10r_mrev
+    hours = None if life.l10r_hours is None else a1 * a_iso * life.l10r_hours
+    notes.append(
+        f"life: modified reference rating life L_nmr = a_1 a_ISO L10r (ISO 281:2007 factors, "
+        f"a_ISO of a radial ball bearing at P_ref = {p_ref:.6g} N): a_1 = {a1:g} "
+        f"({reliability_percent:g} % reliability), a_ISO = {a_iso:.4g}"
+    )
+    return (
+        dataclasses.replace(
+            out, viscosity_ratio=kappa, a_iso=a_iso, lnmr_mrev=lnmr, lnmr_hours=hours
+        ),
+        notes,
     )

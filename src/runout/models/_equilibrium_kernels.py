@@ -65,8 +65,8 @@ _CONT_PASSES = 1024 * 12
 
 # indices of the constant vector
 C_D, C_DM, C_RI0, C_RO0, C_FI, C_MASS, C_INERTIA, C_INNER, C_OUTER, C_INNER_CONTROL = range(10)
-C_A1, C_A2, C_RAD_I, C_SCALE = range(10, 14)
-N_CONST = 14
+C_A1, C_A2, C_RAD_I, C_SCALE, C_ARM = range(10, 15)
+N_CONST = 15
 
 # rows of the ball table (8, Z): the Hertz constants K = k0 + k1 (α − α_c) of the inner and
 # outer contacts, and the azimuth. One array rather than eight: each array argument of a
@@ -112,6 +112,7 @@ def constants(
     a2_0: float,
     rad_i: float,
     scale: float,
+    moment_arm: float,
 ) -> NDArray[np.float64]:
     """The constant vector of the kernels.
 
@@ -135,6 +136,9 @@ def constants(
         ℜ_i, radius of the locus of inner groove curvature centres [m].
     scale : float
         Length scale of the ball Newton tolerance (A) [m].
+    moment_arm : float
+        Arm of a ball's axial force in the ring's moment [m]: ℜ_i (Harris), or d_m/2 as
+        ISO/TS 16281's moment equilibrium takes it.
 
     Returns
     -------
@@ -156,6 +160,7 @@ def constants(
             a2_0,
             rad_i,
             scale,
+            moment_arm,
         ]
     )
 
@@ -932,6 +937,9 @@ def _ring_jacobian(
     :func:`ring_forces`), at converged ball centres ``x`` and groove centres ``a``."""
     z = balls.shape[1]
     rad_i = cst[C_RAD_I]
+    # the tilt moves the groove centres by ℜ_i θ (rad_i); the axial forces' moment has its
+    # own arm (ℜ_i, or d_m/2 as ISO/TS 16281 writes the moment equilibrium)
+    arm = cst[C_ARM]
     lam_fi = lam_i * cst[C_FI]
     for r in range(5):
         for c in range(5):
@@ -1002,7 +1010,7 @@ def _ring_jacobian(
             continue
         cp = balls[B_COS, j]
         sp = balls[B_SIN, j]
-        pm = st_pa * rad_i + lam_fi * st_mg
+        pm = st_pa * arm + lam_fi * st_mg
         parts[0, j] = st_pa
         parts[1, j] = st_pr * cp
         parts[2, j] = st_pr * sp
@@ -1021,8 +1029,8 @@ def _ring_jacobian(
         l11 = pa11 - (px10 * s01 + px11 * s11)
         l20 = pa20 - (px20 * s00 + px21 * s10)
         l21 = pa21 - (px20 * s01 + px21 * s11)
-        l20 = l00 * rad_i + lam_fi * l20
-        l21 = l01 * rad_i + lam_fi * l21
+        l20 = l00 * arm + lam_fi * l20
+        l21 = l01 * arm + lam_fi * l21
         for col in range(5):
             # column col of B_j: ∂A_1/∂q_col, ∂A_2/∂q_col (scalars: no array compiled)
             if col == 0:

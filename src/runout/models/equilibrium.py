@@ -107,9 +107,14 @@ Notes
   they are evaluated at |α|. The Newton start is the tilt about the moment vector that carries
   M with the ring centred in the axial play (:func:`_moment_start`); nothing is added to the
   loads.
-* Tilt radius and moment arm are Harris's ℜ_i. Codes that use the pitch radius d_m/2 for both
-  (e.g. the ISO/TS 16281 reference suite compared in the tests) obtain tilts larger by about
-  (ℜ_i/(d_m/2))^(5/4) under a pure moment on a zero-clearance bearing.
+* Tilt radius and moment arm are Harris's ℜ_i by default: a ball's contact force acts along
+  the line through the groove curvature centres, and the inner one lies at ℜ_i. ISO/TS
+  16281:2008 moves the groove centres by ℜ_i θ in its rolling-element displacement (eq. 12 of
+  the open implementation github.com/minzhun/ISO16281, its ``R_i``) but writes the moment
+  equilibrium with the pitch radius, :math:`M = \tfrac12 D_{pw}\sum_j Q_j\sin\alpha_j
+  \cos\psi_j` (its eq. 18); ``[analysis] moment_arm = "pitch_radius"`` takes that arm. A
+  given moment then loads the balls by about ℜ_i/(d_m/2) more (1.06 % on the reference
+  suite's bearing, 2.4 % in its pure-moment life).
 
 References
 ----------
@@ -141,16 +146,29 @@ from runout.base.errors import ConvergenceError, GeometryError, NumericalError
 from runout.geometry.bearing import BallBearing, Operation
 from runout.geometry.contact import ball_race_curvature, combined_stiffness, hertz_point_stiffness
 from runout.geometry.kinematics import bearing_frequencies
-from runout.geometry.life import MAX_RADIAL_CONTACT_ANGLE, RatingLife, reference_rating_life
+from runout.geometry.life import (
+    MAX_RADIAL_CONTACT_ANGLE,
+    RatingLife,
+    modified_reference_life,
+    rated_viscosity,
+    reference_rating_life,
+)
 
 if TYPE_CHECKING:
     from runout.case.model import Case
 
+#: ``[analysis] moment_arm``: the arm of the balls' axial forces in the moment equations,
+#: Harris's ℜ_i (default) or ISO/TS 16281's pitch radius d_m/2.
+MOMENT_ARMS = ("curvature_centres", "pitch_radius")
+
 __all__ = [
     "DOF_NAMES",
+    "MOMENT_ARMS",
     "RING_TILTS",
     "EquilibriumResult",
     "EquilibriumSolution",
+    "LifeModification",
+    "ball_loads_life",
     "ball_speeds",
     "radial_stiffness",
     "rating_life",
@@ -371,7 +389,12 @@ class _Ring:
     """
 
     def __init__(
-        self, bearing: BallBearing, op: Operation, control: str, speed_on: bool = True
+        self,
+        bearing: BallBearing,
+        op: Operation,
+        control: str,
+        speed_on: bool = True,
+        moment_arm: str = "curvature_centres",
     ) -> None:
         self.bearing = bearing
         d = bearing.element_diameter
@@ -380,6 +403,8 @@ class _Ring:
         self.ri0 = (bearing.inner_conformity - 0.5) * d
         self.ro0 = (bearing.outer_conformity - 0.5) * d
         self.rad_i = 0.5 * bearing.pitch_diameter + self.ri0 * math.cos(self.alpha0)
+        # the arm of the balls' axial forces in the moment equations (module docstring)
+        self.arm = self.rad_i if moment_arm == "curvature_centres" else 0.5 * bearing.pitch_diameter
         z = bearing.elements
         self.psi = TWO_PI * np.arange(z) / z
         self.cos_psi, self.sin_psi = np.cos(self.psi), np.sin(self.psi)
@@ -420,6 +445,7 @@ class _Ring:
             self.a * math.cos(self.alpha0),
             self.rad_i,
             self.a,
+            self.arm,
         )
         self._k_cache: dict[float, tuple[float, float]] = {}
         self.x = np.zeros((z, 2))
@@ -813,7 +839,12 @@ def _check_ring_tilt(ring_tilt: str, op: Operation) -> None:
 
 
 def solve_equilibrium(
-    bearing: BallBearing, op: Operation, *, race_control: str = "outer", ring_tilt: str = "free"
+    bearing: BallBearing,
+    op: Operation,
+    *,
+    race_control: str = "outer",
+    ring_tilt: str = "free",
+    moment_arm: str = "curvature_centres",
 ) -> EquilibriumSolution:
     """Jones–Harris equilibrium of ``bearing`` at the loads and speed of ``op``.
 
@@ -828,6 +859,11 @@ def solve_equilibrium(
     ring_tilt : {"free", "held"}
         "free": the five ring equations are solved; "held": θ_x = θ_y = 0 and the three force
         equations are solved, the balls' moment being the restraint's reaction.
+    moment_arm : {"curvature_centres", "pitch_radius"}
+        Arm of the balls' axial forces in the two moment equations: Harris's ℜ_i (the
+        locus of inner groove curvature centres), or the pitch radius d_m/2 as ISO/TS
+        16281's moment equilibrium takes it. The tilt moves the groove centres by ℜ_i θ
+        either way.
 
     Returns
     -------
@@ -850,11 +886,16 @@ def solve_equilibrium(
             "analysis.race_control", f'must be "outer", "inner" or "none", got {race_control!r}'
         )
     _check_ring_tilt(ring_tilt, op)
+    if moment_arm not in MOMENT_ARMS:
+        raise GeometryError(
+            "analysis.moment_arm",
+            f'must be "curvature_centres" or "pitch_radius", got {moment_arm!r}',
+        )
     solved = _SOLVED[ring_tilt]
     load = _external(op)
     q, alpha = _initial_displacement(bearing, op)
     total = 0
-    ring = _Ring(bearing, op, race_control, speed_on=False)
+    ring = _Ring(bearing, op, race_control, speed_on=False, moment_arm=moment_arm)
     stages = ["static"]
     if op.inner_speed != 0.0 or op.outer_speed != 0.0:
         stages.append("at speed")
@@ -986,11 +1027,183 @@ def radial_stiffness(sol: EquilibriumSolution, speed_hz: float) -> RadialStiffne
     )
 
 
+@dataclass(frozen=True)
+class LifeModification:
+    """The inputs of the modified reference rating life L_nmr = a_1 a_ISO L10r (ISO 281:2007).
+
+    Attributes
+    ----------
+    reliability : float
+        Reliability [%] (``[analysis] reliability``; a row of ISO 281's a_1 table).
+    viscosity_ratio : float or None
+        κ [-] (``[lubrication] viscosity_ratio``).
+    operating_viscosity, rated_viscosity : float or None
+        ν and ν_1 [m²/s] (``[lubrication]``); κ = ν/ν_1, ν_1 by default ISO 281's.
+    contamination_factor : float or None
+        e_C [-] (``[lubrication] contamination_factor``).
+    fatigue_load_limit : float or None
+        C_u [N] (``[bearing] fatigue_load_limit``).
+    """
+
+    reliability: float = 90.0
+    viscosity_ratio: float | None = None
+    operating_viscosity: float | None = None
+    rated_viscosity: float | None = None
+    contamination_factor: float | None = None
+    fatigue_load_limit: float | None = None
+
+    @classmethod
+    def of_case(cls, case: Case) -> LifeModification:
+        """The case's ``[analysis] reliability``, ``[lubrication]`` and C_u.
+
+        Parameters
+        ----------
+        case : Case
+            A validated case.
+
+        Returns
+        -------
+        LifeModification
+        """
+        spec = case.spec
+        lube = spec.lubrication
+        return cls(
+            reliability=spec.analysis.reliability,
+            viscosity_ratio=None if lube is None else lube.viscosity_ratio,
+            operating_viscosity=None if lube is None else lube.operating_viscosity,
+            rated_viscosity=None if lube is None else lube.rated_viscosity,
+            contamination_factor=None if lube is None else lube.contamination_factor,
+            fatigue_load_limit=spec.lead_bearing.fatigue_load_limit,
+        )
+
+
+def _modified(
+    life: RatingLife, bearing: BallBearing, op: Operation, mod: LifeModification
+) -> tuple[RatingLife, list[str]]:
+    """``life`` with a_1 and, where its inputs are given, a_ISO and L_nmr; and the notes."""
+    kappa = mod.viscosity_ratio
+    notes: list[str] = []
+    if mod.operating_viscosity is not None:
+        relative = op.inner_speed - op.outer_speed
+        if mod.rated_viscosity is None and relative == 0.0:
+            notes.append(
+                "life: no modified life L_nmr: lubrication.operating_viscosity needs the rated "
+                "viscosity ν_1, which ISO 281 gives for a turning bearing only; give "
+                "lubrication.rated_viscosity or viscosity_ratio"
+            )
+            return modified_reference_life(life, reliability_percent=mod.reliability)[0], notes
+        else:
+            nu1 = (
+                mod.rated_viscosity
+                if mod.rated_viscosity is not None
+                else rated_viscosity(relative, bearing.pitch_diameter)
+            )
+            kappa = mod.operating_viscosity / nu1
+            source = (
+                "lubrication.rated_viscosity"
+                if mod.rated_viscosity is not None
+                else f"ISO 281's at {60.0 * abs(relative):.6g} r/min and d_m "
+                f"{bearing.pitch_diameter * 1e3:.6g} mm"
+            )
+            notes.append(
+                f"life: viscosity ratio κ = ν/ν_1 = {mod.operating_viscosity * 1e6:.6g} / "
+                f"{nu1 * 1e6:.6g} mm²/s = {kappa:.4g} (ν_1 {source})"
+            )
+    modified, more = modified_reference_life(
+        life,
+        reliability_percent=mod.reliability,
+        viscosity_ratio=kappa,
+        contamination_factor=mod.contamination_factor,
+        fatigue_load_limit=mod.fatigue_load_limit,
+    )
+    if modified.a_iso is None and mod.reliability != 90.0 and not more:
+        more = [
+            f"life: analysis.reliability = {mod.reliability:g} % is not applied: the modified "
+            "life L_nmr needs bearing.fatigue_load_limit and [lubrication] "
+            "contamination_factor and viscosity_ratio (or operating_viscosity)"
+        ]
+    return modified, notes + more
+
+
+def ball_loads_life(
+    bearing: BallBearing,
+    op: Operation,
+    inner_loads: NDArray[np.float64],
+    outer_loads: NDArray[np.float64],
+    nominal_contact_angle: float,
+    modification: LifeModification | None = None,
+    *,
+    table: str = "[bearing]",
+) -> tuple[RatingLife, list[str]]:
+    """ISO/TS 16281 reference rating life (and the modified life) from one bearing's ball loads.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        The bearing, with its ``dynamic_load_rating`` C [N] (not None).
+    op : Operation
+        The operating point (rotating ring, ring speeds [Hz]).
+    inner_loads, outer_loads : ndarray, shape (Z,)
+        Each ball's inner and outer contact load [N].
+    nominal_contact_angle : float
+        Nominal contact angle of the rating [rad], 0 to 45°.
+    modification : LifeModification or None
+        Reliability and the a_ISO inputs; None: 90 %, no a_ISO.
+    table : str
+        How the notes name the bearing's table (``[bearing]``, ``bearings[2]``).
+
+    Returns
+    -------
+    life : RatingLife
+        L10r and its parts; a_1, a_ISO and L_nmr where their inputs are given.
+    notes : list of str
+        What the life assumes.
+
+    Notes
+    -----
+    ISO/TS 16281:2008 eq. 19-29 and ISO 281:2007's a_1, a_ISO (:mod:`runout.geometry.life`).
+    """
+    rating = bearing.dynamic_load_rating
+    assert rating is not None
+    angle = math.degrees(nominal_contact_angle)
+    relative = op.inner_speed - op.outer_speed
+    life = reference_rating_life(
+        elements=bearing.elements,
+        element_diameter=bearing.element_diameter,
+        pitch_diameter=bearing.pitch_diameter,
+        inner_conformity=bearing.inner_conformity,
+        outer_conformity=bearing.outer_conformity,
+        nominal_contact_angle=nominal_contact_angle,
+        dynamic_load_rating=rating,
+        inner_loads=inner_loads,
+        outer_loads=outer_loads,
+        rotating_ring=op.rotating_ring,
+        relative_speed=relative,
+    )
+    free = math.degrees(bearing.free_contact_angle)
+    why = (
+        f" (the play's free contact angle {free:.4g} deg is not a rating angle: for an "
+        f"angular-contact bearing give {table} nominal_contact_angle)"
+        if nominal_contact_angle == 0.0 and free > 0.0
+        else ""
+    )
+    notes = [
+        f"life: ISO/TS 16281 basic reference rating life L10r, rated at the nominal contact "
+        f"angle {angle:.6g} deg{why}; the lives count revolutions of one ring relative to the "
+        "other; not included: contact ellipses truncated by the groove shoulders (not checked: "
+        "runout has no shoulder heights)"
+    ]
+    life, modified_notes = _modified(life, bearing, op, modification or LifeModification())
+    notes += modified_notes
+    return life, notes
+
+
 def rating_life(
     bearing: BallBearing,
     op: Operation,
     sol: EquilibriumSolution,
     nominal_contact_angle: float = 0.0,
+    modification: LifeModification | None = None,
 ) -> tuple[RatingLife | None, list[str]]:
     """ISO/TS 16281 reference rating life of the solved bearing, and the notes that go with it.
 
@@ -1006,12 +1219,16 @@ def rating_life(
     nominal_contact_angle : float
         Nominal contact angle of the rating [rad]: 0 for a deep-groove bearing, the case's
         ``nominal_contact_angle`` for an angular-contact one.
+    modification : LifeModification or None
+        Reliability and the a_ISO inputs; None: 90 %, no a_ISO.
 
     Returns
     -------
     life : RatingLife or None
-        L10r [10^6 rev] and its parts (:func:`runout.geometry.life.reference_rating_life`);
-        None without C, or for a nominal angle beyond 45° (a thrust bearing).
+        L10r [10^6 rev] and its parts (:func:`runout.geometry.life.reference_rating_life`),
+        with a_1, a_ISO and L_nmr where their inputs are given
+        (:func:`runout.geometry.life.modified_reference_life`); None without C, or for a
+        nominal angle beyond 45° (a thrust bearing).
     notes : list of str
         What the life assumes, or why there is none.
 
@@ -1032,33 +1249,14 @@ def rating_life(
             "exceeds 45 deg, a thrust ball bearing in ISO 281, whose ISO/TS 16281 formulas "
             "runout does not implement"
         ]
-    relative = op.inner_speed - op.outer_speed
-    life = reference_rating_life(
-        elements=bearing.elements,
-        element_diameter=bearing.element_diameter,
-        pitch_diameter=bearing.pitch_diameter,
-        inner_conformity=bearing.inner_conformity,
-        outer_conformity=bearing.outer_conformity,
-        nominal_contact_angle=nominal_contact_angle,
-        dynamic_load_rating=rating,
-        inner_loads=sol.inner_load,
-        outer_loads=sol.outer_load,
-        rotating_ring=op.rotating_ring,
-        relative_speed=relative,
+    life, notes = ball_loads_life(
+        bearing,
+        op,
+        sol.inner_load,
+        sol.outer_load,
+        nominal_contact_angle,
+        modification,
     )
-    free = math.degrees(bearing.free_contact_angle)
-    why = (
-        f" (the play's free contact angle {free:.4g} deg is not a rating angle: for an "
-        "angular-contact bearing give [bearing] nominal_contact_angle)"
-        if nominal_contact_angle == 0.0 and free > 0.0
-        else ""
-    )
-    notes = [
-        f"life: ISO/TS 16281 basic reference rating life L10r, rated at the nominal contact "
-        f"angle {angle:.6g} deg{why}; the lives count revolutions of one ring relative to the "
-        "other; not included: the modification factor a_ISO, contact ellipses truncated by the "
-        "groove shoulders (not checked: runout has no shoulder heights)"
-    ]
     if op.inner_speed != 0.0 or op.outer_speed != 0.0:
         f_c = float(sol.centrifugal_force.max())
         notes.append(
@@ -1110,7 +1308,10 @@ def run(case: Case) -> RunResult:
         raise GeometryError("bearing.type", "the equilibrium model needs a ball bearing")
     control = case.analysis.race_control
     ring_tilt = case.analysis.ring_tilt
-    sol = solve_equilibrium(bearing, op, race_control=control, ring_tilt=ring_tilt)
+    moment_arm = case.analysis.moment_arm
+    sol = solve_equilibrium(
+        bearing, op, race_control=control, ring_tilt=ring_tilt, moment_arm=moment_arm
+    )
     loaded = sol.loaded
     # |α|: under a moment some balls press on the other flank (negative angles)
     mean_alpha = float(
@@ -1144,6 +1345,14 @@ def run(case: Case) -> RunResult:
             f"= ({reaction[0]:.6g}, {reaction[1]:.6g}) N m about x, y; stiffness_matrix is the "
             "5×5 at this solution, tilt rows and columns included"
         )
+    if moment_arm == "pitch_radius":
+        notes.append(
+            'analysis.moment_arm = "pitch_radius": the balls\' axial forces act on the inner '
+            f"ring's moment at the pitch radius d_m/2 = {0.5e3 * bearing.pitch_diameter:.6g} mm, "
+            "as ISO/TS 16281's moment equilibrium takes it, not at the radius of the inner "
+            "groove curvature centres (Harris, the default); the tilt still moves those "
+            "centres, so a given moment loads the balls more"
+        )
     if not loaded.all():
         notes.append(
             f"{int((~loaded).sum())} of {loaded.size} balls carry no inner-race load "
@@ -1151,7 +1360,9 @@ def run(case: Case) -> RunResult:
         )
     # the rating's nominal angle: the case's catalogue angle, else 0 (deep groove, ISO 281)
     nominal = case.spec.lead_bearing.nominal_contact_angle
-    life, life_notes = rating_life(bearing, op, sol, 0.0 if nominal is None else nominal)
+    life, life_notes = rating_life(
+        bearing, op, sol, 0.0 if nominal is None else nominal, LifeModification.of_case(case)
+    )
     notes += life_notes
     details = EquilibriumDetails(
         race_control=control,

@@ -92,6 +92,7 @@ from runout.geometry.bearing import BallBearing
 from runout.geometry.contact import ball_race_contacts
 from runout.geometry.imperfections import BearingImperfections
 from runout.geometry.kinematics import ball_spin_frequency, bearing_frequencies, cage_frequency
+from runout.geometry.life import MAX_RADIAL_CONTACT_ANGLE, RatingLife
 from runout.geometry.loading import operating_contact_angle
 from runout.geometry.spindle_layout import SpindleLayout
 from runout.models._quasi_static import (
@@ -991,6 +992,68 @@ def _with_predictions(
     return out
 
 
+def _bearing_lives(
+    case: Case, st: Setup, q_static: NDArray[np.float64]
+) -> tuple[list[RatingLife | None], list[str]]:
+    """Each bearing's ISO/TS 16281 life from its ball loads at the static position, and notes.
+
+    A bearing without ``dynamic_load_rating`` has none (a note names it when another bearing
+    has one). Seed 000's contacts have one load per ball, the same on both raceways (no
+    centrifugal force), along the bearing's fixed contact angle; the rating's nominal angle is
+    the bearing's ``nominal_contact_angle`` when the case gives it, else 0 (as the equilibrium
+    model rates it).
+    """
+    from runout.models.equilibrium import LifeModification, ball_loads_life
+
+    layout = case.spindle
+    assert layout is not None
+    loads = ball_loads(st, q_static)
+    base = LifeModification.of_case(case)
+    lives: list[RatingLife | None] = []
+    notes: list[str] = []
+    missing: list[str] = []
+    start = 0
+    for i, (b, entry) in enumerate(zip(st.bearings, layout.bearings, strict=True), start=1):
+        z = b.kinematics.n_elements
+        q_b = loads[start : start + z]
+        start += z
+        bearing = entry.bearing
+        spec = case.spec.bearings[i - 1]
+        if not isinstance(bearing, BallBearing) or bearing.dynamic_load_rating is None:
+            lives.append(None)
+            missing.append(f"bearings[{i}] ({b.name})")
+            continue
+        nominal = spec.nominal_contact_angle
+        if nominal is not None and nominal > MAX_RADIAL_CONTACT_ANGLE:
+            lives.append(None)
+            notes.append(
+                f"bearings[{i}].dynamic_load_rating: no life for {b.name}: the nominal contact "
+                f"angle {math.degrees(nominal):.6g} deg exceeds 45 deg (a thrust ball bearing)"
+            )
+            continue
+        mod = dataclasses.replace(base, fatigue_load_limit=spec.fatigue_load_limit)
+        life, own = ball_loads_life(
+            bearing,
+            case.operation,
+            q_b,
+            q_b,
+            0.0 if nominal is None else nominal,
+            mod,
+            table=f"bearings[{i}]",
+        )
+        lives.append(life)
+        notes += [f"{b.name}: {n}" for n in own]
+    if len(missing) < len(st.bearings):
+        notes.append(
+            "life: each bearing's from its ball loads at the static position without "
+            "imperfections (seed 000's contacts: one load per ball on both raceways, no "
+            "centrifugal force, the contact angle fixed at its preloaded value)"
+        )
+        if missing:
+            notes.append("no life for " + ", ".join(missing) + ": give its dynamic_load_rating (C)")
+    return lives, notes
+
+
 def run(case: Case) -> RunResult:
     """Run the spindle model on a spindle case (``[spindle]`` + ``[[bearings]]``).
 
@@ -1057,8 +1120,9 @@ def run(case: Case) -> RunResult:
 
     disp = nose_record(st, q)
     fit, split = decompose(disp)
+    lives, life_notes = _bearing_lives(case, st, q_static)
     rows = []
-    for b in st.bearings:
+    for b, life in zip(st.bearings, lives, strict=True):
         record = plane_record(q, b.position)
         _, split_b = decompose(record)
         mean = record.mean(axis=1)
@@ -1073,6 +1137,7 @@ def run(case: Case) -> RunResult:
                 pressure_centre_m=b.pressure_centre,
                 runout=split_b.runout,
                 mean_displacement_m=(float(mean[0]), float(mean[1]), float(mean[2])),
+                life=life,
             )
         )
     preload_note = (
@@ -1095,6 +1160,7 @@ def run(case: Case) -> RunResult:
         f"({lead.name}); every bearing's predicted lines are fitted, their sources name it; "
         "a line's sources share it by their contributions in the linearised spindle "
         "(each bearing's parts alone; second-order sources share what those leave)",
+        *life_notes,
         *fit.notes,
         *split.notes,
     )

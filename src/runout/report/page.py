@@ -398,6 +398,17 @@ def _equilibrium_cards(result: dict[str, Any]) -> list[str]:
                 f"ISO/TS 16281, C = {fmt_number(rating, 5)} N",
             )
         )
+        lnmr = num(life.get("lnmr_mrev"))
+        a_iso = num(life.get("a_iso"))
+        a1 = num(life.get("a1"))
+        if lnmr is not None and a_iso is not None and a1 is not None:
+            cards.append(
+                card(
+                    "modified life L_nmr",
+                    f"{lnmr:.4g} million rev",
+                    f"a_1 = {fmt_number(a1, 4)}, a_ISO = {fmt_number(a_iso, 4)} (ISO 281)",
+                )
+            )
     return cards
 
 
@@ -633,6 +644,32 @@ def _spindle_section(result: dict[str, Any]) -> list[str]:
         "axial p-p",
     ]
     parts = ["<h2>Spindle: the shaft on its bearings</h2>", table(head, rows, (1, 3, 4, 5, 6, 7))]
+    lives = []
+    for b in result["bearings"]:
+        life = b.get("life")
+        if isinstance(life, dict):
+            l10r, lnmr = num(life.get("l10r_mrev")), num(life.get("lnmr_mrev"))
+            lives.append(
+                [
+                    esc(b.get("name", "")),
+                    esc("n/a" if l10r is None else f"{l10r:.4g}"),
+                    esc("n/a" if lnmr is None else f"{lnmr:.4g}"),
+                    esc(fmt_number(num(life.get("dynamic_load_rating_n")), 5)),
+                ]
+            )
+    if lives:
+        parts.append(
+            table(
+                [
+                    "bearing",
+                    "reference rating life L10r [million rev] (ISO/TS 16281)",
+                    "modified life L_nmr [million rev]",
+                    "C [N]",
+                ],
+                lives,
+                (1, 2, 3),
+            )
+        )
     tilt = result.get("tilt_pp_rad") or {}
     parts.append(
         f"<p><b>tilt p-p</b>: θx {esc(fmt_number(num(tilt.get('x')), 4))} rad, "

@@ -510,6 +510,25 @@ def _spindle_rows(details: SpindleDetails) -> Rows:
                 "",
             )
         )
+        if b.life is not None:
+            life = b.life
+            hours = "" if life.l10r_hours is None else f" ({life.l10r_hours:.6g} h)"
+            rows.append(
+                (
+                    f"{b.name}: reference rating life L10r (ISO/TS 16281)",
+                    f"{_life_figure(life.l10r_mrev)}{hours}",
+                    "10⁶ rev",
+                )
+            )
+            if life.lnmr_mrev is not None and life.a_iso is not None:
+                rows.append(
+                    (
+                        f"{b.name}: modified life L_nmr (a_1 {life.a1:.4g}, a_ISO "
+                        f"{life.a_iso:.4g})",
+                        _life_figure(life.lnmr_mrev),
+                        "10⁶ rev",
+                    )
+                )
     k = details.stiffness_matrix.matrix
     tool = details.tool_point_stiffness_n_per_m
     rows.append(
@@ -796,11 +815,14 @@ def _equilibrium_sections(result: RunResult, details: EquilibriumDetails) -> lis
     return sections
 
 
+def _life_figure(value: float | None) -> str:
+    """A life to 6 figures; ``n/a`` beyond the floating-point range or none."""
+    return "n/a" if value is None else f"{value:.6g}"
+
+
 def _life_rows(life: RatingLife) -> Rows:
     """L10r, the rings' lives and the loads they come from (``n/a``: beyond range or none)."""
-
-    def figure(value: float | None) -> str:
-        return "n/a" if value is None else f"{value:.6g}"
+    figure = _life_figure
 
     rows: Rows = [
         ("L10r", figure(life.l10r_mrev), "10⁶ rev"),
@@ -827,6 +849,23 @@ def _life_rows(life: RatingLife) -> Rows:
         ("equivalent reference load P_ref", figure(life.equivalent_reference_load_n), "N"),
         ("nominal contact angle of the rating", f"{life.nominal_contact_angle_deg:.6g}", "deg"),
     ]
+    if life.a_iso is not None and life.lnmr_mrev is not None:
+        rows += [
+            ("modified life L_nmr = a_1 a_ISO L10r", figure(life.lnmr_mrev), "10⁶ rev"),
+            (
+                "a_1 / a_ISO",
+                f"{life.a1:.4g} ({life.reliability_percent:g} %) / {life.a_iso:.4g}",
+                "-",
+            ),
+            (
+                "κ / e_C / C_u",
+                f"{life.viscosity_ratio:.4g} / {life.contamination_factor:.4g} / "
+                f"{life.fatigue_load_limit_n:.6g}",
+                "- / - / N",
+            ),
+        ]
+        if life.lnmr_hours is not None:
+            rows.append(("L_nmr at this speed", f"{life.lnmr_hours:.6g}", "h"))
     return rows
 
 

@@ -13,11 +13,11 @@ about x, parallel to the radial force, so the moment tilts the ring out of the r
 plane (our ``moment_load_direction = 0``, as ``radial_load_direction``); MASTA's
 displacements of that case (19.7144 µm, 146.3084 µm, 2.7239 mrad) are matched that way to
 0.01 % (the suite's own three-degree-of-freedom solution tilts it in the load's plane). And
-the suite takes the pitch radius d_m/2 as the arm of the balls' axial forces where the
-equilibrium model takes Harris's ℜ_i (1.06 % larger here): the same moment loads the balls
-less in ours. That matters where the moment carries the load (case 6, a pure moment): the
-row with the suite's arm gives the model our moment M ℜ_i/(d_m/2), which loads the balls as
-the suite's M does.
+the suite, as ISO/TS 16281's moment equilibrium (its eq. 18), takes the pitch radius d_m/2 as
+the arm of the balls' axial forces where the equilibrium model by default takes Harris's ℜ_i
+(1.06 % larger here): the same moment loads the balls less in ours. That matters where the
+moment carries the load (case 6, a pure moment): the row with the standard's arm runs the
+case with ``[analysis] moment_arm = "pitch_radius"``.
 """
 
 from __future__ import annotations
@@ -35,7 +35,6 @@ __all__ = [
     "case_toml",
     "checks",
     "life",
-    "suite_arm_ratio",
 ]
 
 #: Test_BallBearing.py, examples 1-7: MASTA's L10r [10^6 rev].
@@ -63,24 +62,6 @@ SUITE_CASES = {
 SUITE_BEARING = (7, 11.5e-3, 43.5e-3, 0.52, 0.53, 210e9, 0.3, 23400.0)
 
 
-def suite_arm_ratio(radial_clearance: float) -> float:
-    """ℜ_i / (d_m/2) of the suite's bearing: our moment arm over the suite's [-].
-
-    Parameters
-    ----------
-    radial_clearance : float
-        Radial play P_d [m] (it sets the free contact angle in ℜ_i).
-
-    Returns
-    -------
-    float
-        (d_m/2 + (f_i - 0.5) D cos α⁰) / (d_m/2).
-    """
-    _, d, dm, f_i, f_o, _, _, _ = SUITE_BEARING
-    cos0 = 1.0 - radial_clearance / (2.0 * (f_i + f_o - 1.0) * d)
-    return (0.5 * dm + (f_i - 0.5) * d * cos0) / (0.5 * dm)
-
-
 def case_document(name: str, *, suite_arm: bool = False) -> dict[str, Any]:
     """The case-file tables (SI numbers) of the suite's case ``name``.
 
@@ -89,8 +70,8 @@ def case_document(name: str, *, suite_arm: bool = False) -> dict[str, Any]:
     name : str
         A key of :data:`SUITE_CASES`.
     suite_arm : bool
-        True: the moment is M ℜ_i/(d_m/2), which loads the balls as the suite's M does with
-        its arm d_m/2 (module docstring).
+        True: ``[analysis] moment_arm = "pitch_radius"``, the arm d_m/2 of ISO/TS 16281's
+        moment equilibrium and of the suite (module docstring).
 
     Returns
     -------
@@ -99,8 +80,6 @@ def case_document(name: str, *, suite_arm: bool = False) -> dict[str, Any]:
     """
     z, d, dm, f_i, f_o, e, nu, c = SUITE_BEARING
     clearance, axial, radial, moment = SUITE_CASES[name]
-    if suite_arm:
-        moment *= suite_arm_ratio(clearance)
     operation: dict[str, Any] = {"rotating_ring": "inner", "speed": 0.0}
     if axial:
         operation["axial_load"] = axial
@@ -124,7 +103,8 @@ def case_document(name: str, *, suite_arm: bool = False) -> dict[str, Any]:
         },
         "material": {"youngs_modulus": e, "poisson_ratio": nu},
         "operation": operation,
-        "analysis": {"model": "equilibrium"},
+        "analysis": {"model": "equilibrium"}
+        | ({"moment_arm": "pitch_radius"} if suite_arm else {}),
     }
 
 
@@ -173,8 +153,9 @@ def life(name: str, suite_arm: bool = False) -> float:
 
 
 _ARM = (
-    "the suite's arm d_m/2 of the balls' axial forces, where ours is Harris's ℜ_i (1.06 % "
-    "larger): a pure moment loads our balls less; the next row gives the model M ℜ_i/(d_m/2)"
+    "ISO/TS 16281 and the suite take d_m/2 as the arm of the balls' axial forces, our default "
+    "Harris's ℜ_i (1.06 % larger): a pure moment loads our balls less; the next row runs "
+    'moment_arm = "pitch_radius"'
 )
 
 
@@ -218,7 +199,7 @@ def checks() -> list[Check]:
             out.append(
                 Check(
                     "″",
-                    "same, the moment on the suite's arm d_m/2 (ours M ℜ_i/(d_m/2))",
+                    'same, moment_arm = "pitch_radius" (ISO/TS 16281\'s arm d_m/2)',
                     published,
                     bind(life, name, True),
                     "rel",

@@ -94,6 +94,24 @@ def _radial_load_for_equilibrium(data: Data, model: str) -> None:
         data["operation"]["radial_load"] = 2.0
 
 
+def _rated_for_equilibrium(data: Data, model: str) -> None:
+    # the modified life multiplies L10r: no rating, no life to modify
+    if model == "equilibrium":
+        data["bearing"]["dynamic_load_rating"] = 5000.0
+
+
+def _life_modification(data: Data) -> None:
+    data["bearing"]["fatigue_load_limit"] = 200.0
+    data["lubrication"] = {"viscosity_ratio": 1.5, "contamination_factor": 0.5}
+    data["analysis"]["reliability"] = 99.0
+
+
+def _moment_load_for_equilibrium(data: Data, model: str) -> None:
+    # without a moment load the balls' moments sum to 0 whatever their arm
+    if model == "equilibrium":
+        data["operation"]["moment_load"] = 0.05
+
+
 def _held_axially(data: Data, model: str) -> None:
     # the dynamic column's cell: its rotor held axially (with the default spring preload it
     # moves axially and honours the key, condition honoured_when)
@@ -123,6 +141,10 @@ CHANGES: dict[str, tuple[Callable[[Data, str], None], Callable[[Data], None]]] =
         _set("bearing.inner_conformity", 0.515),
     ),
     "bearing.dynamic_load_rating": (_no_patch, _set("bearing.dynamic_load_rating", 5000.0)),
+    "bearing.fatigue_load_limit, lubrication, analysis.reliability": (
+        _rated_for_equilibrium,
+        _life_modification,
+    ),
     "material.youngs_modulus, poisson_ratio": (_no_patch, _set("material.youngs_modulus", 2e11)),
     "material.density": (_no_patch, _set("material.density", 7000.0)),
     "operation.rotating_ring": (_no_patch, _set("operation.rotating_ring", "outer")),
@@ -157,6 +179,10 @@ CHANGES: dict[str, tuple[Callable[[Data, str], None], Callable[[Data], None]]] =
     "analysis.revolutions, samples": (_no_patch, _set("analysis.revolutions", 3)),
     "analysis.linear_variant": (_no_patch, _set("analysis.linear_variant", "force_balance")),
     "analysis.race_control": (_no_patch, _set("analysis.race_control", "inner")),
+    "analysis.moment_arm": (
+        _moment_load_for_equilibrium,
+        _set("analysis.moment_arm", "pitch_radius"),
+    ),
     "analysis.ring_tilt": (_radial_load_for_equilibrium, _set("analysis.ring_tilt", "held")),
     "dynamics": (
         _no_patch,

@@ -118,6 +118,14 @@ def _none(data: Data) -> None:
     return None
 
 
+def _life_modification(data: Data) -> None:
+    # the modified life multiplies each rated bearing's L10r
+    for b in data["bearings"]:
+        b["fatigue_load_limit"] = 200.0
+    data["lubrication"] = {"viscosity_ratio": 1.5, "contamination_factor": 0.5}
+    data["analysis"]["reliability"] = 99.0
+
+
 def _class_limit(data: Data) -> None:
     # a P4 limit at a bore of 8 mm (K_ia 2.5 um); the change moves the bore to 40 mm (4 um)
     data["analysis"]["limit"] = "P4"
@@ -135,6 +143,10 @@ CHANGES: dict[str, tuple[Callable[[Data], None], Callable[[Data], None]]] = {
         _bearings("inner_conformity", 0.515),
     ),
     "bearing.dynamic_load_rating": (_none, _bearings("dynamic_load_rating", 5000.0)),
+    "bearing.fatigue_load_limit, lubrication, analysis.reliability": (
+        _bearings("dynamic_load_rating", 5000.0),
+        _life_modification,
+    ),
     "material.youngs_modulus, poisson_ratio": (_none, _set("material.youngs_modulus", 2e11)),
     "material.density": (_none, _set("material.density", 7000.0)),
     "operation.rotating_ring": (_none, _set("operation.rotating_ring", "outer")),
@@ -163,6 +175,7 @@ CHANGES: dict[str, tuple[Callable[[Data], None], Callable[[Data], None]]] = {
     "analysis.revolutions, samples": (_none, _set("analysis.revolutions", 3)),
     "analysis.linear_variant": (_none, _set("analysis.linear_variant", "force_balance")),
     "analysis.race_control": (_none, _set("analysis.race_control", "inner")),
+    "analysis.moment_arm": (_none, _set("analysis.moment_arm", "pitch_radius")),
     "analysis.ring_tilt": (_none, _set("analysis.ring_tilt", "held")),
     "dynamics": (_none, lambda d: d.__setitem__("dynamics", {"mass": 0.03, "damping": 20.0})),
     "analysis.bands": (_none, _set("analysis.bands", "iso15242")),
