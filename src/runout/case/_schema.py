@@ -29,6 +29,7 @@ from runout.case.standards import (
     class_limit,
     is_class_name,
 )
+from runout.geometry.bearing_damping import MAX_DAMPING_COEFFICIENT_S
 from runout.geometry.life import MAX_DYNAMIC_LOAD_RATING
 
 TWO_PI = 2.0 * math.pi
@@ -681,6 +682,25 @@ class AnalysisSpec(_Table):
             "reaction_moment_n_m); refused with a moment_load."
         ),
     )
+    bearing_damping: Literal["none", "kraemer", "proportional"] = Field(
+        "none",
+        description=(
+            'model = "equilibrium" only: damping of the bearing coefficients, c = β k for every '
+            'coefficient (JSON bearing_damping, stiffness.csv columns cxx_n_s_per_m ...): "none" '
+            '(default: stiffness only, no damping written), "kraemer" (β = 0.79e-5 s, the '
+            "geometric mean of Krämer's (0.25 ... 2.5) × 10^-5 s for rolling bearings, Dynamics "
+            'of Rotors and Foundations, 1993: an estimate, not a measurement) or "proportional" '
+            "(the user's β, bearing_damping_coefficient)."
+        ),
+    )
+    bearing_damping_coefficient: Time | None = Field(
+        None,
+        description=(
+            'β of bearing_damping = "proportional" [s] (e.g. "2e-5 s"): c = β k, from 0 to '
+            "1e-3 s (40 times Krämer's upper end; above it a bearing would be critically damped "
+            "at a few hundred Hz)."
+        ),
+    )
     bands: Literal["anderon", "iso15242"] | None = Field(
         None,
         description=(
@@ -738,6 +758,29 @@ class AnalysisSpec(_Table):
         if isinstance(self.limit, str) and is_class_name(self.limit):
             return self.limit
         return None
+
+    @field_validator("bearing_damping_coefficient")
+    @classmethod
+    def _bounded_damping_coefficient(cls, value: float | None) -> float | None:
+        if value is not None and not 0.0 <= value <= MAX_DAMPING_COEFFICIENT_S:
+            raise ValueError(f"must be from 0 to {MAX_DAMPING_COEFFICIENT_S:g} s, got {value!r} s")
+        return value
+
+    @model_validator(mode="after")
+    def _check_damping(self) -> AnalysisSpec:
+        given = self.bearing_damping_coefficient is not None
+        if self.bearing_damping == "proportional" and not given:
+            raise _KeyedError(
+                "bearing_damping",
+                '"proportional" needs analysis.bearing_damping_coefficient (β [s], e.g. "2e-5 s")',
+            )
+        if given and self.bearing_damping != "proportional":
+            raise _KeyedError(
+                "bearing_damping_coefficient",
+                'only applies to bearing_damping = "proportional" (got '
+                f'bearing_damping = "{self.bearing_damping}")',
+            )
+        return self
 
     @model_validator(mode="after")
     def _check_limit(self) -> AnalysisSpec:

@@ -145,6 +145,15 @@ def _table_key(table: str, name: str) -> Any:
     return present
 
 
+def _either(*presents: Any) -> Any:
+    """``present`` for several keys: every one that is set."""
+
+    def present(spec: CaseSpec) -> list[str]:
+        return [key for found in presents for key in found(spec)]
+
+    return present
+
+
 #: Why a run does not apply ``[elements] grade`` (its note).
 _GRADE_IN_A_RUN = (
     "one bearing has one set of balls, and the grade gives only their scatter: a run draws no "
@@ -570,6 +579,18 @@ KEYS: tuple[KeyConvention, ...] = (
         "-",
         "it is an equilibrium-model option",
         _table_key("analysis", "race_control"),
+    ),
+    _option_of(
+        "equilibrium",
+        "analysis.bearing_damping, bearing_damping_coefficient",
+        "Damping of the bearing coefficients, c = β k for every coefficient: Krämer's estimate "
+        "(β = 0.79e-5 s; Dynamics of Rotors and Foundations, 1993) or the user's β.",
+        "s",
+        "it gives no bearing coefficients (the equilibrium model's stiffness is what is damped)",
+        _either(
+            _table_key("analysis", "bearing_damping"),
+            _table_key("analysis", "bearing_damping_coefficient"),
+        ),
     ),
     KeyConvention(
         "analysis.ring_tilt",

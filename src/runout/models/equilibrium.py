@@ -131,6 +131,7 @@ from numpy.typing import NDArray
 
 from runout.analysis.lines import Runout
 from runout.analysis.result_details import (
+    BearingDamping,
     EquilibriumDetails,
     RadialStiffness,
     RingDisplacement,
@@ -139,6 +140,11 @@ from runout.analysis.result_details import (
 from runout.analysis.results import RunResult
 from runout.base.errors import ConvergenceError, GeometryError, NumericalError
 from runout.geometry.bearing import BallBearing, Operation
+from runout.geometry.bearing_damping import (
+    KRAEMER_RANGE_S,
+    damping_coefficient,
+    proportional_damping,
+)
 from runout.geometry.contact import ball_race_curvature, combined_stiffness, hertz_point_stiffness
 from runout.geometry.kinematics import bearing_frequencies
 from runout.geometry.life import MAX_RADIAL_CONTACT_ANGLE, RatingLife, reference_rating_life
@@ -152,6 +158,7 @@ __all__ = [
     "EquilibriumResult",
     "EquilibriumSolution",
     "ball_speeds",
+    "bearing_damping",
     "radial_stiffness",
     "rating_life",
     "run",
@@ -986,6 +993,72 @@ def radial_stiffness(sol: EquilibriumSolution, speed_hz: float) -> RadialStiffne
     )
 
 
+def bearing_damping(
+    stiffness: RadialStiffness, axial_stiffness: float, model: str, coefficient_s: float | None
+) -> tuple[BearingDamping | None, list[str]]:
+    r"""Damping of the bearing coefficients, c = β k, and the note that names its model.
+
+    Parameters
+    ----------
+    stiffness : RadialStiffness
+        The reported radial block (:func:`radial_stiffness`) [N/m].
+    axial_stiffness : float
+        K_aa, the axial diagonal of the 5×5 stiffness [N/m].
+    model : {"none", "kraemer", "proportional"}
+        ``[analysis] bearing_damping``.
+    coefficient_s : float or None
+        ``[analysis] bearing_damping_coefficient``, β of ``"proportional"`` [s].
+
+    Returns
+    -------
+    tuple
+        :class:`~runout.analysis.result_details.BearingDamping` (cxx = β kxx, cxy = β kxy, cyx,
+        cyy and czz = β K_aa [N s/m]) and its note, or (None, []) for ``"none"``.
+
+    Notes
+    -----
+    E. Krämer, *Dynamics of Rotors and Foundations*, Springer, 1993: rolling-element bearing
+    damping c ≈ (0.25 ... 2.5) × 10⁻⁵ s · k (:mod:`runout.geometry.bearing_damping`).
+    """
+    if model == "none":
+        return None, []
+    beta = damping_coefficient(model, coefficient_s)
+    k = np.array(
+        [
+            stiffness.kxx_n_per_m,
+            stiffness.kxy_n_per_m,
+            stiffness.kyx_n_per_m,
+            stiffness.kyy_n_per_m,
+            axial_stiffness,
+        ]
+    )
+    c = proportional_damping(k, beta)
+    low, high = KRAEMER_RANGE_S
+    if model == "kraemer":
+        note = (
+            f'bearing_damping = "kraemer": damping c = β k with β = {beta:.3g} s for every '
+            f"coefficient (bearing_damping: cxx ... czz), the geometric mean of Krämer's range "
+            f"{low:.3g} ... {high:.3g} s for rolling bearings (Dynamics of Rotors and Foundations, "
+            "1993): an estimate, not a measurement (the range spans a factor 10)"
+        )
+    else:
+        note = (
+            f'bearing_damping = "proportional": damping c = β k with the given β = {beta:.6g} s '
+            f"for every coefficient (bearing_damping: cxx ... czz); Krämer's range for rolling "
+            f"bearings is {low:.3g} ... {high:.3g} s"
+        )
+    damping = BearingDamping(
+        model=model,
+        coefficient_s=beta,
+        cxx_n_s_per_m=float(c[0]),
+        cxy_n_s_per_m=float(c[1]),
+        cyx_n_s_per_m=float(c[2]),
+        cyy_n_s_per_m=float(c[3]),
+        czz_n_s_per_m=float(c[4]),
+    )
+    return damping, [note]
+
+
 def rating_life(
     bearing: BallBearing,
     op: Operation,
@@ -1153,6 +1226,14 @@ def run(case: Case) -> RunResult:
     nominal = case.spec.lead_bearing.nominal_contact_angle
     life, life_notes = rating_life(bearing, op, sol, 0.0 if nominal is None else nominal)
     notes += life_notes
+    radial = radial_stiffness(sol, op.speed)
+    damping, damping_notes = bearing_damping(
+        radial,
+        float(sol.stiffness[0, 0]),
+        case.analysis.bearing_damping,
+        case.analysis.bearing_damping_coefficient,
+    )
+    notes += damping_notes
     details = EquilibriumDetails(
         race_control=control,
         ring_tilt=ring_tilt,
@@ -1170,12 +1251,13 @@ def run(case: Case) -> RunResult:
             units="rows F_a, F_x, F_y [N], M_x, M_y [N m]; columns per m or per rad",
             matrix=tuple(tuple(float(v) for v in row) for row in sol.stiffness),
         ),
-        radial_stiffness=radial_stiffness(sol, op.speed),
+        radial_stiffness=radial,
         inner_contact_angle_deg=tuple(math.degrees(v) for v in sol.inner_contact_angle),
         outer_contact_angle_deg=tuple(math.degrees(v) for v in sol.outer_contact_angle),
         balls=tuple(sol.ball_table()),
         newton_iterations=sol.iterations,
         life=life,
+        bearing_damping=damping,
     )
     return EquilibriumResult(
         model=MODEL,

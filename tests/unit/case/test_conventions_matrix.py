@@ -157,6 +157,10 @@ CHANGES: dict[str, tuple[Callable[[Data, str], None], Callable[[Data], None]]] =
     "analysis.revolutions, samples": (_no_patch, _set("analysis.revolutions", 3)),
     "analysis.linear_variant": (_no_patch, _set("analysis.linear_variant", "force_balance")),
     "analysis.race_control": (_no_patch, _set("analysis.race_control", "inner")),
+    "analysis.bearing_damping, bearing_damping_coefficient": (
+        _no_patch,
+        _set("analysis.bearing_damping", "kraemer"),
+    ),
     "analysis.ring_tilt": (_radial_load_for_equilibrium, _set("analysis.ring_tilt", "held")),
     "dynamics": (
         _no_patch,
