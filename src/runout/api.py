@@ -91,7 +91,8 @@ def run(
         Shown in outputs.
     **options
         The ``[analysis]`` keys (revolutions, samples, bands, limit, limit_on,
-        linear_variant, race_control, ring_tilt, max_memory, max_time) and the ``[dynamics]`` keys
+        linear_variant, race_control, ring_tilt, bearing_damping, bearing_damping_coefficient,
+        max_memory, max_time) and the ``[dynamics]`` keys
         (mass, damping, unbalance, time_step, axial_dof, contact_law) by the same names: SI
         numbers or strings with units.
 

@@ -682,8 +682,10 @@ class AnalysisSpec(_Table):
             "reaction_moment_n_m); refused with a moment_load."
         ),
     )
-    bearing_damping: Literal["none", "kraemer", "proportional"] = Field(
-        "none",
+    # None when unset (read as "none"): a study's digest hashes the defaults, and a new
+    # default would change every digest (earlier output directories would not resume)
+    bearing_damping: Literal["none", "kraemer", "proportional"] | None = Field(
+        None,
         description=(
             'model = "equilibrium" only: damping of the bearing coefficients, c = β k for every '
             'coefficient (JSON bearing_damping, stiffness.csv columns cxx_n_s_per_m ...): "none" '
@@ -778,7 +780,7 @@ class AnalysisSpec(_Table):
             raise _KeyedError(
                 "bearing_damping_coefficient",
                 'only applies to bearing_damping = "proportional" (got '
-                f'bearing_damping = "{self.bearing_damping}")',
+                f'bearing_damping = "{self.bearing_damping or "none"}")',
             )
         return self
 

@@ -145,13 +145,11 @@ def _table_key(table: str, name: str) -> Any:
     return present
 
 
-def _either(*presents: Any) -> Any:
-    """``present`` for several keys: every one that is set."""
-
-    def present(spec: CaseSpec) -> list[str]:
-        return [key for found in presents for key in found(spec)]
-
-    return present
+def _damping_keys(spec: CaseSpec) -> list[str]:
+    """``present`` for the bearing damping: set to a model other than "none"."""
+    if spec.analysis.bearing_damping in (None, "none"):
+        return []
+    return ["analysis.bearing_damping"]
 
 
 #: Why a run does not apply ``[elements] grade`` (its note).
@@ -587,10 +585,7 @@ KEYS: tuple[KeyConvention, ...] = (
         "(β = 0.79e-5 s; Dynamics of Rotors and Foundations, 1993) or the user's β.",
         "s",
         "it gives no bearing coefficients (the equilibrium model's stiffness is what is damped)",
-        _either(
-            _table_key("analysis", "bearing_damping"),
-            _table_key("analysis", "bearing_damping_coefficient"),
-        ),
+        _damping_keys,
     ),
     KeyConvention(
         "analysis.ring_tilt",

@@ -623,7 +623,7 @@ def parse_case(
         limit=limit_m,
         limit_on=spec.analysis.limit_on,
         limit_class=limit_class,
-        bearing_damping=spec.analysis.bearing_damping,
+        bearing_damping=spec.analysis.bearing_damping or "none",
         bearing_damping_coefficient=spec.analysis.bearing_damping_coefficient,
     )
     case = Case(
