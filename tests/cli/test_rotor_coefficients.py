@@ -18,6 +18,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 from typer.testing import CliRunner
 
@@ -185,3 +186,19 @@ def test_hostile_damping_keys_are_refused_naming_file_and_key(
     assert "Traceback" not in result.stderr
     assert len(result.stderr.strip().splitlines()) == 1
     assert result.stdout == ""
+
+
+def test_study_dataframe_carries_the_damping(tmp_path: Path) -> None:
+    import tomllib
+
+    from runout.case.model import parse_case
+    from runout.study.run import run_study
+
+    data = tomllib.loads(_sweep('bearing_damping = "kraemer"'))
+    study = run_study(parse_case(data, str(tmp_path / "case.toml"), tmp_path))
+    df = study.to_dataframe()
+    table = dict(study.stiffness_columns())
+    for c_name, k_name in zip(DAMPING, [*STIFFNESS, "kzz_n_per_m"], strict=True):
+        assert list(df[c_name]) == table[c_name]
+        assert df.attrs["units"][c_name] == "N s/m"
+        np.testing.assert_allclose(df[c_name], 0.79e-5 * df[k_name], rtol=ROUND_OFF, atol=0.0)
