@@ -10,7 +10,7 @@ export MPLBACKEND ?= Agg
 $(STAMP): pyproject.toml constraints.txt
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	# the tested versions of every dependency (constraints.txt), so results do not move with a release
-	$(BIN)/python -m pip install --quiet -c constraints.txt -e '.[dev,dask,docs,data]'
+	$(BIN)/python -m pip install --quiet -c constraints.txt -e '.[dev,dask,docs,data,rotor]'
 	# compile every model's kernels into numba's cache now, so that no first command waits
 	$(BIN)/runout warm || echo "warning: warming the kernel cache failed"
 	touch $(STAMP)
@@ -49,7 +49,7 @@ docs: install
 # in its own environment and kernel cache.
 latest:
 	test -x .venv-latest/bin/python || $(PYTHON) -m venv .venv-latest
-	.venv-latest/bin/python -m pip install --quiet --upgrade -e '.[dev,dask,docs,data]'
+	.venv-latest/bin/python -m pip install --quiet --upgrade -e '.[dev,dask,docs,data,rotor]'
 	NUMBA_CACHE_DIR=$(CURDIR)/.venv-latest/numba-cache .venv-latest/bin/runout warm
 	NUMBA_CACHE_DIR=$(CURDIR)/.venv-latest/numba-cache .venv-latest/bin/pytest
 

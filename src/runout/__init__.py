@@ -8,7 +8,8 @@ lines and results) -> ``models`` (the physics) -> ``runner``, ``io``, ``diagnose
 ``examples`` -> ``report`` -> ``study`` -> ``validation`` -> ``cli``.
 
 From Python, :func:`run` runs a model on a bearing built in code, :func:`load_case` reads a
-case file, and :class:`Imperfections` builds the imperfection tables of a case file
+case file, :func:`bearing_coefficients` gives a bearing's stiffness and damping over speed
+for a rotor code, and :class:`Imperfections` builds the imperfection tables of a case file
 (:mod:`runout.api`, docs/python.md); ``runout.catalogue.lookup("6204")`` gives a catalogue
 bearing with the provenance of its values. They are imported on first use, so that ``import runout``
 stays light.
@@ -29,7 +30,7 @@ from runout.base.errors import CaseError, GeometryError, NumericalError, RunoutE
 from runout.geometry.bearing import BallBearing, Material, Operation, RollerBearing  # noqa: E402
 
 if TYPE_CHECKING:
-    from runout.api import Imperfections, run
+    from runout.api import BearingCoefficients, Imperfections, bearing_coefficients, run
     from runout.case.model import Case, load_case
     from runout.diagnose.fit import diagnose
 
@@ -37,8 +38,10 @@ __version__ = "0.1.0"
 
 #: Names imported on first use: name -> module.
 _LAZY = {
+    "BearingCoefficients": "runout.api",
     "Case": "runout.case.model",
     "Imperfections": "runout.api",
+    "bearing_coefficients": "runout.api",
     "diagnose": "runout.diagnose.fit",
     "load_case": "runout.case.model",
     "run": "runout.api",
@@ -132,6 +135,7 @@ def __dir__() -> list[str]:
 
 __all__ = [
     "BallBearing",
+    "BearingCoefficients",
     "Case",
     "CaseError",
     "GeometryError",
@@ -142,6 +146,7 @@ __all__ = [
     "RollerBearing",
     "RunoutError",
     "__version__",
+    "bearing_coefficients",
     "diagnose",
     "load_case",
     "run",

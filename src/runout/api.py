@@ -28,14 +28,37 @@ Examples
 
 from __future__ import annotations
 
+import math
+from dataclasses import dataclass
+from pathlib import Path
 from typing import Any
 
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from runout.analysis.result_details import EquilibriumDetails
 from runout.analysis.results import RunResult
+from runout.base.errors import CaseError
 from runout.case.builder import Imperfections, build_case, split_options
+from runout.case.model import Case, parse_case
 from runout.geometry.bearing import BallBearing, Operation, RollerBearing
 from runout.runner import run_model
 
-__all__ = ["Imperfections", "build_case", "run"]
+__all__ = [
+    "ROSS_MAJOR_VERSIONS",
+    "BearingCoefficients",
+    "Imperfections",
+    "bearing_coefficients",
+    "build_case",
+    "run",
+]
+
+#: ROSS major versions :meth:`BearingCoefficients.to_ross_kwargs` knows the speed axis of.
+ROSS_MAJOR_VERSIONS = (2, 3)
+#: Stiffness names of :class:`BearingCoefficients` [N/m] (stiffness.csv's columns).
+_K_NAMES = ("kxx_n_per_m", "kxy_n_per_m", "kyx_n_per_m", "kyy_n_per_m", "kzz_n_per_m")
+#: Damping names [N s/m], in the order of :data:`_K_NAMES`.
+_C_NAMES = ("cxx_n_s_per_m", "cxy_n_s_per_m", "cyx_n_s_per_m", "cyy_n_s_per_m", "czz_n_s_per_m")
 
 
 def run(
@@ -68,7 +91,8 @@ def run(
         Shown in outputs.
     **options
         The ``[analysis]`` keys (revolutions, samples, bands, limit, limit_on,
-        linear_variant, race_control, ring_tilt, max_memory, max_time) and the ``[dynamics]`` keys
+        linear_variant, race_control, ring_tilt, bearing_damping, bearing_damping_coefficient,
+        max_memory, max_time) and the ``[dynamics]`` keys
         (mass, damping, unbalance, time_step, axial_dof, contact_law) by the same names: SI
         numbers or strings with units.
 
@@ -93,3 +117,162 @@ def run(
     )
     result: RunResult = run_model(case)
     return result
+
+
+@dataclass(frozen=True)
+class BearingCoefficients:
+    """A bearing's linear coefficients over the speed of its rotating ring: a rotor code's input.
+
+    Each entry is the ``runout run --json`` result of the equilibrium model at that speed:
+    ``radial_stiffness`` (the radial block, tilts held), K_aa of ``stiffness_matrix`` and
+    ``bearing_damping`` (c = β k; zero with ``damping_model = "none"``). Rows as in a sweep's
+    ``stiffness.csv``.
+
+    Attributes
+    ----------
+    speed_hz : ndarray
+        Speed of the rotating ring [Hz], one per row.
+    kxx_n_per_m, kxy_n_per_m, kyx_n_per_m, kyy_n_per_m : ndarray
+        Radial block ∂F_x/∂x, ∂F_x/∂y, ∂F_y/∂x, ∂F_y/∂y of the restoring force [N/m].
+    kzz_n_per_m : ndarray
+        Axial stiffness K_aa [N/m].
+    cxx_n_s_per_m, cxy_n_s_per_m, cyx_n_s_per_m, cyy_n_s_per_m, czz_n_s_per_m : ndarray
+        Damping, β times the stiffness of the same name [N s/m]; zero for ``"none"``.
+    damping_model : {"none", "kraemer", "proportional"}
+        ``[analysis] bearing_damping`` of the case.
+    damping_coefficient_s : float
+        β [s] (0 for ``"none"``).
+    """
+
+    speed_hz: NDArray[np.float64]
+    kxx_n_per_m: NDArray[np.float64]
+    kxy_n_per_m: NDArray[np.float64]
+    kyx_n_per_m: NDArray[np.float64]
+    kyy_n_per_m: NDArray[np.float64]
+    kzz_n_per_m: NDArray[np.float64]
+    cxx_n_s_per_m: NDArray[np.float64]
+    cxy_n_s_per_m: NDArray[np.float64]
+    cyx_n_s_per_m: NDArray[np.float64]
+    cyy_n_s_per_m: NDArray[np.float64]
+    czz_n_s_per_m: NDArray[np.float64]
+    damping_model: str
+    damping_coefficient_s: float
+
+    @property
+    def speed_rpm(self) -> NDArray[np.float64]:
+        """Speed of the rotating ring [rev/min]."""
+        return 60.0 * self.speed_hz
+
+    @property
+    def frequency_rad_per_s(self) -> NDArray[np.float64]:
+        """Speed of the rotating ring as an angular frequency [rad/s]: a rotor code's speed."""
+        return 2.0 * math.pi * self.speed_hz
+
+    def to_ross_kwargs(self, ross_version: str) -> dict[str, Any]:
+        """Keyword arguments of ``ross.BearingElement`` with the speed on its rotor-speed axis.
+
+        ROSS 3 renamed the axes of a bearing's coefficient table: ``speed=`` is the rotor speed
+        (what ROSS 2 called ``frequency=``) and ``frequency=`` the whirl frequency. This gives
+        the rotor speed [rad/s] under the name the given version reads it by. ROSS itself is
+        not imported (it is not a dependency of runout).
+
+        Parameters
+        ----------
+        ross_version : str
+            ``ross.__version__`` (major 2 or 3, :data:`ROSS_MAJOR_VERSIONS`).
+
+        Returns
+        -------
+        dict
+            ``kxx``, ``kxy``, ``kyx``, ``kyy``, ``kzz`` [N/m], ``cxx`` ... ``czz`` [N s/m]
+            (zeros with ``damping_model = "none"``: ROSS needs a ``cxx``) as float arrays,
+            and ``speed`` (ROSS 3) or ``frequency`` (ROSS 2): the rotor speed [rad/s]. Add
+            ``n=`` (the node) and pass them: ``ross.BearingElement(n=0, **kwargs)``.
+
+        Raises
+        ------
+        ValueError
+            A version whose major is not 2 or 3.
+        """
+        head = str(ross_version).split(".", 1)[0]
+        major = int(head) if head.isdigit() else None
+        if major not in ROSS_MAJOR_VERSIONS:
+            raise ValueError(
+                f"ROSS {ross_version!r}: runout knows the speed axis of ROSS 2 (frequency=) and "
+                "ROSS 3 (speed=); read the bearing element's documentation for this version"
+            )
+        kwargs: dict[str, Any] = {
+            name.split("_", 1)[0]: np.array(getattr(self, name), dtype=np.float64)
+            for name in _K_NAMES + _C_NAMES
+        }
+        kwargs["speed" if major >= 3 else "frequency"] = self.frequency_rad_per_s
+        return kwargs
+
+
+def bearing_coefficients(case: Case, speeds_hz: ArrayLike) -> BearingCoefficients:
+    """The bearing's coefficients at each speed: the equilibrium model run once per speed.
+
+    The Python form of a sweep of ``operation.speed`` (``stiffness.csv``): the case with its
+    ``[operation] speed`` replaced by each value, validated as a case file and run by
+    :func:`runout.runner.run_model`, as ``runout run`` does.
+
+    Parameters
+    ----------
+    case : Case
+        A case of the equilibrium model (``[analysis] model = "equilibrium"``), its damping
+        from ``[analysis] bearing_damping``.
+    speeds_hz : array_like
+        Speeds of the rotating ring [Hz], one or more, finite and >= 0.
+
+    Returns
+    -------
+    BearingCoefficients
+        One row per speed, in the order given.
+
+    Raises
+    ------
+    CaseError
+        A case of another model (key ``analysis.model``), no speed or a speed that is not a
+        finite number >= 0 (key ``operation.speed``), or what the case file would refuse at
+        that speed.
+
+    Notes
+    -----
+    Stiffness: the Jones–Harris equilibrium (seed 001 §2.1; Kim, Choi & Yoon). Damping:
+    c = β k (E. Krämer, *Dynamics of Rotors and Foundations*, Springer, 1993;
+    :mod:`runout.geometry.bearing_damping`).
+    """
+    if case.analysis.model != "equilibrium":
+        raise CaseError(
+            case.path,
+            "analysis.model",
+            f'bearing coefficients come from the equilibrium model, not "{case.analysis.model}"',
+        )
+    speeds = np.atleast_1d(np.asarray(speeds_hz, dtype=np.float64))
+    if speeds.ndim != 1 or speeds.size == 0 or not np.all(np.isfinite(speeds) & (speeds >= 0)):
+        raise CaseError(case.path, "operation.speed", "needs one or more finite speeds >= 0 [Hz]")
+    document = case.to_document()
+    document.pop("study", None)
+    base = Path(case.path).parent if case.path and not case.path.startswith("<") else None
+    rows: list[EquilibriumDetails] = []
+    for speed in speeds:
+        document.setdefault("operation", {})["speed"] = float(speed)
+        point = parse_case(document, case.path, base, profile_data=case.profile_data)
+        details = run_model(point).details
+        assert isinstance(details, EquilibriumDetails)
+        rows.append(details)
+    damping = [d.bearing_damping for d in rows]
+    columns: dict[str, NDArray[np.float64]] = {}
+    for k_name, c_name in zip(_K_NAMES, _C_NAMES, strict=True):
+        if k_name == "kzz_n_per_m":
+            columns[k_name] = np.array([d.stiffness_matrix.matrix[0][0] for d in rows])
+        else:
+            columns[k_name] = np.array([getattr(d.radial_stiffness, k_name) for d in rows])
+        columns[c_name] = np.array([0.0 if c is None else getattr(c, c_name) for c in damping])
+    first = damping[0]
+    return BearingCoefficients(
+        speed_hz=speeds.copy(),
+        damping_model="none" if first is None else first.model,
+        damping_coefficient_s=0.0 if first is None else first.coefficient_s,
+        **columns,
+    )

@@ -355,6 +355,52 @@ class RadialStiffness:
 
 
 @dataclass(frozen=True)
+class BearingDamping:
+    """Damping of the bearing coefficients at the operating point: c = β k.
+
+    As :func:`runout.models.equilibrium.bearing_damping` gives it, from the reported stiffness
+    (``radial_stiffness`` and the axial K_aa) and ``[analysis] bearing_damping``.
+
+    Attributes
+    ----------
+    model : {"kraemer", "proportional"}
+        The damping model (``[analysis] bearing_damping``).
+    coefficient_s : float
+        β [s].
+    cxx_n_s_per_m, cxy_n_s_per_m, cyx_n_s_per_m, cyy_n_s_per_m : float
+        β times the radial block kxx, kxy, kyx, kyy [N s/m].
+    czz_n_s_per_m : float
+        β times the axial stiffness K_aa [N s/m].
+    """
+
+    model: str
+    coefficient_s: float
+    cxx_n_s_per_m: float
+    cxy_n_s_per_m: float
+    cyx_n_s_per_m: float
+    cyy_n_s_per_m: float
+    czz_n_s_per_m: float
+
+    def to_json(self) -> dict[str, Any]:
+        """JSON ``bearing_damping``.
+
+        Returns
+        -------
+        dict
+            ``model``, ``coefficient_s`` [s] and the five coefficients [N s/m].
+        """
+        return {
+            "model": self.model,
+            "coefficient_s": self.coefficient_s,
+            "cxx_n_s_per_m": self.cxx_n_s_per_m,
+            "cxy_n_s_per_m": self.cxy_n_s_per_m,
+            "cyx_n_s_per_m": self.cyx_n_s_per_m,
+            "cyy_n_s_per_m": self.cyy_n_s_per_m,
+            "czz_n_s_per_m": self.czz_n_s_per_m,
+        }
+
+
+@dataclass(frozen=True)
 class EquilibriumDetails:
     """What the Jones-Harris equilibrium model adds to its result.
 
@@ -386,6 +432,9 @@ class EquilibriumDetails:
     life : RatingLife or None
         ISO/TS 16281 reference rating life and its parts (JSON ``life``; lives in 10^6
         revolutions, loads [N]); None without ``[bearing] dynamic_load_rating``.
+    bearing_damping : BearingDamping or None
+        Damping of the coefficients (JSON ``bearing_damping``); None with ``[analysis]
+        bearing_damping = "none"`` (the default: stiffness only).
     """
 
     race_control: str
@@ -400,6 +449,7 @@ class EquilibriumDetails:
     held_dofs: tuple[str, ...] = ()
     reaction_moment_n_m: tuple[float, float] = (0.0, 0.0)
     life: RatingLife | None = None
+    bearing_damping: BearingDamping | None = None
 
     def to_json(self) -> dict[str, Any]:
         """The equilibrium model's JSON entries.
@@ -409,7 +459,8 @@ class EquilibriumDetails:
         dict
             Race control, ring tilt (free or held), ring displacement [m, rad], held degrees of
             freedom, reaction moment [N m], stiffness matrices, contact angles [deg], per-ball
-            table, Newton iterations and, with a dynamic load rating, ``life``.
+            table, Newton iterations, with a dynamic load rating ``life`` and, with damping
+            asked, ``bearing_damping``.
         """
         out = {
             "race_control": self.race_control,
@@ -426,6 +477,8 @@ class EquilibriumDetails:
         }
         if self.life is not None:
             out["life"] = self.life.to_json()
+        if self.bearing_damping is not None:
+            out["bearing_damping"] = self.bearing_damping.to_json()
         return out
 
     @classmethod
@@ -457,6 +510,12 @@ class EquilibriumDetails:
             reaction_moment_n_m=(float(moment[0]), float(moment[1])),
             # results written before the life existed, or without a rating: none
             life=None if doc.get("life") is None else RatingLife.from_json(doc["life"]),
+            # results without damping asked (or written before it existed): none
+            bearing_damping=(
+                None
+                if doc.get("bearing_damping") is None
+                else BearingDamping(**doc["bearing_damping"])
+            ),
         )
 
 

@@ -315,6 +315,21 @@ TERMS: tuple[Term, ...] = (
         "stiffness of a linear bearing element",
     ),
     Term(
+        ("bearing_damping",),
+        "c_xx, c_xy, c_yx, c_yy, c_zz",
+        "N s/m",
+        "equilibrium model with [analysis] bearing_damping: damping of the bearing coefficients, "
+        "c = β k for each (`cxx_n_s_per_m` ...; stiffness.csv's damping columns); its `model` "
+        "and β (`coefficient_s`): Krämer's estimate or the user's, not a measurement",
+    ),
+    Term(
+        ("bearing_damping_coefficient",),
+        "β",
+        "s",
+        "ratio of a bearing's damping to its stiffness, c = β k; Krämer (Dynamics of Rotors and "
+        "Foundations, 1993) gives (0.25 ... 2.5) × 10⁻⁵ s for rolling bearings",
+    ),
+    Term(
         ("life",),
         "–",
         "–",

@@ -29,6 +29,7 @@ from runout.case.standards import (
     class_limit,
     is_class_name,
 )
+from runout.geometry.bearing_damping import MAX_DAMPING_COEFFICIENT_S
 from runout.geometry.life import MAX_DYNAMIC_LOAD_RATING, RELIABILITY_FACTORS
 
 TWO_PI = 2.0 * math.pi
@@ -774,21 +775,44 @@ class AnalysisSpec(_Table):
             "reaction_moment_n_m); refused with a moment_load."
         ),
     )
-    reliability: Plain = Field(
-        90.0,
+    # reliability and moment_arm: None when unset (read as 90 and "curvature_centres"), so that
+    # a study's digest, which hashes the defaults, stays that of earlier versions
+    reliability: Plain | None = Field(
+        None,
         description=(
-            "Reliability of the modified reference rating life [%]: "
+            "Reliability of the modified reference rating life [%] (default 90): "
             + ", ".join(f"{p:g}" for p in RELIABILITY_FACTORS)
             + " (ISO 281's a_1 table; 90: a_1 = 1)."
         ),
     )
-    moment_arm: Literal["curvature_centres", "pitch_radius"] = Field(
-        "curvature_centres",
+    moment_arm: Literal["curvature_centres", "pitch_radius"] | None = Field(
+        None,
         description=(
             "model = \"equilibrium\" only: arm of the balls' axial forces in the inner ring's "
             'moment equations: "curvature_centres" (default; the radius of the inner groove '
             'curvature centres, Harris) or "pitch_radius" (d_m/2, as ISO/TS 16281 writes its '
             "moment equilibrium; a given moment_load then loads the balls slightly more)."
+        ),
+    )
+    # None when unset (read as "none"): a study's digest hashes the defaults, and a new
+    # default would change every digest (earlier output directories would not resume)
+    bearing_damping: Literal["none", "kraemer", "proportional"] | None = Field(
+        None,
+        description=(
+            'model = "equilibrium" only: damping of the bearing coefficients, c = β k for every '
+            'coefficient (JSON bearing_damping, stiffness.csv columns cxx_n_s_per_m ...): "none" '
+            '(default: stiffness only, no damping written), "kraemer" (β = 0.79e-5 s, the '
+            "geometric mean of Krämer's (0.25 ... 2.5) × 10^-5 s for rolling bearings, Dynamics "
+            'of Rotors and Foundations, 1993: an estimate, not a measurement) or "proportional" '
+            "(the user's β, bearing_damping_coefficient)."
+        ),
+    )
+    bearing_damping_coefficient: Time | None = Field(
+        None,
+        description=(
+            'β of bearing_damping = "proportional" [s] (e.g. "2e-5 s"): c = β k, from 0 to '
+            "1e-3 s (40 times Krämer's upper end; above it a bearing would be critically damped "
+            "at a few hundred Hz)."
         ),
     )
     bands: Literal["anderon", "iso15242"] | None = Field(
@@ -830,8 +854,8 @@ class AnalysisSpec(_Table):
 
     @field_validator("reliability")
     @classmethod
-    def _reliability_row(cls, value: float) -> float:
-        if value not in RELIABILITY_FACTORS:
+    def _reliability_row(cls, value: float | None) -> float | None:
+        if value is not None and value not in RELIABILITY_FACTORS:
             rows = ", ".join(f"{p:g}" for p in RELIABILITY_FACTORS)
             raise ValueError(
                 f"must be one of {rows} (%; ISO 281's a_1 table), got {_Short(value)!r}"
@@ -858,6 +882,29 @@ class AnalysisSpec(_Table):
         if isinstance(self.limit, str) and is_class_name(self.limit):
             return self.limit
         return None
+
+    @field_validator("bearing_damping_coefficient")
+    @classmethod
+    def _bounded_damping_coefficient(cls, value: float | None) -> float | None:
+        if value is not None and not 0.0 <= value <= MAX_DAMPING_COEFFICIENT_S:
+            raise ValueError(f"must be from 0 to {MAX_DAMPING_COEFFICIENT_S:g} s, got {value!r} s")
+        return value
+
+    @model_validator(mode="after")
+    def _check_damping(self) -> AnalysisSpec:
+        given = self.bearing_damping_coefficient is not None
+        if self.bearing_damping == "proportional" and not given:
+            raise _KeyedError(
+                "bearing_damping",
+                '"proportional" needs analysis.bearing_damping_coefficient (β [s], e.g. "2e-5 s")',
+            )
+        if given and self.bearing_damping != "proportional":
+            raise _KeyedError(
+                "bearing_damping_coefficient",
+                'only applies to bearing_damping = "proportional" (got '
+                f'bearing_damping = "{self.bearing_damping or "none"}")',
+            )
+        return self
 
     @model_validator(mode="after")
     def _check_limit(self) -> AnalysisSpec:

@@ -145,6 +145,13 @@ def _table_key(table: str, name: str) -> Any:
     return present
 
 
+def _damping_keys(spec: CaseSpec) -> list[str]:
+    """``present`` for the bearing damping: set to a model other than "none"."""
+    if spec.analysis.bearing_damping in (None, "none"):
+        return []
+    return ["analysis.bearing_damping"]
+
+
 #: Why a run does not apply ``[elements] grade`` (its note).
 _GRADE_IN_A_RUN = (
     "one bearing has one set of balls, and the grade gives only their scatter: a run draws no "
@@ -599,6 +606,15 @@ KEYS: tuple[KeyConvention, ...] = (
         "-",
         "it is an equilibrium-model option",
         _table_key("analysis", "moment_arm"),
+    ),
+    _option_of(
+        "equilibrium",
+        "analysis.bearing_damping, bearing_damping_coefficient",
+        "Damping of the bearing coefficients, c = β k for every coefficient: Krämer's estimate "
+        "(β = 0.79e-5 s; Dynamics of Rotors and Foundations, 1993) or the user's β.",
+        "s",
+        "it gives no bearing coefficients (the equilibrium model's stiffness is what is damped)",
+        _damping_keys,
     ),
     KeyConvention(
         "analysis.ring_tilt",

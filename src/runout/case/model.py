@@ -226,6 +226,11 @@ class Analysis:
     limit_class : dict or None
         For an ISO 492 tolerance class limit: ``{"class", "bore_m", "source"}`` (the limit is
         its K_ia for the bore, ISO 492:2014); None for a numeric limit.
+    bearing_damping : {"none", "kraemer", "proportional"}
+        Damping model of the bearing coefficients (equilibrium model):
+        :mod:`runout.geometry.bearing_damping`.
+    bearing_damping_coefficient : float or None
+        The user's β of ``"proportional"`` [s] (c = β k).
     """
 
     model: str = "quasi_static_3d"
@@ -239,6 +244,8 @@ class Analysis:
     limit: float | None = None
     limit_on: str = "radial_pp"
     limit_class: dict[str, Any] | None = None
+    bearing_damping: str = "none"
+    bearing_damping_coefficient: float | None = None
 
 
 @dataclass(frozen=True)
@@ -616,11 +623,13 @@ def parse_case(
         race_control=spec.analysis.race_control,
         # unset: the model's own (free; the case re-serialised for a study keeps it unset)
         ring_tilt=spec.analysis.ring_tilt or "free",
-        moment_arm=spec.analysis.moment_arm,
+        moment_arm=spec.analysis.moment_arm or "curvature_centres",
         bands=spec.analysis.bands,
         limit=limit_m,
         limit_on=spec.analysis.limit_on,
         limit_class=limit_class,
+        bearing_damping=spec.analysis.bearing_damping or "none",
+        bearing_damping_coefficient=spec.analysis.bearing_damping_coefficient,
     )
     case = Case(
         path=path,

@@ -13,6 +13,7 @@ width (:data:`PIPE_WIDTH`), whatever the terminal or ``COLUMNS``.
 
 from __future__ import annotations
 
+import csv
 import json
 import math
 import os
@@ -977,6 +978,7 @@ def _print_study(summary: dict[str, Any], title: str, out: str | None) -> None:
             files += ", samples.csv, samples_columns.json"
         if (Path(out) / "stiffness.csv").is_file():  # equilibrium: the stiffness of every point
             files += ", stiffness.csv"
+            _out.print(_damping_line(Path(out) / "stiffness.csv"), soft_wrap=True, highlight=False)
         # the figures (histograms.png, sweep_*.png: a fresh run removed any earlier ones)
         figures = sorted(p.name for p in Path(out).glob("*.png") if _STUDY_FIGURE.match(p.name))
         files += "".join(f", {name}" for name in figures)
@@ -984,6 +986,22 @@ def _print_study(summary: dict[str, Any], title: str, out: str | None) -> None:
 
 
 _STUDY_FIGURE = re.compile(r"histograms\.png|sweep_.+\.png")
+
+
+def _damping_line(path: Path) -> str:
+    """What ``stiffness.csv`` says of damping: its model(s) and β, or that it has none."""
+    with path.open(newline="", encoding="utf-8") as fh:
+        rows = list(csv.DictReader(fh))
+    if not rows or "bearing_damping" not in rows[0]:
+        return (
+            "stiffness.csv: stiffness only, no damping columns ([analysis] bearing_damping = "
+            '"none"; "kraemer" or "proportional" add cxx ... czz)'
+        )
+    models = sorted({(r["bearing_damping"], r["bearing_damping_coefficient_s"]) for r in rows})
+    named = ", ".join(f'"{m}" (β = {float(b):.3g} s)' for m, b in models)
+    kraemer = any(m == "kraemer" for m, _ in models)
+    estimate = "; Krämer's estimate, not a measurement" if kraemer else ""
+    return f"stiffness.csv: damping c = β k, every coefficient; bearing_damping = {named}{estimate}"
 
 
 @app.command("reproduce")

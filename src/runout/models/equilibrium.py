@@ -136,6 +136,7 @@ from numpy.typing import NDArray
 
 from runout.analysis.lines import Runout
 from runout.analysis.result_details import (
+    BearingDamping,
     EquilibriumDetails,
     RadialStiffness,
     RingDisplacement,
@@ -144,6 +145,11 @@ from runout.analysis.result_details import (
 from runout.analysis.results import RunResult
 from runout.base.errors import ConvergenceError, GeometryError, NumericalError
 from runout.geometry.bearing import BallBearing, Operation
+from runout.geometry.bearing_damping import (
+    KRAEMER_RANGE_S,
+    damping_coefficient,
+    proportional_damping,
+)
 from runout.geometry.contact import ball_race_curvature, combined_stiffness, hertz_point_stiffness
 from runout.geometry.kinematics import bearing_frequencies
 from runout.geometry.life import (
@@ -170,6 +176,7 @@ __all__ = [
     "LifeModification",
     "ball_loads_life",
     "ball_speeds",
+    "bearing_damping",
     "radial_stiffness",
     "rating_life",
     "run",
@@ -1068,7 +1075,7 @@ class LifeModification:
         spec = case.spec
         lube = spec.lubrication
         return cls(
-            reliability=spec.analysis.reliability,
+            reliability=90.0 if spec.analysis.reliability is None else spec.analysis.reliability,
             viscosity_ratio=None if lube is None else lube.viscosity_ratio,
             operating_viscosity=None if lube is None else lube.operating_viscosity,
             rated_viscosity=None if lube is None else lube.rated_viscosity,
@@ -1196,6 +1203,72 @@ def ball_loads_life(
     life, modified_notes = _modified(life, bearing, op, modification or LifeModification())
     notes += modified_notes
     return life, notes
+
+
+def bearing_damping(
+    stiffness: RadialStiffness, axial_stiffness: float, model: str, coefficient_s: float | None
+) -> tuple[BearingDamping | None, list[str]]:
+    r"""Damping of the bearing coefficients, c = β k, and the note that names its model.
+
+    Parameters
+    ----------
+    stiffness : RadialStiffness
+        The reported radial block (:func:`radial_stiffness`) [N/m].
+    axial_stiffness : float
+        K_aa, the axial diagonal of the 5×5 stiffness [N/m].
+    model : {"none", "kraemer", "proportional"}
+        ``[analysis] bearing_damping``.
+    coefficient_s : float or None
+        ``[analysis] bearing_damping_coefficient``, β of ``"proportional"`` [s].
+
+    Returns
+    -------
+    tuple
+        :class:`~runout.analysis.result_details.BearingDamping` (cxx = β kxx, cxy = β kxy, cyx,
+        cyy and czz = β K_aa [N s/m]) and its note, or (None, []) for ``"none"``.
+
+    Notes
+    -----
+    E. Krämer, *Dynamics of Rotors and Foundations*, Springer, 1993: rolling-element bearing
+    damping c ≈ (0.25 ... 2.5) × 10⁻⁵ s · k (:mod:`runout.geometry.bearing_damping`).
+    """
+    if model == "none":
+        return None, []
+    beta = damping_coefficient(model, coefficient_s)
+    k = np.array(
+        [
+            stiffness.kxx_n_per_m,
+            stiffness.kxy_n_per_m,
+            stiffness.kyx_n_per_m,
+            stiffness.kyy_n_per_m,
+            axial_stiffness,
+        ]
+    )
+    c = proportional_damping(k, beta)
+    low, high = KRAEMER_RANGE_S
+    if model == "kraemer":
+        note = (
+            f'bearing_damping = "kraemer": damping c = β k with β = {beta:.3g} s for every '
+            f"coefficient (bearing_damping: cxx ... czz), the geometric mean of Krämer's range "
+            f"{low:.3g} ... {high:.3g} s for rolling bearings (Dynamics of Rotors and Foundations, "
+            "1993): an estimate, not a measurement (the range spans a factor 10)"
+        )
+    else:
+        note = (
+            f'bearing_damping = "proportional": damping c = β k with the given β = {beta:.6g} s '
+            f"for every coefficient (bearing_damping: cxx ... czz); Krämer's range for rolling "
+            f"bearings is {low:.3g} ... {high:.3g} s"
+        )
+    damping = BearingDamping(
+        model=model,
+        coefficient_s=beta,
+        cxx_n_s_per_m=float(c[0]),
+        cxy_n_s_per_m=float(c[1]),
+        cyx_n_s_per_m=float(c[2]),
+        cyy_n_s_per_m=float(c[3]),
+        czz_n_s_per_m=float(c[4]),
+    )
+    return damping, [note]
 
 
 def rating_life(
@@ -1364,6 +1437,14 @@ def run(case: Case) -> RunResult:
         bearing, op, sol, 0.0 if nominal is None else nominal, LifeModification.of_case(case)
     )
     notes += life_notes
+    radial = radial_stiffness(sol, op.speed)
+    damping, damping_notes = bearing_damping(
+        radial,
+        float(sol.stiffness[0, 0]),
+        case.analysis.bearing_damping,
+        case.analysis.bearing_damping_coefficient,
+    )
+    notes += damping_notes
     details = EquilibriumDetails(
         race_control=control,
         ring_tilt=ring_tilt,
@@ -1381,12 +1462,13 @@ def run(case: Case) -> RunResult:
             units="rows F_a, F_x, F_y [N], M_x, M_y [N m]; columns per m or per rad",
             matrix=tuple(tuple(float(v) for v in row) for row in sol.stiffness),
         ),
-        radial_stiffness=radial_stiffness(sol, op.speed),
+        radial_stiffness=radial,
         inner_contact_angle_deg=tuple(math.degrees(v) for v in sol.inner_contact_angle),
         outer_contact_angle_deg=tuple(math.degrees(v) for v in sol.outer_contact_angle),
         balls=tuple(sol.ball_table()),
         newton_iterations=sol.iterations,
         life=life,
+        bearing_damping=damping,
     )
     return EquilibriumResult(
         model=MODEL,

@@ -126,17 +126,21 @@ def _empty_chunk(task: ChunkTask) -> dict[str, Any]:
 def _stiffness_entry(details: object) -> dict[str, Any] | None:
     """What a study keeps of an equilibrium result's stiffness, or None for other models.
 
-    ``radial_stiffness`` (the run JSON's object: kxx, kxy, kyx, kyy [N/m], speed_rpm) and
-    ``axial_stiffness_n_per_m``, the axial diagonal K_aa of the 5×5 ``stiffness_matrix``.
+    ``radial_stiffness`` (the run JSON's object: kxx, kxy, kyx, kyy [N/m], speed_rpm),
+    ``axial_stiffness_n_per_m``, the axial diagonal K_aa of the 5×5 ``stiffness_matrix``, and
+    with damping asked the run JSON's ``bearing_damping`` (model, β [s], cxx ... czz [N s/m]).
     """
     from runout.analysis.result_details import EquilibriumDetails
 
     if not isinstance(details, EquilibriumDetails):
         return None
-    return {
+    entry: dict[str, Any] = {
         "radial_stiffness": {k: float(v) for k, v in details.radial_stiffness.to_json().items()},
         "axial_stiffness_n_per_m": float(details.stiffness_matrix.matrix[0][0]),
     }
+    if details.bearing_damping is not None:
+        entry["bearing_damping"] = details.bearing_damping.to_json()
+    return entry
 
 
 def _add_lines(

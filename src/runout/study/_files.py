@@ -413,6 +413,30 @@ _EQUILIBRIUM = "equilibrium"
 _RADIAL_KEYS = ("kxx_n_per_m", "kxy_n_per_m", "kyx_n_per_m", "kyy_n_per_m", "speed_rpm")
 
 
+#: Keys of a point's ``bearing_damping`` (:func:`runout.models.equilibrium.bearing_damping`).
+_DAMPING_KEYS = (
+    "model",
+    "coefficient_s",
+    "cxx_n_s_per_m",
+    "cxy_n_s_per_m",
+    "cyx_n_s_per_m",
+    "cyy_n_s_per_m",
+    "czz_n_s_per_m",
+)
+
+
+def _damping_ok(damping: object) -> bool:
+    """A point's ``bearing_damping``: absent (``{}``: none asked) or whole."""
+    if damping == {}:
+        return True
+    return (
+        isinstance(damping, dict)
+        and set(damping) == set(_DAMPING_KEYS)
+        and damping["model"] in ("kraemer", "proportional")
+        and all(_is_number(damping[k]) for k in _DAMPING_KEYS[1:])
+    )
+
+
 def _stiffness_problem(chunk: dict[str, Any], task: ChunkTask) -> str | None:
     """What is wrong with the chunk's ``stiffness`` entries, or None.
 
@@ -432,6 +456,7 @@ def _stiffness_problem(chunk: dict[str, Any], task: ChunkTask) -> str | None:
             or set(radial) != set(_RADIAL_KEYS)
             or not all(_is_number(v) for v in radial.values())
             or not _is_number(entry.get("axial_stiffness_n_per_m"))
+            or not _damping_ok(entry.get("bearing_damping", {}))
         ):
             return f"stiffness of sample {k!r} is damaged"
     for row, model in enumerate(chunk["model"]):

@@ -78,6 +78,15 @@ ArrayLikeF = Sequence[float] | NDArray[np.float64]
 _CONTRACT = ("mean", "std", "p5", "p50", "p95")
 #: Stiffness columns of stiffness.csv and :meth:`StudyResult.to_dataframe` [N/m].
 _STIFFNESS_COLUMNS = ("kxx_n_per_m", "kxy_n_per_m", "kyx_n_per_m", "kyy_n_per_m", "kzz_n_per_m")
+#: Damping columns of stiffness.csv and :meth:`StudyResult.to_dataframe` [N s/m], when a
+#: point has damping (``[analysis] bearing_damping``): the run JSON's ``bearing_damping``.
+_DAMPING_COLUMNS = (
+    "cxx_n_s_per_m",
+    "cxy_n_s_per_m",
+    "cyx_n_s_per_m",
+    "cyy_n_s_per_m",
+    "czz_n_s_per_m",
+)
 #: Runout columns of :meth:`StudyResult.to_dataframe`, in this order.
 _FRAME_RUNOUT = ("radial_pp_m", "rro_pp_m", "nrro_pp_m", "axial_pp_m")
 #: Rows of samples.csv turned into text at a time (the file is written block by block).
@@ -325,6 +334,8 @@ class StudyResult:
             if i in self.stiffness:
                 rows[-1]["radial_stiffness"] = dict(self.stiffness[i]["radial_stiffness"])
                 rows[-1]["axial_stiffness_n_per_m"] = self.stiffness[i]["axial_stiffness_n_per_m"]
+                if "bearing_damping" in self.stiffness[i]:
+                    rows[-1]["bearing_damping"] = dict(self.stiffness[i]["bearing_damping"])
             if self.limit is not None:
                 value = float(self.runout[f"{self.limit[0]}_m"][i])
                 rows[-1]["pass"] = bool(value <= self.limit[1]) if math.isfinite(value) else None
@@ -344,7 +355,9 @@ class StudyResult:
         label), ``pass`` when the case gives a spec limit,
         for a study of the equilibrium model ``kxx_n_per_m``, ``kxy_n_per_m``,
         ``kyx_n_per_m``, ``kyy_n_per_m`` and ``kzz_n_per_m`` [N/m] (as in ``stiffness.csv``;
-        NaN for a point of another model or a failed one), and ``error`` (the failure's
+        NaN for a point of another model or a failed one), with damping asked
+        (``[analysis] bearing_damping``) ``cxx_n_s_per_m`` ... ``czz_n_s_per_m`` [N s/m] too,
+        and ``error`` (the failure's
         ``"Type: message"``, empty when the sample ran).
         ``df.attrs`` holds ``units``, ``kind``, ``title`` and ``seed``.
 
@@ -390,6 +403,11 @@ class StudyResult:
                 column[sorted(self.stiffness)] = values
                 data[name] = column
                 units[name] = "N/m"
+            for name in _DAMPING_COLUMNS if self.damped else ():
+                column = np.full(n, np.nan)
+                column[sorted(self.stiffness)] = table[name]
+                data[name] = column
+                units[name] = "N s/m"
         data["error"] = [self.errors.get(i, "") for i in range(n)]
         units["error"] = "-"
         df = pd.DataFrame(data)
@@ -531,6 +549,11 @@ class StudyResult:
         rotor's angular frequency [rad/s], what rotordynamics codes index bearing
         coefficients by), ``kxx_n_per_m``, ``kxy_n_per_m``, ``kyx_n_per_m``, ``kyy_n_per_m``
         (the radial block, tilts held) and ``kzz_n_per_m`` (the axial stiffness K_aa) [N/m].
+        With damping asked at any point (``[analysis] bearing_damping``, :attr:`damped`), then
+        ``bearing_damping`` (the point's damping model: ``"kraemer"``, ``"proportional"``, or
+        ``"none"`` with zero damping), ``bearing_damping_coefficient_s`` (β [s]) and
+        ``cxx_n_s_per_m``, ``cxy_n_s_per_m``, ``cyx_n_s_per_m``, ``cyy_n_s_per_m``,
+        ``czz_n_s_per_m`` (c = β k [N s/m]); without, no damping columns.
         A point whose model failed has no row (its error is in the points and summary).
         """
         rows = sorted(self.stiffness)
@@ -549,7 +572,19 @@ class StudyResult:
         for k in _STIFFNESS_COLUMNS[:4]:
             cols.append((k, [r[k] for r in radial]))
         cols.append(("kzz_n_per_m", [self.stiffness[i]["axial_stiffness_n_per_m"] for i in rows]))
+        if self.damped:
+            # a point without damping in a table that has some: model "none", zero damping
+            none = {"model": "none", "coefficient_s": 0.0, **dict.fromkeys(_DAMPING_COLUMNS, 0.0)}
+            damping = [self.stiffness[i].get("bearing_damping", none) for i in rows]
+            cols.append(("bearing_damping", [d["model"] for d in damping]))
+            cols.append(("bearing_damping_coefficient_s", [d["coefficient_s"] for d in damping]))
+            cols += [(k, [d[k] for d in damping]) for k in _DAMPING_COLUMNS]
         return cols
+
+    @property
+    def damped(self) -> bool:
+        """True when a point has bearing damping (``[analysis] bearing_damping``)."""
+        return any("bearing_damping" in entry for entry in self.stiffness.values())
 
     def _write_stiffness(self, path: Path) -> Path:
         cols = self.stiffness_columns()

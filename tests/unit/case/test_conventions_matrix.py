@@ -183,6 +183,10 @@ CHANGES: dict[str, tuple[Callable[[Data, str], None], Callable[[Data], None]]] =
         _moment_load_for_equilibrium,
         _set("analysis.moment_arm", "pitch_radius"),
     ),
+    "analysis.bearing_damping, bearing_damping_coefficient": (
+        _no_patch,
+        _set("analysis.bearing_damping", "kraemer"),
+    ),
     "analysis.ring_tilt": (_radial_load_for_equilibrium, _set("analysis.ring_tilt", "held")),
     "dynamics": (
         _no_patch,

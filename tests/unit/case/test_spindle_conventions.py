@@ -176,6 +176,10 @@ CHANGES: dict[str, tuple[Callable[[Data], None], Callable[[Data], None]]] = {
     "analysis.linear_variant": (_none, _set("analysis.linear_variant", "force_balance")),
     "analysis.race_control": (_none, _set("analysis.race_control", "inner")),
     "analysis.moment_arm": (_none, _set("analysis.moment_arm", "pitch_radius")),
+    "analysis.bearing_damping, bearing_damping_coefficient": (
+        _none,
+        _set("analysis.bearing_damping", "kraemer"),
+    ),
     "analysis.ring_tilt": (_none, _set("analysis.ring_tilt", "held")),
     "dynamics": (_none, lambda d: d.__setitem__("dynamics", {"mass": 0.03, "damping": 20.0})),
     "analysis.bands": (_none, _set("analysis.bands", "iso15242")),
