@@ -202,3 +202,39 @@ def test_study_dataframe_carries_the_damping(tmp_path: Path) -> None:
         assert list(df[c_name]) == table[c_name]
         assert df.attrs["units"][c_name] == "N s/m"
         np.testing.assert_allclose(df[c_name], 0.79e-5 * df[k_name], rtol=ROUND_OFF, atol=0.0)
+
+
+@pytest.mark.parametrize(
+    "damping", ['bearing_damping = "kraemer"', "bearing_damping = \"proportional\"\n"
+                'bearing_damping_coefficient = "2e-5 s"']
+)  # fmt: skip
+def test_run_out_writes_the_damping_matrix_beside_the_stiffness(
+    damping: str, tmp_path: Path
+) -> None:
+    """``run --out`` of a damped case writes ``damping.csv``: β times the 5×5 of
+    ``stiffness.csv``, its model and β on its first line; an undamped case writes none."""
+    case = tmp_path / "case.toml"
+    case.write_text(_case(damping), encoding="utf-8")
+    out = tmp_path / "out"
+    result = runner.invoke(app, ["run", str(case), "--out", str(out)])
+    assert result.exit_code == 0, result.stderr
+    assert "damping.csv" in result.stdout
+    doc = json.loads((out / "result.json").read_text(encoding="utf-8"))
+    beta = doc["bearing_damping"]["coefficient_s"]
+    lines = (out / "damping.csv").read_text(encoding="utf-8").splitlines()
+    assert lines[0].startswith("#") and doc["bearing_damping"]["model"] in lines[0]
+    damped = list(csv.reader(lines[1:]))
+    with (out / "stiffness.csv").open(newline="", encoding="utf-8") as fh:
+        stiff = list(csv.reader(fh))
+    assert damped[0] == stiff[0] and [r[0] for r in damped] == [r[0] for r in stiff]
+    c = np.array([[float(v) for v in r[1:]] for r in damped[1:]])
+    k = np.array([[float(v) for v in r[1:]] for r in stiff[1:]])
+    # both written to 12 significant digits (each within 5e-12 relative): equal to that rounding
+    np.testing.assert_allclose(c, beta * k, rtol=1e-11, atol=0.0)
+
+    undamped = tmp_path / "plain.toml"
+    undamped.write_text(_case(""), encoding="utf-8")
+    plain = tmp_path / "plain"
+    result = runner.invoke(app, ["run", str(undamped), "--out", str(plain)])
+    assert result.exit_code == 0, result.stderr
+    assert (plain / "stiffness.csv").is_file() and not (plain / "damping.csv").exists()

@@ -332,7 +332,8 @@ def _balls_figure(result: RunResult, details: EquilibriumDetails, directory: Pat
 
 
 def _equilibrium_tables(details: EquilibriumDetails, directory: Path) -> list[Path]:
-    """``balls.csv`` and ``stiffness.csv`` of the equilibrium model."""
+    """``balls.csv``, ``stiffness.csv`` and, with ``[analysis] bearing_damping``, ``damping.csv``
+    of the equilibrium model."""
     table = details.balls
     path = directory / "balls.csv"
     with path.open("w", newline="") as fh:
@@ -347,7 +348,22 @@ def _equilibrium_tables(details: EquilibriumDetails, directory: Path) -> list[Pa
         w2.writerow(["", *dofs])
         for name, krow in zip(dofs, details.stiffness_matrix.matrix, strict=True):
             w2.writerow([name, *(f"{v:.12g}" for v in krow)])
-    return [path, kpath]
+    damping = details.bearing_damping
+    if damping is None:  # [analysis] bearing_damping unset or "none": stiffness only
+        return [path, kpath]
+    # c = β K over the whole 5×5, as the JSON's cxx ... czz are β times its entries
+    cpath = directory / "damping.csv"
+    beta = damping.coefficient_s
+    with cpath.open("w", newline="") as fh:
+        fh.write(
+            f"# damping c = beta K [N s/m, N s/rad, N m s/m, N m s/rad]: bearing_damping = "
+            f"{damping.model}, beta = {beta:.6g} s\n"
+        )
+        w3 = csv.writer(fh)
+        w3.writerow(["", *dofs])
+        for name, krow in zip(dofs, details.stiffness_matrix.matrix, strict=True):
+            w3.writerow([name, *(f"{beta * v:.12g}" for v in krow)])
+    return [path, kpath, cpath]
 
 
 def _dynamic_table(result: RunResult, details: DynamicDetails, directory: Path) -> Path:
