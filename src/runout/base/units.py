@@ -78,6 +78,7 @@ KINDS: dict[str, tuple[str, str, str]] = {
     "mass_length": ("[mass] * [length]", "kg*m", "an unbalance (mass x length)"),
     "frequency": ("1 / [time]", "Hz", "a frequency"),
     "velocity": ("[length] / [time]", "m/s", 'a velocity (e.g. "50 um/s")'),
+    "acceleration": ("[length] / [time] ** 2", "m/s^2", 'an acceleration (e.g. "3 m/s^2")'),
     "angle": ("", "rad", "an angle"),
     "speed": ("1 / [time]", "Hz", "a rotational speed"),
     "dimensionless": ("", "", "a plain number"),
