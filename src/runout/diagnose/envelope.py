@@ -665,7 +665,9 @@ def _label(
 ) -> str | None:
     best: tuple[float, str] | None = None
     for part, fd in fundamentals.items():
-        for h in range(1, _FAMILY_HARMONICS + 1):
+        # the cage's harmonics are not labelled past the searched ones: every line of the
+        # spectrum is near some high multiple of FTF
+        for h in range(1, (HARMONICS if part == "cage" else _FAMILY_HARMONICS) + 1):
             sides = (0,) if sidebands[part] is None else (0, -1, 1, -2, 2)
             for side in sides:
                 spacing = sidebands[part] or 0.0

@@ -260,7 +260,7 @@ def round_trip_rates(case: Any, records: int = 60, seed: int = 0) -> Rates:
     rng = np.random.default_rng(seed)
     hits = named = wrong = 0
     for i in range(records):
-        part: Part = ("outer", "inner", "ball")[i % 3]  # type: ignore[assignment]
+        part: Part = ("outer", "inner", "ball")[i % 3]
         rpm = float(rng.uniform(1000.0, 3600.0))
         rec = defect_record(
             case,
