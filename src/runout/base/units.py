@@ -83,6 +83,7 @@ KINDS: dict[str, tuple[str, str, str]] = {
         "m^2/s",
         'a kinematic viscosity (e.g. "20 mm^2/s" or "20 cSt")',
     ),
+    "acceleration": ("[length] / [time] ** 2", "m/s^2", 'an acceleration (e.g. "3 m/s^2")'),
     "angle": ("", "rad", "an angle"),
     "speed": ("1 / [time]", "Hz", "a rotational speed"),
     "dimensionless": ("", "", "a plain number"),

@@ -77,6 +77,122 @@ def _table(diagnosis: Any) -> list[Any]:
     return out
 
 
+def _parse_band(text: str) -> tuple[float, float]:
+    """``LO,HI`` [Hz] of --band, or exit 2 naming the option."""
+    import math
+
+    parts = text.split(",")
+    try:
+        if len(parts) != 2:
+            raise ValueError
+        lo, hi = float(parts[0]), float(parts[1])
+    except ValueError:
+        _fail(f"--band must be two frequencies in Hz as LO,HI (e.g. 2000,4000), got {text!r}")
+        raise  # unreachable: _fail exits
+    if not (math.isfinite(lo) and math.isfinite(hi) and 0.0 <= lo < hi):
+        _fail(f"--band must satisfy 0 <= LO < HI (finite, in Hz), got {text!r}")
+    return lo, hi
+
+
+def _envelope_tables(result: Any) -> list[Any]:
+    """Readable tables of an envelope diagnosis: the parts ranked, the largest peaks."""
+    ranked = Table(
+        title=f"Defect evidence (squared envelope spectrum, band {result.band_hz[0]:.6g}-"
+        f"{result.band_hz[1]:.6g} Hz, {result.band_source}); verdict: {result.verdict}",
+        title_justify="left",
+        header_style="bold",
+    )
+    for name in (
+        "part",
+        "defect freq. [Hz]",
+        "order",
+        "assessment",
+        "score [dB]",
+        "harmonics found",
+        "sidebands found",
+        "SNR of 1x",
+    ):
+        ranked.add_column(
+            escape(name), justify="left" if name in ("part", "assessment") else "right"
+        )
+    for d in result.defects:
+        first = next((e for e in d.lines if e.harmonic == 1 and e.sideband == 0), None)
+        ranked.add_row(
+            d.part,
+            f"{d.frequency_hz:.6g}",
+            f"{d.order:.5g}",
+            d.assessment,
+            f"{d.score:.1f}",
+            ", ".join(map(str, d.harmonics_found)) or "none",
+            str(sum(1 for e in d.lines if e.sideband != 0 and e.found)),
+            "—" if first is None else f"{first.snr:.3g}",
+        )
+    peaks = Table(
+        title="Largest envelope-spectrum peaks", title_justify="left", header_style="bold"
+    )
+    for name in ("frequency [Hz]", "amplitude [(m/s^2)^2]", "SNR", "label"):
+        peaks.add_column(escape(name), justify="left" if name == "label" else "right")
+    for p in result.peaks:
+        peaks.add_row(
+            f"{p.frequency_hz:.6g}", f"{p.amplitude:.4g}", f"{p.snr:.3g}", escape(p.label or "—")
+        )
+    return [ranked, peaks]
+
+
+def _envelope(
+    case_file: Path,
+    record: Path,
+    quantity: str,
+    variant: str | None,
+    max_lobes: int | None,
+    band: str | None,
+    slip_tolerance: float,
+    as_json: bool,
+    out: str | None,
+    force: bool,
+) -> None:
+    """``runout diagnose --envelope``: read, diagnose, print and write."""
+    from runout.diagnose.envelope import diagnose_envelope
+
+    for given, option in (
+        (quantity != "displacement", "--quantity"),
+        (variant is not None, "--variant"),
+        (max_lobes is not None, "--max-lobes"),
+    ):
+        if given:
+            _fail(
+                f"{option} is read by the line fit, not by --envelope (an acceleration "
+                "record): drop one of them"
+            )
+    pass_band = None if band is None else _parse_band(band)
+    case = _load(case_file)
+    directory = None
+    if out is not None:
+        from runout.io.output_dir import claim, output_directory
+
+        directory = output_directory(out)
+        claim(directory, force=force)
+    result = diagnose_envelope(case, record, band=pass_band, slip_tolerance=slip_tolerance)
+    if as_json:
+        _print_json(result.to_json())
+    else:
+        for table in _envelope_tables(result):
+            _out.print(table)
+        if result.notes:
+            _out.print("[bold]Notes[/]", soft_wrap=True)
+            for text in result.notes:
+                _out.print(f"- {escape(text)}", highlight=False, soft_wrap=True, emoji=False)
+    if directory is not None:
+        from runout.io.output_dir import staged
+        from runout.report._envelope import write_envelope
+
+        with staged(directory) as stage:
+            written = [stage.final(p) for p in write_envelope(result, stage.path)]
+        if not as_json:
+            for path in written:
+                _out.print(f"wrote {escape(str(path))}")
+
+
 def register(app: typer.Typer) -> None:
     """Add ``diagnose`` to ``app`` (the ``runout`` command line)."""
 
@@ -130,6 +246,34 @@ def register(app: typer.Typer) -> None:
                 "0.01 = 1 %, a probe calibration certificate's usual sensitivity tolerance.",
             ),
         ] = 0.01,
+        envelope: Annotated[
+            bool,
+            typer.Option(
+                "--envelope",
+                help="Envelope diagnosis of an acceleration record (column a_m_per_s2, or "
+                "a \\[m/s^2], a \\[g]): which localized defect (outer race, inner race, ball, "
+                "cage) its squared-envelope spectrum shows.",
+            ),
+        ] = False,
+        band: Annotated[
+            str | None,
+            typer.Option(
+                "--band",
+                help="With --envelope: the pass band LO,HI in Hz (default: the fast "
+                "kurtogram's most impulsive band).",
+                show_default=False,
+            ),
+        ] = None,
+        slip_tolerance: Annotated[
+            float,
+            typer.Option(
+                "--slip-tolerance",
+                min=0.0,
+                max=0.1,
+                help="With --envelope: relative tolerance of the defect frequencies "
+                "(rolling elements slip 1-2 %; 0.02 = 2 %).",
+            ),
+        ] = 0.02,
         as_json: JsonOpt = False,
         out: Annotated[
             str | None,
@@ -161,11 +305,32 @@ def register(app: typer.Typer) -> None:
         refused, a slow drift is tracked. Uncertainties include the noise, the sensor gain
         (--gain-uncertainty) and the speed tracking.
 
+        With --envelope the record is an acceleration (column a_m_per_s2, a [m/s^2] or
+        a [g]) and the diagnosis reads its squared-envelope spectrum for the bearing's
+        defect frequencies (BPFO, BPFI, ball, cage) within the slip tolerance: the parts
+        ranked with their evidence (harmonics, sidebands, SNR) and a plain verdict.
+
         Example: runout diagnose examples/seed002_608.toml --record run.csv --out out/diag
         """
         from runout.base.errors import CaseError
         from runout.diagnose.fit import diagnose
 
+        if envelope:
+            _envelope(
+                case_file,
+                record,
+                quantity,
+                variant,
+                max_lobes,
+                band,
+                slip_tolerance,
+                as_json,
+                out,
+                force,
+            )
+            return
+        if band is not None:
+            _fail("--band is read by the envelope diagnosis: add --envelope")
         if quantity not in ("displacement", "velocity"):
             _fail(f'--quantity must be "displacement" or "velocity", got {quantity!r}')
         if variant is not None and variant not in ("radial_spring", "force_balance"):

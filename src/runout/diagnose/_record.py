@@ -2,7 +2,9 @@
 
 A record is a CSV file with a header row: a time column (``time_s``, or ``t [ms]``), one or both
 of ``x_m`` and ``y_m`` (radial displacement of the measured ring along x and y, see the
-conventions page; ``x [um]`` gives the unit in brackets) and optionally a tachometer column
+conventions page; ``x [um]`` gives the unit in brackets), or for the envelope diagnosis one
+acceleration column ``a_m_per_s2`` (``a [m/s^2]``, ``a [g]``: g is the standard gravity
+9.80665 m/s^2, as accelerometers are calibrated), and optionally a tachometer column
 ``rev`` (a revolution count, or one pulse per revolution at two levels). Blank lines are
 ignored, before the header as between the rows. Every failure is a
 :class:`RecordError` naming the file and the row (the file's line number, the header being
@@ -38,7 +40,7 @@ __all__ = [
 ]
 
 FloatArray = NDArray[np.float64]
-Quantity = Literal["displacement", "velocity"]
+Quantity = Literal["displacement", "velocity", "acceleration"]
 
 #: Fewest samples a record may have (a line fit needs several per unknown).
 MIN_SAMPLES = 64
@@ -48,8 +50,11 @@ STEP_RTOL = 1e-3
 #: assumes a constant speed (lines smear by the variation times their order).
 TACHO_SPEED_RTOL = 0.01
 #: Largest radial displacement [m] and velocity [m/s] a record may hold: anything larger is
-#: a column in the wrong unit (micrometres in an ``x_m`` column), not a bearing's runout.
-MAX_VALUE = {"displacement": 1.0, "velocity": 1.0e3}
+#: a column in the wrong unit (micrometres in an ``x_m`` column), not a bearing's runout; an
+#: acceleration of 1e6 m/s^2 (100 000 g) is beyond any accelerometer's range.
+MAX_VALUE = {"displacement": 1.0, "velocity": 1.0e3, "acceleration": 1.0e6}
+#: Standard gravity [m/s^2] (ISO 80000-3), the unit "g" of an acceleration column.
+STANDARD_GRAVITY = 9.80665
 
 _HEADER = re.compile(r"^\s*([A-Za-z][A-Za-z0-9_]*?)\s*(?:\[\s*([^\]]*?)\s*\])?\s*$")
 _DISPLACEMENT_SUFFIX = {"_m": "m"}
@@ -88,8 +93,9 @@ class Record:
     time : ndarray, shape (n,)
         Instants [s].
     channels : dict of str to ndarray
-        ``"x"`` and/or ``"y"``: displacement [m] or velocity [m/s] (see ``quantity``).
-    quantity : {"displacement", "velocity"}
+        ``"x"`` and/or ``"y"``: displacement [m] or velocity [m/s] (see ``quantity``); ``"a"``:
+        acceleration [m/s^2].
+    quantity : {"displacement", "velocity", "acceleration"}
     tachometer_hz : float or None
         Speed of the rotating ring from the tachometer column [Hz], if any: the least-squares
         rate of the instants each revolution starts.
@@ -132,12 +138,16 @@ class Record:
 def _unit_scale(file: str, column: str, unit: str, kind: str) -> float:
     from runout.base.units import UnitError, to_si
 
+    if kind == "acceleration" and unit.strip() in ("g", "gn", "g0", "g_n"):
+        return STANDARD_GRAVITY  # an accelerometer's g, not the gram
     try:
         return to_si(f"1 {unit}", kind)
     except (UnitError, ValueError):
-        word = {"length": "a length (m, mm, um, nm, in)", "time": "a time (s, ms, us)"}.get(
-            kind, "a velocity (m/s, mm/s, um/s)"
-        )
+        word = {
+            "length": "a length (m, mm, um, nm, in)",
+            "time": "a time (s, ms, us)",
+            "acceleration": "an acceleration (m/s^2, mm/s^2, g)",
+        }.get(kind, "a velocity (m/s, mm/s, um/s)")
         raise RecordError(
             file,
             f"column {_shown_value(column, 40)}",
@@ -149,7 +159,7 @@ def _columns(
     file: str, header: list[str], quantity: Quantity
 ) -> tuple[dict[str, tuple[int, float]], list[str]]:
     """Column roles (time, x, y, rev) -> (index, SI scale) from the header names."""
-    kind = "length" if quantity == "displacement" else "velocity"
+    kind = {"displacement": "length", "velocity": "velocity"}.get(quantity, "acceleration")
     roles: dict[str, tuple[int, float]] = {}
     ignored: list[str] = []
     for i, raw in enumerate(header):
@@ -163,9 +173,13 @@ def _columns(
         scale = 1.0
         if unit is not None:
             role = {"t": "time", "time": "time", "x": "x", "y": "y", "rev": "rev"}.get(base)
+            if quantity == "acceleration" and base in ("a", "acc", "acceleration"):
+                role = "a"
+            elif quantity == "acceleration" and role in ("x", "y"):
+                role = None  # a displacement next to the acceleration: not read
             if role == "time":
                 scale = _unit_scale(file, name, unit, "time")
-            elif role in ("x", "y"):
+            elif role in ("x", "y", "a"):
                 scale = _unit_scale(file, name, unit, kind)
             elif role == "rev" and unit not in ("", "rev", "1", "-"):
                 raise RecordError(
@@ -175,9 +189,20 @@ def _columns(
                 )
         elif base in ("time_s", "t_s"):
             role = "time"
+        elif base in ("a_m_per_s2", "acceleration_m_per_s2"):
+            if quantity != "acceleration":
+                raise RecordError(
+                    file,
+                    f"column {_shown_value(name, 40)}",
+                    "is an acceleration: the envelope diagnosis reads it (--envelope)",
+                )
+            role = "a"
         elif base == "rev":
             role = "rev"
         elif base in ("x_m", "y_m"):
+            if quantity == "acceleration":
+                ignored.append(name)
+                continue
             if quantity == "velocity":
                 raise RecordError(
                     file,
@@ -187,6 +212,9 @@ def _columns(
                 )
             role = base[0]
         elif base in ("x_m_per_s", "y_m_per_s"):
+            if quantity == "acceleration":
+                ignored.append(name)
+                continue
             if quantity == "displacement":
                 raise RecordError(
                     file,
@@ -215,6 +243,15 @@ def _columns(
             "header",
             "no time column: name one time_s (or t [ms], time [s]); " + _found(header),
         )
+    if quantity == "acceleration":
+        if "a" not in roles:
+            raise RecordError(
+                file,
+                "header",
+                "no acceleration column: name one a_m_per_s2 (or a [m/s^2], a [g]); "
+                + _found(header),
+            )
+        return roles, ignored
     if "x" not in roles and "y" not in roles:
         unit = "x_m, y_m (or x [um])" if quantity == "displacement" else "x_m_per_s (or x [mm/s])"
         raise RecordError(
@@ -332,9 +369,11 @@ def read_record(
     """
     file = str(path)
     p = Path(path)
-    if quantity not in ("displacement", "velocity"):
+    if quantity not in ("displacement", "velocity", "acceleration"):
         raise RecordError(
-            file, "", f'quantity must be "displacement" or "velocity", got {quantity!r}'
+            file,
+            "",
+            f'quantity must be "displacement", "velocity" or "acceleration", got {quantity!r}',
         )
     try:
         # only a regular file (a FIFO would block, /dev/zero never end), a loop of links named
@@ -404,17 +443,27 @@ def record_from_arrays(
     *,
     quantity: Quantity = "displacement",
     rev: FloatArray | None = None,
+    a: FloatArray | None = None,
 ) -> Record:
-    """A :class:`Record` from arrays (SI units), checked like a file (rows count from 2)."""
+    """A :class:`Record` from arrays (SI units), checked like a file (rows count from 2).
+
+    ``x`` and ``y`` are displacements [m] or velocities [m/s]; ``a`` an acceleration [m/s^2]
+    (``quantity="acceleration"``, read by the envelope diagnosis).
+    """
     cols: dict[str, FloatArray] = {"time": np.asarray(time, dtype=np.float64).ravel()}
     names = ["time_s"]
-    suffix = "_m" if quantity == "displacement" else "_m_per_s"
-    for role, arr in (("x", x), ("y", y), ("rev", rev)):
+    suffix = {"displacement": "_m", "velocity": "_m_per_s"}.get(quantity, "_m_per_s2")
+    for role, arr in (("x", x), ("y", y), ("a", a), ("rev", rev)):
         if arr is not None:
             cols[role] = np.asarray(arr, dtype=np.float64).ravel()
             names.append(role + suffix if role != "rev" else "rev")
     roles = {role: (i, 1.0) for i, role in enumerate(cols)}
-    if "x" not in cols and "y" not in cols:
+    if quantity == "acceleration":
+        if "a" not in cols or "x" in cols or "y" in cols:
+            raise RecordError(ARRAYS, "", "an acceleration record holds a (and no x or y)")
+    elif "a" in cols:
+        raise RecordError(ARRAYS, "", 'give a with quantity="acceleration"')
+    elif "x" not in cols and "y" not in cols:
         raise RecordError(ARRAYS, "", "give x or y (or both)")
     sizes = {a.size for a in cols.values()}
     if len(sizes) != 1:
@@ -442,12 +491,20 @@ def _checked(
                 "or cut the gaps, the fit needs every instant)",
             )
     limit = MAX_VALUE[quantity]
-    unit = "m" if quantity == "displacement" else "m/s"
-    for role in ("x", "y"):
+    unit = {"displacement": "m", "velocity": "m/s"}.get(quantity, "m/s^2")
+    for role in ("x", "y", "a"):
         column = cols.get(role)
         if column is None or column.size == 0:
             continue
         worst = int(np.argmax(np.abs(column)))
+        if abs(column[worst]) > limit and role == "a":
+            raise RecordError(
+                file,
+                f"row {file_line(file, worst)}, column {name(role)!r}",
+                f"{float(column[worst]):.6g} m/s^2 is beyond any accelerometer's range: check "
+                "the column's unit (a bare a_m_per_s2 is in m/s^2; give it in brackets, e.g. "
+                "'a [g]')",
+            )
         if abs(column[worst]) > limit:
             raise RecordError(
                 file,
@@ -495,14 +552,15 @@ def _checked(
         )
     rev = cols.get("rev")
     tacho = None if rev is None else _tachometer(file, name("rev"), t, rev)
-    channels: dict[str, FloatArray] = {role: cols[role] for role in ("x", "y") if role in cols}
+    channels: dict[str, FloatArray] = {role: cols[role] for role in ("x", "y", "a") if role in cols}
     for role, values in channels.items():
         if float(np.ptp(values)) == 0.0:
             raise RecordError(
                 file,
                 f"column {name(role)!r}",
                 f"is constant ({float(values[0])!r} {unit} throughout): a dead channel would be "
-                "read as a motion of zero; drop the column to diagnose the other alone",
+                "read as a motion of zero"
+                + ("" if role == "a" else "; drop the column to diagnose the other alone"),
             )
     names = {role: name(role) for role in ("time", *channels)}
     return Record(file, t, channels, quantity, tacho, names)

@@ -20,6 +20,7 @@ from runout.validation import (
     contact,
     cross_model,
     diagnosis,
+    envelope,
     iso_ts_16281,
     kinematics,
     seed000_tada,
@@ -168,6 +169,12 @@ SECTIONS: list[Section] = [
         "Diagnosis from a measured record (`runout.diagnose.fit`)",
         diagnosis.INTRO,
         [Group("", "", diagnosis.checks)],
+    ),
+    Section(
+        "envelope",
+        "Envelope diagnosis of an acceleration record (`runout.diagnose.envelope`)",
+        envelope.INTRO,
+        [Group("", "", envelope.checks)],
     ),
     Section(
         "studies",
