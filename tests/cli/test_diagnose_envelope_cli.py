@@ -161,6 +161,14 @@ def test_table_and_out_directory(records, tmp_path):
     assert (out / "envelope_spectrum.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     saved = json.loads((out / "diagnosis.json").read_text(encoding="utf-8"))
     assert saved["defects"][0]["part"] == "outer" and saved["method"] == "envelope"
+    # the report page: the verdict, every part ranked with its evidence, the figure embedded
+    page = (out / "report.html").read_text(encoding="utf-8")
+    assert "outer race defect likely" in page
+    for d in saved["defects"]:
+        assert f"<td>{d['part']}</td>" in page and d["assessment"] in page
+    assert "data:image/png;base64," in page
+    assert f"{saved['envelope']['band_hz'][0]:.0f}" in page
+    assert "report.html" in result.stdout
 
 
 def test_no_acceleration_column(tmp_path):

@@ -1,10 +1,14 @@
-"""The files of ``runout diagnose --envelope --out DIR``: the JSON and the envelope spectrum."""
+"""The files of ``runout diagnose --envelope --out DIR``: the JSON, the envelope spectrum and
+the report page."""
 
 from __future__ import annotations
 
 import json
+import re
 from pathlib import Path
 from typing import Any
+
+from runout.report._html import STYLE, card, esc, figure, fmt_number, meta_line, table
 
 __all__ = ["ENVELOPE_FIGURE", "write_envelope"]
 
@@ -50,8 +54,92 @@ def _figure(diagnosis: Any, path: Path) -> None:
     plt.close(fig)
 
 
+_CAPTION = (
+    "Squared-envelope spectrum of the record in the band shown, its local median (the level "
+    "each peak's SNR is taken against) and the first three harmonics of each part's defect "
+    "frequency at the record's speed."
+)
+
+
+def _evidence(found: list[int], searched: int) -> str:
+    return (", ".join(str(h) for h in found) or "none") + f" of {searched}"
+
+
+def _page(diagnosis: Any, figure_path: Path, directory: Path) -> str:
+    """report.html of an envelope diagnosis: verdict, the parts ranked, the peaks, the figure."""
+    doc = diagnosis.to_json()
+    lo, hi = diagnosis.band_hz
+    cards = "".join(
+        [
+            card("verdict", diagnosis.verdict),
+            card("band", f"{lo:.0f}-{hi:.0f} Hz", diagnosis.band_source),
+            card("spectral kurtosis", fmt_number(diagnosis.kurtosis, 3), "0 for Gaussian noise"),
+            card("speed", f"{diagnosis.speed_hz * 60:.6g} rpm", diagnosis.speed_source),
+            card("slip tolerance", f"{100 * diagnosis.slip_tolerance:.3g} %"),
+        ]
+    )
+    ranked = [
+        [
+            esc(d["part"]),
+            esc(d["assessment"]),
+            esc(fmt_number(d["score"], 4)),
+            esc(fmt_number(d["frequency_hz"], 6)),
+            esc(fmt_number(d["order"], 6)),
+            esc(_evidence(d["evidence"]["harmonics_found"], d["evidence"]["harmonics_searched"])),
+            esc(str(d["evidence"]["sidebands_found"])),
+        ]
+        for d in doc["defects"]
+    ]
+    peaks = [
+        [
+            esc(fmt_number(p["frequency_hz"], 6)),
+            esc(fmt_number(p["amplitude"], 4)),
+            esc(fmt_number(p["snr"], 3)),
+            esc(p["label"] or "-"),
+        ]
+        for p in doc["envelope"]["peaks"]
+    ]
+    parts = [
+        "<!doctype html><html><head><meta charset='utf-8'>",
+        f"<title>Envelope diagnosis: {esc(diagnosis.record)}</title><style>{STYLE}</style>",
+        f"</head><body><h1>Envelope diagnosis: {esc(Path(diagnosis.record).name)}</h1>",
+        meta_line("squared envelope spectrum, defect frequencies", directory),
+        f"<p class='muted'>Record {esc(diagnosis.record)}: "
+        f"{fmt_number(diagnosis.duration_s, 4)} s at {fmt_number(diagnosis.sample_rate_hz, 6)} "
+        "Hz (acceleration).</p>",
+        f"<div class='cards'>{cards}</div>",
+        "<h2>Defect evidence, most likely first</h2>",
+        table(
+            [
+                "part",
+                "assessment",
+                "score [dB]",
+                "defect frequency [Hz]",
+                "order",
+                "harmonics found",
+                "sidebands found",
+            ],
+            ranked,
+            numeric=(2, 3, 4, 6),
+        ),
+        re.sub(
+            r"<figcaption>.*?</figcaption>",
+            f"<figcaption>{esc(_CAPTION)}</figcaption>",
+            figure(figure_path, directory),
+        ),
+        "<h2>Largest envelope-spectrum peaks</h2>",
+        table(["frequency [Hz]", "amplitude [(m/s²)²]", "SNR", "label"], peaks, numeric=(0, 1, 2))
+        if peaks
+        else "<p>No peak stands above the local median.</p>",
+        "<h2>Notes</h2><ul>",
+        *[f"<li>{esc(t)}</li>" for t in diagnosis.notes],
+        "</ul></body></html>",
+    ]
+    return "\n".join(parts)
+
+
 def write_envelope(diagnosis: Any, directory: Path) -> list[Path]:
-    """Write diagnosis.json and the envelope-spectrum figure into ``directory``.
+    """Write diagnosis.json, the envelope-spectrum figure and report.html into ``directory``.
 
     Parameters
     ----------
@@ -68,6 +156,8 @@ def write_envelope(diagnosis: Any, directory: Path) -> list[Path]:
     directory.mkdir(parents=True, exist_ok=True)
     path = directory / "diagnosis.json"
     path.write_text(json.dumps(diagnosis.to_json(), indent=2, allow_nan=False) + "\n")
-    figure = directory / ENVELOPE_FIGURE
-    _figure(diagnosis, figure)
-    return [path, figure]
+    drawn = directory / ENVELOPE_FIGURE
+    _figure(diagnosis, drawn)
+    page = directory / "report.html"
+    page.write_text(_page(diagnosis, drawn, directory), encoding="utf-8")
+    return [path, drawn, page]
