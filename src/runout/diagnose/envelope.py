@@ -107,7 +107,13 @@ class Peak:
     label: str | None
 
     def to_json(self) -> dict[str, Any]:
-        """``frequency_hz``, ``amplitude``, ``snr``, ``label``."""
+        """The peak as JSON.
+
+        Returns
+        -------
+        dict
+            ``frequency_hz``, ``amplitude``, ``snr``, ``label``.
+        """
         return dataclasses.asdict(self)
 
 
@@ -142,7 +148,13 @@ class Evidence:
     shared: bool
 
     def to_json(self) -> dict[str, Any]:
-        """The fields above, by name."""
+        """The line as JSON.
+
+        Returns
+        -------
+        dict
+            The fields above, by name.
+        """
         return dataclasses.asdict(self)
 
 
@@ -180,7 +192,13 @@ class Candidate:
         return [e.harmonic for e in self.lines if e.sideband == 0 and e.found]
 
     def to_json(self) -> dict[str, Any]:
-        """``part``, ``frequency_hz``, ``order``, ``score``, ``assessment`` and ``evidence``."""
+        """The candidate as JSON.
+
+        Returns
+        -------
+        dict
+            ``part``, ``frequency_hz``, ``order``, ``score``, ``assessment`` and ``evidence``.
+        """
         harmonics = [e for e in self.lines if e.sideband == 0]
         sidebands = [e for e in self.lines if e.sideband != 0]
         return {
@@ -250,7 +268,14 @@ class EnvelopeDiagnosis:
     floor: Any = field(default=None, repr=False)
 
     def to_json(self) -> dict[str, Any]:
-        """The JSON contract of ``runout diagnose --envelope --json`` (docs: diagnosis page)."""
+        """The JSON of ``runout diagnose --envelope --json``.
+
+        Returns
+        -------
+        dict
+            The contract the diagnosis page documents: ``method``, ``envelope``, ``defects``,
+            ``verdict``, ``notes`` and the record's speed and sampling.
+        """
         return {
             "record": self.record,
             "method": "envelope",
