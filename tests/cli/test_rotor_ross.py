@@ -2,7 +2,7 @@
 
 ROSS 3 renamed the axes of a bearing's coefficient table: ``speed=`` is the rotor speed (what
 ROSS 2 called ``frequency=``) and ``frequency=`` the whirl frequency. This imports whichever
-ROSS is installed (``make install`` installs the ``rotor`` extra: ROSS 2.3 on Python 3.11/3.12,
+ROSS is installed (``make test`` installs the ``rotor`` extra: ROSS 2.3 on Python 3.11/3.12,
 ROSS 3.1 on 3.13), builds a ``BearingElement`` from a sweep's ``stiffness.csv`` (as
 docs/interchange.md does) and from :meth:`runout.api.BearingCoefficients.to_ross_kwargs`, and
 reads K and C back at two of the sweep's speeds. In ROSS 3 they are read at a whirl frequency
@@ -24,7 +24,7 @@ from runout.api import bearing_coefficients
 from runout.case.model import load_case
 from runout.cli.commands import app
 
-rs = pytest.importorskip("ross", reason="ROSS is the rotor extra: make install installs it")
+rs = pytest.importorskip("ross", reason="ROSS is the rotor extra: make test installs it")
 
 runner = CliRunner()
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
