@@ -187,8 +187,8 @@ def test_other_models_refuse_a_defect(tmp_path: Path, model: str) -> None:
 
 def test_sensor_needs_the_acceleration_signal(tmp_path: Path) -> None:
     text = OUTER.read_text(encoding="utf-8").replace('signal = "acceleration"\n', "")
-    case = tmp_path / "no_signal.toml"
+    case = tmp_path / "case.toml"
     case.write_text(text, encoding="utf-8")
     code, out = _run("run", str(case), "--json")
     assert code == 2, out
-    assert "sensor" in out and "signal" in out
+    assert "case.toml: sensor:" in out and 'signal = "acceleration"' in out, out
