@@ -192,3 +192,18 @@ def test_sensor_needs_the_acceleration_signal(tmp_path: Path) -> None:
     code, out = _run("run", str(case), "--json")
     assert code == 2, out
     assert "case.toml: sensor:" in out and 'signal = "acceleration"' in out, out
+
+
+@pytest.mark.parametrize(
+    ("duration", "key"), [('"2 h"', "sensor.duration"), ('"0.005 s"', "sensor.duration")]
+)
+def test_signal_length_is_bounded(tmp_path: Path, duration: str, key: str) -> None:
+    # too long for the budget (refused before the signal is integrated), too short for the
+    # envelope analysis
+    text = OUTER.read_text(encoding="utf-8").replace('duration = "2 s"', f"duration = {duration}")
+    case = tmp_path / "case.toml"
+    case.write_text(text, encoding="utf-8")
+    code, out = _run("run", str(case), "--json")
+    assert code == 2, out
+    assert len(out.strip().splitlines()) == 1
+    assert "case.toml" in out and key in out, out

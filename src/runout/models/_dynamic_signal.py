@@ -120,7 +120,7 @@ def acceleration_signal(
         A signal too short for the envelope analysis or beyond the budget (naming
         ``sensor.duration`` or ``sensor.sample_rate``).
     """
-    from runout.case.limits import LimitError, format_seconds
+    from runout.case.limits import LimitError, format_bytes, format_seconds
     from runout.geometry.kinematics import bearing_frequencies
 
     sensor = case.spec.sensor
@@ -141,8 +141,17 @@ def acceleration_signal(
     h = 1.0 / (fs * factor)
     steps = n_out * factor + round(integ.transient / h)
     seconds = steps * _cost_per_step(st) * 2.0  # and the forces of every step
+    key = "sensor.duration" if sensor.duration is not None else "analysis.revolutions"
+    # the force at every step, the filtered copy and the resampling's: about 4 arrays
+    memory = 4.0 * 8.0 * n_out * factor + _CHUNK * (24.0 + 8.0 * 8 * st.n_elements)
+    if memory > limits.memory:
+        raise LimitError(
+            key,
+            f"the acceleration signal would need about {format_bytes(memory)} of memory "
+            f"({n_out} samples of {factor} Newmark steps each); shorten it with {key} "
+            f"{limits.raise_hint('memory')}",
+        )
     if steps > MAX_STEPS or seconds > limits.time:
-        key = "sensor.duration" if sensor.duration is not None else "analysis.revolutions"
         raise LimitError(
             key,
             f"the acceleration signal would take {steps:.3g} Newmark steps of {h:.3g} s (about "
