@@ -41,10 +41,12 @@ from runout.analysis.envelope import MIN_BAND_SAMPLES, fast_kurtogram, squared_e
 
 __all__ = [
     "ENVELOPE_HARMONICS",
+    "LABEL_TOLERANCE",
     "ENVELOPE_PEAKS",
     "AccelerationSignal",
     "envelope_block",
     "housing_acceleration",
+    "min_samples",
     "sample",
 ]
 
@@ -96,7 +98,20 @@ class AccelerationSignal:
 
     @classmethod
     def from_json(cls, signal: dict[str, Any], envelope: dict[str, Any]) -> AccelerationSignal:
-        """A signal read back from a run's JSON ``signal`` and ``envelope`` (no samples)."""
+        """A signal read back from a run's JSON ``signal`` and ``envelope`` (no samples).
+
+        Parameters
+        ----------
+        signal : dict
+            The JSON ``signal`` (:meth:`to_json`).
+        envelope : dict
+            The JSON ``envelope`` (:func:`envelope_block`).
+
+        Returns
+        -------
+        AccelerationSignal
+            Without samples; :meth:`to_json` gives ``signal`` back as it was.
+        """
         sensor = signal.get("sensor", {})
         empty = np.zeros(0)
         return cls(
@@ -114,7 +129,15 @@ class AccelerationSignal:
         )
 
     def to_json(self) -> dict[str, Any]:
-        """``signal`` (the sensor and the record's size) of the run's JSON."""
+        """``signal`` (the sensor and the record's size) of the run's JSON.
+
+        Returns
+        -------
+        dict
+            ``quantity``, ``sample_rate_hz``, ``samples``, ``duration_s``, ``rms_m_per_s2``
+            and ``sensor`` (``resonance_hz``, ``damping_ratio``, ``modal_mass_kg``,
+            ``noise``, ``seed``).
+        """
         if self.summary is not None:
             return self.summary
         return {
@@ -312,5 +335,11 @@ def envelope_block(
 
 
 def min_samples() -> int:
-    """Fewest samples an envelope block is computed from (the kurtogram's)."""
+    """Fewest samples an envelope block is computed from (the kurtogram's).
+
+    Returns
+    -------
+    int
+        Twice :data:`runout.analysis.envelope.MIN_BAND_SAMPLES`.
+    """
     return 2 * MIN_BAND_SAMPLES
