@@ -207,3 +207,29 @@ def test_signal_length_is_bounded(tmp_path: Path, duration: str, key: str) -> No
     assert code == 2, out
     assert len(out.strip().splitlines()) == 1
     assert "case.toml" in out and key in out, out
+
+
+def _narrow(tmp_path: Path, dynamics: str = "") -> dict:
+    """A 20 um wide spall (entry 6 us at 1797 rpm), displacement only, 2 revolutions."""
+    text = OUTER.read_text(encoding="utf-8").replace('width = "1 mm"', 'width = "0.02 mm"')
+    text = text.replace('signal = "acceleration"\n', "").split("[sensor]")[0]
+    text = re.sub(r"revolutions = \d+\nsamples = \d+", "revolutions = 2\nsamples = 256", text)
+    text = text.replace("[dynamics]\n", f"[dynamics]\n{dynamics}")
+    case = tmp_path / "narrow.toml"
+    case.write_text(text, encoding="utf-8")
+    code, out = _run("run", str(case), "--json")
+    assert code == 0, out
+    return json.loads(out)
+
+
+def test_step_resolves_a_narrow_spall(tmp_path: Path) -> None:
+    doc = _narrow(tmp_path)
+    note = next(n for n in doc["notes"] if n.startswith("Newmark step at most"))
+    entry_us = float(re.search(r"spall \(([0-9.]+) us\)", note).group(1))
+    # 10 steps over the entry at least (the step also divides the output interval)
+    assert doc["time_step_s"] * 1e6 <= entry_us / 10.0 * (1 + 1e-9)
+
+
+def test_a_coarser_given_step_is_said(tmp_path: Path) -> None:
+    doc = _narrow(tmp_path, 'time_step = "4 us"\n')
+    assert any("the impacts are under-resolved" in n for n in doc["notes"]), doc["notes"]
