@@ -233,3 +233,55 @@ def test_step_resolves_a_narrow_spall(tmp_path: Path) -> None:
 def test_a_coarser_given_step_is_said(tmp_path: Path) -> None:
     doc = _narrow(tmp_path, 'time_step = "4 us"\n')
     assert any("the impacts are under-resolved" in n for n in doc["notes"]), doc["notes"]
+
+
+def _concentration(directory: Path, doc: dict) -> float:
+    """Share of the squared-envelope spectrum's energy within 2 % of BPFO that lies in the
+    three bins around its largest peak (near 1 for an exact line, less as slip spreads it)."""
+    import numpy as np
+
+    from runout.analysis.envelope import squared_envelope_spectrum
+
+    data = np.loadtxt(directory / "signal.csv", delimiter=",", skiprows=1)
+    fs = 1.0 / (data[1, 0] - data[0, 0])
+    ses = squared_envelope_spectrum(data[:, 1], fs, tuple(doc["envelope"]["band_hz"]))
+    bpfo = PUBLISHED["outer"] * SHAFT_HZ
+    near = np.abs(ses.frequency - bpfo) <= 0.02 * bpfo
+    energy = ses.amplitude**2
+    i = int(np.argmax(np.where(near, energy, 0.0)))
+    return float(energy[i - 1 : i + 2].sum() / energy[near].sum())
+
+
+def test_slip_spreads_the_defect_line_and_the_diagnosis_still_finds_it(
+    runs, tmp_path: Path
+) -> None:
+    text = OUTER.read_text(encoding="utf-8").replace("seed = 1\n", "seed = 1\nslip = 0.015\n")
+    case = tmp_path / "slip.toml"
+    case.write_text(text, encoding="utf-8")
+    directory = tmp_path / "out"
+    code, out = _run("run", str(case), "--out", str(directory))
+    assert code == 0, out
+    doc = json.loads((directory / "result.json").read_text())
+    assert any("random slip 0.015" in n for n in doc["notes"])
+    first = doc["envelope"]["peaks"][0]
+    bpfo = PUBLISHED["outer"] * SHAFT_HZ
+    assert first["label"] == "BPFO" and abs(first["frequency_hz"] - bpfo) <= 0.02 * bpfo
+    exact = _concentration(runs["outer"][1], runs["outer"][2])
+    spread = _concentration(directory, doc)
+    # exact: 0.997; 1.5 % slip over 2 s: 0.90 (the phase wanders by a random walk)
+    assert exact > 0.98 and spread < 0.95 * exact, (spread, exact)
+    code, text = _run(
+        "diagnose", str(case), "--record", str(directory / "signal.csv"), "--envelope", "--json"
+    )
+    assert code == 0, text
+    assert json.loads(text)["defects"][0]["part"] == "outer"
+
+
+def test_slip_with_waviness_is_refused(tmp_path: Path) -> None:
+    text = OUTER.read_text(encoding="utf-8").replace("seed = 1\n", "seed = 1\nslip = 0.01\n")
+    text += '\n[[waviness]]\npart = "outer"\norder = 8\namplitude = "0.1 um"\n'
+    case = tmp_path / "case.toml"
+    case.write_text(text, encoding="utf-8")
+    code, out = _run("run", str(case), "--json")
+    assert code == 2, out
+    assert "case.toml" in out and "sensor.slip" in out

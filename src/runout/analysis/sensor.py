@@ -41,8 +41,8 @@ from runout.analysis.envelope import MIN_BAND_SAMPLES, fast_kurtogram, squared_e
 
 __all__ = [
     "ENVELOPE_HARMONICS",
-    "LABEL_TOLERANCE",
     "ENVELOPE_PEAKS",
+    "LABEL_TOLERANCE",
     "AccelerationSignal",
     "envelope_block",
     "housing_acceleration",
@@ -76,7 +76,9 @@ class AccelerationSignal:
     sample_rate_hz, resonance_hz, damping_ratio, modal_mass_kg, noise : float
         The sensor ([Hz], [Hz], [-], [kg], [-]).
     seed : int
-        Of the noise.
+        Of the noise and the slip.
+    slip : float
+        Random slip of the rolling elements (``[sensor] slip``) [-].
     envelope : dict
         :func:`envelope_block`.
     summary : dict or None
@@ -93,6 +95,7 @@ class AccelerationSignal:
     modal_mass_kg: float
     noise: float
     seed: int
+    slip: float = 0.0
     envelope: dict[str, Any] = field(default_factory=dict)
     summary: dict[str, Any] | None = None
 
@@ -124,6 +127,7 @@ class AccelerationSignal:
             modal_mass_kg=float(sensor.get("modal_mass_kg", math.nan)),
             noise=float(sensor.get("noise", math.nan)),
             seed=int(sensor.get("seed", 0)),
+            slip=float(sensor.get("slip", 0.0)),
             envelope=envelope,
             summary=signal,
         )
@@ -136,7 +140,7 @@ class AccelerationSignal:
         dict
             ``quantity``, ``sample_rate_hz``, ``samples``, ``duration_s``, ``rms_m_per_s2``
             and ``sensor`` (``resonance_hz``, ``damping_ratio``, ``modal_mass_kg``,
-            ``noise``, ``seed``).
+            ``noise``, ``seed``, ``slip``).
         """
         if self.summary is not None:
             return self.summary
@@ -152,6 +156,7 @@ class AccelerationSignal:
                 "modal_mass_kg": self.modal_mass_kg,
                 "noise": self.noise,
                 "seed": self.seed,
+                "slip": self.slip,
             },
         }
 

@@ -470,7 +470,13 @@ class SensorSpec(_Table):
     noise: Plain = Field(
         0.0, description="Rms of the added Gaussian noise over the signal's rms [-] (>= 0)."
     )
-    seed: int = Field(0, ge=0, description="Seed of the noise's random generator.")
+    seed: int = Field(0, ge=0, description="Seed of the noise's and the slip's random draws.")
+    slip: Plain = Field(
+        0.0,
+        description="Random slip of the rolling elements, 0 to 0.05: the relative standard "
+        "deviation of the cage's speed, drawn anew each ball passage (each impact period "
+        "jitters by about as much; 0.01-0.02 is typical).",
+    )
 
     @field_validator("resonance", "sample_rate")
     @classmethod
@@ -491,6 +497,13 @@ class SensorSpec(_Table):
     def _noise(cls, value: float) -> float:
         if not 0.0 <= value <= 100.0:
             raise ValueError(f"must be from 0 to 100 (times the signal's rms), got {value!r}")
+        return value
+
+    @field_validator("slip")
+    @classmethod
+    def _slip(cls, value: float) -> float:
+        if not 0.0 <= value <= 0.05:
+            raise ValueError(f"must be from 0 to 0.05 (0.02 = 2 %), got {value!r}")
         return value
 
     @field_validator("duration", "modal_mass")

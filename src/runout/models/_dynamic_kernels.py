@@ -122,8 +122,48 @@ def spall_drop(angle: float, arc: float, width: float, depth: float, radius: flo
 
 
 @register_jitable(no_cfunc_wrapper=True)
-def _spall_drops(t: float, sp: FloatArray, theta0: FloatArray, wc: float, dr: FloatArray) -> None:
-    """Drop of every ball into the spalls at time t [m] (:func:`spall_drop`), into ``dr``."""
+def slip_angle(t: float, slip: FloatArray) -> float:
+    """Angle the cage has slipped by at time t [rad] (0 without slip).
+
+    ``slip`` is ``[t0, T, φ_0, φ_1, ...]``: the slip angle at the knots t0 + kT, linear in
+    between (the cage's speed constant over each interval); empty: no slip.
+    """
+    n = slip.size - 2
+    if n < 2:
+        return 0.0
+    u: float = (t - slip[0]) / slip[1]
+    k = math.floor(u)
+    if k < 0:
+        k = 0
+    elif k > n - 2:
+        k = n - 2
+    f = u - k
+    a: float = slip[2 + k]
+    b: float = slip[3 + k]
+    return a + (b - a) * f
+
+
+@register_jitable(no_cfunc_wrapper=True)
+def _slip_balls(phi: float, cth: FloatArray, sth: FloatArray) -> None:
+    """Turn every ball's (cos, sin) by the slip angle ``phi`` [rad]."""
+    c = math.cos(phi)
+    s = math.sin(phi)
+    for j in range(cth.size):
+        cj = cth[j]
+        sj = sth[j]
+        cth[j] = cj * c - sj * s
+        sth[j] = cj * s + sj * c
+
+
+@register_jitable(no_cfunc_wrapper=True)
+def _spall_drops(
+    t: float, sp: FloatArray, theta0: FloatArray, wc: float, phi: float, dr: FloatArray
+) -> None:
+    """Drop of every ball into the spalls at time t [m] (:func:`spall_drop`), into ``dr``.
+
+    ``phi`` is the cage's slip angle [rad] (:func:`slip_angle`): the balls' angles and, in
+    proportion, their spin lag by it.
+    """
     for j in range(dr.size):
         dr[j] = 0.0
     for i in range(sp.shape[0]):
@@ -131,12 +171,12 @@ def _spall_drops(t: float, sp: FloatArray, theta0: FloatArray, wc: float, dr: Fl
         if sp[i, S_BALL] == 0.0:
             # raceway: the contact point's angle on the ring, from the spall's centre
             for j in range(dr.size):
-                ang = theta0[j] + (wc - sp[i, S_RATE]) * t - sp[i, S_ANGLE]
+                ang = theta0[j] + (wc - sp[i, S_RATE]) * t + phi - sp[i, S_ANGLE]
                 dr[j] += spall_drop(ang, arc, w, dp, r)
         else:
             # ball: its spall meets the outer raceway at spin angle 0, the inner at pi
             j = int(sp[i, S_ELEMENT])
-            ang = sp[i, S_RATE] * t + sp[i, S_ANGLE]
+            ang = sp[i, S_RATE] * (t + (phi / wc if wc != 0.0 else 0.0)) + sp[i, S_ANGLE]
             dr[j] += max(spall_drop(ang, arc, w, dp, r), spall_drop(ang - math.pi, arc, w, dp, r))
 
 
@@ -374,6 +414,7 @@ def _newmark_radial(
     phasors: Phasors,
     sp: FloatArray,
     theta0: FloatArray,
+    slip: FloatArray,
     max_iter: int,
     out: FloatArray,
 ) -> tuple[int, int, int, int]:
@@ -409,6 +450,7 @@ def _newmark_radial(
         gap[j] = gw[j] = gx[j] = par[P_G0]
         wb[j] = dr[j] = 0.0
     spalled = sp.shape[0] > 0
+    slipping = slip.size > 3
     wc = par[P_WC]
     ph = np.empty((rate.size, 2))
     g0 = par[P_G0]
@@ -433,8 +475,12 @@ def _newmark_radial(
                 gw[j] = gap[j] + wb[j]
         else:
             _phasor_balls(ph, ball, cth, sth)
+        phi = 0.0
+        if slipping:
+            phi = slip_angle(t_start + (n + 1) * h, slip)
+            _slip_balls(phi, cth, sth)
         if spalled:
-            _spall_drops(t_start + (n + 1) * h, sp, theta0, wc, dr)
+            _spall_drops(t_start + (n + 1) * h, sp, theta0, wc, phi, dr)
             for j in range(z):
                 gx[j] = gw[j] - dr[j]
         else:
@@ -518,6 +564,7 @@ def newmark_kernel(
     max_iter: int,
     out: FloatArray,
     spalls: FloatArray | None = None,
+    slip: FloatArray | None = None,
 ) -> tuple[int, int, int, int]:
     """Integrate seed 003 eq. 2.16 (module form) over ``n_steps`` Newmark steps (compiled).
 
@@ -560,6 +607,10 @@ def newmark_kernel(
     spalls : ndarray, shape (n, N_SP), optional
         Localized defects (:attr:`DynamicSetup.spalls`): each ball's approach drops by
         :func:`spall_drop` while its contact point is over one. Default none.
+    slip : ndarray, optional
+        The cage's slip angle at knots (:func:`slip_angle`): every ball's angle, and its spin
+        in proportion, lag by it. Only for parts without waviness (their phasors do not
+        slip). Default none.
 
     Returns
     -------
@@ -579,13 +630,16 @@ def newmark_kernel(
     phasors = (rate, rot, ball, ring, bcoef, hk[9])
     sp = np.zeros((0, N_SP)) if spalls is None else np.ascontiguousarray(spalls, np.float64)
     th0 = np.ascontiguousarray(theta0, np.float64)
+    sl = np.zeros(0) if slip is None else np.ascontiguousarray(slip, np.float64)
+    if sl.size > 3 and rate.size > 2:
+        raise ValueError("slip is modelled for parts without waviness (rotating phasors)")
     if ndof == 2 and par[P_ZP] == 0.0:
         # in the plane without axial offset the exact geometry is seed 003 eq. 2.3-2.5
         return _newmark_radial(
-            n_steps, stride, t_start, state, par, phasors, sp, th0, max_iter, out
+            n_steps, stride, t_start, state, par, phasors, sp, th0, sl, max_iter, out
         )
     return _newmark_general(
-        n_steps, stride, t_start, state, par, phasors, sp, th0, ndof, max_iter, out
+        n_steps, stride, t_start, state, par, phasors, sp, th0, sl, ndof, max_iter, out
     )
 
 
@@ -599,6 +653,7 @@ def _newmark_general(
     phasors: Phasors,
     sp: FloatArray,
     theta0: FloatArray,
+    slip: FloatArray,
     ndof: int,
     max_iter: int,
     out: FloatArray,
@@ -626,6 +681,7 @@ def _newmark_general(
         gap[j] = par[P_G0]
         wb[j] = wx[j] = dr[j] = 0.0
     spalled = sp.shape[0] > 0
+    slipping = slip.size > 3
     wc = par[P_WC]
     ph = np.empty((rate.size, 2))
     g0 = par[P_G0]
@@ -650,8 +706,12 @@ def _newmark_general(
             _phasor_deviations(ph, ball, ring, bcoef, boff, g0, cth, sth, gap, wb)
         else:
             _phasor_balls(ph, ball, cth, sth)
+        phi = 0.0
+        if slipping:
+            phi = slip_angle(t_start + (n + 1) * h, slip)
+            _slip_balls(phi, cth, sth)
         if spalled:
-            _spall_drops(t_start + (n + 1) * h, sp, theta0, wc, dr)
+            _spall_drops(t_start + (n + 1) * h, sp, theta0, wc, phi, dr)
         for j in range(z):
             wx[j] = wb[j] - dr[j]
         e0 = fx + fu * ph[1, 0]

@@ -191,6 +191,9 @@ class DynamicSetup:
     spalls : ndarray, shape (n, N_SP)
         The ``[[defect]]`` entries, one row each (columns ``S_*`` of
         :mod:`runout.models._dynamic_kernels`); empty without defects.
+    slip : ndarray
+        The cage's slip angle at knots, ``[t0, T, φ_0, φ_1, ...]``
+        (:func:`runout.models._dynamic_kernels.slip_angle`); empty: the exact kinematics.
     contact_law : str
     reference_approach : float
         Approach scale for tolerances [m].
@@ -213,6 +216,7 @@ class DynamicSetup:
     kinematics: Kinematics
     harmonics: Harmonics
     spalls: NDArray[np.float64] = field(default_factory=lambda: np.zeros((0, N_SP)))
+    slip: NDArray[np.float64] = field(default_factory=lambda: np.zeros(0))
     contact_law: str = "exact"
     reference_approach: float = 1e-6
     notes: tuple[str, ...] = ()
@@ -491,6 +495,21 @@ def spall_table(
     return out
 
 
+def slip_angles_np(st: DynamicSetup, t: NDArray[np.float64]) -> NDArray[np.float64]:
+    """The cage's slip angle at instants t [rad] (0 without slip), by :func:`numpy.interp`."""
+    t = np.atleast_1d(np.asarray(t, dtype=np.float64))
+    if st.slip.size < 4:
+        return np.zeros_like(t)
+    knots = st.slip[0] + st.slip[1] * np.arange(st.slip.size - 2)
+    values = st.slip[2:]
+    inside = np.interp(t, knots, values)
+    # beyond the knots: the first or last interval's line, as the kernels extend it
+    lo = values[0] + (values[1] - values[0]) * (t - knots[0]) / st.slip[1]
+    hi = values[-2] + (values[-1] - values[-2]) * (t - knots[-2]) / st.slip[1]
+    out: NDArray[np.float64] = np.where(t < knots[0], lo, np.where(t > knots[-1], hi, inside))
+    return out
+
+
 def spall_drops_np(st: DynamicSetup, t: NDArray[np.float64]) -> NDArray[np.float64]:
     """Drop of every ball into the spalls [m], shape (n, Z): the kernels' sum, vectorised.
 
@@ -500,6 +519,7 @@ def spall_drops_np(st: DynamicSetup, t: NDArray[np.float64]) -> NDArray[np.float
     t = np.atleast_1d(np.asarray(t, dtype=np.float64))
     out = np.zeros((t.size, st.n_elements))
     wc = TWO_PI * st.kinematics.cage
+    phi = slip_angles_np(st, t)
 
     def drop(angle: NDArray[np.float64], row: NDArray[np.float64]) -> NDArray[np.float64]:
         wrapped = np.angle(np.exp(1j * angle))
@@ -510,10 +530,10 @@ def spall_drops_np(st: DynamicSetup, t: NDArray[np.float64]) -> NDArray[np.float
 
     for row in st.spalls:
         if row[S_BALL] == 0.0:
-            ang = st.theta0[None, :] + (wc - row[S_RATE]) * t[:, None] - row[S_ANGLE]
+            ang = st.theta0[None, :] + ((wc - row[S_RATE]) * t + phi)[:, None] - row[S_ANGLE]
             out += drop(ang, row)
         else:
-            ang = row[S_RATE] * t + row[S_ANGLE]
+            ang = row[S_RATE] * (t + (phi / wc if wc != 0.0 else 0.0)) + row[S_ANGLE]
             out[:, int(row[S_ELEMENT])] += np.maximum(drop(ang, row), drop(ang - np.pi, row))
     return out
 
@@ -528,7 +548,7 @@ def _deviations_np(
     ik, ia, ip, ok, oa, op, bk, ba, bp, boff = st.harmonics
     kin = st.kinematics
     t = np.atleast_1d(np.asarray(t, dtype=np.float64))
-    theta = st.theta0[None, :] + TWO_PI * kin.cage * t[:, None]
+    theta = st.theta0[None, :] + (TWO_PI * kin.cage * t + slip_angles_np(st, t))[:, None]
 
     def hsum(k: NDArray[Any], a: NDArray[Any], p: NDArray[Any], x: NDArray[Any]) -> Any:
         if k.size == 0:

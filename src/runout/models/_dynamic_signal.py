@@ -80,6 +80,30 @@ def spall_entry_time(st: DynamicSetup) -> float | None:
     return min(times) if times else None
 
 
+def _slip_knots(st: DynamicSetup, transient: float, duration: float, sensor: Any) -> Any:
+    r"""The cage's slip angle at the start of each ball passage from -transient [rad].
+
+    The cage turns at :math:`\omega_c(1 + s\,n_k)` over the k-th interval of one ball
+    passage, :math:`T = 1/(Z|f_c|)` (a ball passes a point of the outer ring), :math:`n_k`
+    standard normal (seeded by ``[sensor] seed``): its slip angle grows by
+    :math:`\omega_c T s\,n_k` over each interval, and each impact period on the outer ring
+    jitters by a relative standard deviation s.
+    """
+    if st.harmonics[0].size + st.harmonics[3].size + st.harmonics[6].size:
+        raise GeometryError(
+            "sensor.slip",
+            "random slip is modelled for a bearing without waviness or ball size errors (their "
+            "rotating phasors do not slip): remove sensor.slip or the imperfections",
+        )
+    wc = TWO_PI * st.kinematics.cage
+    period = 1.0 / (st.n_elements * abs(st.kinematics.cage))
+    count = math.ceil((transient + duration) / period) + 3
+    rng = np.random.default_rng((sensor.seed, 1))  # a stream of its own: the noise's is kept
+    steps = wc * period * sensor.slip * rng.standard_normal(count)
+    values = np.concatenate([[0.0], np.cumsum(steps)])
+    return np.concatenate([[-transient - period, period], values])
+
+
 def acceleration_signal(
     case: Any,
     st: DynamicSetup,
@@ -157,6 +181,14 @@ def acceleration_signal(
             f"the acceleration signal would take {steps:.3g} Newmark steps of {h:.3g} s (about "
             f"{format_seconds(seconds)}); shorten it with {key} {limits.raise_hint('time')}",
         )
+    slip_notes = ""
+    if sensor.slip > 0.0:
+        st = st.replace(slip=_slip_knots(st, integ.transient, duration, sensor))
+        slip_notes = (
+            f"; random slip {sensor.slip:.3g}: the cage's speed varies by that relative standard "
+            "deviation, drawn anew each ball passage (each impact period jitters by about as "
+            "much; the balls and their spin follow the cage)"
+        )
     run = _Stepper(st, st.params(h), h)
     t0 = -integ.transient
     run.start_static(t0, static_equilibrium(st, np.array([t0]))[0])
@@ -214,6 +246,7 @@ def acceleration_signal(
         modal_mass_kg=mass,
         noise=float(sensor.noise),
         seed=int(sensor.seed),
+        slip=float(sensor.slip),
         envelope=envelope,
     )
     notes = [
@@ -228,8 +261,9 @@ def acceleration_signal(
         )
         + f"; sampled at {fs:.6g} Hz after an anti-aliasing filter, {n_out} samples "
         f"({duration:.4g} s), Newmark step {h * 1e6:.4g} us ({factor} per sample); Gaussian "
-        f"noise {sensor.noise:.3g} x the signal rms (seed {sensor.seed}); no slip of the "
-        "rolling elements and a constant speed (the defect lines are exact)",
+        f"noise {sensor.noise:.3g} x the signal rms (seed {sensor.seed})"
+        + (slip_notes or "; no slip of the rolling elements (the defect lines are exact)")
+        + "; a constant shaft speed",
         f"envelope band {envelope['band_hz'][0]:.6g}-{envelope['band_hz'][1]:.6g} Hz chosen by "
         f"the fast kurtogram (spectral kurtosis {envelope['spectral_kurtosis']:.3g})",
     ]

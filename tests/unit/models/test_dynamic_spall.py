@@ -123,6 +123,42 @@ def test_compiled_and_numpy_drops_agree() -> None:
         ref = ds.spall_drops_np(s, t)
         dr = np.empty(s.n_elements)
         for i in range(0, t.size, 37):
-            dk._spall_drops(t[i], s.spalls, s.theta0, ds.TWO_PI * s.kinematics.cage, dr)
+            dk._spall_drops(t[i], s.spalls, s.theta0, ds.TWO_PI * s.kinematics.cage, 0.0, dr)
             assert np.allclose(dr, ref[i], rtol=0.0, atol=1e-15), part
         assert ref.max() > 0.0, part
+
+
+@pytest.mark.parametrize("axial", [False, True], ids=["radial", "general"])
+@pytest.mark.parametrize("part", ["inner", "ball"])
+def test_kernel_matches_reference_with_slip(part: str, axial: bool) -> None:
+    # the cage slips by a random angle, linear over each 5 ms: the balls and the spalls follow
+    s = _setup(DEFECTS[part], axial)
+    rng = np.random.default_rng(4)
+    knots = np.concatenate([[-0.01, 0.005], np.cumsum(np.r_[0.0, 0.02 * rng.standard_normal(80)])])
+    s = s.replace(slip=knots)
+    t0 = _entry_time(s)
+    q0 = dy.static_equilibrium(s, np.array([t0]))[0]
+    state = np.zeros(9)
+    state[:3] = q0
+    h, n = 4e-6, 260
+    assert np.ptp(ds.slip_angles_np(s, t0 + h * np.arange(n))) > 0.0
+    ref = dy.newmark_reference(s, h, n, state.copy(), t0)
+    out = np.zeros((n, 3))
+    status, _, _, _ = dy.newmark_kernel(
+        n, 1, t0, state.copy(), s.params(h), s.theta0, s.harmonics, s.ndof, dy.MAX_ITER, out,
+        s.spalls, s.slip,
+    )  # fmt: skip
+    assert status == dy.OK
+    motion = np.ptp(ref, axis=0).max()
+    assert motion > 1e-9
+    assert np.max(np.abs(out - ref)) < 1e-8 * motion
+
+
+def test_slip_angle_matches_numpy_interpolation() -> None:
+    s = _setup(DEFECTS["outer"], False)
+    knots = np.array([-0.02, 0.01, 0.0, 0.3, -0.1, 0.05, 0.2])
+    s = s.replace(slip=knots)
+    t = np.linspace(-0.05, 0.1, 301)  # beyond both ends too: the end intervals' lines
+    ref = ds.slip_angles_np(s, t)
+    got = np.array([dk.slip_angle(x, knots) for x in t])
+    assert np.allclose(got, ref, rtol=0.0, atol=1e-15)
