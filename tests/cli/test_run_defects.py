@@ -7,8 +7,9 @@ published order times the shaft speed (the model's contact angle under the 500 N
 moves the orders by under 0.5 %), labelled with the part; the inner raceway's BPFI carries
 sidebands at +- the shaft speed, the ball's BDF sidebands at +- the cage speed (FTF);
 `runout run --out DIR` writes DIR/signal.csv, which `runout diagnose --record --envelope` reads
-and names the defective part from; the healthy bearing's signal is not called defective. Bad
-entries exit 2 with one line naming the file and the key.
+and names the defective part from; the healthy bearing's signal is not called defective; a
+random slip spreads the defect line; the step resolves a narrow spall. Bad entries exit 2 with
+one line naming the file and the key.
 """
 
 from __future__ import annotations
@@ -125,9 +126,9 @@ def test_diagnose_names_the_defective_part_from_signal_csv(runs, part: str) -> N
 
 
 def test_healthy_bearing_signal_is_not_called_defective(runs) -> None:
-    case, directory, doc = runs["healthy"]
-    assert not any(p["part"] in ("outer", "inner") and p["harmonic"] == 1 and
-                   p["sideband"] == 0 for p in doc["envelope"]["peaks"][:1])  # fmt: skip
+    # its ball passage (Z f_c, the BPFO of a stationary outer ring) varies the stiffness, but
+    # without impacts: not impulsive, not called defective
+    case, directory, _doc = runs["healthy"]
     code, text = _run(
         "diagnose", str(case), "--record", str(directory / "signal.csv"), "--envelope", "--json"
     )
