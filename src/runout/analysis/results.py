@@ -169,6 +169,9 @@ class RunResult:
         (:meth:`runout.case.designation.BearingSource.to_json`): one object for
         ``[bearing]`` (JSON ``bearing_source``), a list for a spindle's ``[[bearings]]`` (JSON
         ``bearing_sources``); None without a designation.
+    signal : runout.analysis.sensor.AccelerationSignal or None
+        The housing acceleration (``[analysis] signal = "acceleration"``, dynamic model): JSON
+        ``signal`` and ``envelope``, ``run --out`` writes ``signal.csv``.
     """
 
     model: str
@@ -190,6 +193,7 @@ class RunResult:
     solver_resolution_m: float | None = None
     stated_contact_angle_deg: float | None = None
     bearing_source: dict[str, Any] | list[dict[str, Any]] | None = None
+    signal: Any = field(default=None, repr=False)
 
     # ---------------------------------------------------------------- analysis
     @property
@@ -436,6 +440,9 @@ class RunResult:
             out["bearing_source"] = self.bearing_source
         elif self.bearing_source is not None:
             out["bearing_sources"] = list(self.bearing_source)
+        if self.signal is not None:
+            out["signal"] = self.signal.to_json()
+            out["envelope"] = self.signal.envelope
         if self.notes:
             out["notes"] = list(self.notes)
         return out
@@ -515,6 +522,7 @@ class RunResult:
             solver_resolution_m=_optional_float(doc.get("solver_resolution_m")),
             stated_contact_angle_deg=float(doc["contact_angle_deg"]),
             bearing_source=doc.get("bearing_source", doc.get("bearing_sources")),
+            signal=_signal_from(doc),
         )
         if model == "linear" and cls is RunResult:
             # the linear model's result type lives with the model (a layer above), by name
@@ -572,6 +580,15 @@ def _component_from_json(doc: dict[str, Any]) -> Component:
         repeatable=bool(doc["repeatable"]),
         sources=tuple(Source(**src) for src in doc["sources"]),
     )
+
+
+def _signal_from(doc: dict[str, Any]) -> Any:
+    """The ``signal`` and ``envelope`` of a run's JSON (an acceleration signal), or None."""
+    if "signal" not in doc:
+        return None
+    from runout.analysis.sensor import AccelerationSignal
+
+    return AccelerationSignal.from_json(doc["signal"], doc.get("envelope", {}))
 
 
 def _radians_exactly(degrees: float) -> float:

@@ -75,6 +75,7 @@ Plain = Annotated[float, _quantity("dimensionless")]
 MomentQ = Annotated[float, _quantity("moment")]
 KinematicViscosity = Annotated[float, _quantity("kinematic_viscosity")]
 MemoryQ = Annotated[float, _quantity("memory")]
+Frequency = Annotated[float, _quantity("frequency")]
 
 
 def _order_at_most(value: int, what: str = "order") -> None:
@@ -494,6 +495,129 @@ class WavinessSpec(_Table):
         return self
 
 
+class DefectSpec(_Table):
+    """``[[defect]]``: one localized defect (a spall) on a raceway or a ball (model dynamic)."""
+
+    part: Literal["outer", "inner", "ball"] = Field(
+        description='"outer" or "inner" raceway, or a "ball" (its element).'
+    )
+    width: Length = Field(
+        description="Length of the spall along the rolling direction [m] (> 0; the bearing "
+        "bounds it: below a tenth of the raceway's or ball's circumference)."
+    )
+    depth: Length = Field(
+        description="Depth of the spall [m] (> 0, below the ball radius); a ball of diameter D "
+        "drops at most D/2 - sqrt(D^2/4 - width^2/4) into it."
+    )
+    angle: AngleQ | None = Field(
+        None,
+        description="Ring defects: angle of the spall's centre on the ring [rad], "
+        "counter-clockwise from +x at t = 0 (the frame of radial_load_direction); default 0.",
+    )
+    element: int | None = Field(
+        None,
+        ge=1,
+        description="Ball defects: the ball (1-based, as [[waviness]] element); the spall "
+        "faces the outer raceway at t = 0.",
+    )
+
+    @field_validator("width", "depth")
+    @classmethod
+    def _positive(cls, value: float) -> float:
+        if not value > 0.0:
+            raise ValueError(f"must be > 0, got {value!r} m")
+        return value
+
+    @model_validator(mode="after")
+    def _where(self) -> DefectSpec:
+        if self.part == "ball":
+            if self.element is None:
+                raise _KeyedError("element", 'required for part = "ball": which ball (1-based)')
+            if self.angle is not None:
+                raise _KeyedError(
+                    "angle",
+                    "only applies to ring defects; a ball defect faces the outer raceway at t = 0",
+                )
+        elif self.element is not None:
+            raise _KeyedError("element", f'only applies to part = "ball", not "{self.part}"')
+        return self
+
+
+class SensorSpec(_Table):
+    """``[sensor]``: the accelerometer on the housing (``[analysis] signal = "acceleration"``)."""
+
+    resonance: Frequency = Field(
+        description="Natural frequency of the housing mode the impacts ring [Hz] (> 0)."
+    )
+    damping_ratio: Plain = Field(description="Damping ratio of that mode [-], 0 < zeta < 1.")
+    sample_rate: Frequency = Field(
+        description="Sample rate of the signal [Hz], above twice the resonance."
+    )
+    duration: Time | None = Field(
+        None,
+        description="Length of the signal [s]; default the analysis window (revolutions / speed).",
+    )
+    modal_mass: Mass | None = Field(
+        None,
+        description="Modal mass of the housing mode [kg]; default the [dynamics] mass.",
+    )
+    noise: Plain = Field(
+        0.0, description="Rms of the added Gaussian noise over the signal's rms [-] (>= 0)."
+    )
+    seed: int = Field(0, ge=0, description="Seed of the noise's and the slip's random draws.")
+    slip: Plain = Field(
+        0.0,
+        description="Random slip of the rolling elements, 0 to 0.05: the relative standard "
+        "deviation of the cage's speed, drawn anew each ball passage (each impact period "
+        "jitters by about as much; 0.01-0.02 is typical).",
+    )
+
+    @field_validator("resonance", "sample_rate")
+    @classmethod
+    def _positive_rate(cls, value: float) -> float:
+        if not value > 0.0:
+            raise ValueError(f"must be > 0, got {value!r} Hz")
+        return value
+
+    @field_validator("damping_ratio")
+    @classmethod
+    def _ratio(cls, value: float) -> float:
+        if not 0.0 < value < 1.0:
+            raise ValueError(f"must be between 0 and 1 (exclusive), got {value!r}")
+        return value
+
+    @field_validator("noise")
+    @classmethod
+    def _noise(cls, value: float) -> float:
+        if not 0.0 <= value <= 100.0:
+            raise ValueError(f"must be from 0 to 100 (times the signal's rms), got {value!r}")
+        return value
+
+    @field_validator("slip")
+    @classmethod
+    def _slip(cls, value: float) -> float:
+        if not 0.0 <= value <= 0.05:
+            raise ValueError(f"must be from 0 to 0.05 (0.02 = 2 %), got {value!r}")
+        return value
+
+    @field_validator("duration", "modal_mass")
+    @classmethod
+    def _positive(cls, value: float | None) -> float | None:
+        if value is not None and not value > 0.0:
+            raise ValueError(f"must be > 0, got {value!r}")
+        return value
+
+    @model_validator(mode="after")
+    def _nyquist(self) -> SensorSpec:
+        if self.sample_rate <= 2.0 * self.resonance:
+            raise _KeyedError(
+                "sample_rate",
+                f"must be above twice the resonance ({2.0 * self.resonance:.6g} Hz), got "
+                f"{self.sample_rate:.6g} Hz",
+            )
+        return self
+
+
 class WavinessSpectrumSpec(_Table):
     """``[[waviness_spectrum]]``: amplitude(k) = amplitude * k**exponent for k in orders."""
 
@@ -737,6 +861,13 @@ class AnalysisSpec(_Table):
         ),
     )
     samples: int = Field(4096, ge=16, description="Number of instants.")
+    # None when unset (read as "displacement"): a study's digest hashes the defaults
+    signal: Literal["displacement", "acceleration"] | None = Field(
+        None,
+        description='"displacement" (default) or "acceleration": also the housing acceleration '
+        'measured by [sensor] (model = "dynamic"; run --out writes signal.csv, the JSON an '
+        "envelope block).",
+    )
     max_memory: MemoryQ | None = Field(
         None,
         description=(
@@ -1504,6 +1635,8 @@ class CaseSpec(_Table):
     waviness: list[WavinessSpec] = Field(default_factory=list)
     waviness_spectrum: list[WavinessSpectrumSpec] = Field(default_factory=list)
     profile: list[ProfileSpec] = Field(default_factory=list)
+    defect: list[DefectSpec] = Field(default_factory=list)
+    sensor: SensorSpec | None = None
     slant: SlantSpec | None = None
     elements: ElementsSpec | dict[str, ElementsSpec] | None = None
     analysis: AnalysisSpec = Field(default_factory=AnalysisSpec)
@@ -1574,6 +1707,23 @@ class CaseSpec(_Table):
         return value
 
     @model_validator(mode="after")
+    def _sensor_with_signal(self) -> CaseSpec:
+        # the sensor is read only for an acceleration signal, and that signal needs one
+        acceleration = self.analysis.signal == "acceleration"
+        if acceleration and self.sensor is None:
+            raise _KeyedError(
+                "analysis.signal",
+                '"acceleration" needs a [sensor] table (resonance, damping_ratio, sample_rate)',
+            )
+        if self.sensor is not None and not acceleration:
+            raise _KeyedError(
+                "sensor",
+                'is read only with [analysis] signal = "acceleration": add that key or remove '
+                "the table",
+            )
+        return self
+
+    @model_validator(mode="after")
     def _one_preload_kind(self) -> CaseSpec:
         # two keys naming two kinds are refused, never resolved one way: each reads as the
         # other would give another result
@@ -1629,7 +1779,7 @@ class CaseSpec(_Table):
             )
         return self
 
-    @field_validator("waviness", "waviness_spectrum", "profile", mode="before")
+    @field_validator("waviness", "waviness_spectrum", "profile", "defect", mode="before")
     @classmethod
     def _few_entries(cls, value: object) -> object:
         # each entry is added to the parts one at a time (quadratic in the number of entries):

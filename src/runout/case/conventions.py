@@ -219,6 +219,17 @@ def _element_list(name: str) -> Any:
     return present
 
 
+def _entry_list(table: str) -> Any:
+    def present(spec: CaseSpec) -> list[str]:
+        return [f"{table}[{i}]" for i in range(1, len(getattr(spec, table)) + 1)]
+
+    return present
+
+
+def _signal_keys(spec: CaseSpec) -> list[str]:
+    return ["analysis.signal"] if spec.analysis.signal == "acceleration" else []
+
+
 def _spindle_tables(spec: CaseSpec) -> list[str]:
     return ["spindle", "bearings"] if spec.bearings else []
 
@@ -692,6 +703,35 @@ KEYS: tuple[KeyConvention, ...] = (
             if m != "spindle"
         },
         _spindle_tables,
+    ),
+    KeyConvention(
+        "defect",
+        "Localized defect (spall) of width along the rolling direction and depth on the outer "
+        "or inner raceway (at angle, ring frame) or on a ball (element): the contact approach "
+        "of a ball over it drops by the depth its centre can reach.",
+        "m, rad",
+        (R, R, R, R, H, R, R),
+        {
+            m: "it has no impacts: a spall is a short, local loss of contact that only the "
+            "time integration of the dynamic model resolves"
+            for m in MODELS
+            if m != "dynamic"
+        },
+        _entry_list("defect"),
+    ),
+    KeyConvention(
+        "analysis.signal, sensor",
+        'signal = "acceleration": the housing acceleration along the measuring direction, the '
+        "bearing's force on the outer ring through one resonance of the housing ([sensor] "
+        "resonance, damping_ratio, sample_rate, noise), and its envelope spectrum.",
+        "Hz, -",
+        (R, R, R, R, H, R, R),
+        {
+            m: "it computes no contact force history to make an acceleration from"
+            for m in MODELS
+            if m != "dynamic"
+        },
+        _signal_keys,
     ),
     _option_of(
         "dynamic",

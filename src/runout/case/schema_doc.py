@@ -15,11 +15,13 @@ from pydantic.fields import PydanticUndefined
 from runout.case.model import (
     AnalysisSpec,
     BearingSpec,
+    DefectSpec,
     DynamicsSpec,
     ElementsSpec,
     MaterialSpec,
     OperationSpec,
     ProfileSpec,
+    SensorSpec,
     SlantSpec,
     SpindleBearingSpec,
     SpindleSpec,
@@ -39,10 +41,12 @@ TABLES: list[tuple[str, type[BaseModel]]] = [
     ("[[waviness]]", WavinessSpec),
     ("[[waviness_spectrum]]", WavinessSpectrumSpec),
     ("[[profile]]", ProfileSpec),
+    ("[[defect]]", DefectSpec),
     ("[slant]", SlantSpec),
     ("[elements]", ElementsSpec),
     ("[analysis]", AnalysisSpec),
     ("[dynamics]", DynamicsSpec),
+    ("[sensor]", SensorSpec),
     ("[study]", StudySpec),
 ]
 

@@ -1012,7 +1012,7 @@ def reproduce_command(
         typer.Option(
             "--only",
             help="Comma-separated sections (kinematics, contact, spectrum, linear, roller, "
-            "dynamic, quasi_static, life, diagnosis, envelope, studies); default all.",
+            "dynamic, quasi_static, life, diagnosis, envelope, studies, defects); default all.",
         ),
     ] = None,
     out: Annotated[Path, typer.Option("--out", help="Where to write the document.")] = Path(

@@ -345,7 +345,7 @@ class _Stepper:
         st = self.st
         status, bad, it, ml = newmark_kernel(
             n_steps, stride, self.t, self.state, self.par, st.theta0, st.harmonics, st.ndof,
-            MAX_ITER, out,
+            MAX_ITER, out, st.spalls, st.slip,
         )  # fmt: skip
         if status != OK:
             _raise(int(status), self.steps + int(bad), self.t + (int(bad) + 1) * self.h)

@@ -51,6 +51,7 @@ FORCE_RTOL = 1e-13
 #: Steps between two recomputations of the rotating phasors from the exact angles (their
 #: round-off grows by ~1e-16 per step in between).
 ANCHOR_STEPS = 256
+TWO_PI_K = 2.0 * math.pi
 
 # kernel status codes
 OK, NOT_CONVERGED, BLOWUP, NOT_FINITE = 0, 1, 2, 3
@@ -60,6 +61,123 @@ P_H, P_M, P_C, P_A, P_G0, P_ZP, P_K = 0, 1, 2, 3, 4, 5, 6
 P_WC, P_WI, P_WO, P_WB = 7, 8, 9, 10
 P_FU, P_WU, P_FX, P_FY, P_FZ, P_TOL = 11, 12, 13, 14, 15, 16
 N_PAR = 17
+
+# columns of the spall table of the kernels (:attr:`DynamicSetup.spalls`, one row a defect)
+#: 0 a raceway spall, 1 a ball spall.
+S_BALL = 0
+#: Raceway: angular speed of its ring [rad/s]; ball: signed contact rate of the ball [rad/s].
+S_RATE = 1
+#: Raceway: angle of the spall's centre on its ring [rad]; ball: 0 (facing the outer raceway).
+S_ANGLE = 2
+#: Radius of the spalled surface [m] (arc length per radian of the angle above).
+S_ARC = 3
+#: Width along the rolling direction [m], depth [m], radius of the ball that drops in [m].
+S_WIDTH, S_DEPTH, S_RADIUS = 4, 5, 6
+#: Ball spalls: the ball's index (0-based).
+S_ELEMENT = 7
+N_SP = 8
+
+
+@register_jitable(no_cfunc_wrapper=True)
+def spall_drop(angle: float, arc: float, width: float, depth: float, radius: float) -> float:
+    r"""How far a ball's centre drops into a spall at ``angle`` from its centre [m].
+
+    A ball of radius r over a spall of width w, its centre a distance x = arc·|angle| from the
+    spall's centre, rests on the nearer edge, e = w/2 - x away (horizontally): it drops
+    :math:`r - \sqrt{r^2 - e^2}` (0 at the edge, growing as :math:`e^2/2r`: a smooth entry),
+    at most the depth; outside the spall (e <= 0) it does not drop. Over the centre of a
+    spall deeper than it can reach this is the effective depth
+    :math:`\min(d, D/2 - \sqrt{D^2/4 - w^2/4})`.
+
+    Parameters
+    ----------
+    angle : float
+        Angle of the contact point from the spall's centre [rad] (any turn: wrapped here).
+    arc : float
+        Radius of the spalled surface [m].
+    width, depth : float
+        Of the spall [m].
+    radius : float
+        Of the ball [m].
+
+    Returns
+    -------
+    float
+        Drop of the ball's centre [m] (>= 0).
+
+    Notes
+    -----
+    The path of a ball's centre over a spall of N. Sawalhi and R. B. Randall, "Simulating gear
+    and bearing interactions in the presence of faults: Part I. The combined gear bearing
+    dynamic model and the simulation of localised bearing faults", Mechanical Systems and
+    Signal Processing 22 (2008) 1924-1951, sec. 2.3 and Fig. 5 (the ball cannot reach the
+    bottom of a spall narrower than itself; the depth seen follows the edge's geometry).
+    """
+    a = angle - TWO_PI_K * math.floor(angle / TWO_PI_K + 0.5)
+    e = 0.5 * width - arc * abs(a)
+    if e <= 0.0:
+        return 0.0
+    d = radius if e >= radius else radius - math.sqrt(radius * radius - e * e)
+    return d if d < depth else depth
+
+
+@register_jitable(no_cfunc_wrapper=True)
+def slip_angle(t: float, slip: FloatArray) -> float:
+    """Angle the cage has slipped by at time t [rad] (0 without slip).
+
+    ``slip`` is ``[t0, T, φ_0, φ_1, ...]``: the slip angle at the knots t0 + kT, linear in
+    between (the cage's speed constant over each interval); empty: no slip.
+    """
+    n = slip.size - 2
+    if n < 2:
+        return 0.0
+    u: float = (t - slip[0]) / slip[1]
+    k = math.floor(u)
+    if k < 0:
+        k = 0
+    elif k > n - 2:
+        k = n - 2
+    f = u - k
+    a: float = slip[2 + k]
+    b: float = slip[3 + k]
+    return a + (b - a) * f
+
+
+@register_jitable(no_cfunc_wrapper=True)
+def _slip_balls(phi: float, cth: FloatArray, sth: FloatArray) -> None:
+    """Turn every ball's (cos, sin) by the slip angle ``phi`` [rad]."""
+    c = math.cos(phi)
+    s = math.sin(phi)
+    for j in range(cth.size):
+        cj = cth[j]
+        sj = sth[j]
+        cth[j] = cj * c - sj * s
+        sth[j] = cj * s + sj * c
+
+
+@register_jitable(no_cfunc_wrapper=True)
+def _spall_drops(
+    t: float, sp: FloatArray, theta0: FloatArray, wc: float, phi: float, dr: FloatArray
+) -> None:
+    """Drop of every ball into the spalls at time t [m] (:func:`spall_drop`), into ``dr``.
+
+    ``phi`` is the cage's slip angle [rad] (:func:`slip_angle`): the balls' angles and, in
+    proportion, their spin lag by it.
+    """
+    for j in range(dr.size):
+        dr[j] = 0.0
+    for i in range(sp.shape[0]):
+        arc, w, dp, r = sp[i, S_ARC], sp[i, S_WIDTH], sp[i, S_DEPTH], sp[i, S_RADIUS]
+        if sp[i, S_BALL] == 0.0:
+            # raceway: the contact point's angle on the ring, from the spall's centre
+            for j in range(dr.size):
+                ang = theta0[j] + (wc - sp[i, S_RATE]) * t + phi - sp[i, S_ANGLE]
+                dr[j] += spall_drop(ang, arc, w, dp, r)
+        else:
+            # ball: its spall meets the outer raceway at spin angle 0, the inner at pi
+            j = int(sp[i, S_ELEMENT])
+            ang = sp[i, S_RATE] * (t + (phi / wc if wc != 0.0 else 0.0)) + sp[i, S_ANGLE]
+            dr[j] += max(spall_drop(ang, arc, w, dp, r), spall_drop(ang - math.pi, arc, w, dp, r))
 
 
 @kernel()
@@ -294,6 +412,9 @@ def _newmark_radial(
     state: FloatArray,
     par: FloatArray,
     phasors: Phasors,
+    sp: FloatArray,
+    theta0: FloatArray,
+    slip: FloatArray,
     max_iter: int,
     out: FloatArray,
 ) -> tuple[int, int, int, int]:
@@ -323,9 +444,14 @@ def _newmark_radial(
     gap = np.empty(z)
     wb = np.empty(z)
     gw = np.empty(z)  # radial gap + ball deviation at q = 0: constant for perfect parts
+    gx = np.empty(z)  # the same less the drops into the spalls
+    dr = np.empty(z)
     for j in range(z):
-        gap[j] = gw[j] = par[P_G0]
-        wb[j] = 0.0
+        gap[j] = gw[j] = gx[j] = par[P_G0]
+        wb[j] = dr[j] = 0.0
+    spalled = sp.shape[0] > 0
+    slipping = slip.size > 3
+    wc = par[P_WC]
     ph = np.empty((rate.size, 2))
     g0 = par[P_G0]
     wavy = rate.size > 2
@@ -349,6 +475,17 @@ def _newmark_radial(
                 gw[j] = gap[j] + wb[j]
         else:
             _phasor_balls(ph, ball, cth, sth)
+        phi = 0.0
+        if slipping:
+            phi = slip_angle(t_start + (n + 1) * h, slip)
+            _slip_balls(phi, cth, sth)
+        if spalled:
+            _spall_drops(t_start + (n + 1) * h, sp, theta0, wc, phi, dr)
+            for j in range(z):
+                gx[j] = gw[j] - dr[j]
+        else:
+            for j in range(z):
+                gx[j] = gw[j]
         e0 = fx + fu * ph[1, 0]
         e1 = fy + fu * ph[1, 1]
         p0 = q0 + h * v0 + 0.5 * h * h * a0
@@ -363,7 +500,7 @@ def _newmark_radial(
             for j in range(z):
                 cj = cth[j]
                 sj = sth[j]
-                d = gw[j] + p0 * cj + p1 * sj
+                d = gx[j] + p0 * cj + p1 * sj
                 if d > 0.0:
                     loaded += 1
                     sd = math.sqrt(d)
@@ -426,6 +563,8 @@ def newmark_kernel(
     ndof: int,
     max_iter: int,
     out: FloatArray,
+    spalls: FloatArray | None = None,
+    slip: FloatArray | None = None,
 ) -> tuple[int, int, int, int]:
     """Integrate seed 003 eq. 2.16 (module form) over ``n_steps`` Newmark steps (compiled).
 
@@ -465,6 +604,13 @@ def newmark_kernel(
         Newton iterations per step.
     out : ndarray, shape (n_steps // stride, 3)
         Recorded q [m].
+    spalls : ndarray, shape (n, N_SP), optional
+        Localized defects (:attr:`DynamicSetup.spalls`): each ball's approach drops by
+        :func:`spall_drop` while its contact point is over one. Default none.
+    slip : ndarray, optional
+        The cage's slip angle at knots (:func:`slip_angle`): every ball's angle, and its spin
+        in proportion, lag by it. Only for parts without waviness (their phasors do not
+        slip). Default none.
 
     Returns
     -------
@@ -482,10 +628,19 @@ def newmark_kernel(
     h = float(par[P_H])
     rot = np.array([[math.cos(r * h), math.sin(r * h)] for r in rate.tolist()]).reshape(-1, 2)
     phasors = (rate, rot, ball, ring, bcoef, hk[9])
+    sp = np.zeros((0, N_SP)) if spalls is None else np.ascontiguousarray(spalls, np.float64)
+    th0 = np.ascontiguousarray(theta0, np.float64)
+    sl = np.zeros(0) if slip is None else np.ascontiguousarray(slip, np.float64)
+    if sl.size > 3 and rate.size > 2:
+        raise ValueError("slip is modelled for parts without waviness (rotating phasors)")
     if ndof == 2 and par[P_ZP] == 0.0:
         # in the plane without axial offset the exact geometry is seed 003 eq. 2.3-2.5
-        return _newmark_radial(n_steps, stride, t_start, state, par, phasors, max_iter, out)
-    return _newmark_general(n_steps, stride, t_start, state, par, phasors, ndof, max_iter, out)
+        return _newmark_radial(
+            n_steps, stride, t_start, state, par, phasors, sp, th0, sl, max_iter, out
+        )
+    return _newmark_general(
+        n_steps, stride, t_start, state, par, phasors, sp, th0, sl, ndof, max_iter, out
+    )
 
 
 @kernel()
@@ -496,6 +651,9 @@ def _newmark_general(
     state: FloatArray,
     par: FloatArray,
     phasors: Phasors,
+    sp: FloatArray,
+    theta0: FloatArray,
+    slip: FloatArray,
     ndof: int,
     max_iter: int,
     out: FloatArray,
@@ -517,9 +675,14 @@ def _newmark_general(
     sth = np.empty(z)
     gap = np.empty(z)  # constant for perfect parts
     wb = np.empty(z)
+    wx = np.empty(z)  # ball deviation less the drops into the spalls
+    dr = np.empty(z)
     for j in range(z):
         gap[j] = par[P_G0]
-        wb[j] = 0.0
+        wb[j] = wx[j] = dr[j] = 0.0
+    spalled = sp.shape[0] > 0
+    slipping = slip.size > 3
+    wc = par[P_WC]
     ph = np.empty((rate.size, 2))
     g0 = par[P_G0]
     wavy = rate.size > 2
@@ -543,6 +706,14 @@ def _newmark_general(
             _phasor_deviations(ph, ball, ring, bcoef, boff, g0, cth, sth, gap, wb)
         else:
             _phasor_balls(ph, ball, cth, sth)
+        phi = 0.0
+        if slipping:
+            phi = slip_angle(t_start + (n + 1) * h, slip)
+            _slip_balls(phi, cth, sth)
+        if spalled:
+            _spall_drops(t_start + (n + 1) * h, sp, theta0, wc, phi, dr)
+        for j in range(z):
+            wx[j] = wb[j] - dr[j]
         e0 = fx + fu * ph[1, 0]
         e1 = fy + fu * ph[1, 1]
         e2 = fz
@@ -555,7 +726,7 @@ def _newmark_general(
         for _ in range(max_iter):
             iters += 1
             f0, f1, f2, k00, k01, k02, k11, k12, k22, loaded = _contact(
-                p0, p1, p2, cth, sth, gap, wb, a, zp, k, ndof
+                p0, p1, p2, cth, sth, gap, wx, a, zp, k, ndof
             )
             na0 = c0 * (p0 - q0) - c1 * v0 - a0
             na1 = c0 * (p1 - q1) - c1 * v1 - a1

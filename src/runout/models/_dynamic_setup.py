@@ -9,7 +9,7 @@ from __future__ import annotations
 import functools
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, Literal
 
 import numpy as np
@@ -29,6 +29,7 @@ from runout.geometry.kinematics import ball_spin_frequency, cage_frequency
 from runout.models._dynamic_kernels import (
     FORCE_RTOL,  # noqa: F401 - re-exported with the kernels (docs, tests)
     N_PAR,
+    N_SP,
     NEWTON_RTOL,
     OK,
     P_A,
@@ -48,6 +49,14 @@ from runout.models._dynamic_kernels import (
     P_WO,
     P_WU,
     P_ZP,
+    S_ANGLE,
+    S_ARC,
+    S_BALL,
+    S_DEPTH,
+    S_ELEMENT,
+    S_RADIUS,
+    S_RATE,
+    S_WIDTH,
     Harmonics,
     _contact,  # noqa: F401
     _deviations,  # noqa: F401
@@ -61,6 +70,9 @@ TWO_PI = 2.0 * math.pi
 ContactLaw = Literal["exact", "delta_star_table"]
 #: Most Newton–Raphson iterations of one Newmark step (and of the NumPy reference's).
 MAX_ITER = 50
+#: Widest spall, as a fraction of the circumference of the surface it is on: a localized
+#: defect, not a missing stretch of raceway.
+MAX_SPALL_FRACTION = 0.1
 
 
 # --------------------------------------------------------------------------------------------
@@ -176,6 +188,12 @@ class DynamicSetup:
         Signed ring, cage and spin frequencies [Hz].
     harmonics : tuple of ndarray
         Packed waviness (inner k, a, φ; outer k, a, φ; ball k, a, φ, offsets).
+    spalls : ndarray, shape (n, N_SP)
+        The ``[[defect]]`` entries, one row each (columns ``S_*`` of
+        :mod:`runout.models._dynamic_kernels`); empty without defects.
+    slip : ndarray
+        The cage's slip angle at knots, ``[t0, T, φ_0, φ_1, ...]``
+        (:func:`runout.models._dynamic_kernels.slip_angle`); empty: the exact kinematics.
     contact_law : str
     reference_approach : float
         Approach scale for tolerances [m].
@@ -197,6 +215,8 @@ class DynamicSetup:
     theta0: NDArray[np.float64]
     kinematics: Kinematics
     harmonics: Harmonics
+    spalls: NDArray[np.float64] = field(default_factory=lambda: np.zeros((0, N_SP)))
+    slip: NDArray[np.float64] = field(default_factory=lambda: np.zeros(0))
     contact_law: str = "exact"
     reference_approach: float = 1e-6
     notes: tuple[str, ...] = ()
@@ -373,6 +393,7 @@ def setup(case: Any) -> DynamicSetup:
         pb,
         off,
     )
+    spalls = spall_table(case, kin, d, dm)
     if imp.slant is not None and imp.slant.amplitude > 0.0:
         notes.append("raceway slant is not part of the dynamic model and was ignored")
     # approach scale: the preload approach, else the Hertz approach of a ball carrying the load
@@ -394,10 +415,127 @@ def setup(case: Any) -> DynamicSetup:
         theta0=theta0,
         kinematics=kin,
         harmonics=harmonics,
+        spalls=spalls,
         contact_law=law,
         reference_approach=ref,
         notes=tuple(notes),
     )
+
+
+def spall_table(
+    case: Any, kin: Kinematics, element_diameter: float, pitch_diameter: float
+) -> NDArray[np.float64]:
+    """The kernels' table of the case's ``[[defect]]`` entries, each checked against the bearing.
+
+    Parameters
+    ----------
+    case : Case
+        Its ``spec.defect`` entries (SI).
+    kin : Kinematics
+        Ring, cage and spin frequencies [Hz].
+    element_diameter, pitch_diameter : float
+        D and d_m [m].
+
+    Returns
+    -------
+    ndarray, shape (n, N_SP)
+        One row per defect (columns ``S_*``).
+
+    Raises
+    ------
+    GeometryError
+        A spall wider than :data:`MAX_SPALL_FRACTION` of its surface's circumference, deeper
+        than the ball radius, or on a ball the bearing does not have (the key named).
+    """
+    entries = list(getattr(case.spec, "defect", ()) or ())
+    out = np.zeros((len(entries), N_SP))
+    r = 0.5 * element_diameter
+    z = int(case.bearing.elements)
+    for i, entry in enumerate(entries):
+        key = f"defect[{i + 1}]"
+        if entry.part == "ball":
+            arc, rate, angle = r, TWO_PI * kin.contact_rate, 0.0
+            surface = "the ball"
+        else:
+            # raceway radii at the groove bottom (contact angle 0)
+            sign = 1.0 if entry.part == "outer" else -1.0
+            arc = 0.5 * (pitch_diameter + sign * element_diameter)
+            rate = TWO_PI * (kin.outer if entry.part == "outer" else kin.inner)
+            angle = float(entry.angle or 0.0)
+            surface = f"the {entry.part} raceway"
+        widest = MAX_SPALL_FRACTION * TWO_PI * arc
+        if entry.width >= widest:
+            raise GeometryError(
+                f"{key}.width",
+                f"{entry.width * 1e3:.6g} mm is not a localized defect: it must be below "
+                f"{MAX_SPALL_FRACTION:g} of the circumference of {surface} "
+                f"({widest * 1e3:.6g} mm)",
+            )
+        if entry.depth >= r:
+            raise GeometryError(
+                f"{key}.depth",
+                f"{entry.depth * 1e3:.6g} mm must be below the ball radius ({r * 1e3:.6g} mm)",
+            )
+        element = 0
+        if entry.part == "ball":
+            if entry.element > z:
+                raise GeometryError(
+                    f"{key}.element",
+                    f"ball {entry.element} does not exist: the bearing has {z} (1 to {z})",
+                )
+            element = entry.element - 1
+        out[i, S_BALL] = 1.0 if entry.part == "ball" else 0.0
+        out[i, S_RATE] = rate
+        out[i, S_ANGLE] = angle
+        out[i, S_ARC] = arc
+        out[i, S_WIDTH] = entry.width
+        out[i, S_DEPTH] = entry.depth
+        out[i, S_RADIUS] = r
+        out[i, S_ELEMENT] = element
+    return out
+
+
+def slip_angles_np(st: DynamicSetup, t: NDArray[np.float64]) -> NDArray[np.float64]:
+    """The cage's slip angle at instants t [rad] (0 without slip), by :func:`numpy.interp`."""
+    t = np.atleast_1d(np.asarray(t, dtype=np.float64))
+    if st.slip.size < 4:
+        return np.zeros_like(t)
+    knots = st.slip[0] + st.slip[1] * np.arange(st.slip.size - 2)
+    values = st.slip[2:]
+    inside = np.interp(t, knots, values)
+    # beyond the knots: the first or last interval's line, as the kernels extend it
+    lo = values[0] + (values[1] - values[0]) * (t - knots[0]) / st.slip[1]
+    hi = values[-2] + (values[-1] - values[-2]) * (t - knots[-2]) / st.slip[1]
+    out: NDArray[np.float64] = np.where(t < knots[0], lo, np.where(t > knots[-1], hi, inside))
+    return out
+
+
+def spall_drops_np(st: DynamicSetup, t: NDArray[np.float64]) -> NDArray[np.float64]:
+    """Drop of every ball into the spalls [m], shape (n, Z): the kernels' sum, vectorised.
+
+    An independent NumPy path for the tests of the compiled one
+    (:func:`runout.models._dynamic_kernels.spall_drop`).
+    """
+    t = np.atleast_1d(np.asarray(t, dtype=np.float64))
+    out = np.zeros((t.size, st.n_elements))
+    wc = TWO_PI * st.kinematics.cage
+    phi = slip_angles_np(st, t)
+
+    def drop(angle: NDArray[np.float64], row: NDArray[np.float64]) -> NDArray[np.float64]:
+        wrapped = np.angle(np.exp(1j * angle))
+        e = 0.5 * row[S_WIDTH] - row[S_ARC] * np.abs(wrapped)
+        rad = row[S_RADIUS]
+        sunk = rad - np.sqrt(np.clip(rad * rad - e * e, 0.0, None))
+        return np.where(e > 0.0, np.minimum(sunk, row[S_DEPTH]), 0.0)
+
+    for row in st.spalls:
+        if row[S_BALL] == 0.0:
+            ang = st.theta0[None, :] + ((wc - row[S_RATE]) * t + phi)[:, None] - row[S_ANGLE]
+            out += drop(ang, row)
+        else:
+            ang = row[S_RATE] * (t + (phi / wc if wc != 0.0 else 0.0)) + row[S_ANGLE]
+            out[:, int(row[S_ELEMENT])] += np.maximum(drop(ang, row), drop(ang - np.pi, row))
+    return out
 
 
 # --------------------------------------------------------------------------------------------
@@ -410,7 +548,7 @@ def _deviations_np(
     ik, ia, ip, ok, oa, op, bk, ba, bp, boff = st.harmonics
     kin = st.kinematics
     t = np.atleast_1d(np.asarray(t, dtype=np.float64))
-    theta = st.theta0[None, :] + TWO_PI * kin.cage * t[:, None]
+    theta = st.theta0[None, :] + (TWO_PI * kin.cage * t + slip_angles_np(st, t))[:, None]
 
     def hsum(k: NDArray[Any], a: NDArray[Any], p: NDArray[Any], x: NDArray[Any]) -> Any:
         if k.size == 0:
@@ -428,6 +566,8 @@ def _deviations_np(
         lo, hi = int(boff[j]), int(boff[j + 1])
         if hi > lo:
             wb[:, j] = hsum(bk[lo:hi], ba[lo:hi], bp[lo:hi], spin)
+    if st.spalls.shape[0]:
+        wb = wb - spall_drops_np(st, t)  # a spall takes material off the contact
     return theta, gap, wb
 
 

@@ -141,6 +141,7 @@ from runout.models._dynamic_setup import (  # noqa: F401 - the model's names in 
     static_equilibrium,
     static_reference,
 )
+from runout.models._dynamic_signal import SPALL_STEPS, acceleration_signal, spall_entry_time
 from runout.models._quasi_static import (
     decomposition_kinematic,
     predicted_lines,
@@ -317,9 +318,29 @@ def run(case: Any, progress: Callable[[float], None] | None = None) -> RunResult
     revs, spr, notes = _analysis_grid(case)
     from runout.case.limits import case_budget
 
+    time_step = dyn.time_step
+    entry = spall_entry_time(st)
+    if entry is not None:
+        # the step resolves a ball's entry into every spall in SPALL_STEPS steps at least
+        finest = entry / SPALL_STEPS
+        if time_step is None:
+            q0 = static_equilibrium(st, np.array([0.0]))[0]
+            auto = 1.0 / (STEPS_PER_PERIOD * linearised_natural_frequencies(st, q0).max())
+            if finest < auto:
+                time_step = finest
+                notes.append(
+                    f"Newmark step at most {finest * 1e6:.4g} us: {SPALL_STEPS} steps over a "
+                    f"ball's entry into a spall ({entry * 1e6:.4g} us)"
+                )
+        elif time_step > finest:
+            notes.append(
+                f"dynamics.time_step {time_step * 1e6:.4g} us resolves a ball's entry into a "
+                f"spall ({entry * 1e6:.4g} us) in {entry / time_step:.3g} steps, fewer than "
+                f"{SPALL_STEPS}: the impacts are under-resolved"
+            )
+    limits = case_budget(case)
     integ = integrate(
-        st, op.speed, revs, spr, time_step=dyn.time_step, progress=progress,
-        limits=case_budget(case),
+        st, op.speed, revs, spr, time_step=time_step, progress=progress, limits=limits,
     )  # fmt: skip
     disp = integ.displacement
     u = _measuring_direction(op)
@@ -345,6 +366,12 @@ def run(case: Any, progress: Callable[[float], None] | None = None) -> RunResult
         synchronous=basis.synchronous_sources,
         axial=st.ndof == 3,  # the rotor is held axially unless [dynamics] axial_dof
     )
+    signal = None
+    if case.spec.analysis.signal == "acceleration":
+        signal, signal_notes = acceleration_signal(case, st, integ, u, limits)
+        notes += signal_notes
+    if st.spalls.shape[0]:
+        notes.append(_defect_note(case))
     notes = list(st.notes) + notes + list(fit.notes) + list(split.notes)
     fn = integ.natural_frequencies
     notes.append(
@@ -416,5 +443,24 @@ def run(case: Any, progress: Callable[[float], None] | None = None) -> RunResult
         solver_resolution_m=noise,  # the floor its line fit uses: 1000 Newton tolerances
         details=details,
         notes=tuple(notes),
+        signal=signal,
     )
     return result
+
+
+def _defect_note(case: Any) -> str:
+    """What the run did with the case's ``[[defect]]`` entries (one note)."""
+    parts = []
+    for i, entry in enumerate(case.spec.defect, start=1):
+        where = (
+            f"ball {entry.element}"
+            if entry.part == "ball"
+            else f"{entry.part} raceway at {math.degrees(entry.angle or 0.0):.4g} deg"
+        )
+        parts.append(
+            f"defect[{i}]: {entry.width * 1e3:.4g} mm x {entry.depth * 1e6:.4g} um on the {where}"
+        )
+    return (
+        "; ".join(parts) + ": a ball over a spall drops by the depth its centre reaches, "
+        "min(depth, D/2 - sqrt(D^2/4 - e^2)) at e from the nearer edge (Sawalhi and Randall 2008)"
+    )

@@ -111,8 +111,23 @@ def write_result(
     pending.result()  # its error, if any (disk full), is this call's
     standard = [drawn[n] for n in figures if n in plotting.STANDARD_FIGURES]
     own = [drawn[n] for n in figures if n not in plotting.STANDARD_FIGURES]
-    return [path, history, tables[0], *standard, *tables[1:], *own]
+    signal = []
+    if result.signal is not None and result.signal.time.size:
+        # the acceleration record, in the columns `runout diagnose --record --envelope` reads
+        sig = result.signal
+        signal.append(
+            write_columns(
+                directory / "signal.csv",
+                SIGNAL_COLUMNS,
+                [sig.time, sig.acceleration, sig.rev],
+            )
+        )
+    return [path, history, tables[0], *standard, *tables[1:], *own, *signal]
 
+
+#: Columns of ``signal.csv`` (``[analysis] signal = "acceleration"``): time, housing
+#: acceleration, revolutions of the rotating ring (a tachometer).
+SIGNAL_COLUMNS = ["time_s", "a_m_per_s2", "rev"]
 
 #: The slowest figures (0.2-0.35 s each): queued first, so that two drawing processes end
 #: together rather than one drawing the slowest last.

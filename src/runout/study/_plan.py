@@ -633,7 +633,9 @@ def _case_data(case: Case) -> dict[str, Any]:
 def _digest_data(case: Case) -> dict[str, Any]:
     """The case document a study's digest is taken of: every key with its default, as earlier
     versions hashed it, so that their output directories still resume and load."""
-    return case.spec.model_dump(mode="python", exclude_none=True, exclude={"study"})
+    # an empty [[defect]] list is left out: the table is newer than those directories
+    empty = {"defect"} if not case.spec.defect else set()
+    return case.spec.model_dump(mode="python", exclude_none=True, exclude={"study"} | empty)
 
 
 def _models(case: Case) -> list[str]:

@@ -19,6 +19,7 @@ from collections.abc import Callable, Iterable
 from runout.validation import (
     contact,
     cross_model,
+    defects,
     diagnosis,
     envelope,
     iso_ts_16281,
@@ -187,6 +188,13 @@ SECTIONS: list[Section] = [
                 seed001_kim_table9.checks,
             )
         ],
+    ),
+    Section(
+        "defects",
+        "Localized defects and their acceleration signal (`runout.models.dynamic`, "
+        "`[analysis] signal`)",
+        defects.INTRO,
+        [Group("", "", defects.checks)],
     ),
 ]
 

@@ -124,6 +124,13 @@ def _axial_limit(data: Data) -> None:
     data["analysis"]["limit_on"] = "axial_pp"
 
 
+def _acceleration(data: Data) -> None:
+    data["analysis"]["signal"] = "acceleration"
+    data["sensor"] = {
+        "resonance": 3000.0, "damping_ratio": 0.05, "sample_rate": 12000.0, "duration": 0.05,
+    }  # fmt: skip
+
+
 def _class_limit(data: Data, model: str) -> None:
     # a P4 limit at a bore of 8 mm (K_ia 2.5 um); the change moves the bore to 40 mm (4 um)
     data["analysis"]["limit"] = "P4"
@@ -192,6 +199,11 @@ CHANGES: dict[str, tuple[Callable[[Data, str], None], Callable[[Data], None]]] =
         _no_patch,
         lambda d: d.__setitem__("dynamics", {"mass": 0.03, "damping": 20.0}),
     ),
+    "defect": (
+        _no_patch,
+        _add("defect", {"part": "outer", "width": 5e-4, "depth": 2e-5, "angle": -1.5}),
+    ),
+    "analysis.signal, sensor": (_no_patch, _acceleration),
     "analysis.bands": (_no_patch, _set("analysis.bands", "iso15242")),
     'analysis.limit_on = "axial_pp"': (_held_axially, _axial_limit),
     "analysis.limit": (_no_patch, _set("analysis.limit", "1 um")),

@@ -132,6 +132,11 @@ def _class_limit(data: Data) -> None:
     data["analysis"]["limit_bore"] = "8 mm"
 
 
+def _acceleration(data: dict[str, Any]) -> None:
+    data["analysis"]["signal"] = "acceleration"
+    data["sensor"] = {"resonance": 3000.0, "damping_ratio": 0.05, "sample_rate": 12000.0}
+
+
 #: key -> (patch of the base, the change of the key alone)
 CHANGES: dict[str, tuple[Callable[[Data], None], Callable[[Data], None]]] = {
     'bearing.type = "cylindrical_roller"': (_none, _roller),
@@ -182,6 +187,13 @@ CHANGES: dict[str, tuple[Callable[[Data], None], Callable[[Data], None]]] = {
     ),
     "analysis.ring_tilt": (_none, _set("analysis.ring_tilt", "held")),
     "dynamics": (_none, lambda d: d.__setitem__("dynamics", {"mass": 0.03, "damping": 20.0})),
+    "defect": (
+        _none,
+        lambda d: d.setdefault("defect", []).append(
+            {"part": "outer", "width": 5e-4, "depth": 2e-5}
+        ),
+    ),
+    "analysis.signal, sensor": (_none, _acceleration),
     "analysis.bands": (_none, _set("analysis.bands", "iso15242")),
     'analysis.limit_on = "axial_pp"': (_none, _axial_limit),
     "analysis.limit": (_none, _set("analysis.limit", "1 um")),
