@@ -15,6 +15,7 @@ one line naming the file and the key.
 from __future__ import annotations
 
 import json
+import math
 import re
 from pathlib import Path
 
@@ -286,3 +287,37 @@ def test_slip_with_waviness_is_refused(tmp_path: Path) -> None:
     code, out = _run("run", str(case), "--json")
     assert code == 2, out
     assert "case.toml" in out and "sensor.slip" in out
+
+
+def test_a_given_band_is_the_envelope_band(tmp_path: Path) -> None:
+    """``[sensor] band`` replaces the kurtogram's choice: the JSON says so, and the outer
+    spall's line is still the largest in it."""
+    text = OUTER.read_text(encoding="utf-8").replace(
+        'duration = "2 s"', 'duration = "2 s"\nband = ["2 kHz", "3.5 kHz"]'
+    )
+    case = tmp_path / "band.toml"
+    case.write_text(text, encoding="utf-8")
+    code, out = _run("run", str(case), "--json")
+    assert code == 0, out
+    envelope = json.loads(out)["envelope"]
+    assert envelope["band_hz"] == [2000.0, 3500.0]
+    assert envelope["band_source"] == "given"
+    assert envelope["peaks"][0]["label"] == "BPFO"
+    assert math.isfinite(envelope["spectral_kurtosis"])
+    assert any("given by [sensor] band" in n for n in json.loads(out)["notes"])
+
+
+@pytest.mark.parametrize(
+    "band",
+    ['["4 kHz", "2 kHz"]', '["2 kHz", "7 kHz"]', '["-1 kHz", "2 kHz"]', '["2 kHz"]', '"2 kHz"'],
+)
+def test_a_band_out_of_range_exits_2_naming_the_key(tmp_path: Path, band: str) -> None:
+    text = OUTER.read_text(encoding="utf-8").replace(
+        'duration = "2 s"', f'duration = "2 s"\nband = {band}'
+    )
+    case = tmp_path / "case.toml"
+    case.write_text(text, encoding="utf-8")
+    code, out = _run("run", str(case), "--json")
+    assert code == 2, out
+    assert len(out.strip().splitlines()) == 1
+    assert "case.toml" in out and "sensor.band" in out, out

@@ -37,7 +37,13 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from runout.analysis.envelope import MIN_BAND_SAMPLES, fast_kurtogram, squared_envelope_spectrum
+from runout.analysis.envelope import (
+    MIN_BAND_SAMPLES,
+    complex_envelope,
+    fast_kurtogram,
+    spectral_kurtosis,
+    squared_envelope_spectrum,
+)
 
 __all__ = [
     "ENVELOPE_HARMONICS",
@@ -268,8 +274,9 @@ def envelope_block(
     fundamentals: dict[str, float],
     sidebands: dict[str, float | None],
     shaft_hz: float,
+    band: tuple[float, float] | None = None,
 ) -> dict[str, Any]:
-    """The run's JSON ``envelope``: band (fast kurtogram) and the largest labelled peaks.
+    """The run's JSON ``envelope``: band (fast kurtogram or given) and the largest labelled peaks.
 
     Parameters
     ----------
@@ -284,11 +291,14 @@ def envelope_block(
         Spacing of each part's modulation sidebands [Hz] (None: not modulated).
     shaft_hz : float
         Speed of the rotating ring [Hz] (shaft harmonics are labelled ``fr``, ``2xfr``).
+    band : (float, float), optional
+        Pass band [Hz] (``[sensor] band``, checked by the case); default the fast kurtogram's.
 
     Returns
     -------
     dict
-        ``band_hz`` [lo, hi], ``band_source`` ("kurtogram"), ``spectral_kurtosis``,
+        ``band_hz`` [lo, hi], ``band_source`` ("kurtogram" or "given"), ``spectral_kurtosis``
+        (of the band's complex envelope),
         ``resolution_hz`` and ``peaks``: largest first, each ``frequency_hz``, ``amplitude``
         [(m/s^2)^2], ``label`` (``"BPFI"``, ``"2xBPFO"``, ``"BPFI+fr"``, ``"BDF-FTF"``,
         ``"FTF"``, ``"3xfr"`` or None: the line the peak is within 2 % of), ``part`` (``outer``,
@@ -304,8 +314,12 @@ def envelope_block(
     top = max(f for part, f in fundamentals.items() if part != "cage")
     need = (ENVELOPE_HARMONICS + 1) * top
     width = min(need, 0.25 * sample_rate)
-    kurtogram = fast_kurtogram(acceleration, sample_rate, min_bandwidth=width)
-    band = kurtogram.band_hz
+    if band is None:
+        kurtogram = fast_kurtogram(acceleration, sample_rate, min_bandwidth=width)
+        band, source, kurtosis = kurtogram.band_hz, "kurtogram", float(kurtogram.max_kurtosis)
+    else:
+        source = "given"
+        kurtosis = float(spectral_kurtosis(complex_envelope(acceleration, sample_rate, band)))
     spectrum = squared_envelope_spectrum(acceleration, sample_rate, band)
     f, amp = spectrum.frequency, spectrum.amplitude
     reach = (ENVELOPE_HARMONICS + 0.5) * top + shaft_hz
@@ -332,8 +346,8 @@ def envelope_block(
         )
     return {
         "band_hz": [float(band[0]), float(band[1])],
-        "band_source": "kurtogram",
-        "spectral_kurtosis": float(kurtogram.max_kurtosis),
+        "band_source": source,
+        "spectral_kurtosis": kurtosis,
         "resolution_hz": float(spectrum.resolution_hz),
         "peaks": peaks,
     }

@@ -571,6 +571,13 @@ class SensorSpec(_Table):
         "deviation of the cage's speed, drawn anew each ball passage (each impact period "
         "jitters by about as much; 0.01-0.02 is typical).",
     )
+    band: tuple[Frequency, Frequency] | None = Field(
+        None,
+        description='Pass band of the run\'s envelope spectrum [Hz], [low, high] (e.g. ["2 kHz", '
+        '"4 kHz"]), 0 <= low < high <= half the sample rate; default the band the fast '
+        "kurtogram finds most impulsive.",
+        strict=False,
+    )
 
     @field_validator("resonance", "sample_rate")
     @classmethod
@@ -615,6 +622,15 @@ class SensorSpec(_Table):
                 f"must be above twice the resonance ({2.0 * self.resonance:.6g} Hz), got "
                 f"{self.sample_rate:.6g} Hz",
             )
+        if self.band is not None:
+            low, high = self.band
+            half = 0.5 * self.sample_rate
+            if not (0.0 <= low < high <= half):
+                raise _KeyedError(
+                    "band",
+                    f"must be [low, high] with 0 <= low < high <= {half:.6g} Hz (half the "
+                    f"sample rate), got [{low:.6g}, {high:.6g}] Hz",
+                )
         return self
 
 

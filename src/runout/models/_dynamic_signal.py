@@ -235,7 +235,8 @@ def acceleration_signal(
         "ball": abs(freqs.cage),
         "cage": None,
     }
-    envelope = envelope_block(acc, fs, fundamentals, sidebands, freqs.rotation)
+    band = None if sensor.band is None else (float(sensor.band[0]), float(sensor.band[1]))
+    envelope = envelope_block(acc, fs, fundamentals, sidebands, freqs.rotation, band)
     signal = AccelerationSignal(
         time=time,
         acceleration=acc,
@@ -264,7 +265,8 @@ def acceleration_signal(
         f"noise {sensor.noise:.3g} x the signal rms (seed {sensor.seed})"
         + (slip_notes or "; no slip of the rolling elements (the defect lines are exact)")
         + "; a constant shaft speed",
-        f"envelope band {envelope['band_hz'][0]:.6g}-{envelope['band_hz'][1]:.6g} Hz chosen by "
-        f"the fast kurtogram (spectral kurtosis {envelope['spectral_kurtosis']:.3g})",
+        f"envelope band {envelope['band_hz'][0]:.6g}-{envelope['band_hz'][1]:.6g} Hz "
+        + ("chosen by the fast kurtogram" if band is None else "given by [sensor] band")
+        + f" (spectral kurtosis {envelope['spectral_kurtosis']:.3g})",
     ]
     return signal, notes
