@@ -153,3 +153,25 @@ def typed_case(
         for entry in waviness:
             imperfections = imperfections.waviness(**entry)
     return Case.from_inputs(bearing, operation, imperfections, analysis=analysis)
+
+
+def run_case_text(path: Any, text: str, *args: str) -> Any:
+    """Write ``text`` as the case file ``path`` and run ``runout run path *args`` in-process.
+
+    Returns the click ``Result`` (``exit_code``, ``stdout``, ``stderr``).
+    """
+    from typer.testing import CliRunner
+
+    from runout.cli.commands import app
+
+    path.write_text(text, encoding="utf-8")
+    return CliRunner().invoke(app, ["run", str(path), *args])
+
+
+def run_json(result: Any) -> dict[str, Any]:
+    """The JSON a successful ``runout run --json`` printed (asserting it succeeded)."""
+    import json
+
+    assert result.exit_code == 0, result.stderr
+    out: dict[str, Any] = json.loads(result.stdout)
+    return out

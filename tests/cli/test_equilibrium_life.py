@@ -7,13 +7,13 @@ of the rating, the refusals, and the notes when there is no life.
 
 from __future__ import annotations
 
-import json
 import math
 from pathlib import Path
 
 import pytest
 from typer.testing import CliRunner
 
+from cases import run_case_text, run_json
 from runout.cli.commands import app
 
 runner = CliRunner()
@@ -50,16 +50,11 @@ def _invoke(tmp_path: Path, *args: str, **keys: str) -> object:
         "speed": "0 rpm",
         "model": "equilibrium",
     } | keys
-    path = tmp_path / "life.toml"
-    path.write_text(CASE.format(**values), encoding="utf-8")
-    return runner.invoke(app, ["run", str(path), *args])
+    return run_case_text(tmp_path / "life.toml", CASE.format(**values), *args)
 
 
 def _run(tmp_path: Path, **keys: str) -> dict:
-    result = _invoke(tmp_path, "--json", **keys)
-    assert result.exit_code == 0, result.stderr  # type: ignore[attr-defined]
-    out: dict = json.loads(result.stdout)  # type: ignore[attr-defined]
-    return out
+    return run_json(_invoke(tmp_path, "--json", **keys))
 
 
 def _mean(loads: list[float], power: float) -> float:

@@ -10,13 +10,13 @@ tests/property/test_life_modification.py.
 
 from __future__ import annotations
 
-import json
 import math
 from pathlib import Path
 
 import pytest
 from typer.testing import CliRunner
 
+from cases import run_case_text, run_json
 from runout.cli.commands import app
 
 runner = CliRunner()
@@ -57,16 +57,11 @@ FULL = {
 
 
 def _invoke(tmp_path: Path, *args: str, **keys: str) -> object:
-    path = tmp_path / "lnmr.toml"
-    path.write_text(CASE.format(**(FULL | keys)), encoding="utf-8")
-    return runner.invoke(app, ["run", str(path), *args])
+    return run_case_text(tmp_path / "lnmr.toml", CASE.format(**(FULL | keys)), *args)
 
 
 def _run(tmp_path: Path, **keys: str) -> dict:
-    result = _invoke(tmp_path, "--json", **keys)
-    assert result.exit_code == 0, result.stderr  # type: ignore[attr-defined]
-    out: dict = json.loads(result.stdout)  # type: ignore[attr-defined]
-    return out
+    return run_json(_invoke(tmp_path, "--json", **keys))
 
 
 def _a_iso(kappa: float, ratio: float) -> float:

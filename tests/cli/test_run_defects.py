@@ -300,7 +300,7 @@ def test_a_given_band_is_the_envelope_band(tmp_path: Path) -> None:
     code, out = _run("run", str(case), "--json")
     assert code == 0, out
     envelope = json.loads(out)["envelope"]
-    assert envelope["band_hz"] == [2000.0, 3500.0]
+    assert envelope["band_hz"] == pytest.approx([2000.0, 3500.0], rel=1e-12)  # unit conversion
     assert envelope["band_source"] == "given"
     assert envelope["peaks"][0]["label"] == "BPFO"
     assert math.isfinite(envelope["spectral_kurtosis"])

@@ -10,13 +10,13 @@ summary and the report.
 
 from __future__ import annotations
 
-import json
 import math
 from pathlib import Path
 
 import pytest
 from typer.testing import CliRunner
 
+from cases import run_case_text, run_json
 from runout.cli.commands import app
 
 runner = CliRunner()
@@ -69,16 +69,11 @@ KEYS = {
 
 
 def _invoke(tmp_path: Path, *args: str, **keys: str) -> object:
-    path = tmp_path / "spindle.toml"
-    path.write_text(CASE.format(**(KEYS | keys)), encoding="utf-8")
-    return runner.invoke(app, ["run", str(path), *args])
+    return run_case_text(tmp_path / "spindle.toml", CASE.format(**(KEYS | keys)), *args)
 
 
 def _run(tmp_path: Path, **keys: str) -> dict:
-    result = _invoke(tmp_path, "--json", **keys)
-    assert result.exit_code == 0, result.stderr  # type: ignore[attr-defined]
-    out: dict = json.loads(result.stdout)  # type: ignore[attr-defined]
-    return out
+    return run_json(_invoke(tmp_path, "--json", **keys))
 
 
 def test_each_bearing_life_is_that_of_its_preload_shared_by_its_balls(tmp_path: Path) -> None:
