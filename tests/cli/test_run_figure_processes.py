@@ -9,6 +9,9 @@ never a hang.
 from __future__ import annotations
 
 import os
+import pickle
+import subprocess
+import sys
 from pathlib import Path
 from typing import Any
 
@@ -128,3 +131,36 @@ def test_the_drawing_processes_yield_to_the_command(
     # at most 19, the lowest priority: a command already that nice draws at 19
     assert int(seen.read_text()) == min(19, os.nice(0) + FIGURE_NICENESS)
     assert FIGURE_NICENESS > 0
+
+
+def test_the_drawing_processes_need_not_import_the_solver(tmp_path: Path) -> None:
+    """What the drawing processes receive for the rigid model (the result, its figures' data,
+    the order sweep) unpickles without the compiled solver: importing Numba there cost each
+    process 0.2 s of CPU while the sweep ran (issue 31)."""
+    received: list[bytes] = []
+
+    class Recording:
+        """Stands in for FigureWorkers: keeps what would travel, draws here."""
+
+        def draw(self, draw: Any, result: Any, directory: Path, jobs: Any, later: Any) -> Any:
+            jobs = [*jobs, *later()]
+            received.append(pickle.dumps((draw, result, jobs), protocol=pickle.HIGHEST_PROTOCOL))
+            return {name: draw(result, directory, name, extra) for name, extra in jobs}
+
+    result = run_model(load_case(EXAMPLES / "seed004_nu209.toml"))
+    written = write_result(result, tmp_path / "out", workers=Recording())  # type: ignore[arg-type]
+    assert {"displacement.png", "contact_pattern.png", "order_sweep.png"} <= {
+        p.name for p in written
+    }
+    (tmp_path / "payload.pickle").write_bytes(received[0])
+    check = (
+        "import pickle, sys; import runout.report.run_files; "
+        "before = set(sys.modules); "
+        f"pickle.loads(open({str(tmp_path / 'payload.pickle')!r}, 'rb').read()); "
+        "print(sorted(m for m in set(sys.modules) - before "
+        "if m.split('.')[0] == 'numba' or m.startswith('runout.models')))"
+    )
+    done = subprocess.run(
+        [sys.executable, "-c", check], capture_output=True, text=True, timeout=120, check=True
+    )
+    assert done.stdout.strip() == "[]"

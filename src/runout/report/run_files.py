@@ -8,9 +8,11 @@ module adds the figures, so it lives with the plots in the report layer.
 from __future__ import annotations
 
 import csv
+import dataclasses
 import json
 import math
 from concurrent.futures import Future, ThreadPoolExecutor
+from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -88,12 +90,15 @@ def write_result(
         tables.append(_write_lines(result, directory))
         written, swept = _model_tables(result, directory, sweep)
         tables.extend(written)
-        return [(name, swept) for name in figures if name in _AFTER_TABLES]
+        data = None if swept is None else _SweepFigure.of(swept)
+        return [(name, data) for name in figures if name in _AFTER_TABLES]
 
     try:
         linear = _linear_inputs(result) if plotting.LINEAR_FIGURES[0] in figures else None
         extras: dict[str, Any] = {name: history_revolutions for name in plotting.STANDARD_FIGURES}
         extras.update({name: linear for name in plotting.LINEAR_FIGURES})
+        if solution is not None:
+            extras.update(dict.fromkeys(_ROLLER_FIGURES[:2], _RollerFigure.of(solution)))
         first = [
             (name, extras.get(name))
             for name in sorted(figures, key=lambda n: n not in _SLOWEST)
@@ -105,7 +110,10 @@ def write_result(
                 {name: draw_figure(result, directory, name, x) for name, x in write_tables()}
             )
         else:
-            drawn = workers.draw(draw_figure, result, directory, first, later=write_tables)
+            # the processes draw from arrays: without the solution, whose types would make
+            # each of them import the compiled solver (Numba: 0.2 s of CPU) to unpickle it
+            sent = _without_solution(result)
+            drawn = workers.draw(draw_figure, sent, directory, first, later=write_tables)
     finally:
         pool.shutdown(wait=True)
     pending.result()  # its error, if any (disk full), is this call's
@@ -194,9 +202,11 @@ def draw_figure(result: RunResult, directory: Path, name: str, extra: Any = None
     if name == "spectrum.png" and isinstance(details, DynamicDetails):
         (path,) = plotting.plot_dynamic_figures(result, directory)
         return path
-    solution = _roller_solution(result)
-    if solution is not None and name in _ROLLER_FIGURES:
-        return _roller_figure(solution, directory, name, extra)
+    if isinstance(details, RollerDetails) and name in _ROLLER_FIGURES:
+        solution = _roller_solution(result) if extra is None else None
+        if solution is not None and name != "order_sweep.png":
+            extra = _RollerFigure.of(solution)
+        return _roller_figure(directory, name, extra)
     raise ValueError(f"a {result.model} result has no figure {name!r}")
 
 
@@ -263,8 +273,9 @@ def _model_files(
 ) -> list[Path]:
     """:func:`model_files`, with the rigid model's order sweep already under way (or None)."""
     tables, swept = _model_tables(result, directory, sweep)
+    sweep_data = None if swept is None else _SweepFigure.of(swept)
     figures = [
-        draw_figure(result, directory, name, swept if name in _AFTER_TABLES else None)
+        draw_figure(result, directory, name, sweep_data if name in _AFTER_TABLES else None)
         for name in _model_figure_names(result)
     ]
     return [*tables, *figures]
@@ -441,25 +452,65 @@ def _roller_tables(
     return [path, _write_order_sweep(swept, directory / "order_sweep.csv")], swept
 
 
-def _roller_figure(sol: Solution, directory: Path, name: str, swept: OrderSweep | None) -> Path:
-    """One of the rigid model's figures (:data:`_ROLLER_FIGURES`); ``order_sweep.png`` needs
-    the sweep."""
-    angle_deg = np.degrees(sol.alpha)
-    if name == "displacement.png":
-        ax = plotting.plot_constraint_displacement(angle_deg, sol.radial, sol.horizontal)
-    elif name == "contact_pattern.png":
-        ax = plotting.plot_contact_pattern(angle_deg, sol.touching, sol.pair)
-    else:
-        if swept is None:
+@dataclass(frozen=True)
+class _RollerFigure:
+    """What the rigid model's position figures draw, as plain arrays (a figure process needs
+    neither the solution's types nor the compiled solver they import)."""
+
+    angle_deg: NDArray[np.float64]
+    radial: NDArray[np.float64]
+    horizontal: NDArray[np.float64]
+    touching: NDArray[np.bool_]
+    pair: NDArray[np.int64]
+
+    @classmethod
+    def of(cls, sol: Solution) -> _RollerFigure:
+        return cls(np.degrees(sol.alpha), sol.radial, sol.horizontal, sol.touching, sol.pair)
+
+
+@dataclass(frozen=True)
+class _SweepFigure:
+    """What ``order_sweep.png`` draws: the order sweep's table, as plain arrays."""
+
+    orders: NDArray[np.int64]
+    runout: NDArray[np.float64]
+    parts: tuple[str, ...]
+    baseline: float
+    n_elements: int
+    solved: NDArray[np.bool_]
+
+    @classmethod
+    def of(cls, swept: OrderSweep) -> _SweepFigure:
+        return cls(
+            swept.orders, swept.runout, swept.parts, swept.baseline, swept.n_elements, swept.solved
+        )
+
+
+def _without_solution(result: RunResult) -> RunResult:
+    """``result`` without the rigid model's solution (what the figure processes receive)."""
+    details = result.details
+    if not isinstance(details, RollerDetails) or details.solution is None:
+        return result
+    return dataclasses.replace(result, details=dataclasses.replace(details, solution=None))
+
+
+def _roller_figure(directory: Path, name: str, data: Any) -> Path:
+    """One of the rigid model's figures (:data:`_ROLLER_FIGURES`) from its data: the
+    positions (:class:`_RollerFigure`), or for ``order_sweep.png`` the sweep
+    (:class:`_SweepFigure`)."""
+    if name == "order_sweep.png":
+        if not isinstance(data, _SweepFigure):
             raise ValueError("order_sweep.png is drawn from the order sweep, none was given")
         ax = plotting.plot_order_sweep(
-            swept.orders,
-            swept.runout,
-            swept.parts,
-            swept.baseline,
-            swept.n_elements,
-            solved=swept.solved,
-        )
+            data.orders, data.runout, data.parts, data.baseline, data.n_elements,
+            solved=data.solved,
+        )  # fmt: skip
+    elif not isinstance(data, _RollerFigure):
+        raise ValueError(f"{name} is drawn from the rigid model's solution, none was given")
+    elif name == "displacement.png":
+        ax = plotting.plot_constraint_displacement(data.angle_deg, data.radial, data.horizontal)
+    else:
+        ax = plotting.plot_contact_pattern(data.angle_deg, data.touching, data.pair)
     return plotting.save_figure(ax, directory / name)
 
 
