@@ -1012,7 +1012,8 @@ def reproduce_command(
         typer.Option(
             "--only",
             help="Comma-separated sections (kinematics, contact, spectrum, linear, roller, "
-            "dynamic, quasi_static, life, diagnosis, envelope, studies, defects); default all.",
+            "dynamic, quasi_static, life, diagnosis, envelope, studies, defects, mcfadden_smith); "
+            "default all.",
         ),
     ] = None,
     out: Annotated[Path, typer.Option("--out", help="Where to write the document.")] = Path(

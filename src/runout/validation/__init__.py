@@ -24,6 +24,7 @@ from runout.validation import (
     envelope,
     iso_ts_16281,
     kinematics,
+    mcfadden_smith,
     seed000_tada,
     seed001_kim,
     seed001_kim_table9,
@@ -195,6 +196,12 @@ SECTIONS: list[Section] = [
         "`[analysis] signal`)",
         defects.INTRO,
         [Group("", "", defects.checks)],
+    ),
+    Section(
+        "mcfadden_smith",
+        "An inner-race spall's envelope spectrum against McFadden & Smith (1984)",
+        mcfadden_smith.INTRO,
+        [Group("", "", mcfadden_smith.checks)],
     ),
 ]
 
