@@ -1,7 +1,7 @@
 r"""McFadden & Smith's envelope spectrum of an inner-race defect against the dynamic model's.
 
 P. D. McFadden and J. D. Smith, "Model for the vibration produced by a single point defect in a
-rolling element bearing", Journal of Sound and Vibration 96(1), 69-82 (1984), sec. 2: the
+rolling element bearing", Journal of Sound and Vibration 96(1), 69-82 (1984): the
 defect on the inner race strikes a ball at the inner-race ball-pass frequency :math:`f_d`
 (BPFI); each impulse's amplitude follows the load the defect carries through the load zone as
 it turns with the shaft at :math:`f_s`, the Stribeck form
@@ -24,8 +24,10 @@ reads the same lines from an acceleration record; :func:`checks` compares them o
 with an inner-raceway spall under a pure radial load (zero clearance: ε = 1/2 from runout's
 static solution, :func:`load_zone_parameter`).
 
-Only the first page of the paper's text was reachable when this was written: the model here is
-its section 2 as summarised above, and no number printed in its figures is reproduced.
+Only the paper's abstract and first page were reachable when this was written: the model here
+is the one its abstract names (geometry, speed, load distribution, transfer function,
+exponential decay) in the form summarised above, and no number printed in its figures is
+reproduced.
 """
 
 from __future__ import annotations
@@ -65,7 +67,7 @@ _POINTS = 1 << 14
 INTRO = """\
 Tests: `tests/cli/test_mcfadden_smith_cli.py`, `tests/unit/validation/test_mcfadden_smith.py`.
 P. D. McFadden and J. D. Smith, "Model for the vibration produced by a single point defect in a
-rolling element bearing", Journal of Sound and Vibration 96(1), 69-82 (1984), sec. 2: impulses
+rolling element bearing", Journal of Sound and Vibration 96(1), 69-82 (1984): impulses
 at the inner-race ball-pass frequency BPFI, their amplitudes following the Stribeck load
 distribution q = q0 [1 - (1 - cos θ)/(2ε)]^(3/2) as the defect turns with the shaft, each
 ringing a resonance that decays exponentially; the demodulated spectrum has BPFI and its
@@ -107,7 +109,7 @@ def load_distribution(theta: ArrayLike, epsilon: float, n: float = 1.5) -> Float
 
     Notes
     -----
-    McFadden and Smith (1984), sec. 2, the load distribution (after Harris, *Rolling Bearing
+    McFadden and Smith (1984), the load distribution (after Harris, *Rolling Bearing
     Analysis*, the Stribeck form).
     """
     if not epsilon > 0.0:
@@ -144,7 +146,7 @@ def modulation_coefficients(
 
     Notes
     -----
-    McFadden and Smith (1984), sec. 2: the Fourier series of the load distribution. Computed
+    McFadden and Smith (1984): the Fourier series of the load distribution. Computed
     by the trapezoidal rule on :data:`_POINTS` points (spectral for the smooth part; the kink at
     the edge of the load zone limits it to ~1e-9 relative). At ε = 1/2,
     :math:`A_l/A_0 = \Gamma(1 + a/2)^2 / (\Gamma(1 + (a+l)/2)\,\Gamma(1 + (a-l)/2))` with
@@ -193,7 +195,7 @@ def predicted_lines(
 
     Notes
     -----
-    McFadden and Smith (1984), sec. 2: the spectrum of the impulses (a comb at :math:`f_d`)
+    McFadden and Smith (1984): the spectrum of the impulses (a comb at :math:`f_d`)
     convolved with that of the modulation (lines at :math:`l f_s`), times that of the
     exponential decay. The combs of different i do not overlap for the orders used here when
     :math:`f_d/f_s` is not an integer within :math:`2 \cdot` ``orders`` / ``harmonics``.
@@ -411,12 +413,12 @@ def checks() -> list[Check]:
 
     Notes
     -----
-    P. D. McFadden and J. D. Smith, J. Sound Vib. 96(1), 69-82 (1984), sec. 2.
+    P. D. McFadden and J. D. Smith, J. Sound Vib. 96(1), 69-82 (1984).
     """
     from runout.validation.cases import uses
 
     name = uses("cwru_6205_outer_spall.toml", "an inner-raceway spall against McFadden & Smith")
-    src = "McFadden & Smith 1984 sec. 2, CWRU 6205 inner spall, 500 N radial, 1797 rpm"
+    src = "McFadden & Smith 1984, CWRU 6205 inner spall, 500 N radial, 1797 rpm"
     rows = [
         Check(
             src,
