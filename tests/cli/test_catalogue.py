@@ -371,3 +371,178 @@ def test_a_tolerance_class_takes_the_designations_bore(tmp_path: Path) -> None:
     assert doc["verdict"]["bore_m"] == pytest.approx(0.010)
     assert doc["verdict"]["limit_m"] == pytest.approx(2.5e-6)
     assert not any("limit_bore" in n for n in doc.get("notes", []))
+
+
+# --------------------------------------------------------------------------------------------
+# the catalogue's dynamic load rating C: the maker's where cited, else ISO 281's, with provenance
+# --------------------------------------------------------------------------------------------
+LIFE = '[analysis]\nmodel = "equilibrium"\n'
+URB = "URB Group (Anadolu Rulman), Rolling Bearings General Catalogue, v.14_2017"
+
+
+def _run(tmp_path: Path, bearing: str, name: str = "case.toml") -> dict:
+    path = _case(tmp_path, bearing, LIFE, name=name)
+    code, out, err = _invoke("run", str(path), "--json")
+    assert code == 0, err
+    return json.loads(out)
+
+
+def _typed(values: dict, rating: str) -> str:
+    """The [bearing] keys of a catalogue entry's values, typed into the case (SI)."""
+    keys = ("elements", "element_diameter", "pitch_diameter", "inner_conformity")
+    typed = [f"{k} = {values[k]!r}" for k in keys]
+    typed += [f"outer_conformity = {values['outer_conformity']!r}", 'type = "ball"']
+    return "\n".join([*typed, f"dynamic_load_rating = {rating}"])
+
+
+def test_a_makers_c_gives_the_life_a_typed_c_gives(tmp_path: Path) -> None:
+    doc = _run(tmp_path, 'designation = "6214"')
+    source = doc["bearing_source"]
+    assert source["values"]["dynamic_load_rating"] == pytest.approx(62.2e3, rel=1e-12)
+    assert source["provenance"]["dynamic_load_rating"].startswith(URB)
+    assert doc["life"]["dynamic_load_rating_n"] == pytest.approx(62.2e3, rel=1e-12)
+    assert not any("estimate" in n and "dynamic_load_rating" in n for n in doc["notes"])
+    # the same bearing typed key by key with the same C: the same life (same arithmetic)
+    typed = _run(tmp_path, _typed(source["values"], '"62.2 kN"'), name="typed.toml")
+    assert doc["life"]["l10r_mrev"] == pytest.approx(typed["life"]["l10r_mrev"], rel=1e-12)
+    # 100 N radial at zero clearance: the TS life is of the order of ISO 281's (C/P)^3
+    assert 0.5 < doc["life"]["l10r_mrev"] / (62.2e3 / 100.0) ** 3 < 2.0
+    code, out, _ = _invoke("catalogue", "6214")
+    assert code == 0 and "62.2" in out and "URB Group" in out
+
+
+def test_iso_281_c_of_published_geometry_is_the_standards_formula(tmp_path: Path) -> None:
+    # 608 (seed 002): Z = 7, D_w = 3.9688 mm, D_pw = 15 mm, alpha = 0: f_c between Table 2's
+    # 58.2 (0.26) and 57.7 (0.27) at D_w / D_pw = 0.264587
+    f_c = 58.2 + (3.9688 / 15.0 - 0.26) / 0.01 * (57.7 - 58.2)
+    expected = 1.3 * f_c * 7 ** (2 / 3) * 3.9688**1.8  # [N], lengths in mm
+    doc = _run(tmp_path, 'designation = "608"')
+    source = doc["bearing_source"]
+    assert source["values"]["dynamic_load_rating"] == pytest.approx(expected, rel=1e-12)
+    assert source["provenance"]["dynamic_load_rating"].startswith(
+        "computed by ISO 281:2007 from published internal geometry (Anderon"
+    )
+    assert doc["life"]["dynamic_load_rating_n"] == pytest.approx(expected, rel=1e-12)
+    assert not any("is an estimate" in n for n in doc["notes"])
+
+
+def test_iso_281_c_of_estimated_geometry_is_said_to_be_an_estimate(tmp_path: Path) -> None:
+    doc = _run(tmp_path, 'designation = "6205"')
+    origin = doc["bearing_source"]["provenance"]["dynamic_load_rating"]
+    assert origin.startswith("estimate (computed by ISO 281:2007 from estimated internal")
+    rating = doc["bearing_source"]["values"]["dynamic_load_rating"]
+    assert doc["life"]["dynamic_load_rating_n"] == pytest.approx(rating, rel=1e-12)
+    note = f"bearing.dynamic_load_rating: {rating / 1e3:.6g} kN of 6205 is an estimate"
+    assert any(note in n for n in doc["notes"]), doc["notes"]
+    path = _case(tmp_path, 'designation = "6205"', LIFE)
+    code, out, err = _invoke("run", str(path))
+    assert code == 0, err
+    assert "is an estimate, computed by ISO 281:2007" in " ".join(out.split())
+
+
+def test_a_case_c_replaces_the_catalogues_with_a_note(tmp_path: Path) -> None:
+    doc = _run(tmp_path, 'designation = "6214"\ndynamic_load_rating = "63.7 kN"')
+    assert doc["life"]["dynamic_load_rating_n"] == pytest.approx(63.7e3, rel=1e-12)
+    source = doc["bearing_source"]
+    assert source["given_in_case"]["dynamic_load_rating"] == pytest.approx(63.7e3)
+    assert source["provenance"]["dynamic_load_rating"].startswith("case file")
+    assert (
+        "bearing.dynamic_load_rating: 63.7 kN given in the case replaces the catalogue's "
+        "62.2 kN (6214)" in doc["notes"]
+    )
+    # a case C over an ISO 281 estimate: no estimate note, the replacement note instead
+    doc = _run(tmp_path, 'designation = "6205"\ndynamic_load_rating = "14.8 kN"', "b.toml")
+    assert not any("is an estimate" in n for n in doc["notes"])
+    assert any("14.8 kN given in the case replaces the catalogue's" in n for n in doc["notes"])
+
+
+def test_computed_c_with_the_cases_own_geometry_is_noted(tmp_path: Path) -> None:
+    doc = _run(tmp_path, 'designation = "6205"\nelement_diameter = "7.94 mm"')
+    assert any(
+        "computed by ISO 281:2007 from the catalogue's element_diameter, not from the case's" in n
+        for n in doc["notes"]
+    ), doc["notes"]
+
+
+def test_spindle_bearings_by_designation_have_a_life(tmp_path: Path) -> None:
+    text = (ROOT / "examples" / "spindle_machine_tool.toml").read_text(encoding="utf-8")
+    keys = (
+        'type = "ball"\nelements = 20\nelement_diameter = "11.1125 mm"\npitch_diameter = "90 mm"\n'
+        'inner_conformity = 0.52\nouter_conformity = 0.53\nnominal_contact_angle = "25 deg"\n'
+    )
+    path = tmp_path / "spindle.toml"
+    path.write_text(text.replace(keys, 'designation = "7014AC"\n'), encoding="utf-8")
+    code, out, err = _invoke("run", str(path), "--json")
+    assert code == 0, err
+    doc = json.loads(out)
+    for bearing, source in zip(doc["bearings"], doc["bearing_sources"], strict=True):
+        rating = source["values"]["dynamic_load_rating"]
+        assert bearing["life"]["dynamic_load_rating_n"] == pytest.approx(rating, rel=1e-12)
+    assert any("bearings[1].dynamic_load_rating:" in n and "estimate" in n for n in doc["notes"])
+
+
+def test_a_roller_row_has_no_c(tmp_path: Path) -> None:
+    code, out, err = _invoke("catalogue", "NU209", "--json")
+    assert code == 0, err
+    entry = json.loads(out)["entries"][0]
+    assert "dynamic_load_rating" not in entry["values"]
+
+
+RATED = """\
+designation,kind,d_mm,D_mm,B_mm,elements,element_diameter_mm,pitch_diameter_mm,source,dynamic_load_rating_kN,dynamic_load_rating_source
+"""
+
+
+def test_user_catalogue_c_column(tmp_path: Path) -> None:
+    user = tmp_path / "mine.csv"
+    user.write_text(RATED + "Y-1,deep_groove,25,52,15,,,,,15.1,maker list 2024 p. 7\n", "utf-8")
+    path = _case(tmp_path, 'designation = "Y-1"', LIFE)
+    code, out, err = _invoke("run", str(path), "--json", "--catalogue", str(user))
+    assert code == 0, err
+    doc = json.loads(out)
+    assert doc["life"]["dynamic_load_rating_n"] == pytest.approx(15.1e3, rel=1e-12)
+    assert doc["bearing_source"]["provenance"]["dynamic_load_rating"] == "maker list 2024 p. 7"
+
+
+@pytest.mark.parametrize(
+    ("row", "column", "what"),
+    [
+        ("Y-1,deep_groove,25,52,15,,,,,abc,x", "dynamic_load_rating_kN", "must be a number"),
+        ("Y-1,deep_groove,25,52,15,,,,,-14,x", "dynamic_load_rating_kN", "finite number > 0"),
+        ("Y-1,deep_groove,25,52,15,,,,,0,x", "dynamic_load_rating_kN", "finite number > 0"),
+        ("Y-1,deep_groove,25,52,15,,,,,inf,x", "dynamic_load_rating_kN", "finite number > 0"),
+        ("Y-1,deep_groove,25,52,15,,,,,NaN,x", "dynamic_load_rating_kN", "finite number > 0"),
+        ("Y-1,deep_groove,25,52,15,,,,,1e400,x", "dynamic_load_rating_kN", "finite number > 0"),
+        ("Y-1,deep_groove,25,52,15,,,,,2e6,x", "dynamic_load_rating_kN", "at most 1e+06 kN"),
+        ("Y-1,deep_groove,25,52,15,,,,,14,", "dynamic_load_rating_source", "needs its source"),
+        (
+            "Y-1,cylindrical_roller,25,52,15,,,,,14,x",
+            "dynamic_load_rating_kN",
+            "only applies to ball bearings",
+        ),
+    ],
+)
+def test_a_bad_c_cell_is_refused_in_one_line(
+    tmp_path: Path, row: str, column: str, what: str
+) -> None:
+    user = tmp_path / "bad.csv"
+    user.write_text(RATED + row + "\n", encoding="utf-8")
+    path = _case(tmp_path, 'designation = "6204"')
+    code, _, err = _invoke("check", str(path), "--catalogue", str(user))
+    assert code == 2
+    assert err.count("\n") == 1, err
+    assert f"{user}: row 2, column {column}: " in err and what in err, err
+
+
+def test_a_model_without_life_is_silent_about_the_catalogues_c(tmp_path: Path) -> None:
+    # the catalogue's C is not the case's input: the linear model need not say it leaves it
+    # out; a C the case gives is noted as before
+    for bearing, noted in (
+        ('designation = "6214"', False),
+        ('designation = "6214"\ndynamic_load_rating = "63.7 kN"', True),
+    ):
+        path = _case(tmp_path, bearing, '[analysis]\nmodel = "linear"\n')
+        code, out, err = _invoke("run", str(path), "--json")
+        assert code == 0, err
+        notes = json.loads(out)["notes"]
+        assert any("dynamic_load_rating: not applied" in n for n in notes) is noted, notes

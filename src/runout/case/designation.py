@@ -25,7 +25,7 @@ from runout.catalogue import (
     active_catalogue,
 )
 
-__all__ = ["BearingSource", "Pending", "blame", "expand", "sources"]
+__all__ = ["BearingSource", "Pending", "blame", "expand", "leave_catalogue_rating_unset", "sources"]
 
 #: Keys whose values are angles [rad] (shown in degrees).
 _ANGLES = ("nominal_contact_angle", "contact_angle")
@@ -34,6 +34,8 @@ _PLAIN = ("elements", "inner_conformity", "outer_conformity")
 
 
 def _shown(key: str, value: float) -> str:
+    if key == "dynamic_load_rating":
+        return f"{value / 1e3:.6g} kN"
     if key in _ANGLES:
         return f"{math.degrees(value):.6g} deg"
     if key in _PLAIN:
@@ -292,6 +294,7 @@ def sources(spec: Any, pending: list[Pending]) -> tuple[BearingSource, ...]:
                 f"{p.key}.{by}: given in the case, so the catalogue's {dropped} "
                 f"{_shown(dropped, catalogue_value)} ({p.entry.designation}) is not applied"
             )
+        notes += _rating_notes(p, given)
         if p.bore_for_limit:
             notes.append(
                 f"analysis.limit_bore: the bore of {p.entry.designation} from the catalogue, "
@@ -299,6 +302,54 @@ def sources(spec: Any, pending: list[Pending]) -> tuple[BearingSource, ...]:
             )
         out.append(BearingSource(p.key, p.entry, given, tuple(notes), p.name, dict(p.dropped)))
     return tuple(out)
+
+
+def leave_catalogue_rating_unset(spec: Any, pending: list[Pending]) -> None:
+    """Mark a ``dynamic_load_rating`` that came from the catalogue as not set by the case.
+
+    The key conventions (:mod:`runout.case.conventions`) note a key the case sets that a
+    model does not apply; a catalogue bearing's C is not the case's input, so a model
+    without a life (the linear one, ...) need not say it leaves it out. Its value stays.
+
+    Parameters
+    ----------
+    spec : CaseSpec
+        The validated case (changed in place: the tables' sets of given fields).
+    pending : list of Pending
+        From :func:`expand`.
+    """
+    for p in pending:
+        if "dynamic_load_rating" not in p.entry.values or "dynamic_load_rating" in p.given:
+            continue
+        if p.key == "bearing":
+            table = spec.bearing
+        else:
+            table = spec.bearings[int(p.key[len("bearings[") : -1]) - 1]
+        table.__pydantic_fields_set__.discard("dynamic_load_rating")
+
+
+def _rating_notes(p: Pending, given: Mapping[str, float]) -> list[str]:
+    """Say that the catalogue's C is an ISO 281 estimate, or was computed from geometry the
+    case replaces; nothing when the case gives its own C or the row has none."""
+    origin = p.entry.provenance.get("dynamic_load_rating", "")
+    if "dynamic_load_rating" in given or "computed by ISO 281" not in origin:
+        return []
+    shown = _shown("dynamic_load_rating", float(p.entry.values["dynamic_load_rating"]))
+    notes = []
+    if origin.startswith("estimate"):
+        notes.append(
+            f"{p.key}.dynamic_load_rating: {shown} of {p.entry.designation} is an estimate, "
+            "computed by ISO 281:2007 from estimated internal geometry (the catalogue holds "
+            "no maker's C for it); give dynamic_load_rating, the maker's C, for a rated life"
+        )
+    replaced = [k for k in ("elements", "element_diameter", "pitch_diameter") if k in given]
+    if replaced:
+        notes.append(
+            f"{p.key}.dynamic_load_rating: {shown} was computed by ISO 281:2007 from the "
+            f"catalogue's {', '.join(replaced)}, not from the case's; give "
+            "dynamic_load_rating for the bearing the case describes"
+        )
+    return notes
 
 
 def blame(pending: list[Pending], key: str, message: str) -> tuple[str, str]:

@@ -62,7 +62,13 @@ from runout.case._schema import (
     sweep_count,
 )
 from runout.case._schema import _table_type as _table_type  # runout.api, runout.report.plotting
-from runout.case.designation import BearingSource, blame, expand, sources
+from runout.case.designation import (
+    BearingSource,
+    blame,
+    expand,
+    leave_catalogue_rating_unset,
+    sources,
+)
 from runout.case.estimates import check_limits
 from runout.case.limits import MAX_CASE_FILE_BYTES, MAX_TOML_DEPTH, case_budget, format_bytes
 from runout.catalogue import Catalogue
@@ -573,6 +579,7 @@ def parse_case(
     except ValidationError as exc:
         key, message = blame(pending, *first_validation_error(exc))
         raise CaseError(path, key, message) from None
+    leave_catalogue_rating_unset(spec, pending)
     try:
         limits = case_budget(spec)
     except GeometryError as exc:

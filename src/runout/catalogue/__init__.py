@@ -6,7 +6,10 @@ groove 618, 619, 160, 60, 62, 63 and a few miniature ones; angular contact 719 a
 contact-angle suffixes C = 15 deg and AC = 25 deg, 72 with C, AC and B = 40 deg; cylindrical
 roller NU2 and NU3), and the internal geometry where a publication gives it, with its
 citation. A cell left empty is estimated by a named rule (:mod:`runout.catalogue._rules`),
-and every value says where it comes from (:attr:`CatalogueEntry.provenance`).
+and every value says where it comes from (:attr:`CatalogueEntry.provenance`). A ball bearing
+row carries its basic dynamic load rating C: the maker's where a maker's catalogue gives it
+(``dynamic_load_rating_kN``, cited in ``dynamic_load_rating_source``), else C computed by
+ISO 281:2007 from the row's internal geometry (an ``estimate`` where that geometry is).
 
 A user catalogue in the same format (``runout ... --catalogue FILE`` or the environment
 variable ``RUNOUT_CATALOGUE``) adds rows, and replaces a shipped row of the same designation
@@ -43,6 +46,7 @@ from runout.base.errors import RunoutError
 from runout.base.reading import InputFileError, read_text
 from runout.catalogue._rules import RULES, estimate
 from runout.geometry.bearing import BallBearing, Bearing, RollerBearing
+from runout.geometry.life import MAX_DYNAMIC_LOAD_RATING, basic_dynamic_load_rating
 
 __all__ = [
     "CATALOGUE_ENV",
@@ -85,7 +89,19 @@ _INTERNAL: dict[str, tuple[str, int]] = {
     "inner_conformity": ("inner_conformity", 1),
     "outer_conformity": ("outer_conformity", 1),
 }
-_COLUMNS = (*_REQUIRED, "nominal_contact_angle_deg", *_INTERNAL, "source")
+#: The maker's basic dynamic load rating C [kN] and its citation (optional columns).
+_RATING = "dynamic_load_rating_kN"
+_RATING_SOURCE = "dynamic_load_rating_source"
+_COLUMNS = (
+    *_REQUIRED,
+    "nominal_contact_angle_deg",
+    *_INTERNAL,
+    "source",
+    _RATING,
+    _RATING_SOURCE,
+)
+#: Keys ISO 281's load rating is computed from (:func:`_rating`).
+_RATING_GEOMETRY = ("elements", "element_diameter", "pitch_diameter")
 _BALL_ONLY = ("pitch_diameter", "inner_conformity", "outer_conformity")
 _ROLLER_ONLY = ("inner_raceway_diameter", "outer_raceway_diameter")
 #: Suffixes read from a designation after its basic part (separated by a space, - or /).
@@ -131,7 +147,8 @@ class CatalogueEntry:
     bore_diameter, outside_diameter, width : float
         Boundary dimensions d, D, B [m].
     values : mapping of str to float or int
-        The ``[bearing]`` keys the entry sets, by case-file name, SI ([m], [rad], [-]).
+        The ``[bearing]`` keys the entry sets, by case-file name, SI ([m], [rad], [-],
+        ``dynamic_load_rating`` [N]).
     provenance : mapping of str to str
         Per key of ``values`` (and ``"dimensions"`` for d, D, B): the citation of a published
         value, or the statement of the rule that estimated it.
@@ -436,6 +453,7 @@ def _entry(row: dict[str, str], file: str, line: int, catalogue: str) -> Catalog
         raise InputFileError(
             file, where("nominal_contact_angle_deg"), "an angular_contact row needs its angle"
         )
+    _rating(row, kind, values, provenance, file, where)
     entry = CatalogueEntry(
         designation=designation,
         kind=kind,
@@ -448,6 +466,79 @@ def _entry(row: dict[str, str], file: str, line: int, catalogue: str) -> Catalog
     )
     _check_geometry(entry, file, f"row {line}")
     return entry
+
+
+def _rating(
+    row: dict[str, str],
+    kind: str,
+    values: dict[str, float | int],
+    provenance: dict[str, str],
+    file: str,
+    where: Any,
+) -> None:
+    """Set ``dynamic_load_rating`` [N] of a ball bearing row: the maker's, else ISO 281's.
+
+    A ``dynamic_load_rating_kN`` cell is the maker's C with its citation
+    (``dynamic_load_rating_source``, else ``source``). An empty cell: C computed by
+    ISO 281:2007 (:func:`runout.geometry.life.basic_dynamic_load_rating`) from the row's
+    internal geometry, its provenance saying whether that geometry is published or estimated
+    (an estimate's provenance starts with ``estimate``). A cylindrical roller row has no C
+    (runout rates the life of ball bearings only).
+    """
+    text = (row.get(_RATING) or "").strip()
+    cited = (row.get(_RATING_SOURCE) or "").strip() or (row.get("source") or "").strip()
+    if kind == "cylindrical_roller":
+        if text:
+            raise InputFileError(
+                file, where(_RATING), "only applies to ball bearings (runout rates their life)"
+            )
+        return
+    if text:
+        try:
+            exact = Decimal(text)
+        except InvalidOperation:
+            raise InputFileError(
+                file, where(_RATING), f"{_RATING} must be a number, got {text[:40]!r}"
+            ) from None
+        newtons = float(exact * 1000) if exact.is_finite() and len(text) <= 40 else math.nan
+        if not (math.isfinite(newtons) and 0.0 < newtons <= MAX_DYNAMIC_LOAD_RATING):
+            raise InputFileError(
+                file,
+                where(_RATING),
+                f"{_RATING} must be a finite number > 0 and at most "
+                f"{MAX_DYNAMIC_LOAD_RATING / 1e3:.0e} kN, got {text[:40]!r}",
+            )
+        if not cited:
+            raise InputFileError(
+                file,
+                where(_RATING_SOURCE),
+                "a dynamic load rating needs its source (a citation); leave it empty to have "
+                "runout compute it by ISO 281",
+            )
+        values["dynamic_load_rating"] = newtons
+        provenance["dynamic_load_rating"] = cited
+        return
+    estimated = [k for k in _RATING_GEOMETRY if provenance[k].startswith("estimate")]
+    try:
+        rating = basic_dynamic_load_rating(
+            int(values["elements"]),
+            float(values["element_diameter"]),
+            float(values["pitch_diameter"]),
+            float(values.get("nominal_contact_angle", 0.0)),
+        )
+    except RunoutError:
+        return  # outside ISO 281's f_c table: no C (the run notes there is no life)
+    values["dynamic_load_rating"] = rating
+    if estimated:
+        provenance["dynamic_load_rating"] = (
+            "estimate (computed by ISO 281:2007 from estimated internal geometry: "
+            f"{', '.join(estimated)} by the catalogue's rules; b_m = 1.3, f_c of Table 2)"
+        )
+    else:
+        provenance["dynamic_load_rating"] = (
+            "computed by ISO 281:2007 from published internal geometry "
+            f"({provenance['element_diameter']}; b_m = 1.3, f_c of Table 2)"
+        )
 
 
 def _check_geometry(entry: CatalogueEntry, file: str, where: str) -> None:

@@ -43,7 +43,8 @@ def use_catalogue(path: Path | None) -> None:
 
 def _listing(entries: list[Any]) -> Table:
     table = Table(title="Bearing catalogue", title_justify="left", header_style="bold")
-    for name in ("designation", "kind", "d [mm]", "D [mm]", "B [mm]", "Z", "D_w [mm]", "from"):
+    names = ("designation", "kind", "d [mm]", "D [mm]", "B [mm]", "Z", "D_w [mm]", "C [kN]", "from")
+    for name in names:
         table.add_column(
             escape(name), justify="left" if name in ("designation", "kind", "from") else "right"
         )
@@ -58,11 +59,21 @@ def _listing(entries: list[Any]) -> Table:
             f"{e.width * 1e3:.6g}",
             str(v["elements"]),
             f"{float(v['element_diameter']) * 1e3:.6g}",
+            _rating(e),
             "estimate"
             if estimated
             else escape(e.catalogue if e.catalogue != "runout" else "published"),
         )
     return table
+
+
+def _rating(entry: Any) -> str:
+    """C [kN] as the listing shows it: ``~`` before an ISO 281 estimate, ``-`` for none."""
+    rating = entry.values.get("dynamic_load_rating")
+    if rating is None:
+        return "-"
+    mark = "~" if "dynamic_load_rating" in entry.estimated else ""
+    return f"{mark}{float(rating) / 1e3:.4g}"
 
 
 def register(app: typer.Typer) -> None:
@@ -88,9 +99,10 @@ def register(app: typer.Typer) -> None:
     ) -> None:
         """List the bearing catalogue's designations, or show one entry whole.
 
-        Each row: d, D, B (ISO 15), the number Z and diameter D_w of the elements, and
-        whether they are published (with their citation) or estimated by a rule
-        (docs/designation.md). With exactly one match, or --show, every value and its source.
+        Each row: d, D, B (ISO 15), the number Z and diameter D_w of the elements, the
+        dynamic load rating C (the maker's, or ~ ISO 281's estimate), and whether they are
+        published (with their citation) or estimated by a rule (docs/designation.md). With
+        exactly one match, or --show, every value and its source.
 
         Example: runout catalogue 620? ; runout catalogue "6205-2RS JEM SKF"
         """

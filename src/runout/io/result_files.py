@@ -65,6 +65,7 @@ _CATALOGUE_KEYS = (
     "inner_raceway_diameter",
     "outer_raceway_diameter",
     "nominal_contact_angle",
+    "dynamic_load_rating",
 )
 #: ``bearing_source`` ([bearing] designation, :mod:`runout.case.designation`)
 _SOURCE: dict[str, Any] = {

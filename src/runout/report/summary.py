@@ -674,6 +674,8 @@ _DIMENSIONS = ("bore_diameter_m", "outside_diameter_m", "width_m")
 
 
 def _source_value(key: str, value: float) -> tuple[str, str]:
+    if key == "dynamic_load_rating":
+        return f"{value / 1e3:.6g}", "kN"
     if key in _ANGLE_KEYS:
         return f"{math.degrees(value):.6g}", "deg"
     if key in _PLAIN_KEYS:

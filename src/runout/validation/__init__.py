@@ -17,6 +17,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable
 
 from runout.validation import (
+    catalogue_rating,
     contact,
     cross_model,
     defects,
@@ -164,7 +165,14 @@ SECTIONS: list[Section] = [
         "life",
         "Reference rating life, ISO/TS 16281 (`runout.geometry.life`, `equilibrium`)",
         iso_ts_16281.INTRO,
-        [Group("", "", iso_ts_16281.checks)],
+        [
+            Group("", "", iso_ts_16281.checks),
+            Group(
+                "A catalogue bearing's dynamic load rating C (ISO 281:2007, `runout.catalogue`)",
+                catalogue_rating.INTRO,
+                catalogue_rating.checks,
+            ),
+        ],
     ),
     Section(
         "diagnosis",

@@ -127,3 +127,23 @@ def test_negative_or_missing_loads_are_refused() -> None:
         _life(np.array([1.0, math.nan, 1.0]))
     with pytest.raises(GeometryError):
         _life(np.zeros(7))
+
+
+def test_iso_281_rating_branches_meet_at_one_inch_and_refuse_outside_table_2() -> None:
+    from runout.base.errors import GeometryError
+    from runout.geometry.life import basic_dynamic_load_rating
+
+    # ISO 281's 3.647 D_w^1.4 above 25.4 mm continues D_w^1.8: 3.647 = 25.4^0.4 to 0.06 %
+    below = basic_dynamic_load_rating(12, 25.4e-3, 200e-3)
+    above = basic_dynamic_load_rating(12, 25.4e-3 * (1 + 1e-12), 200e-3)
+    assert above == pytest.approx(below, rel=1e-3)
+    # a row of Table 2 exactly: D_w / D_pw = 0.1 -> f_c = 55.5
+    assert basic_dynamic_load_rating(10, 10e-3, 100e-3) == pytest.approx(
+        1.3 * 55.5 * 10 ** (2 / 3) * 10**1.8, rel=1e-12
+    )
+    # the contact angle enters as (cos a)^0.7 and through f_c at D_w cos a / D_pw
+    angled = basic_dynamic_load_rating(10, 10e-3, 100e-3, math.acos(0.5))
+    f_c = 46.7  # Table 2 at 0.05
+    assert angled == pytest.approx(1.3 * f_c * 0.5**0.7 * 10 ** (2 / 3) * 10**1.8, rel=1e-12)
+    with pytest.raises(GeometryError, match="outside ISO 281's f_c table"):
+        basic_dynamic_load_rating(10, 45e-3, 100e-3)
