@@ -633,9 +633,18 @@ def _case_data(case: Case) -> dict[str, Any]:
 def _digest_data(case: Case) -> dict[str, Any]:
     """The case document a study's digest is taken of: every key with its default, as earlier
     versions hashed it, so that their output directories still resume and load."""
+    spec = case.spec
     # an empty [[defect]] list is left out: the table is newer than those directories
-    empty = {"defect"} if not case.spec.defect else set()
-    return case.spec.model_dump(mode="python", exclude_none=True, exclude={"study"} | empty)
+    exclude: dict[str, Any] = {"study": True} | ({} if spec.defect else {"defect": True})
+    # so is a catalogue bearing's C (the catalogue's C column is newer; the designation, which
+    # decides it, is hashed): a C the case gives is in its fields set and is hashed
+    rating = "dynamic_load_rating"
+    if spec.bearing is not None and rating not in spec.bearing.model_fields_set:
+        exclude["bearing"] = {rating}
+    unset = [i for i, b in enumerate(spec.bearings or ()) if rating not in b.model_fields_set]
+    if unset:
+        exclude["bearings"] = {i: {rating} for i in unset}
+    return spec.model_dump(mode="python", exclude_none=True, exclude=exclude)
 
 
 def _models(case: Case) -> list[str]:

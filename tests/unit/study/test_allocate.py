@@ -5,6 +5,7 @@ schema's refusals and the digest of studies without allocation."""
 from __future__ import annotations
 
 import math
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -209,3 +210,41 @@ def test_a_study_without_allocation_keeps_its_digest() -> None:
     case = load_case(root / "examples" / "seed001_kim_table9.toml")
     digest = st_mod._plan(case, None).digest
     assert digest == "21f1175ef8a56043816b3e33d903f0fdef9db026f9e0d217beccd22a950e9ce6"
+
+
+def test_a_catalogue_bearing_keeps_its_digest(tmp_path: Path) -> None:
+    # a designation's dynamic load rating C came with the catalogue's C column: the digest
+    # of a study of a catalogue bearing is the one earlier versions took (pinned from the
+    # version before the column), so its output directories still resume; a C the case gives
+    # is the case's input and is hashed
+    case_text = """title = "6205 lot"
+[bearing]
+designation = "6205"
+radial_clearance = "5 um"
+[operation]
+rotating_ring = "inner"
+speed = "1800 rpm"
+axial_load = "100 N"
+[analysis]
+model = "quasi_static_2d"
+revolutions = 8
+samples = 1024
+[study]
+kind = "montecarlo"
+samples = 100
+seed = 1
+[study.vary]
+element_diameter_sigma = "0.1 um"
+"""
+    from runout.case.model import load_case
+
+    path = tmp_path / "lot.toml"
+    path.write_text(case_text, encoding="utf-8")
+    case = load_case(path)
+    assert case.bearing.dynamic_load_rating is not None  # the catalogue's
+    digest = st_mod._plan(case, None).digest
+    assert digest == "877828686166411167552ab9610d7d0080b8af6a7e7e8b8b9b69b1f4be4a057b"
+    given = case_text.replace('radial_clearance = "5 um"', 'radial_clearance = "5 um"\n'
+                              'dynamic_load_rating = "14 kN"')  # fmt: skip
+    path.write_text(given, encoding="utf-8")
+    assert st_mod._plan(load_case(path), None).digest != digest
