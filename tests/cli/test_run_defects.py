@@ -8,8 +8,10 @@ moves the orders by under 0.5 %), labelled with the part; the inner raceway's BP
 sidebands at +- the shaft speed, the ball's BDF sidebands at +- the cage speed (FTF);
 `runout run --out DIR` writes DIR/signal.csv, which `runout diagnose --record --envelope` reads
 and names the defective part from; the healthy bearing's signal is not called defective; a
-random slip spreads the defect line; the step resolves a narrow spall. Bad entries exit 2 with
-one line naming the file and the key.
+random slip spreads the defect line, and a ball spall under slip is still named the ball (its
+cage-rate lines are its modulation); a speed fluctuation moves the tachometer column and
+spreads the line, and the diagnosis order-tracks it sharp again; the step resolves a narrow
+spall. Bad entries exit 2 with one line naming the file and the key.
 """
 
 from __future__ import annotations
