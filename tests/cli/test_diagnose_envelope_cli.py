@@ -231,3 +231,24 @@ def test_too_short_and_too_slow(case, tmp_path):
 def test_acceleration_column_without_envelope(records):
     err = _bad("--record", str(records["outer"]))
     assert str(records["outer"]) in err and "--envelope" in err
+
+
+def test_a_varying_tachometer_is_order_tracked_for_the_envelope_only(case, tmp_path):
+    # a 3 % speed swing: the envelope diagnosis resamples to the shaft angle and names the
+    # inner race; the line fit of a displacement record reads one speed and refuses it
+    rec = defect_record(case, "inner", rpm=1500.0, seed=6)
+    rev = rec.time * 25.0 + 0.03 * 25.0 / (2 * np.pi * 0.5) * np.sin(2 * np.pi * 0.5 * rec.time)
+    # the constant-speed record read at the fluctuating shaft angle: it follows the tachometer
+    a = np.interp(rev / 25.0, rec.time, rec.channels["a"])
+    path = _write(tmp_path / "tacho.csv", rec.time, a, "time_s,a_m_per_s2,rev", rev=rev)
+    payload = _json("--record", str(path))
+    assert payload["defects"][0]["part"] == "inner"
+    assert any(n.startswith("order tracking:") for n in payload["notes"])
+    disp = tmp_path / "disp.csv"
+    rows = ["time_s,x_m,y_m,rev"] + [
+        f"{t:.9g},{1e-6 * np.cos(2 * np.pi * r):.9g},{1e-6 * np.sin(2 * np.pi * r):.9g},{r:.9g}"
+        for t, r in zip(rec.time[::4], rev[::4], strict=True)
+    ]
+    disp.write_text("\n".join(rows) + "\n", encoding="utf-8")
+    err = _bad("--record", str(disp))
+    assert "'rev'" in err and "varies by" in err

@@ -82,9 +82,11 @@ class AccelerationSignal:
     sample_rate_hz, resonance_hz, damping_ratio, modal_mass_kg, noise : float
         The sensor ([Hz], [Hz], [-], [kg], [-]).
     seed : int
-        Of the noise and the slip.
+        Of the noise, the slip and the speed fluctuation.
     slip : float
         Random slip of the rolling elements (``[sensor] slip``) [-].
+    speed_fluctuation : float
+        Rms of the shaft speed's relative fluctuation (``[sensor] speed_fluctuation``) [-].
     envelope : dict
         :func:`envelope_block`.
     summary : dict or None
@@ -102,6 +104,7 @@ class AccelerationSignal:
     noise: float
     seed: int
     slip: float = 0.0
+    speed_fluctuation: float = 0.0
     envelope: dict[str, Any] = field(default_factory=dict)
     summary: dict[str, Any] | None = None
 
@@ -134,6 +137,7 @@ class AccelerationSignal:
             noise=float(sensor.get("noise", math.nan)),
             seed=int(sensor.get("seed", 0)),
             slip=float(sensor.get("slip", 0.0)),
+            speed_fluctuation=float(sensor.get("speed_fluctuation", 0.0)),
             envelope=envelope,
             summary=signal,
         )
@@ -146,7 +150,7 @@ class AccelerationSignal:
         dict
             ``quantity``, ``sample_rate_hz``, ``samples``, ``duration_s``, ``rms_m_per_s2``
             and ``sensor`` (``resonance_hz``, ``damping_ratio``, ``modal_mass_kg``,
-            ``noise``, ``seed``, ``slip``).
+            ``noise``, ``seed``, ``slip``, ``speed_fluctuation``).
         """
         if self.summary is not None:
             return self.summary
@@ -163,6 +167,7 @@ class AccelerationSignal:
                 "noise": self.noise,
                 "seed": self.seed,
                 "slip": self.slip,
+                "speed_fluctuation": self.speed_fluctuation,
             },
         }
 

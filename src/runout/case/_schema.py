@@ -564,12 +564,22 @@ class SensorSpec(_Table):
     noise: Plain = Field(
         0.0, description="Rms of the added Gaussian noise over the signal's rms [-] (>= 0)."
     )
-    seed: int = Field(0, ge=0, description="Seed of the noise's and the slip's random draws.")
+    seed: int = Field(
+        0, ge=0, description="Seed of the noise's, the slip's and the speed fluctuation's draws."
+    )
     slip: Plain = Field(
         0.0,
         description="Random slip of the rolling elements, 0 to 0.05: the relative standard "
         "deviation of the cage's speed, drawn anew each ball passage (each impact period "
         "jitters by about as much; 0.01-0.02 is typical).",
+    )
+    speed_fluctuation: Plain | None = Field(
+        None,
+        description="Random slow fluctuation of the shaft speed, 0 to 0.1: the rms of its "
+        "relative deviation from the [operation] speed over the signal (the mean stays the "
+        "speed); a sum of 8 sinusoids of random frequencies up to a tenth of the shaft speed and "
+        "random phases, drawn from seed. The impacts and the rev column follow the fluctuating "
+        "shaft angle; default none (a constant speed).",
     )
     band: tuple[Frequency, Frequency] | None = Field(
         None,
@@ -605,6 +615,13 @@ class SensorSpec(_Table):
     def _slip(cls, value: float) -> float:
         if not 0.0 <= value <= 0.05:
             raise ValueError(f"must be from 0 to 0.05 (0.02 = 2 %), got {value!r}")
+        return value
+
+    @field_validator("speed_fluctuation")
+    @classmethod
+    def _fluctuation(cls, value: float | None) -> float | None:
+        if value is not None and not 0.0 <= value <= 0.1:
+            raise ValueError(f"must be from 0 to 0.1 (0.01 = 1 % rms), got {value!r}")
         return value
 
     @field_validator("duration", "modal_mass")

@@ -102,6 +102,9 @@ class Record:
     columns : dict of str to str
         The header's name of the time column and of each channel (``"x"`` -> ``"x [um]"``),
         for messages.
+    revolution_starts : ndarray or None
+        Instants each whole revolution of the tachometer starts [s] (None without one): an
+        acceleration record keeps them for order tracking, its speed may vary.
     """
 
     file: str
@@ -110,6 +113,7 @@ class Record:
     quantity: Quantity
     tachometer_hz: float | None = None
     columns: dict[str, str] = field(default_factory=dict)
+    revolution_starts: FloatArray | None = None
 
     def column(self, channel: str) -> str:
         """The header's name of ``channel`` (``"time"``, ``"x"`` or ``"y"``)."""
@@ -551,7 +555,10 @@ def _checked(
             f"time is not uniformly sampled: {what}; {fix}",
         )
     rev = cols.get("rev")
-    tacho = None if rev is None else _tachometer(file, name("rev"), t, rev)
+    # the envelope diagnosis resamples an acceleration record to the shaft angle: its speed
+    # may vary; a line fit assumes it constant
+    steady = quantity != "acceleration"
+    tacho, starts = (None, None) if rev is None else _tachometer(file, name("rev"), t, rev, steady)
     channels: dict[str, FloatArray] = {role: cols[role] for role in ("x", "y", "a") if role in cols}
     for role, values in channels.items():
         if float(np.ptp(values)) == 0.0:
@@ -563,17 +570,20 @@ def _checked(
                 + ("" if role == "a" else "; drop the column to diagnose the other alone"),
             )
     names = {role: name(role) for role in ("time", *channels)}
-    return Record(file, t, channels, quantity, tacho, names)
+    return Record(file, t, channels, quantity, tacho, names, None if steady else starts)
 
 
-def _tachometer(file: str, column: str, t: FloatArray, rev: FloatArray) -> float:
-    """Speed [Hz] from a revolution count or a once-per-revolution pulse train.
+def _tachometer(
+    file: str, column: str, t: FloatArray, rev: FloatArray, steady: bool = True
+) -> tuple[float, FloatArray]:
+    """Speed [Hz] and revolution starts [s] from a revolution count or a pulse train.
 
     A column of two levels (0/1, or a TTL 0/5 V) is a pulse train: a revolution starts at each
     rising edge. Otherwise it is a cumulative count (with or without its fraction, as an
     encoder gives it): revolution L starts where the count reaches L, interpolated between
     the samples. The speed is the least-squares slope of those instants over every revolution,
-    not the first and last alone (each instant is only known to a time step).
+    not the first and last alone (each instant is only known to a time step). With ``steady``
+    a speed varying by more than :data:`TACHO_SPEED_RTOL` is refused.
     """
     values = np.unique(rev)
     if values.size == 2 or (values.size == 1 and values[0] in (0.0, 1.0)):
@@ -586,8 +596,9 @@ def _tachometer(file: str, column: str, t: FloatArray, rev: FloatArray) -> float
                 f"a pulse tachometer needs at least 3 pulses (2 revolutions), found {rising.size}",
             )
         starts = t[rising]
-        _steady(file, column, np.diff(starts), "pulse periods")
-        return _rate(starts)
+        if steady:
+            _steady(file, column, np.diff(starts), "pulse periods")
+        return _rate(starts), starts
     drop = np.flatnonzero(np.diff(rev) < 0.0)
     if drop.size:
         i = int(drop[0])
@@ -622,8 +633,9 @@ def _tachometer(file: str, column: str, t: FloatArray, rev: FloatArray) -> float
     before = after - 1
     frac = (levels - rev[before]) / (rev[after] - rev[before])
     starts = t[before] + frac * (t[after] - t[before])
-    _steady(file, column, np.diff(starts), "revolution times")
-    return _rate(starts)
+    if steady:
+        _steady(file, column, np.diff(starts), "revolution times")
+    return _rate(starts), starts
 
 
 def _rate(starts: FloatArray) -> float:

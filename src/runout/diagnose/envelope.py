@@ -43,6 +43,7 @@ __all__ = [
     "HARMONICS",
     "MIN_DEFECT_PERIODS",
     "NYQUIST_FACTOR",
+    "ORDER_TRACKING_UPSAMPLE",
     "PEAKS_SHOWN",
     "SCORE_LIKELY",
     "SLIP_TOLERANCE",
@@ -52,6 +53,7 @@ __all__ = [
     "Evidence",
     "Peak",
     "diagnose_envelope",
+    "order_tracked",
     "score",
 ]
 
@@ -174,8 +176,11 @@ class Candidate:
     lines : tuple of Evidence
         Every harmonic and sideband searched.
     score : float
-        :func:`score` [dB].
+        :func:`score` [dB] of its lines and its modulation's.
     assessment : {"likely", "possible", "no evidence"}
+    modulation : tuple of Evidence
+        The ball's cage modulation: the FTF harmonics read as the ball's (its own lines found
+        with them), weighted as sidebands; empty otherwise.
     """
 
     part: str
@@ -185,6 +190,7 @@ class Candidate:
     lines: tuple[Evidence, ...]
     score: float
     assessment: Assessment
+    modulation: tuple[Evidence, ...] = ()
 
     @property
     def harmonics_found(self) -> list[int]:
@@ -214,6 +220,8 @@ class Candidate:
                 "sidebands_found": sum(1 for e in sidebands if e.found),
                 "harmonics": [e.to_json() for e in harmonics],
                 "sidebands": [e.to_json() for e in sidebands],
+                "modulation_found": sum(1 for e in self.modulation if e.found),
+                "modulation": [e.to_json() for e in self.modulation],
             },
         }
 
@@ -297,19 +305,25 @@ class EnvelopeDiagnosis:
         }
 
 
-def score(lines: tuple[Evidence, ...] | list[Evidence]) -> float:
+def score(
+    lines: tuple[Evidence, ...] | list[Evidence],
+    modulation: tuple[Evidence, ...] | list[Evidence] = (),
+) -> float:
     """Ranking score of a candidate [dB].
 
     Parameters
     ----------
     lines : sequence of Evidence
         Its searched harmonics and sidebands.
+    modulation : sequence of Evidence, optional
+        The ball's cage modulation (:attr:`Candidate.modulation`).
 
     Returns
     -------
     float
         Sum over the lines found of w * 10 log10(snr): w = 1 for a harmonic, 1/2 for a
-        sideband, halved again for a shared line; 0 when nothing is found.
+        sideband, halved again for a shared line; 0 when nothing is found. The modulation
+        lines weigh as sidebands.
     """
     total = 0.0
     for e in lines:
@@ -317,6 +331,9 @@ def score(lines: tuple[Evidence, ...] | list[Evidence]) -> float:
             continue
         w = (1.0 if e.sideband == 0 else 0.5) * (0.5 if e.shared else 1.0)
         total += w * 10.0 * math.log10(e.snr)
+    for e in modulation:
+        if e.found:
+            total += 0.5 * (0.5 if e.shared else 1.0) * 10.0 * math.log10(e.snr)
     return total
 
 
@@ -368,6 +385,80 @@ def _speed(case: Any, record: Record) -> tuple[Any, str, list[str]]:
             "speed, or a tachometer column rev in the record",
         )
     return operation, "case", []
+
+
+#: Upsampling of a record before it is interpolated at the instants of uniform shaft angle.
+ORDER_TRACKING_UPSAMPLE = 4
+
+
+def order_tracked(record: Record) -> tuple[Record, str]:
+    """The record resampled at uniform shaft angle from its tachometer (computed order tracking).
+
+    Parameters
+    ----------
+    record : Record
+        With ``revolution_starts`` (at least 3).
+
+    Returns
+    -------
+    Record
+        As many samples over the same span, at equal increments of the shaft angle, on the time
+        axis of the mean speed f̄ = revolutions / span (``tachometer_hz`` = f̄): a line at a
+        fixed order k of the shaft is at k f̄ Hz whatever the speed did.
+    str
+        The note saying so, with the speed's largest deviation from f̄ per revolution.
+
+    Notes
+    -----
+    The shaft angle is the tachometer's revolution count interpolated between the instants each
+    revolution starts (monotone cubic, PCHIP; before the first and after the last, at the
+    speed of the first and the last revolution); the record, upsampled
+    :data:`ORDER_TRACKING_UPSAMPLE` times by a polyphase filter, is interpolated linearly at the
+    instants of uniform angle. K. R. Fyfe and E. D. S. Munck, "Analysis of computed order
+    tracking", Mechanical Systems and Signal Processing 11(2), 1997; J. Antoni and R. B.
+    Randall, "Rolling element bearing diagnostics — A tutorial", MSSP 25, 2011, sec. 2 (speed
+    fluctuations smear the defect lines; order tracking before the envelope analysis).
+    """
+    from scipy.interpolate import PchipInterpolator
+    from scipy.signal import resample_poly
+
+    starts = np.asarray(record.revolution_starts, dtype=np.float64)
+    turns = np.arange(starts.size, dtype=np.float64)
+    t = record.time
+    # the shaft angle [rev] at each sample: monotone cubic between revolution starts, the
+    # first and the last revolution's speed before and after them
+    angle = PchipInterpolator(starts, turns, extrapolate=False)(t)
+    before, after = t < starts[0], t > starts[-1]
+    angle[before] = (t[before] - starts[0]) / (starts[1] - starts[0])
+    angle[after] = turns[-1] + (t[after] - starts[-1]) / (starts[-1] - starts[-2])
+    count = t.size
+    span = float(t[-1] - t[0])
+    mean_hz = float(angle[-1] - angle[0]) / span
+    uniform = angle[0] + (angle[-1] - angle[0]) * np.arange(count, dtype=np.float64) / (count - 1)
+    instants = np.interp(uniform, angle, t)
+    up = ORDER_TRACKING_UPSAMPLE
+    step = record.step / up
+    channels = {}
+    for role, values in record.channels.items():
+        fine = np.asarray(resample_poly(values, up, 1), dtype=np.float64)
+        grid = t[0] + step * np.arange(fine.size, dtype=np.float64)
+        channels[role] = np.interp(instants, grid, fine)
+    periods = np.diff(starts)
+    spread = float(np.max(np.abs(periods * mean_hz - 1.0)))
+    tracked = dataclasses.replace(
+        record,
+        time=t[0] + (uniform - angle[0]) / mean_hz,
+        channels=channels,
+        tachometer_hz=mean_hz,
+        revolution_starts=None,
+    )
+    note = (
+        f"order tracking: the record resampled at uniform shaft angle from the tachometer "
+        f"({angle[-1] - angle[0]:.4g} revolutions in {span:.4g} s; the speed per revolution "
+        f"varies by up to {100 * spread:.3g} % about its mean {mean_hz * 60:.6g} rpm), the "
+        "envelope spectrum read in orders times the mean speed"
+    )
+    return tracked, note
 
 
 def diagnose_envelope(
@@ -438,6 +529,9 @@ def diagnose_envelope(
     if record.quantity != "acceleration" or "a" not in record.channels:
         raise RecordError(record.file, "", "the envelope diagnosis needs an acceleration column")
     notes: list[str] = []
+    if record.revolution_starts is not None:
+        record, tracked = order_tracked(record)
+        notes.append(tracked)
     operation, speed_source, speed_notes = _speed(c, record)
     notes += speed_notes
     alpha, _ = operating_contact_angle(c.bearing, operation)
@@ -569,11 +663,12 @@ def diagnose_envelope(
                 part, fd, fd / f_r, spacing, tuple(lines), total, _assess(tuple(lines), total)
             )
         )
+    candidates = _ball_modulation(candidates)
     candidates = _explained(candidates, df)
     # a ball defect modulated by the cage puts lines at FTF: the cage is not called likely
-    # on lines a likely ball defect explains
+    # on lines a likely ball defect, or the ball's modulation, explains
     ball = next(cd for cd in candidates if cd.part == "ball")
-    if ball.assessment == "likely":
+    if ball.assessment == "likely" or ball.modulation:
         candidates = [
             dataclasses.replace(cd, assessment="possible")
             if cd.part == "cage" and cd.assessment == "likely"
@@ -622,14 +717,54 @@ _FAMILY_HARMONICS = 2 * HARMONICS
 _FAMILY_SIDEBANDS = 2
 
 
-def _assess(lines: tuple[Evidence, ...], total: float) -> Assessment:
+def _assess(
+    lines: tuple[Evidence, ...], total: float, modulation: tuple[Evidence, ...] = ()
+) -> Assessment:
     if any(e.harmonic == 1 and e.sideband == 0 and e.found for e in lines) and (
         total >= SCORE_LIKELY
     ):
         return "likely"
     if any(e.found and e.sideband == 0 for e in lines):
         return "possible"
+    # a ball's cage-rate sidebands found with its cage modulation: the ball spin's lines
+    # themselves spread by slip
+    if any(e.found for e in modulation) and any(e.found for e in lines):
+        return "possible"
     return "no evidence"
+
+
+def _ball_modulation(candidates: list[Candidate]) -> list[Candidate]:
+    """Read the FTF lines as the ball defect's cage modulation when the ball has lines of its own.
+
+    A spalled ball is carried through the load zone by the cage: its impacts are modulated at
+    the cage frequency, which puts lines at FTF and its harmonics in the envelope spectrum
+    beside BDF and its ± FTF sidebands (Antoni and Randall 2011, Table 1). Slip spreads the BDF
+    lines (BDF is about 10 times FTF, its smear as many times wider) while the FTF lines stay
+    sharp; without this rule the cage would outrank the ball. When any line of the ball (a BDF
+    harmonic or a BDF ± FTF sideband) is found, the cage's harmonics become the ball's
+    ``modulation`` (weighted as sidebands) and, for the cage, shared lines; the cage is then
+    at most possible and ranked after the ball. Nothing in the envelope spectrum tells a cage
+    fault from a ball's modulation when both are there: the verdict names the ball.
+    """
+    ball = next(cd for cd in candidates if cd.part == "ball")
+    cage = next(cd for cd in candidates if cd.part == "cage")
+    if not any(e.found for e in ball.lines) or not any(e.found for e in cage.lines):
+        return candidates
+    modulation = tuple(e for e in cage.lines if e.sideband == 0)
+    total = score(ball.lines, modulation)
+    ball = dataclasses.replace(
+        ball,
+        modulation=modulation,
+        score=total,
+        assessment=_assess(ball.lines, total, modulation),
+    )
+    shared = tuple(dataclasses.replace(e, shared=True) for e in cage.lines)
+    cage_total = score(shared)
+    cage_assessment: Assessment = (
+        "possible" if _assess(shared, cage_total) == "likely" else _assess(shared, cage_total)
+    )
+    cage = dataclasses.replace(cage, lines=shared, score=cage_total, assessment=cage_assessment)
+    return [ball if cd.part == "ball" else cage if cd.part == "cage" else cd for cd in candidates]
 
 
 def _explained(candidates: list[Candidate], df: float) -> list[Candidate]:
@@ -652,8 +787,10 @@ def _explained(candidates: list[Candidate], df: float) -> list[Candidate]:
                 near = np.abs(family - e.frequency_hz) <= 2.0 * df + 0.002 * e.frequency_hz
                 changed.append(dataclasses.replace(e, shared=True) if near.any() else e)
             lines = tuple(changed)
-            total = score(lines)
-            cd = dataclasses.replace(cd, lines=lines, score=total, assessment=_assess(lines, total))
+            total = score(lines, cd.modulation)
+            cd = dataclasses.replace(
+                cd, lines=lines, score=total, assessment=_assess(lines, total, cd.modulation)
+            )
         out.append(cd)
         if cd.assessment == "likely":
             fund = next(e for e in lines if e.harmonic == 1 and e.sideband == 0)

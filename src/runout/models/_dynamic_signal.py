@@ -40,7 +40,14 @@ from runout.models._dynamic_setup import (
     static_equilibrium,
 )
 
-__all__ = ["SPALL_STEPS", "acceleration_signal", "spall_entry_time"]
+__all__ = [
+    "FLUCTUATION_BANDWIDTH",
+    "FLUCTUATION_TERMS",
+    "SPALL_STEPS",
+    "acceleration_signal",
+    "spall_entry_time",
+    "speed_profile",
+]
 
 #: Fewest Newmark steps over the entry of a ball into a spall (from its edge to the depth the
 #: ball reaches): the step is refined to give at least these.
@@ -102,6 +109,72 @@ def _slip_knots(st: DynamicSetup, transient: float, duration: float, sensor: Any
     steps = wc * period * sensor.slip * rng.standard_normal(count)
     values = np.concatenate([[0.0], np.cumsum(steps)])
     return np.concatenate([[-transient - period, period], values])
+
+
+#: Sinusoids of the speed fluctuation, and its bandwidth over the shaft speed.
+FLUCTUATION_TERMS = 8
+FLUCTUATION_BANDWIDTH = 0.1
+
+
+def speed_profile(
+    fluctuation: float, shaft_hz: float, duration: float, seed: int, count: int
+) -> NDArray[np.float64]:
+    r"""Relative deviation of the shaft speed from its mean at ``count`` instants over the record.
+
+    Parameters
+    ----------
+    fluctuation : float
+        Rms of the deviation over the record, ε [-] (``[sensor] speed_fluctuation``).
+    shaft_hz : float
+        Mean shaft speed f_r [Hz].
+    duration : float
+        The record's length [s]; the instants are ``duration * i / count``.
+    seed : int
+        ``[sensor] seed`` (a stream of its own: the noise's and the slip's are kept).
+    count : int
+        Number of instants.
+
+    Returns
+    -------
+    ndarray
+        u(t) with Ω(t) = Ω̄ (1 + u(t)): zero mean and rms ε over the record.
+
+    Notes
+    -----
+    :math:`u(t) = c\,\sum_{k=1}^{8} \cos(2\pi f_k t + \phi_k) - \bar u`, with :math:`f_k`
+    uniform in [0.01, 0.1] f_r (a slow variation: ten shaft revolutions or more a cycle) and
+    :math:`\phi_k` uniform, scaled to rms ε: a band-limited random speed variation as simulated
+    bearing signals use it (J. Antoni and R. B. Randall, "Rolling element bearing diagnostics —
+    A tutorial", MSSP 25, 2011, sec. 2: speed fluctuations smear the defect lines; order
+    tracking removes them).
+    """
+    rng = np.random.default_rng((seed, 2))
+    freqs = shaft_hz * FLUCTUATION_BANDWIDTH * rng.uniform(0.1, 1.0, FLUCTUATION_TERMS)
+    phases = rng.uniform(0.0, TWO_PI, FLUCTUATION_TERMS)
+    t = duration * np.arange(count, dtype=np.float64) / count
+    u = np.cos(TWO_PI * freqs[None, :] * t[:, None] + phases[None, :]).sum(axis=1)
+    u -= u.mean()
+    rms = float(np.sqrt(np.mean(u * u)))
+    out: NDArray[np.float64] = fluctuation * u / rms if rms > 0.0 else np.zeros(count)
+    return out
+
+
+def _warp(
+    force: NDArray[np.float64], h: float, fluctuation: float, shaft_hz: float, seed: int
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """The force at a fluctuating speed, and the shaft's revolutions at each step / speed.
+
+    Integrated at the constant mean speed, the force at nominal time τ is the one at the
+    shaft angle Ω̄ τ; at a fluctuating speed that angle is reached at t with
+    τ(t) = ∫_0^t (1 + u) dt: F_fluct(t) = F(τ(t)), linear between steps.
+    """
+    n = force.size
+    u = speed_profile(fluctuation, shaft_hz, n * h, seed, n)
+    rate = 1.0 + u
+    tau = np.concatenate([[0.0], np.cumsum(0.5 * (rate[1:] + rate[:-1]) * h)])
+    grid = h * np.arange(n, dtype=np.float64)
+    warped = np.interp(tau, grid, force)
+    return warped, tau
 
 
 def acceleration_signal(
@@ -212,6 +285,11 @@ def acceleration_signal(
         force[done : done + n] = f[:, :2] @ direction
         done += n
     mass = float(sensor.modal_mass) if sensor.modal_mass is not None else st.mass
+    fluctuation = float(sensor.speed_fluctuation or 0.0)
+    nominal_time = None
+    if fluctuation > 0.0:
+        # the housing rings at its own resonance: the force is warped, not the acceleration
+        force, nominal_time = _warp(force, h, fluctuation, abs(speed), int(sensor.seed))
     fine = housing_acceleration(force, h, sensor.resonance, sensor.damping_ratio, mass)
     acc = sample(fine, factor)[:n_out]
     rms = float(np.sqrt(np.mean(acc**2)))
@@ -240,7 +318,7 @@ def acceleration_signal(
     signal = AccelerationSignal(
         time=time,
         acceleration=acc,
-        rev=speed * time,
+        rev=speed * (time if nominal_time is None else nominal_time[::factor][:n_out]),
         sample_rate_hz=fs,
         resonance_hz=float(sensor.resonance),
         damping_ratio=float(sensor.damping_ratio),
@@ -248,6 +326,7 @@ def acceleration_signal(
         noise=float(sensor.noise),
         seed=int(sensor.seed),
         slip=float(sensor.slip),
+        speed_fluctuation=fluctuation,
         envelope=envelope,
     )
     notes = [
@@ -263,8 +342,20 @@ def acceleration_signal(
         + f"; sampled at {fs:.6g} Hz after an anti-aliasing filter, {n_out} samples "
         f"({duration:.4g} s), Newmark step {h * 1e6:.4g} us ({factor} per sample); Gaussian "
         f"noise {sensor.noise:.3g} x the signal rms (seed {sensor.seed})"
-        + (slip_notes or "; no slip of the rolling elements (the defect lines are exact)")
-        + "; a constant shaft speed",
+        + (
+            slip_notes
+            or "; no slip of the rolling elements"
+            + ("" if fluctuation > 0.0 else " (the defect lines are exact)")
+        )
+        + (
+            f"; the shaft speed fluctuates by {fluctuation:.3g} rms about {abs(speed) * 60:.6g} "
+            f"rpm (a sum of {FLUCTUATION_TERMS} random sinusoids below "
+            f"{FLUCTUATION_BANDWIDTH * abs(speed):.3g} Hz, seed {sensor.seed}): the constant-speed "
+            "force is resampled at the fluctuating shaft angle (its inertial effects neglected) "
+            "and the rev column follows it; the defect lines in Hz spread by about as much"
+            if fluctuation > 0.0
+            else "; a constant shaft speed"
+        ),
         f"envelope band {envelope['band_hz'][0]:.6g}-{envelope['band_hz'][1]:.6g} Hz "
         + ("chosen by the fast kurtogram" if band is None else "given by [sensor] band")
         + f" (spectral kurtosis {envelope['spectral_kurtosis']:.3g})",
