@@ -2,7 +2,8 @@
 
 Rows of VALIDATION.md: the largest peak of the envelope spectrum of the signal the dynamic
 model makes for a spall on the outer raceway, the inner raceway or a ball of the CWRU 6205
-drive-end bearing at 1797 rpm (examples/cwru_6205_{outer,inner,ball}_spall.toml) against
+drive-end bearing at 1797 rpm (``examples/cwru_6205_outer_spall.toml``, ``..._inner_spall``,
+``..._ball_spall``) against
 the data center's published defect orders; and a round trip generator -> diagnosis
 (``runout run`` with ``[analysis] signal = "acceleration"``, then
 :func:`runout.diagnose.envelope.diagnose_envelope`) over random spalls, speeds and noise levels,
