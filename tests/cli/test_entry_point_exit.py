@@ -48,3 +48,31 @@ def test_the_fast_exit_keeps_a_message_exit_and_a_status() -> None:
     code = "import runout.cli.commands as c\nc.app = lambda: print('out') or exit(3)\nc.main()\n"
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert (done.returncode, done.stdout) == (3, "out\n")
+
+
+def test_the_drawing_processes_started_early_end_with_a_refused_run(tmp_path: Path) -> None:
+    # `runout run ... --out` starts its drawing processes before the arguments are parsed; a
+    # refused case, a usage error or --help ends them unused: the command returns (a process
+    # left behind would hold the captured streams open), writes nothing and says why
+    bad = tmp_path / "bad.toml"
+    bad.write_text(CASE.read_text(encoding="utf-8").replace("elements = 8", "elements = 2"))
+    out = tmp_path / "out"
+    done = _runout("run", str(bad), "--out", str(out))
+    assert done.returncode == 2
+    assert done.stderr.count("\n") == 1 and "bad.toml: bearing.elements" in done.stderr
+    assert not out.exists()
+    done = _runout("run", "--out", str(out), "--help")
+    assert done.returncode == 0 and "--out" in done.stdout
+    done = _runout("run", str(CASE), "--out", str(out), "--no-such-option")
+    assert done.returncode == 2 and not out.exists()
+
+
+def test_which_commands_start_drawing_early() -> None:
+    from runout.cli.commands import _writes_files
+
+    assert _writes_files(["run", "case.toml", "--out", "dir"])
+    assert _writes_files(["run", "case.toml", "--out=dir"])
+    assert _writes_files(["run", "case.toml", "--report"])
+    assert not _writes_files(["run", "case.toml", "--json"])
+    assert not _writes_files(["study", "case.toml", "--out", "dir"])
+    assert not _writes_files([])

@@ -306,19 +306,24 @@ def run(
 
     Example: runout run examples/seed000_tada_fig7.toml --out out/tada --report
     """
-    from runout.report.summary import result_sections
-    from runout.runner import run_model
-
-    use_catalogue(catalogue)
-    case = _load(case_file, model, sets)
-    if report and out is None:
-        out = str(Path("out") / case_file.stem)
-    case_text = _case_text(case_file, case, model, sets)
-    # checked before the model runs: a refused directory costs nothing and is left untouched
-    directory = None if out is None else _run_directory(out, case_file, force, case_text)
     with ExitStack() as stack:
-        # the figures' processes import matplotlib while the model runs (--out only)
-        workers = None if directory is None else stack.enter_context(_figure_workers())
+        # the figures' processes (--out only) start first and import matplotlib while this one
+        # reads the case and runs the model; a refused case or directory ends them unused
+        writes = out is not None or report
+        early, _EARLY_WORKERS[:] = _EARLY_WORKERS[:], []
+        for unused in early[writes:]:  # started by main() for a command that writes nothing
+            unused.close()
+        workers = stack.enter_context(early[0] if early else _figure_workers()) if writes else None
+        from runout.report.summary import result_sections
+        from runout.runner import run_model
+
+        use_catalogue(catalogue)
+        case = _load(case_file, model, sets)
+        if report and out is None:
+            out = str(Path("out") / case_file.stem)
+        case_text = _case_text(case_file, case, model, sets)
+        # checked before the model runs: a refused directory costs nothing and is left untouched
+        directory = None if out is None else _run_directory(out, case_file, force, case_text)
         result = run_model(case)  # with the case's [analysis] outputs (bands, verdict)
         if as_json:
             _print_json(result.to_json())
@@ -334,12 +339,33 @@ def run(
                     _out.print(f"wrote {escape(str(path))}")
 
 
+#: The drawing processes :func:`main` started before the arguments were parsed (``run`` takes
+#: them; at most one entry).
+_EARLY_WORKERS: list[Any] = []
+
+
+def _writes_files(args: list[str]) -> bool:
+    """Whether ``args`` look like ``run ... --out DIR`` or ``run ... --report``: the drawing
+    processes are then started before the arguments are parsed (a guess: a wrong one costs
+    processes that end unused, never a file)."""
+    if not args or args[0] != "run":
+        return False
+    return any(a in ("--out", "--report") or a.startswith("--out=") for a in args[1:])
+
+
 def _figure_workers() -> Any:
     """Processes that draw the figures of ``run --out`` (:mod:`runout.report._figure_workers`)."""
     from runout.report._figure_workers import FigureWorkers, figure_processes
+
+    return FigureWorkers(figure_processes(), _warm_figures)
+
+
+def _warm_figures() -> None:
+    """A drawing process's start: the plotting code is imported there, beside this process
+    (which imports it only to write the files, once the model has run)."""
     from runout.report.run_files import warm_figures
 
-    return FigureWorkers(figure_processes(), warm_figures)
+    warm_figures()
 
 
 def _write_run(
@@ -1123,11 +1149,19 @@ def main() -> None:
     interpreter exits the usual way and waits for it; ``python -m runout.cli`` (under a
     profiler, say) always does.
     """
+    if _writes_files(sys.argv[1:]):
+        # parsing the arguments takes 0.15-0.2 s (Typer, pydantic): the processes that draw
+        # `run --out`'s figures import matplotlib meanwhile, so that they are ready when a quick
+        # model's result is
+        _EARLY_WORKERS.append(_figure_workers())
     try:
         app()
         code: object = 0
     except SystemExit as exc:
         code = exc.code
+    finally:
+        for unused in _EARLY_WORKERS:  # the command never ran (a usage error, --help)
+            unused.close()
     _exit(code)
 
 
