@@ -206,13 +206,21 @@ def predicted_lines(
         return 1.0 / math.hypot(decay_rate, 2.0 * math.pi * f)
 
     ref = a[0] * e(defect_hz)
+    lines = _lines(defect_hz, shaft_hz, harmonics, orders)
+    return {(i, side): float(a[abs(side)] * e(f) / ref) for (i, side), f in lines.items()}
+
+
+def _lines(
+    defect_hz: float, shaft_hz: float, harmonics: int, orders: int
+) -> dict[tuple[int, int], float]:
+    """Frequency [Hz] of each line i f_d + l f_s (i = 0 ... harmonics, |l| <= orders) above
+    zero, the shaft-rate lines of i = 0 counted once (l > 0)."""
     out: dict[tuple[int, int], float] = {}
     for i in range(harmonics + 1):
         for side in range(-orders, orders + 1):
             f = i * defect_hz + side * shaft_hz
-            if (i == 0 and side <= 0) or f <= 0.0:
-                continue
-            out[(i, side)] = float(a[abs(side)] * e(f) / ref)
+            if (i, side) != (0, 0) and not (i == 0 and side < 0) and f > 0.0:
+                out[(i, side)] = f
     return out
 
 
@@ -261,14 +269,8 @@ def measured_lines(
         return float(abs(np.sum(w * sq * np.exp(-2j * math.pi * f * t))))
 
     ref = amp(defect_hz)
-    out: dict[tuple[int, int], float] = {}
-    for i in range(harmonics + 1):
-        for side in range(-orders, orders + 1):
-            f = i * defect_hz + side * shaft_hz
-            if (i == 0 and side <= 0) or f <= 0.0:
-                continue
-            out[(i, side)] = amp(f) / ref
-    return out
+    lines = _lines(defect_hz, shaft_hz, harmonics, orders)
+    return {key: amp(f) / ref for key, f in lines.items()}
 
 
 def impact_centroid_deg(
