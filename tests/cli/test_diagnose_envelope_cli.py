@@ -171,6 +171,24 @@ def test_table_and_out_directory(records, tmp_path):
     assert "report.html" in result.stdout
 
 
+def test_the_report_shows_the_balls_cage_modulation(records, tmp_path):
+    # the ball's FTF lines counted as its modulation (JSON evidence "modulation_found") are
+    # evidence a reader of the page needs too: why the cage is not called
+    out = tmp_path / "diag"
+    result = runner.invoke(
+        app,
+        ["diagnose", str(CASE), "--record", str(records["ball"]), "--envelope", "--out", str(out)],
+    )
+    assert result.exit_code == 0, result.stderr
+    saved = json.loads((out / "diagnosis.json").read_text(encoding="utf-8"))
+    ball = next(d for d in saved["defects"] if d["part"] == "ball")
+    found, searched = ball["evidence"]["modulation_found"], len(ball["evidence"]["modulation"])
+    assert searched > 0
+    page = (out / "report.html").read_text(encoding="utf-8")
+    assert "cage modulation found" in page
+    assert f"<td>{found} of {searched}</td>" in page
+
+
 def test_no_acceleration_column(tmp_path):
     path = tmp_path / "x.csv"
     path.write_text("time_s,x_m\n" + "".join(f"{i / 12000},{i % 7}e-6\n" for i in range(200)))

@@ -65,6 +65,12 @@ def _evidence(found: list[int], searched: int) -> str:
     return (", ".join(str(h) for h in found) or "none") + f" of {searched}"
 
 
+def _modulation(evidence: dict[str, Any]) -> str:
+    """The ball's cage-rate lines counted as its modulation (``-`` for another part)."""
+    searched = len(evidence.get("modulation", ()))
+    return f"{evidence.get('modulation_found', 0)} of {searched}" if searched else "-"
+
+
 def _page(diagnosis: Any, figure_path: Path, directory: Path) -> str:
     """report.html of an envelope diagnosis: verdict, the parts ranked, the peaks, the figure."""
     doc = diagnosis.to_json()
@@ -87,6 +93,7 @@ def _page(diagnosis: Any, figure_path: Path, directory: Path) -> str:
             esc(fmt_number(d["order"], 6)),
             esc(_evidence(d["evidence"]["harmonics_found"], d["evidence"]["harmonics_searched"])),
             esc(str(d["evidence"]["sidebands_found"])),
+            esc(_modulation(d["evidence"])),
         ]
         for d in doc["defects"]
     ]
@@ -118,6 +125,7 @@ def _page(diagnosis: Any, figure_path: Path, directory: Path) -> str:
                 "order",
                 "harmonics found",
                 "sidebands found",
+                "cage modulation found",
             ],
             ranked,
             numeric=(2, 3, 4, 6),
