@@ -29,6 +29,7 @@ Examples
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -68,6 +69,7 @@ def run(
     operation: Operation,
     imperfections: Imperfections | None = None,
     title: str = "",
+    tables: Mapping[str, Any] | None = None,
     **options: Any,
 ) -> RunResult:
     """Run one model on a bearing: the Python form of ``runout run CASE``.
@@ -89,6 +91,12 @@ def run(
         The builder of the imperfection tables; default a perfect bearing.
     title : str
         Shown in outputs.
+    tables : mapping, optional
+        The case file's other tables by name, as the file gives them: ``{"lubrication":
+        {"viscosity_ratio": 1.5, "contamination_factor": 0.5}, "bearing":
+        {"fatigue_load_limit": "0.6 kN"}}`` for the modified life, ``{"sensor": {...},
+        "defect": [{...}]}`` for a spall's acceleration signal; a key the other arguments
+        give too is refused.
     **options
         The ``[analysis]`` keys (revolutions, samples, bands, limit, limit_on,
         linear_variant, race_control, ring_tilt, bearing_damping, bearing_damping_coefficient,
@@ -114,6 +122,7 @@ def run(
         title=title,
         analysis={"model": model, **analysis},
         dynamics=dynamics or None,
+        tables=tables,
     )
     result: RunResult = run_model(case)
     return result

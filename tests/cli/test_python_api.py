@@ -246,3 +246,97 @@ def test_every_example_survives_to_toml(path: Path, tmp_path: Path) -> None:
     assert again.spec.model_dump(exclude_unset=True) == case.spec.model_dump(exclude_unset=True)
     assert again.bearing == case.bearing and again.operation == case.operation
     assert again.imperfections.summary() == case.imperfections.summary()
+
+
+# the modified life's inputs, a case file's tables that the bearing and operation objects do
+# not hold: fatigue_load_limit (a [bearing] key) and [lubrication]
+LIFE_CASE = """title = "MASTA reference bearing, modified life"
+[bearing]
+type = "ball"
+elements = 7
+element_diameter = "11.5 mm"
+pitch_diameter = "43.5 mm"
+inner_conformity = 0.52
+outer_conformity = 0.53
+radial_clearance = "10 um"
+dynamic_load_rating = "23.4 kN"
+fatigue_load_limit = "0.6 kN"
+[material]
+youngs_modulus = "210 GPa"
+poisson_ratio = 0.3
+[operation]
+rotating_ring = "inner"
+speed = "3000 rpm"
+axial_load = "500 N"
+radial_load = "1500 N"
+[lubrication]
+viscosity_ratio = 1.5
+contamination_factor = 0.5
+[analysis]
+model = "equilibrium"
+reliability = 99
+"""
+
+
+def _life_inputs() -> dict[str, Any]:
+    return {
+        "bearing": runout.BallBearing(
+            elements=7,
+            element_diameter=11.5e-3,
+            pitch_diameter=43.5 * 1e-3,  # "43.5 mm" as the unit parser reads it
+            inner_conformity=0.52,
+            outer_conformity=0.53,
+            radial_clearance=10 * 1e-6,
+            material=runout.Material(youngs_modulus=210e9, poisson_ratio=0.3),
+            dynamic_load_rating=23.4e3,
+        ),
+        "operation": runout.Operation(
+            rotating_ring="inner", speed=50.0, axial_load=500.0, radial_load=1500.0
+        ),
+        "title": "MASTA reference bearing, modified life",
+    }
+
+
+def test_the_modified_life_from_code_equals_the_case_file(tmp_path: Path) -> None:
+    path = tmp_path / "life.toml"
+    path.write_text(LIFE_CASE, encoding="utf-8")
+    tables = {
+        "bearing": {"fatigue_load_limit": "0.6 kN"},
+        "lubrication": {"viscosity_ratio": 1.5, "contamination_factor": 0.5},
+    }
+    result = runout.run("equilibrium", **_life_inputs(), tables=tables, reliability=99)
+    in_code = result.to_json()
+    assert in_code["life"]["lnmr_mrev"] > 0.0  # the modified life is there
+    assert _dumps(in_code) == _cli_json(path)
+
+
+def test_a_spall_and_its_sensor_from_code_are_the_case_files() -> None:
+    loaded = runout.load_case(EXAMPLES / "cwru_6205_outer_spall.toml")
+    document = loaded.to_document()
+    tables = {name: document[name] for name in ("defect", "sensor")}
+    case = runout.Case.from_inputs(
+        loaded.bearing,
+        loaded.operation,
+        title=loaded.title,
+        analysis=document["analysis"],
+        dynamics=document.get("dynamics"),
+        tables=tables,
+    )
+    assert case.spec.defect == loaded.spec.defect
+    assert case.spec.sensor == loaded.spec.sensor
+
+
+@pytest.mark.parametrize(
+    ("tables", "message"),
+    [
+        ({"bearing": {"elements": 9}}, r"bearing\.elements: given by the bearing and in tables"),
+        ({"analysis": {"samples": 64}}, r"tables\.analysis: the \[analysis\] keys are"),
+        ({"lubricant": {"viscosity_ratio": 1.0}}, r"lubricant"),
+        ({"lubrication": {"viscosity_ratio": -1.0}}, r"lubrication\.viscosity_ratio"),
+    ],
+)
+def test_tables_that_clash_or_are_wrong_are_refused_naming_the_key(
+    tables: dict[str, Any], message: str
+) -> None:
+    with pytest.raises(CaseError, match=message):
+        runout.run("equilibrium", **_life_inputs(), tables=tables)

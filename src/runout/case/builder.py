@@ -564,6 +564,7 @@ def build_case(
     dynamics: Mapping[str, Any] | None = None,
     study: Mapping[str, Any] | None = None,
     base_dir: str | Path | None = None,
+    tables: Mapping[str, Any] | None = None,
 ) -> Case:
     """The case a case file with these tables gives: :meth:`runout.case.model.Case.from_inputs`.
 
@@ -581,6 +582,9 @@ def build_case(
         The ``[analysis]``, ``[dynamics]`` and ``[study]`` keys by their case-file names.
     base_dir : str or Path, optional
         Directory that ``[[profile]]`` files are read from; default the working directory.
+    tables : mapping, optional
+        Any other table by its case-file name (``lubrication``, ``sensor``, ``defect``, and
+        ``bearing`` keys the bearing object has no field for): as ``Case.from_inputs``.
 
     Returns
     -------
@@ -604,6 +608,7 @@ def build_case(
         dynamics=dynamics,
         study=study,
         base_dir=base_dir,
+        tables=tables,
     )
 
 

@@ -147,6 +147,40 @@ def _changed(obj: Any, names: Sequence[str], defaults: Any) -> dict[str, Any]:
     }
 
 
+def _merge_tables(data: dict[str, Any], tables: Mapping[str, Any]) -> None:
+    """Add :meth:`Case.from_inputs`' ``tables`` to the document ``data`` built from its other
+    arguments; a key or table that those already give is refused (never one over the other)."""
+    for name, table in tables.items():
+        if name in ("analysis", "dynamics", "study"):
+            raise CaseError(
+                PYTHON_PATH,
+                f"tables.{name}",
+                f"the [{name}] keys are runout.run's keyword options (Case.from_inputs' {name} "
+                "argument), not a table of tables",
+            )
+        if isinstance(table, Mapping):
+            plain: Any = {key: _plain(value) for key, value in table.items()}
+        elif isinstance(table, list | tuple):
+            plain = [
+                {key: _plain(value) for key, value in entry.items()}
+                if isinstance(entry, Mapping)
+                else entry
+                for entry in table
+            ]
+        else:
+            plain = table  # refused by the schema with the case file's message
+        given = data.get(name)
+        if given is None:
+            data[name] = plain
+            continue
+        if not (isinstance(given, dict) and isinstance(plain, dict)):
+            raise CaseError(PYTHON_PATH, name, "given by the other arguments and in tables")
+        for key, value in plain.items():
+            if key in given:
+                raise CaseError(PYTHON_PATH, f"{name}.{key}", f"given by the {name} and in tables")
+            given[key] = value
+
+
 def _bearing_tables(bearing: Any) -> dict[str, Any]:
     if isinstance(bearing, BallBearing):
         table: dict[str, Any] = {"type": "ball"}
@@ -341,6 +375,7 @@ class Case:
         dynamics: Mapping[str, Any] | None = None,
         study: Mapping[str, Any] | None = None,
         base_dir: str | Path | None = None,
+        tables: Mapping[str, Any] | None = None,
     ) -> Case:
         """The case a case file with these tables would give, validated the same way.
 
@@ -361,6 +396,11 @@ class Case:
             SI numbers or strings with units.
         base_dir : str or Path, optional
             Directory that ``[[profile]]`` files are read from; default the working directory.
+        tables : mapping, optional
+            Any other table of the case file by its name, as the file gives it (SI numbers or
+            strings with units): ``{"lubrication": {...}, "sensor": {...}, "defect": [{...},
+            ...]}``; under ``"bearing"`` the ``[bearing]`` keys the bearing object has no
+            field for (``fatigue_load_limit``).
 
         Returns
         -------
@@ -410,6 +450,7 @@ class Case:
         for name, table in (("analysis", analysis), ("dynamics", dynamics), ("study", study)):
             if table is not None:
                 data[name] = {key: _plain(value) for key, value in table.items()}
+        _merge_tables(data, tables or {})
         base = Path.cwd() if base_dir is None else Path(base_dir)
         profiles = imperfections.profile_data if imperfections is not None else {}
         if study is not None and profiles:
