@@ -600,6 +600,46 @@ def _settle_late(
     return ok
 
 
+@register_jitable(no_cfunc_wrapper=True)
+def _worst_settling(
+    mode: int,
+    skip1: int,
+    skip2: int,
+    cx: float,
+    cy: float,
+    rx: FloatArray,
+    ry: FloatArray,
+    far: NDArray[np.bool_],
+    dev: FloatArray,
+    sh: FloatArray,
+    bt: Bodies,
+    wg: FloatArray,
+    n: int,
+    beta0: FloatArray,
+    cage_turn: float,
+    radii: FloatArray,
+    turn: FloatArray,
+    settled: FloatArray,
+    out_rc: FloatArray,
+    warm: bool,
+    lazy: bool,
+) -> tuple[int, bool]:
+    """:func:`_worst` at angle n, first settling (a lazy walk) each candidate whose bound at
+    its nominal radius cannot clear it; and False when one of those fails to settle."""
+    worst, _ = _worst(mode, skip1, skip2, cx, cy, rx, ry, far, dev, sh, bt, wg, settled[n], lazy)
+    while worst <= -2:
+        j = -2 - worst
+        if not _settle_late(
+            n, j, mode, beta0[j] + cage_turn, bt[0], radii, sh, bt, turn, settled, rx, ry, out_rc,
+            warm,
+        ):  # fmt: skip
+            return -1, False
+        worst, _ = _worst(
+            mode, skip1, skip2, cx, cy, rx, ry, far, dev, sh, bt, wg, settled[n], lazy
+        )
+    return worst, True
+
+
 @kernel(nogil=True)
 def _solve_all(
     alphas: FloatArray,
@@ -800,22 +840,12 @@ def _solve_all(
                 if mode == 1:
                     # the hoop may hang on the kept roller alone (convex admissible set)
                     qx, qy = _single(mode, keep, wx, wy, rx, ry, sh, bt)
-                    wj, _ = _worst(
-                        mode, keep, keep, qx, qy, rx, ry, far, dev, sh, bt, wg, settled[n], lazy
-                    )
-                    while wj <= -2:  # a lazy walk's candidate to settle first
-                        b = beta0[-2 - wj] + cage * alpha
-                        if not _settle_late(
-                            n, -2 - wj, mode, b, r0, radii, sh, bt, turn, settled, rx, ry,
-                            out_rc, warm,
-                        ):  # fmt: skip
-                            out_status[n] = _SETTLE_FAIL
-                            break
-                        wj, _ = _worst(
-                            mode, keep, keep, qx, qy, rx, ry, far, dev, sh, bt, wg, settled[n],
-                            lazy,
-                        )  # fmt: skip
-                    if out_status[n] == _SETTLE_FAIL:
+                    wj, ok = _worst_settling(
+                        mode, keep, keep, qx, qy, rx, ry, far, dev, sh, bt, wg, n, beta0,
+                        cage * alpha, radii, turn, settled, out_rc, warm, lazy,
+                    )  # fmt: skip
+                    if not ok:
+                        out_status[n] = _SETTLE_FAIL
                         break
                     if wj < 0:
                         found = True
@@ -836,21 +866,12 @@ def _solve_all(
                     if ia < 0:
                         break
                 continue
-            worst, _ = _worst(
-                mode, sc[ia], sc[ib], vx, vy, rx, ry, far, dev, sh, bt, wg, settled[n], lazy
-            )
-            while worst <= -2:  # a lazy walk's candidate to settle first
-                b = beta0[-2 - worst] + cage * alpha
-                if not _settle_late(
-                    n, -2 - worst, mode, b, r0, radii, sh, bt, turn, settled, rx, ry, out_rc,
-                    warm,
-                ):  # fmt: skip
-                    out_status[n] = _SETTLE_FAIL
-                    break
-                worst, _ = _worst(
-                    mode, sc[ia], sc[ib], vx, vy, rx, ry, far, dev, sh, bt, wg, settled[n], lazy
-                )
-            if out_status[n] == _SETTLE_FAIL:
+            worst, ok = _worst_settling(
+                mode, sc[ia], sc[ib], vx, vy, rx, ry, far, dev, sh, bt, wg, n, beta0,
+                cage * alpha, radii, turn, settled, out_rc, warm, lazy,
+            )  # fmt: skip
+            if not ok:
+                out_status[n] = _SETTLE_FAIL
                 break
             if worst >= 0 and far[worst]:
                 out_status[n] = _FAR_CONTACT
