@@ -175,3 +175,41 @@ def run_json(result: Any) -> dict[str, Any]:
     assert result.exit_code == 0, result.stderr
     out: dict[str, Any] = json.loads(result.stdout)
     return out
+
+
+#: The MASTA reference bearing of ISO/TS 16281's open code (Z = 7, D_w 11.5 mm) with every input
+#: of the modified rating life, as a case file: :data:`MODIFIED_LIFE_KEYS` fill it.
+MODIFIED_LIFE_CASE = """\
+title = "modified life"
+[bearing]
+type = "ball"
+elements = 7
+element_diameter = "11.5 mm"
+pitch_diameter = "43.5 mm"
+inner_conformity = 0.52
+outer_conformity = 0.53
+radial_clearance = "10 um"
+dynamic_load_rating = "23.4 kN"
+{limit}
+[material]
+youngs_modulus = "210 GPa"
+poisson_ratio = 0.3
+[operation]
+rotating_ring = "inner"
+speed = "{speed}"
+axial_load = "500 N"
+radial_load = "1500 N"
+{lubrication}
+[analysis]
+model = "{model}"
+{reliability}
+"""
+
+#: The keys of :data:`MODIFIED_LIFE_CASE`: C_u, [lubrication], the equilibrium model, 99 %.
+MODIFIED_LIFE_KEYS = {
+    "limit": 'fatigue_load_limit = "0.6 kN"',
+    "speed": "3000 rpm",
+    "lubrication": "[lubrication]\nviscosity_ratio = 1.5\ncontamination_factor = 0.5",
+    "model": "equilibrium",
+    "reliability": "reliability = 99",
+}

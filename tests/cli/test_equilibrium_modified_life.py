@@ -16,44 +16,12 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
+from cases import MODIFIED_LIFE_CASE as CASE
+from cases import MODIFIED_LIFE_KEYS as FULL
 from cases import run_case_text, run_json
 from runout.cli.commands import app
 
 runner = CliRunner()
-
-CASE = """\
-title = "modified life"
-[bearing]
-type = "ball"
-elements = 7
-element_diameter = "11.5 mm"
-pitch_diameter = "43.5 mm"
-inner_conformity = 0.52
-outer_conformity = 0.53
-radial_clearance = "10 um"
-dynamic_load_rating = "23.4 kN"
-{limit}
-[material]
-youngs_modulus = "210 GPa"
-poisson_ratio = 0.3
-[operation]
-rotating_ring = "inner"
-speed = "{speed}"
-axial_load = "500 N"
-radial_load = "1500 N"
-{lubrication}
-[analysis]
-model = "{model}"
-{reliability}
-"""
-
-FULL = {
-    "limit": 'fatigue_load_limit = "0.6 kN"',
-    "speed": "3000 rpm",
-    "lubrication": "[lubrication]\nviscosity_ratio = 1.5\ncontamination_factor = 0.5",
-    "model": "equilibrium",
-    "reliability": "reliability = 99",
-}
 
 
 def _invoke(tmp_path: Path, *args: str, **keys: str) -> object:

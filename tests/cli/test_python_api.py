@@ -17,6 +17,7 @@ import pytest
 from typer.testing import CliRunner
 
 import runout
+from cases import MODIFIED_LIFE_CASE, MODIFIED_LIFE_KEYS
 from runout.base.errors import CaseError
 from runout.cli.commands import app
 from runout.runner import run_model
@@ -250,32 +251,7 @@ def test_every_example_survives_to_toml(path: Path, tmp_path: Path) -> None:
 
 # the modified life's inputs, a case file's tables that the bearing and operation objects do
 # not hold: fatigue_load_limit (a [bearing] key) and [lubrication]
-LIFE_CASE = """title = "MASTA reference bearing, modified life"
-[bearing]
-type = "ball"
-elements = 7
-element_diameter = "11.5 mm"
-pitch_diameter = "43.5 mm"
-inner_conformity = 0.52
-outer_conformity = 0.53
-radial_clearance = "10 um"
-dynamic_load_rating = "23.4 kN"
-fatigue_load_limit = "0.6 kN"
-[material]
-youngs_modulus = "210 GPa"
-poisson_ratio = 0.3
-[operation]
-rotating_ring = "inner"
-speed = "3000 rpm"
-axial_load = "500 N"
-radial_load = "1500 N"
-[lubrication]
-viscosity_ratio = 1.5
-contamination_factor = 0.5
-[analysis]
-model = "equilibrium"
-reliability = 99
-"""
+LIFE_CASE = MODIFIED_LIFE_CASE.format(**MODIFIED_LIFE_KEYS)
 
 
 def _life_inputs() -> dict[str, Any]:
@@ -293,7 +269,7 @@ def _life_inputs() -> dict[str, Any]:
         "operation": runout.Operation(
             rotating_ring="inner", speed=50.0, axial_load=500.0, radial_load=1500.0
         ),
-        "title": "MASTA reference bearing, modified life",
+        "title": "modified life",
     }
 
 
