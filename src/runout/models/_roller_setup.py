@@ -227,7 +227,9 @@ def _convexity_margin(radius: float, h: Harmonics) -> float:
     return float(np.min((r * r + 2 * d1 * d1 - r * d2) / (r * r)))
 
 
-def _check_convex(geo: ConstraintGeometry) -> None:
+def _check_convex(geo: ConstraintGeometry) -> float:
+    """Refuse a part that is not convex (:func:`_convexity_margin` below 0.05); the least
+    margin of the parts [-] (1 for round parts)."""
     parts: list[tuple[str, float, Harmonics]] = [
         ("inner raceway", geo.inner_radius, geo.inner),
         ("outer raceway", geo.outer_radius, geo.outer),
@@ -235,15 +237,19 @@ def _check_convex(geo: ConstraintGeometry) -> None:
     parts += [
         (f"roller {j + 1}", float(geo.element_radii[j]), h) for j, h in enumerate(geo.elements)
     ]
+    least = 1.0
     for name, radius, h in parts:
         if radius <= 0:
             raise GeometryError(name, f"radius {radius:.6g} m is not positive")
-        if _convexity_margin(radius, h) < 0.05:
+        margin = _convexity_margin(radius, h)
+        if margin < 0.05:
             raise GeometryError(
                 name,
                 "profile is not convex (some harmonic has amplitude x order^2 comparable to the "
                 "radius); the rigid contact model needs convex parts",
             )
+        least = min(least, margin)
+    return least
 
 
 def cage_ratio(geo: ConstraintGeometry) -> float:

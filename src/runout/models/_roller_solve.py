@@ -625,7 +625,9 @@ def order_sweep(
     -----
     Each entry is the runout :func:`solve` gives for that geometry alone, to round-off: the
     solves share the perfect bearing's settled rollers where they are the same, settle alike
-    rollers once per angle, start their Newton solves warm and compute no gaps
+    rollers once per angle, start their Newton solves warm (cold, as :func:`solve`, where a
+    part's convexity margin is below :data:`WARM_MARGIN`: close to flat, a warm start can
+    reach another stationary point of a gap) and compute no gaps
     (``_roller_kernels`` module docstring). Model: Yu et al., "Prediction method for the
     radial runout of inner ring in cylindrical roller bearings", Math. Probl. Eng., 2017
     (seed 004), eq. 1-16 and §5.
@@ -685,6 +687,11 @@ def _runout(geo: ConstraintGeometry, centre: FloatArray) -> float:
     return float(np.ptp(np.asarray(centre @ geo.load_direction)))
 
 
+#: Least convexity margin of the parts (:func:`_roller_setup._convexity_margin`) from which
+#: the order sweep starts its Newton solves warm; below it they start cold, as a run's solve.
+WARM_MARGIN = 0.5
+
+
 def _runouts_or_none(
     geometries: Sequence[ConstraintGeometry],
     settles: Sequence[int],
@@ -707,12 +714,16 @@ def _runouts_or_none(
         try:
             # a part the harmonic makes non-convex is outside the rigid model (geometry_from
             # refuses it in a run): its support functions have several stationary points
-            _check_convex(g)
+            margin = _check_convex(g)
         except GeometryError:
             return None
         own = settled if settles[i] == SETTLE_GIVEN else np.empty_like(settled)
+        # a part close to flat somewhere: a contact's Newton solve started from the normal of
+        # the angle before can reach another stationary point of its gap (hypothesis found a
+        # roller harmonic at margin 0.12 whose warm walk jammed where the cold one did not)
+        warm = margin >= WARM_MARGIN
         try:
-            return _runout(g, _walk(g, al, own, settles[i], radii, True, True, False)[0])
+            return _runout(g, _walk(g, al, own, settles[i], radii, True, warm, False)[0])
         except NumericalError:  # ConvergenceError included: jammed or unsettled
             return None
 
