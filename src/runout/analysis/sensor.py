@@ -1,28 +1,31 @@
-r"""The accelerometer on the housing: a force history through one resonance, sampled, with noise.
+r"""The accelerometer on the housing: a force through the housing's modes, sampled, with noise.
 
-The bearing's force on the outer ring, F(t) along the measuring direction, excites one mode of
-the housing, a mass-spring-damper of modal mass M, natural frequency :math:`f_n = \omega_n/2\pi`
-and damping ratio ζ, whose acceleration the sensor reads:
+The bearing's force on the outer ring, F(t) along the measuring direction, excites modes of the
+housing, each a mass-spring-damper of modal mass :math:`M_k`, natural frequency
+:math:`f_k = \omega_k/2\pi` and damping ratio :math:`\zeta_k`, whose accelerations add at the
+sensor (modal superposition):
 
 .. math::
-    M\ddot x + 2\zeta\omega_n M\dot x + \omega_n^2 M x = F(t), \qquad
-    H(s) = \frac{A(s)}{F(s)} = \frac{s^2}{M\,(s^2 + 2\zeta\omega_n s + \omega_n^2)}
+    H(s) = \frac{A(s)}{F(s)} = \sum_k \frac{s^2}{M_k\,(s^2 + 2\zeta_k\omega_k s + \omega_k^2)}
 
-(the acceleration response of a single-degree-of-freedom system to force: 0 at DC, the static
-load gives no acceleration; 1/M far above the resonance). It is evaluated exactly for a force
-linear between the integration's instants (first-order hold,
-:func:`scipy.signal.cont2discrete`), low-pass filtered and sampled at the sensor's rate
-(:func:`scipy.signal.resample_poly`, a polyphase anti-aliasing filter, as a data acquisition
-system's), and Gaussian noise of a given fraction of the signal's rms is added.
+(each term the acceleration response of a single-degree-of-freedom system to force: 0 at DC,
+the static load gives no acceleration; :math:`1/M_k` far above its resonance). :math:`M_k` is
+the mode's mass over the product of its shape at the bearing and at the sensor, negative where
+they have opposite signs. Each term is evaluated exactly for a force linear between the
+integration's instants (first-order hold, :func:`scipy.signal.cont2discrete`), the sum is
+low-pass filtered and sampled at the sensor's rate (:func:`scipy.signal.resample_poly`, a
+polyphase anti-aliasing filter, as a data acquisition system's), and Gaussian noise of a given
+fraction of the signal's rms is added.
 
-The transmission path is the one of P. D. McFadden and J. D. Smith, "Model for the vibration
+One mode is the transmission of P. D. McFadden and J. D. Smith, "Model for the vibration
 produced by a single point defect in a rolling element bearing", Journal of Sound and Vibration
-96(1), 1984, sec. 2 (each impact rings the structure's resonance, an exponentially decaying
-sinusoid), here driven by the force history of the dynamic model instead of assumed impulses.
+96(1), 1984 (each impact rings the structure's resonance, an exponentially decaying sinusoid),
+here driven by the force history of the dynamic model instead of assumed impulses.
 
 Contents
 --------
 * :class:`AccelerationSignal` -- the sampled signal, its sensor and its envelope block.
+* :class:`HousingMode` -- one mode of the housing.
 * :func:`housing_acceleration` -- H(s) applied to a force history.
 * :func:`sample` -- anti-aliasing and sampling at the sensor's rate.
 * :func:`envelope_block` -- squared-envelope spectrum in the kurtogram's band, labelled peaks.
@@ -31,6 +34,7 @@ Contents
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -50,6 +54,7 @@ __all__ = [
     "ENVELOPE_PEAKS",
     "LABEL_TOLERANCE",
     "AccelerationSignal",
+    "HousingMode",
     "envelope_block",
     "housing_acceleration",
     "min_samples",
@@ -67,6 +72,40 @@ LABEL_TOLERANCE = 0.02
 _NAMES = {"outer": "BPFO", "inner": "BPFI", "ball": "BDF", "cage": "FTF"}
 
 
+@dataclass(frozen=True)
+class HousingMode:
+    """One mode of the housing (``[sensor]`` or a ``[[sensor.modes]]`` entry).
+
+    Attributes
+    ----------
+    resonance_hz : float
+        Natural frequency [Hz].
+    damping_ratio : float
+        [-], 0 < ζ < 1.
+    modal_mass_kg : float
+        Modal mass as the bearing's force and the sensor see it [kg] (negative where the mode's
+        shape has opposite signs at the two; never 0).
+    """
+
+    resonance_hz: float
+    damping_ratio: float
+    modal_mass_kg: float
+
+    def to_json(self) -> dict[str, float]:
+        """``resonance_hz``, ``damping_ratio``, ``modal_mass_kg``.
+
+        Returns
+        -------
+        dict
+            The mode, in the units its keys say.
+        """
+        return {
+            "resonance_hz": self.resonance_hz,
+            "damping_ratio": self.damping_ratio,
+            "modal_mass_kg": self.modal_mass_kg,
+        }
+
+
 @dataclass(frozen=True, eq=False)
 class AccelerationSignal:
     """A sampled housing acceleration (``[analysis] signal = "acceleration"``).
@@ -79,8 +118,12 @@ class AccelerationSignal:
         Housing acceleration along the measuring direction [m/s^2], noise included.
     rev : ndarray
         Revolutions of the rotating ring since t = 0 (the tachometer) [-].
-    sample_rate_hz, resonance_hz, damping_ratio, modal_mass_kg, noise : float
-        The sensor ([Hz], [Hz], [-], [kg], [-]).
+    sample_rate_hz : float
+        [Hz].
+    modes : tuple of HousingMode
+        The housing's modes (one unless ``[[sensor.modes]]`` gives several).
+    noise : float
+        Rms of the noise over the signal's rms [-].
     seed : int
         Of the noise, the slip and the speed fluctuation.
     slip : float
@@ -98,9 +141,7 @@ class AccelerationSignal:
     acceleration: FloatArray
     rev: FloatArray
     sample_rate_hz: float
-    resonance_hz: float
-    damping_ratio: float
-    modal_mass_kg: float
+    modes: tuple[HousingMode, ...]
     noise: float
     seed: int
     slip: float = 0.0
@@ -125,15 +166,23 @@ class AccelerationSignal:
             Without samples; :meth:`to_json` gives ``signal`` back as it was.
         """
         sensor = signal.get("sensor", {})
+        # a result written before the modes list carries its one mode's keys alone
+        listed = sensor.get("modes") or [sensor]
+        modes = tuple(
+            HousingMode(
+                float(m.get("resonance_hz", math.nan)),
+                float(m.get("damping_ratio", math.nan)),
+                float(m.get("modal_mass_kg", math.nan)),
+            )
+            for m in listed
+        )
         empty = np.zeros(0)
         return cls(
             time=empty,
             acceleration=empty,
             rev=empty,
             sample_rate_hz=float(signal["sample_rate_hz"]),
-            resonance_hz=float(sensor.get("resonance_hz", math.nan)),
-            damping_ratio=float(sensor.get("damping_ratio", math.nan)),
-            modal_mass_kg=float(sensor.get("modal_mass_kg", math.nan)),
+            modes=modes,
             noise=float(sensor.get("noise", math.nan)),
             seed=int(sensor.get("seed", 0)),
             slip=float(sensor.get("slip", 0.0)),
@@ -149,33 +198,42 @@ class AccelerationSignal:
         -------
         dict
             ``quantity``, ``sample_rate_hz``, ``samples``, ``duration_s``, ``rms_m_per_s2``
-            and ``sensor`` (``resonance_hz``, ``damping_ratio``, ``modal_mass_kg``,
-            ``noise``, ``seed``, ``slip``, ``speed_fluctuation``).
+            and ``sensor``: ``modes`` (each ``resonance_hz``, ``damping_ratio``,
+            ``modal_mass_kg``), and with one mode its three keys beside them as well;
+            ``noise``, ``seed``, ``slip``, ``speed_fluctuation``.
         """
         if self.summary is not None:
             return self.summary
+        sensor: dict[str, Any] = {}
+        if len(self.modes) == 1:
+            sensor.update(self.modes[0].to_json())
+        sensor["modes"] = [m.to_json() for m in self.modes]
+        sensor.update(
+            {
+                "noise": self.noise,
+                "seed": self.seed,
+                "slip": self.slip,
+                "speed_fluctuation": self.speed_fluctuation,
+            }
+        )
         return {
             "quantity": "acceleration",
             "sample_rate_hz": self.sample_rate_hz,
             "samples": int(self.time.size),
             "duration_s": float(self.time.size / self.sample_rate_hz),
             "rms_m_per_s2": float(np.sqrt(np.mean(self.acceleration**2))),
-            "sensor": {
-                "resonance_hz": self.resonance_hz,
-                "damping_ratio": self.damping_ratio,
-                "modal_mass_kg": self.modal_mass_kg,
-                "noise": self.noise,
-                "seed": self.seed,
-                "slip": self.slip,
-                "speed_fluctuation": self.speed_fluctuation,
-            },
+            "sensor": sensor,
         }
 
 
 def housing_acceleration(
-    force: FloatArray, step: float, resonance: float, damping_ratio: float, modal_mass: float
+    force: FloatArray,
+    step: float,
+    resonance: float | Sequence[float],
+    damping_ratio: float | Sequence[float],
+    modal_mass: float | Sequence[float],
 ) -> FloatArray:
-    r"""Acceleration of one housing mode driven by a force history [m/s^2].
+    r"""Acceleration of the housing's modes driven by a force history [m/s^2].
 
     Parameters
     ----------
@@ -183,40 +241,49 @@ def housing_acceleration(
         Force on the housing along the measuring direction at instants ``step`` apart [N].
     step : float
         Their spacing [s].
-    resonance : float
-        Natural frequency f_n [Hz].
-    damping_ratio : float
-        ζ [-], 0 < ζ < 1.
-    modal_mass : float
-        M [kg].
+    resonance : float or sequence of float
+        Natural frequency :math:`f_k` of each mode [Hz].
+    damping_ratio : float or sequence of float
+        :math:`\zeta_k` [-], 0 < ζ < 1, one for every mode or one each.
+    modal_mass : float or sequence of float
+        :math:`M_k` [kg] (nonzero), one for every mode or one each.
 
     Returns
     -------
     ndarray
-        :math:`\ddot x` at the same instants [m/s^2], from the mode at rest in its static
-        position under the first force (no start-up transient from a static load).
+        :math:`\ddot x`, the sum of the modes' accelerations, at the same instants [m/s^2],
+        from the modes at rest in their static position under the first force (no start-up
+        transient from a static load).
 
     Notes
     -----
-    :math:`H(s) = s^2 / (M(s^2 + 2\zeta\omega_n s + \omega_n^2))`, the state-space form
-    discretised exactly for a force linear between instants (first-order hold); the
-    single-resonance transmission of McFadden and Smith, "Model for the vibration produced by
-    a single point defect in a rolling element bearing", J. Sound Vib. 96(1), 1984, sec. 2.
+    :math:`H(s) = \sum_k s^2 / (M_k(s^2 + 2\zeta_k\omega_k s + \omega_k^2))` (modal
+    superposition), each term's state-space form discretised exactly for a force linear between
+    instants (first-order hold); one term is the single-resonance transmission of McFadden and
+    Smith, "Model for the vibration produced by a single point defect in a rolling element
+    bearing", J. Sound Vib. 96(1), 1984.
     """
     from scipy import signal as ss
 
-    wn = 2.0 * math.pi * resonance
-    a = np.array([[0.0, 1.0], [-wn * wn, -2.0 * damping_ratio * wn]])
-    b = np.array([[0.0], [1.0 / modal_mass]])
-    c = np.array([[-wn * wn, -2.0 * damping_ratio * wn]])
-    d = np.array([[1.0 / modal_mass]])
-    ad, bd, cd, dd, _ = ss.cont2discrete((a, b, c, d), step, method="foh")
-    num, den = ss.ss2tf(ad, bd, cd, dd)
-    num = np.asarray(num, dtype=np.float64).ravel()
+    fn, zeta, mass = np.broadcast_arrays(
+        np.atleast_1d(np.asarray(resonance, dtype=np.float64)),
+        np.atleast_1d(np.asarray(damping_ratio, dtype=np.float64)),
+        np.atleast_1d(np.asarray(modal_mass, dtype=np.float64)),
+    )
     f = np.asarray(force, dtype=np.float64)
     # the static part gives no acceleration (H(0) = 0): start from rest under it
     f = f - f[0]
-    out: FloatArray = np.asarray(ss.lfilter(num, den, f), dtype=np.float64)
+    out: FloatArray = np.zeros(f.size)
+    for fk, zk, mk in zip(fn.tolist(), zeta.tolist(), mass.tolist(), strict=True):
+        wn = 2.0 * math.pi * fk
+        a = np.array([[0.0, 1.0], [-wn * wn, -2.0 * zk * wn]])
+        b = np.array([[0.0], [1.0 / mk]])
+        c = np.array([[-wn * wn, -2.0 * zk * wn]])
+        d = np.array([[1.0 / mk]])
+        ad, bd, cd, dd, _ = ss.cont2discrete((a, b, c, d), step, method="foh")
+        num, den = ss.ss2tf(ad, bd, cd, dd)
+        num = np.asarray(num, dtype=np.float64).ravel()
+        out += np.asarray(ss.lfilter(num, den, f), dtype=np.float64)
     return out
 
 

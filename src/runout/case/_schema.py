@@ -543,15 +543,74 @@ class DefectSpec(_Table):
         return self
 
 
+#: Most housing modes of one sensor (``[[sensor.modes]]``): bounded before anything is built.
+MAX_SENSOR_MODES = 16
+
+
+def _positive_hz(value: float) -> float:
+    if not value > 0.0:
+        raise ValueError(f"must be > 0, got {value!r} Hz")
+    return value
+
+
+def _damping_ratio(value: float) -> float:
+    if not 0.0 < value < 1.0:
+        raise ValueError(f"must be between 0 and 1 (exclusive), got {value!r}")
+    return value
+
+
+class SensorModeSpec(_Table):
+    """``[[sensor.modes]]`` entry: one mode of the housing; the sensor reads the sum of the
+    modes' accelerations."""
+
+    resonance: Frequency = Field(description="Natural frequency of the mode [Hz] (> 0).")
+    damping_ratio: Plain = Field(description="Damping ratio of the mode [-], 0 < zeta < 1.")
+    modal_mass: Mass = Field(
+        description="Modal mass of the mode as the bearing's force and the sensor see it [kg]: "
+        "its mass over the product of its shape at the bearing and at the sensor, negative "
+        "where the shape has opposite signs there (never 0)."
+    )
+
+    @field_validator("resonance")
+    @classmethod
+    def _resonance(cls, value: float) -> float:
+        return _positive_hz(value)
+
+    @field_validator("damping_ratio")
+    @classmethod
+    def _ratio(cls, value: float) -> float:
+        return _damping_ratio(value)
+
+    @field_validator("modal_mass")
+    @classmethod
+    def _mass(cls, value: float) -> float:
+        if value == 0.0:
+            raise ValueError("must not be 0 (a mode of no mass has no finite response)")
+        return value
+
+
 class SensorSpec(_Table):
     """``[sensor]``: the accelerometer on the housing (``[analysis] signal = "acceleration"``)."""
 
-    resonance: Frequency = Field(
-        description="Natural frequency of the housing mode the impacts ring [Hz] (> 0)."
+    resonance: Frequency | None = Field(
+        None,
+        description="Natural frequency of the housing mode the impacts ring [Hz] (> 0); "
+        "required unless modes are given.",
     )
-    damping_ratio: Plain = Field(description="Damping ratio of that mode [-], 0 < zeta < 1.")
+    damping_ratio: Plain | None = Field(
+        None,
+        description="Damping ratio of that mode [-], 0 < zeta < 1; required unless modes are "
+        "given.",
+    )
+    modes: list[SensorModeSpec] | None = Field(
+        None,
+        description="Several modes of the housing instead of one ([[sensor.modes]] tables, "
+        f"1 to {MAX_SENSOR_MODES}, each with resonance, damping_ratio and modal_mass): the "
+        "sensor reads the sum of their accelerations; not with resonance, damping_ratio or "
+        "modal_mass beside them.",
+    )
     sample_rate: Frequency = Field(
-        description="Sample rate of the signal [Hz], above twice the resonance."
+        description="Sample rate of the signal [Hz], above twice the (highest) resonance."
     )
     duration: Time | None = Field(
         None,
@@ -591,16 +650,19 @@ class SensorSpec(_Table):
 
     @field_validator("resonance", "sample_rate")
     @classmethod
-    def _positive_rate(cls, value: float) -> float:
-        if not value > 0.0:
-            raise ValueError(f"must be > 0, got {value!r} Hz")
-        return value
+    def _positive_rate(cls, value: float | None) -> float | None:
+        return None if value is None else _positive_hz(value)
 
     @field_validator("damping_ratio")
     @classmethod
-    def _ratio(cls, value: float) -> float:
-        if not 0.0 < value < 1.0:
-            raise ValueError(f"must be between 0 and 1 (exclusive), got {value!r}")
+    def _ratio(cls, value: float | None) -> float | None:
+        return None if value is None else _damping_ratio(value)
+
+    @field_validator("modes")
+    @classmethod
+    def _modes(cls, value: list[SensorModeSpec] | None) -> list[SensorModeSpec] | None:
+        if value is not None and not 1 <= len(value) <= MAX_SENSOR_MODES:
+            raise ValueError(f"must hold 1 to {MAX_SENSOR_MODES} modes, got {len(value)}")
         return value
 
     @field_validator("noise")
@@ -631,12 +693,36 @@ class SensorSpec(_Table):
             raise ValueError(f"must be > 0, got {value!r}")
         return value
 
+    def housing_modes(self) -> list[tuple[float, float, float | None]]:
+        """The housing's modes: (resonance [Hz], damping ratio [-], modal mass [kg] or None
+        for the [dynamics] mass), from ``modes`` or from the single mode's keys."""
+        if self.modes is not None:
+            return [(m.resonance, m.damping_ratio, m.modal_mass) for m in self.modes]
+        assert self.resonance is not None and self.damping_ratio is not None  # _nyquist
+        return [(self.resonance, self.damping_ratio, self.modal_mass)]
+
     @model_validator(mode="after")
     def _nyquist(self) -> SensorSpec:
-        if self.sample_rate <= 2.0 * self.resonance:
+        if self.modes is not None:
+            for key in ("resonance", "damping_ratio", "modal_mass"):
+                if getattr(self, key) is not None:
+                    raise _KeyedError(
+                        key,
+                        "not beside modes: give it in each [[sensor.modes]] entry (or drop "
+                        "modes for a single mode)",
+                    )
+        else:
+            for key in ("resonance", "damping_ratio"):
+                if getattr(self, key) is None:
+                    raise _KeyedError(
+                        key, "required (the housing mode), unless [[sensor.modes]] are given"
+                    )
+        top = max(f for f, _, _ in self.housing_modes())
+        if self.sample_rate <= 2.0 * top:
+            which = "resonance" if self.modes is None else "highest resonance"
             raise _KeyedError(
                 "sample_rate",
-                f"must be above twice the resonance ({2.0 * self.resonance:.6g} Hz), got "
+                f"must be above twice the {which} ({2.0 * top:.6g} Hz), got "
                 f"{self.sample_rate:.6g} Hz",
             )
         if self.band is not None:

@@ -723,7 +723,8 @@ KEYS: tuple[KeyConvention, ...] = (
         "analysis.signal, sensor",
         'signal = "acceleration": the housing acceleration along the measuring direction, the '
         "bearing's force on the outer ring through one resonance of the housing ([sensor] "
-        "resonance, damping_ratio, sample_rate, noise), and its envelope spectrum.",
+        "resonance, damping_ratio, sample_rate, noise) or several ([[sensor.modes]], their "
+        "accelerations added), and its envelope spectrum.",
         "Hz, -",
         (R, R, R, R, H, R, R),
         {

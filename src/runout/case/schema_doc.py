@@ -21,6 +21,7 @@ from runout.case.model import (
     MaterialSpec,
     OperationSpec,
     ProfileSpec,
+    SensorModeSpec,
     SensorSpec,
     SlantSpec,
     SpindleBearingSpec,
@@ -47,6 +48,7 @@ TABLES: list[tuple[str, type[BaseModel]]] = [
     ("[analysis]", AnalysisSpec),
     ("[dynamics]", DynamicsSpec),
     ("[sensor]", SensorSpec),
+    ("[[sensor.modes]]", SensorModeSpec),
     ("[study]", StudySpec),
 ]
 

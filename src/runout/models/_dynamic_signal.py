@@ -11,7 +11,7 @@ carries the ball.
 
 ``[analysis] signal = "acceleration"`` integrates the steady state again with a step that
 divides the sensor's sampling interval, records the bearing's force on the outer ring along the
-measuring direction at every step and passes it through the housing's resonance
+measuring direction at every step and passes it through the housing's modes
 (:mod:`runout.analysis.sensor`).
 """
 
@@ -25,6 +25,7 @@ from numpy.typing import NDArray
 
 from runout.analysis.sensor import (
     AccelerationSignal,
+    HousingMode,
     envelope_block,
     housing_acceleration,
     min_samples,
@@ -177,6 +178,13 @@ def _warp(
     return warped, tau
 
 
+def _mode_text(mode: HousingMode) -> str:
+    return (
+        f"resonance {mode.resonance_hz:.6g} Hz, damping ratio {mode.damping_ratio:.3g}, modal "
+        f"mass {mode.modal_mass_kg:.4g} kg"
+    )
+
+
 def acceleration_signal(
     case: Any,
     st: DynamicSetup,
@@ -284,13 +292,23 @@ def acceleration_signal(
         f, _ = contact_forces(st, t, out)
         force[done : done + n] = f[:, :2] @ direction
         done += n
-    mass = float(sensor.modal_mass) if sensor.modal_mass is not None else st.mass
+    # a single mode without modal_mass takes the [dynamics] mass (noted)
+    modes = tuple(
+        HousingMode(float(f), float(z), float(m) if m is not None else st.mass)
+        for f, z, m in sensor.housing_modes()
+    )
     fluctuation = float(sensor.speed_fluctuation or 0.0)
     nominal_time = None
     if fluctuation > 0.0:
         # the housing rings at its own resonance: the force is warped, not the acceleration
         force, nominal_time = _warp(force, h, fluctuation, abs(speed), int(sensor.seed))
-    fine = housing_acceleration(force, h, sensor.resonance, sensor.damping_ratio, mass)
+    fine = housing_acceleration(
+        force,
+        h,
+        [m.resonance_hz for m in modes],
+        [m.damping_ratio for m in modes],
+        [m.modal_mass_kg for m in modes],
+    )
     acc = sample(fine, factor)[:n_out]
     rms = float(np.sqrt(np.mean(acc**2)))
     if sensor.noise > 0.0:
@@ -320,26 +338,32 @@ def acceleration_signal(
         acceleration=acc,
         rev=speed * (time if nominal_time is None else nominal_time[::factor][:n_out]),
         sample_rate_hz=fs,
-        resonance_hz=float(sensor.resonance),
-        damping_ratio=float(sensor.damping_ratio),
-        modal_mass_kg=mass,
+        modes=modes,
         noise=float(sensor.noise),
         seed=int(sensor.seed),
         slip=float(sensor.slip),
         speed_fluctuation=fluctuation,
         envelope=envelope,
     )
-    notes = [
-        f"acceleration signal: the bearing's force on the outer ring along the measuring "
-        f"direction through one housing mode, H(s) = s^2 / (M (s^2 + 2 zeta wn s + wn^2)), "
-        f"resonance {sensor.resonance:.6g} Hz, damping ratio {sensor.damping_ratio:.3g}, modal "
-        f"mass {mass:.4g} kg"
-        + (
-            " (the [dynamics] mass: [sensor] modal_mass not given)"
-            if sensor.modal_mass is None
-            else ""
+    if len(modes) == 1:
+        housing = (
+            "one housing mode, H(s) = s^2 / (M (s^2 + 2 zeta wn s + wn^2)), "
+            + _mode_text(modes[0])
+            + (
+                " (the [dynamics] mass: [sensor] modal_mass not given)"
+                if sensor.modal_mass is None
+                else ""
+            )
         )
-        + f"; sampled at {fs:.6g} Hz after an anti-aliasing filter, {n_out} samples "
+    else:
+        housing = (
+            f"{len(modes)} housing modes whose accelerations add, H(s) = sum of "
+            "s^2 / (M_k (s^2 + 2 zeta_k w_k s + w_k^2)): " + "; ".join(_mode_text(m) for m in modes)
+        )
+    notes = [
+        "acceleration signal: the bearing's force on the outer ring along the measuring "
+        f"direction through {housing}; sampled at {fs:.6g} Hz after an anti-aliasing filter, "
+        f"{n_out} samples "
         f"({duration:.4g} s), Newmark step {h * 1e6:.4g} us ({factor} per sample); Gaussian "
         f"noise {sensor.noise:.3g} x the signal rms (seed {sensor.seed})"
         + (

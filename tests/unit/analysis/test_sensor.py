@@ -2,8 +2,8 @@
 
 :func:`housing_acceleration` driven by a sinusoidal force settles to the amplitude and phase of
 :math:`H(j\\omega) = -\\omega^2 / (M(\\omega_n^2 - \\omega^2 + 2j\\zeta\\omega_n\\omega))`
-(property test over frequencies, resonances, damping ratios and masses), a constant force gives
-no acceleration; :func:`sample` keeps a tone below the new Nyquist frequency and removes one
+(property test over frequencies, resonances, damping ratios and masses), and several modes the
+sum of theirs (modal superposition); a constant force gives no acceleration; :func:`sample` keeps a tone below the new Nyquist frequency and removes one
 above it; the envelope block finds the band of a train of impacts and labels its rate.
 """
 
@@ -42,6 +42,38 @@ def test_sinusoidal_force_gives_the_stated_transfer_function(
     # first-order hold is exact for a piecewise-linear force: the sine's curvature between
     # steps, (w h)^2 / 12 of its amplitude, is the only error
     assert np.max(np.abs(acc[tail] - expected)) <= 1e-3 * abs(h)
+
+
+@settings(max_examples=30, deadline=None)
+@given(
+    ratio=st.floats(0.2, 3.0),
+    resonances=st.lists(st.floats(500.0, 5000.0), min_size=2, max_size=4),
+    zeta=st.floats(0.05, 0.3),
+    masses=st.lists(
+        st.one_of(st.floats(0.1, 10.0), st.floats(-10.0, -0.1)), min_size=4, max_size=4
+    ),
+)
+def test_several_modes_give_the_sum_of_their_transfer_functions(
+    ratio: float, resonances: list[float], zeta: float, masses: list[float]
+) -> None:
+    # modal superposition: H = sum of the modes' H_k, a negative modal mass a mode whose shape
+    # has opposite signs at the bearing and at the sensor
+    masses = masses[: len(resonances)]
+    f = ratio * min(resonances)
+    step = 1.0 / (200.0 * max(f, *resonances))
+    settle = 21.0 / (zeta * 2.0 * math.pi * min(resonances))
+    t = np.arange(0.0, settle + 20 / f, step)
+    acc = housing_acceleration(np.sin(2.0 * math.pi * f * t), step, resonances, zeta, masses)
+    w = 2.0 * math.pi * f
+    parts = [
+        -(w**2) / (m * ((2 * math.pi * fk) ** 2 - w**2 + 2j * zeta * 2 * math.pi * fk * w))
+        for fk, m in zip(resonances, masses, strict=True)
+    ]
+    h = sum(parts)
+    tail = t >= settle
+    expected = np.imag(h * np.exp(1j * w * t[tail]))
+    # each mode's hold error is (w h)^2 / 12 of its own response: bounded by the sum of those
+    assert np.max(np.abs(acc[tail] - expected)) <= 1e-3 * sum(abs(p) for p in parts)
 
 
 def test_constant_force_gives_no_acceleration() -> None:
