@@ -406,3 +406,22 @@ def test_speed_fluctuation_moves_the_tachometer_and_spreads_the_line(runs, tmp_p
     code, text = _run("diagnose", str(case), "--record", str(bare), "--envelope", "--json")
     assert code == 0, text
     assert json.loads(text)["defects"][0]["part"] == "outer"
+
+
+def test_the_runs_envelope_is_order_tracked_under_a_speed_fluctuation(tmp_path: Path) -> None:
+    # the run knows its shaft angle exactly: its envelope block reads the lines at their
+    # orders times the mean speed, as diagnose does with a tachometer (at 3 % rms the lines
+    # in hertz spread over several bins and the largest peak is no longer BPFO)
+    _, _, doc = _fluctuating(tmp_path, 0.03)
+    envelope = doc["envelope"]
+    assert envelope["order_tracked"] is True
+    first = envelope["peaks"][0]
+    assert first["label"] == "BPFO", envelope["peaks"][:3]
+    assert abs(first["frequency_hz"] / (PUBLISHED["outer"] * SHAFT_HZ) - 1.0) < 0.01
+    labels = [p["label"] for p in envelope["peaks"][:4]]
+    assert "2xBPFO" in labels, labels
+    assert any(n.startswith("envelope band") and "order-tracked" in n for n in doc["notes"])
+
+
+def test_a_constant_speed_envelope_is_not_order_tracked(runs) -> None:
+    assert runs["outer"][2]["envelope"]["order_tracked"] is False

@@ -34,8 +34,10 @@ from scipy import fft as sfft
 
 __all__ = [
     "MIN_BAND_SAMPLES",
+    "ORDER_TRACKING_UPSAMPLE",
     "EnvelopeSpectrum",
     "Kurtogram",
+    "at_uniform_angle",
     "complex_envelope",
     "fast_kurtogram",
     "kurtogram_levels",
@@ -49,6 +51,8 @@ ComplexArray = NDArray[np.complex128]
 #: Fewest samples of a band's complex envelope the kurtogram estimates a kurtosis from: the
 #: deepest level of Antoni's tree is log2(n) - 7 (his reference code), 2^6 samples per band.
 MIN_BAND_SAMPLES = 64
+#: Upsampling of a record before it is interpolated at the instants of uniform shaft angle.
+ORDER_TRACKING_UPSAMPLE = 4
 
 
 def _signal(signal: ArrayLike, sample_rate: float) -> FloatArray:
@@ -354,3 +358,51 @@ def fast_kurtogram(
     return Kurtogram(
         tuple(lv for lv, _ in levels), tuple(rows), tuple(widths), best[2], best[1], best[0]
     )
+
+
+def at_uniform_angle(
+    time: ArrayLike, angle: ArrayLike, values: ArrayLike
+) -> tuple[FloatArray, FloatArray, float]:
+    """A record resampled at equal increments of the shaft angle (computed order tracking).
+
+    Parameters
+    ----------
+    time : array_like
+        Instants of the samples, equally spaced [s].
+    angle : array_like
+        Shaft angle at each instant [rev], increasing.
+    values : array_like
+        The samples (any unit).
+
+    Returns
+    -------
+    time : ndarray
+        As many instants over the same span on the time axis of the mean speed f̄ = revolutions
+        / span [s]: a line at a fixed order k of the shaft is at k f̄ Hz whatever the speed did.
+    values : ndarray
+        The record at those angles.
+    mean_hz : float
+        f̄ [Hz].
+
+    Notes
+    -----
+    The record, upsampled :data:`ORDER_TRACKING_UPSAMPLE` times by a polyphase filter, is
+    interpolated linearly at the instants of uniform angle (the angle itself interpolated
+    linearly between samples). K. R. Fyfe and E. D. S. Munck, "Analysis of computed order
+    tracking", Mechanical Systems and Signal Processing 11(2), 1997.
+    """
+    from scipy.signal import resample_poly
+
+    t = np.asarray(time, dtype=np.float64)
+    turns = np.asarray(angle, dtype=np.float64)
+    count = t.size
+    span = float(t[-1] - t[0])
+    mean_hz = float(turns[-1] - turns[0]) / span
+    uniform = turns[0] + (turns[-1] - turns[0]) * np.arange(count, dtype=np.float64) / (count - 1)
+    instants = np.interp(uniform, turns, t)
+    up = ORDER_TRACKING_UPSAMPLE
+    step = span / (count - 1) / up
+    fine = np.asarray(resample_poly(np.asarray(values, dtype=np.float64), up, 1), dtype=np.float64)
+    grid = t[0] + step * np.arange(fine.size, dtype=np.float64)
+    out: FloatArray = np.asarray(np.interp(instants, grid, fine), dtype=np.float64)
+    return t[0] + (uniform - turns[0]) / mean_hz, out, mean_hz

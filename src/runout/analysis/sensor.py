@@ -43,6 +43,7 @@ from numpy.typing import NDArray
 
 from runout.analysis.envelope import (
     MIN_BAND_SAMPLES,
+    at_uniform_angle,
     complex_envelope,
     fast_kurtogram,
     spectral_kurtosis,
@@ -347,6 +348,7 @@ def envelope_block(
     sidebands: dict[str, float | None],
     shaft_hz: float,
     band: tuple[float, float] | None = None,
+    angle: FloatArray | None = None,
 ) -> dict[str, Any]:
     """The run's JSON ``envelope``: band (fast kurtogram or given) and the largest labelled peaks.
 
@@ -365,12 +367,16 @@ def envelope_block(
         Speed of the rotating ring [Hz] (shaft harmonics are labelled ``fr``, ``2xfr``).
     band : (float, float), optional
         Pass band [Hz] (``[sensor] band``, checked by the case); default the fast kurtogram's.
+    angle : ndarray, optional
+        The rotating ring's angle at each sample [rev] when its speed varies: the signal is
+        order-tracked first (:func:`runout.analysis.envelope.at_uniform_angle`), its lines read
+        at their orders times the mean speed, which ``fundamentals`` and ``shaft_hz`` are at.
 
     Returns
     -------
     dict
-        ``band_hz`` [lo, hi], ``band_source`` ("kurtogram" or "given"), ``spectral_kurtosis``
-        (of the band's complex envelope),
+        ``band_hz`` [lo, hi], ``band_source`` ("kurtogram" or "given"), ``order_tracked``
+        (whether ``angle`` was given), ``spectral_kurtosis`` (of the band's complex envelope),
         ``resolution_hz`` and ``peaks``: largest first, each ``frequency_hz``, ``amplitude``
         [(m/s^2)^2], ``label`` (``"BPFI"``, ``"2xBPFO"``, ``"BPFI+fr"``, ``"BDF-FTF"``,
         ``"FTF"``, ``"3xfr"`` or None: the line the peak is within 2 % of), ``part`` (``outer``,
@@ -383,6 +389,9 @@ def envelope_block(
     21, 2007 (the band); J. Antoni and R. B. Randall, "Rolling element bearing diagnostics — A
     tutorial", MSSP 25, 2011, sec. 5.1 (the squared envelope spectrum).
     """
+    if angle is not None:
+        time = np.arange(acceleration.size, dtype=np.float64) / sample_rate
+        _, acceleration, _ = at_uniform_angle(time, angle, acceleration)
     top = max(f for part, f in fundamentals.items() if part != "cage")
     need = (ENVELOPE_HARMONICS + 1) * top
     width = min(need, 0.25 * sample_rate)
@@ -419,6 +428,7 @@ def envelope_block(
     return {
         "band_hz": [float(band[0]), float(band[1])],
         "band_source": source,
+        "order_tracked": angle is not None,
         "spectral_kurtosis": kurtosis,
         "resolution_hz": float(spectrum.resolution_hz),
         "peaks": peaks,

@@ -37,6 +37,7 @@ from typing import Any, Literal
 import numpy as np
 from numpy.typing import NDArray
 
+from runout.analysis.envelope import ORDER_TRACKING_UPSAMPLE, at_uniform_angle
 from runout.diagnose._record import Record, RecordError, read_record
 
 __all__ = [
@@ -387,10 +388,6 @@ def _speed(case: Any, record: Record) -> tuple[Any, str, list[str]]:
     return operation, "case", []
 
 
-#: Upsampling of a record before it is interpolated at the instants of uniform shaft angle.
-ORDER_TRACKING_UPSAMPLE = 4
-
-
 def order_tracked(record: Record) -> tuple[Record, str]:
     """The record resampled at uniform shaft angle from its tachometer (computed order tracking).
 
@@ -420,7 +417,6 @@ def order_tracked(record: Record) -> tuple[Record, str]:
     fluctuations smear the defect lines; order tracking before the envelope analysis).
     """
     from scipy.interpolate import PchipInterpolator
-    from scipy.signal import resample_poly
 
     starts = np.asarray(record.revolution_starts, dtype=np.float64)
     turns = np.arange(starts.size, dtype=np.float64)
@@ -431,23 +427,17 @@ def order_tracked(record: Record) -> tuple[Record, str]:
     before, after = t < starts[0], t > starts[-1]
     angle[before] = (t[before] - starts[0]) / (starts[1] - starts[0])
     angle[after] = turns[-1] + (t[after] - starts[-1]) / (starts[-1] - starts[-2])
-    count = t.size
     span = float(t[-1] - t[0])
     mean_hz = float(angle[-1] - angle[0]) / span
-    uniform = angle[0] + (angle[-1] - angle[0]) * np.arange(count, dtype=np.float64) / (count - 1)
-    instants = np.interp(uniform, angle, t)
-    up = ORDER_TRACKING_UPSAMPLE
-    step = record.step / up
+    uniform_time = t
     channels = {}
     for role, values in record.channels.items():
-        fine = np.asarray(resample_poly(values, up, 1), dtype=np.float64)
-        grid = t[0] + step * np.arange(fine.size, dtype=np.float64)
-        channels[role] = np.interp(instants, grid, fine)
+        uniform_time, channels[role], _ = at_uniform_angle(t, angle, values)
     periods = np.diff(starts)
     spread = float(np.max(np.abs(periods * mean_hz - 1.0)))
     tracked = dataclasses.replace(
         record,
-        time=t[0] + (uniform - angle[0]) / mean_hz,
+        time=uniform_time,
         channels=channels,
         tachometer_hz=mean_hz,
         revolution_starts=None,

@@ -332,11 +332,14 @@ def acceleration_signal(
         "cage": None,
     }
     band = None if sensor.band is None else (float(sensor.band[0]), float(sensor.band[1]))
-    envelope = envelope_block(acc, fs, fundamentals, sidebands, freqs.rotation, band)
+    rev = speed * (time if nominal_time is None else nominal_time[::factor][:n_out])
+    # a fluctuating speed: the run knows its shaft angle, the envelope is read in orders
+    tracked = None if nominal_time is None else abs(rev)
+    envelope = envelope_block(acc, fs, fundamentals, sidebands, freqs.rotation, band, tracked)
     signal = AccelerationSignal(
         time=time,
         acceleration=acc,
-        rev=speed * (time if nominal_time is None else nominal_time[::factor][:n_out]),
+        rev=rev,
         sample_rate_hz=fs,
         modes=modes,
         noise=float(sensor.noise),
@@ -382,6 +385,12 @@ def acceleration_signal(
         ),
         f"envelope band {envelope['band_hz'][0]:.6g}-{envelope['band_hz'][1]:.6g} Hz "
         + ("chosen by the fast kurtogram" if band is None else "given by [sensor] band")
-        + f" (spectral kurtosis {envelope['spectral_kurtosis']:.3g})",
+        + f" (spectral kurtosis {envelope['spectral_kurtosis']:.3g})"
+        + (
+            "; the signal order-tracked first with the run's shaft angle (the rev column): "
+            "its lines read at their orders times the mean speed"
+            if tracked is not None
+            else ""
+        ),
     ]
     return signal, notes

@@ -3,8 +3,9 @@
 :func:`housing_acceleration` driven by a sinusoidal force settles to the amplitude and phase of
 :math:`H(j\\omega) = -\\omega^2 / (M(\\omega_n^2 - \\omega^2 + 2j\\zeta\\omega_n\\omega))`
 (property test over frequencies, resonances, damping ratios and masses), and several modes the
-sum of theirs (modal superposition); a constant force gives no acceleration; :func:`sample` keeps a tone below the new Nyquist frequency and removes one
-above it; the envelope block finds the band of a train of impacts and labels its rate.
+sum of theirs (modal superposition); a constant force gives no acceleration; :func:`sample`
+keeps a tone below the new Nyquist frequency and removes one above it; the envelope block finds
+the band of a train of impacts and labels its rate.
 """
 
 from __future__ import annotations
