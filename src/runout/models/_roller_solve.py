@@ -625,9 +625,9 @@ def order_sweep(
     -----
     Each entry is the runout :func:`solve` gives for that geometry alone, to round-off: the
     solves share the perfect bearing's settled rollers where they are the same, settle alike
-    rollers once per angle, start their Newton solves warm (cold, as :func:`solve`, where a
-    part's convexity margin is below :data:`WARM_MARGIN`: close to flat, a warm start can
-    reach another stationary point of a gap) and compute no gaps
+    rollers once per angle, start their Newton solves warm and compute no gaps (where a part's
+    convexity margin is below :data:`EXACT_MARGIN`, close to flat, only the last: a warm start
+    can reach another stationary point of a gap there)
     (``_roller_kernels`` module docstring). Model: Yu et al., "Prediction method for the
     radial runout of inner ring in cylindrical roller bearings", Math. Probl. Eng., 2017
     (seed 004), eq. 1-16 and §5.
@@ -688,8 +688,9 @@ def _runout(geo: ConstraintGeometry, centre: FloatArray) -> float:
 
 
 #: Least convexity margin of the parts (:func:`_roller_setup._convexity_margin`) from which
-#: the order sweep starts its Newton solves warm; below it they start cold, as a run's solve.
-WARM_MARGIN = 0.5
+#: the order sweep takes its shortcuts (warm Newton starts, alike rollers settled once); below
+#: it a geometry is walked as a run's solve walks it (cold, every roller settled on its own).
+EXACT_MARGIN = 0.5
 
 
 def _runouts_or_none(
@@ -718,12 +719,18 @@ def _runouts_or_none(
         except GeometryError:
             return None
         own = settled if settles[i] == SETTLE_GIVEN else np.empty_like(settled)
-        # a part close to flat somewhere: a contact's Newton solve started from the normal of
-        # the angle before can reach another stationary point of its gap (hypothesis found a
-        # roller harmonic at margin 0.12 whose warm walk jammed where the cold one did not)
-        warm = margin >= WARM_MARGIN
+        settle = settles[i]
+        warm = True
+        if margin < EXACT_MARGIN:
+            # a part close to flat somewhere: a contact's Newton solve started from the normal
+            # of the angle before can reach another stationary point of its gap, and alike
+            # rollers settled once differ from each settled on its own by more than round-off
+            # (random runs found a warm walk that jammed where the cold one did not, at margin
+            # 0.12, and a roller harmonic 1.4e-11 m off at 0.10): the run's own walk
+            warm = False
+            settle = SETTLE_EACH if settle == SETTLE_ONCE else settle
         try:
-            return _runout(g, _walk(g, al, own, settles[i], radii, True, warm, False)[0])
+            return _runout(g, _walk(g, al, own, settle, radii, True, warm, False)[0])
         except NumericalError:  # ConvergenceError included: jammed or unsettled
             return None
 
