@@ -42,3 +42,43 @@ def test_only_help_names_every_section() -> None:
     assert shown.exit_code == 0
     for key in section_keys():
         assert key in shown.output, key
+
+
+def test_reproduce_never_overwrites_a_file_it_did_not_write(tmp_path: Path) -> None:
+    out = tmp_path / "VALIDATION.md"
+    out.write_text("my own notes\n", encoding="utf-8")
+    res = runner.invoke(app, ["reproduce", "--only", "kinematics", "--out", str(out)])
+    assert res.exit_code == 2, res.output
+    assert len(res.output.strip().splitlines()) == 1, res.output
+    assert str(out) in res.output and "not written by runout" in res.output
+    assert out.read_text(encoding="utf-8") == "my own notes\n"
+
+
+def test_reproduce_does_not_write_through_a_link(tmp_path: Path) -> None:
+    target = tmp_path / "elsewhere.md"
+    target.write_text("kept\n", encoding="utf-8")
+    link = tmp_path / "V.md"
+    link.symlink_to(target)
+    res = runner.invoke(app, ["reproduce", "--only", "kinematics", "--out", str(link)])
+    assert res.exit_code == 2, res.output
+    assert "link" in res.output
+    assert target.read_text(encoding="utf-8") == "kept\n"
+
+
+def test_only_some_sections_replace_those_sections_of_the_document(tmp_path: Path) -> None:
+    # the project's own document: rewriting one section leaves the others as they were, and
+    # a section that has not changed comes back identical
+    shipped = Path(__file__).resolve().parents[2] / "VALIDATION.md"
+    out = tmp_path / "VALIDATION.md"
+    text = shipped.read_text(encoding="utf-8")
+    out.write_text(text, encoding="utf-8")
+    res = runner.invoke(app, ["reproduce", "--only", "kinematics", "--out", str(out)])
+    assert res.exit_code == 0, res.output
+    after = out.read_text(encoding="utf-8")
+    assert after.count("### ") == text.count("### ")
+    assert after.index("### Dynamic model") > after.index("### Kinematics")
+    ok = runner.invoke(app, ["reproduce", "--only", "kinematics", "--out", str(out), "--check"])
+    assert ok.exit_code == 0, ok.output
+    from runout.validation.compare import compare
+
+    assert compare(after, text) == []  # the same document, to the check's tolerance

@@ -1039,12 +1039,17 @@ def reproduce_command(
             "--only",
             help="Comma-separated sections (kinematics, contact, spectrum, linear, roller, "
             "dynamic, quasi_static, life, diagnosis, envelope, studies, defects, mcfadden_smith); "
-            "default all.",
+            "default all. An existing document keeps its other sections.",
         ),
     ] = None,
-    out: Annotated[Path, typer.Option("--out", help="Where to write the document.")] = Path(
-        "VALIDATION.md"
-    ),
+    out: Annotated[
+        Path,
+        typer.Option(
+            "--out",
+            help="Where to write the document (never over a file runout reproduce did not "
+            "write, never through a link).",
+        ),
+    ] = Path("VALIDATION.md"),
     check_only: Annotated[
         bool,
         typer.Option(
@@ -1088,7 +1093,19 @@ def reproduce_command(
             raise typer.Exit(1)
         _out.print(f"{escape(str(out))} is up to date")
         return
-    out.write_text(doc.text, encoding="utf-8")
+    text = doc.text
+    if out.is_symlink():
+        _fail(f"{out}: a symbolic link; runout does not write through links (choose another --out)")
+    if out.exists():
+        existing = out.read_text(encoding="utf-8", errors="replace") if out.is_file() else ""
+        if rp.GENERATED_MARK not in existing:
+            _fail(
+                f"{out}: exists and was not written by runout reproduce, which replaces only its "
+                "own document (move it away or choose another --out)"
+            )
+        if sections is not None:  # the other sections stay as they are
+            text = rp.merge_sections(existing, doc.text)
+    out.write_text(text, encoding="utf-8")
     _out.print(doc.summary())
     _out.print(f"wrote {escape(str(out))}")
 

@@ -34,7 +34,7 @@ from runout.validation import (
     seed004_yu,
 )
 from runout.validation.cases import EXAMPLE_USES
-from runout.validation.compare import compare, split_sections
+from runout.validation.compare import GENERATED_MARK, compare, merge_sections, split_sections
 from runout.validation.core import (
     AGREE,
     CHECK_RTOL,
@@ -53,6 +53,7 @@ __all__ = [
     "AGREE",
     "CHECK_RTOL",
     "EXAMPLE_USES",
+    "GENERATED_MARK",
     "NOT",
     "ROUNDOFF",
     "SECTIONS",
@@ -64,6 +65,7 @@ __all__ = [
     "Section",
     "build",
     "compare",
+    "merge_sections",
     "section_keys",
     "split_sections",
 ]

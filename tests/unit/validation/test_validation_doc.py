@@ -215,3 +215,16 @@ def test_checks_at_rounding_level_are_relative_errors() -> None:
     assert len(tiny) >= 5
     for c in tiny:
         assert "relative" in c.quantity, c.quantity
+
+
+def test_merged_sections_replace_theirs_and_new_ones_go_before_the_index() -> None:
+    from runout.validation.compare import merge_sections
+
+    existing = "# V\n\nhead\n\n### A\n\na\n\n### B\n\nb\n\n### Example case files used above\n\ni\n"
+    fresh = "# V\n\nhead\n\n### B\n\nb2\n\n### C\n\nc\n"
+    merged = merge_sections(existing, fresh)
+    assert merged == (
+        "# V\n\nhead\n\n### A\n\na\n\n### B\n\nb2\n\n### C\n\nc\n\n"
+        "### Example case files used above\n\ni\n"
+    )
+    assert merge_sections(existing, existing) == existing
