@@ -36,31 +36,39 @@ def test_profile_has_zero_mean_the_rms_given_and_is_seeded(
     np.testing.assert_array_equal(u, speed_profile(fluctuation, shaft_hz, duration, seed, 4096))
 
 
+#: The records below: sample rate [Hz], length [s], mean shaft speed [Hz], the line's order.
+FS, DURATION, SHAFT_HZ, ORDER = 2000.0, 4.0, 25.0, 3.3
+
+
+def _fluctuating(fluctuation: float, seed: int) -> tuple[np.ndarray, np.ndarray]:
+    """Instants [s] and shaft revolutions at each (trapezoid of the fluctuating speed)."""
+    n = int(FS * DURATION)
+    u = speed_profile(fluctuation, SHAFT_HZ, DURATION, seed, n)
+    rate = SHAFT_HZ * (1.0 + u)
+    rev = np.concatenate([[0.0], np.cumsum(0.5 * (rate[1:] + rate[:-1]) / FS)])
+    return np.arange(n) / FS, rev
+
+
 @settings(max_examples=10, deadline=None)
 @given(fluctuation=st.floats(0.005, 0.05), seed=st.integers(0, 1000))
 def test_order_tracking_puts_an_order_line_back_at_the_mean_speed(
     fluctuation: float, seed: int
 ) -> None:
-    fs, duration, shaft_hz, order = 2000.0, 4.0, 25.0, 3.3
-    n = int(fs * duration)
-    u = speed_profile(fluctuation, shaft_hz, duration, seed, n)
-    # shaft revolutions at each sample (trapezoid of the speed)
-    rate = shaft_hz * (1.0 + u)
-    rev = np.concatenate([[0.0], np.cumsum(0.5 * (rate[1:] + rate[:-1]) / fs)])
-    time = np.arange(n) / fs
-    a = np.cos(2.0 * np.pi * order * rev)  # a line at a fixed order of the shaft
+    time, rev = _fluctuating(fluctuation, seed)
+    n = time.size
+    a = np.cos(2.0 * np.pi * ORDER * rev)  # a line at a fixed order of the shaft
     rec = record_from_arrays(time, a=a, rev=rev, quantity="acceleration")
     tracked, note = order_tracked(rec)
     assert note.startswith("order tracking:")
     mean_hz = float(tracked.tachometer_hz)
-    assert abs(mean_hz / shaft_hz - 1.0) < 1e-3
+    assert abs(mean_hz / SHAFT_HZ - 1.0) < 1e-3
     spectrum = np.abs(np.fft.rfft(tracked.channels["a"] * np.hanning(n))) ** 2
-    freqs = np.fft.rfftfreq(n, 1.0 / fs)
+    freqs = np.fft.rfftfreq(n, 1.0 / FS)
     peak = float(freqs[int(np.argmax(spectrum))])
-    df = fs / n
-    assert abs(peak - order * mean_hz) <= 1.5 * df
+    df = FS / n
+    assert abs(peak - ORDER * mean_hz) <= 1.5 * df
     # sharp: the line's three bins hold most of the energy within 5 % of it
-    near = np.abs(freqs - order * mean_hz) <= 0.05 * order * mean_hz
+    near = np.abs(freqs - ORDER * mean_hz) <= 0.05 * ORDER * mean_hz
     i = int(np.argmax(spectrum))
     assert spectrum[i - 1 : i + 2].sum() > 0.9 * spectrum[near].sum()
 
@@ -71,13 +79,9 @@ def test_resampling_at_the_exact_angle_gives_the_order_line_at_the_mean_speed(
     fluctuation: float, seed: int
 ) -> None:
     # what a run does with its own shaft angle (no tachometer pulses to interpolate between)
-    fs, duration, shaft_hz, order = 2000.0, 4.0, 25.0, 3.3
-    n = int(fs * duration)
-    u = speed_profile(fluctuation, shaft_hz, duration, seed, n)
-    rate = shaft_hz * (1.0 + u)
-    rev = np.concatenate([[0.0], np.cumsum(0.5 * (rate[1:] + rate[:-1]) / fs)])
-    time = np.arange(n) / fs
-    uniform_time, a, mean_hz = at_uniform_angle(time, rev, np.cos(2.0 * np.pi * order * rev))
+    time, rev = _fluctuating(fluctuation, seed)
+    n = time.size
+    uniform_time, a, mean_hz = at_uniform_angle(time, rev, np.cos(2.0 * np.pi * ORDER * rev))
     assert mean_hz == pytest.approx(rev[-1] / time[-1], rel=1e-12)
     # the same span, equal steps
     np.testing.assert_allclose(np.diff(uniform_time), time[-1] / (n - 1), rtol=1e-9)
@@ -86,5 +90,5 @@ def test_resampling_at_the_exact_angle_gives_the_order_line_at_the_mean_speed(
     # design: 1.6e-3 of the amplitude on a pure 82.5 Hz tone) plus the linear interpolation's
     # (2 pi f / (4 fs))^2 / 8 = 5e-4
     core = slice(50, -50)  # away from the polyphase filter's edges
-    expected = np.cos(2.0 * np.pi * order * mean_hz * (uniform_time - uniform_time[0]))
+    expected = np.cos(2.0 * np.pi * ORDER * mean_hz * (uniform_time - uniform_time[0]))
     assert np.max(np.abs(a[core] - expected[core])) < 2.5e-3
