@@ -35,7 +35,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import asdict, dataclass, field
 from typing import Any
 
 import numpy as np
@@ -100,11 +100,7 @@ class HousingMode:
         dict
             The mode, in the units its keys say.
         """
-        return {
-            "resonance_hz": self.resonance_hz,
-            "damping_ratio": self.damping_ratio,
-            "modal_mass_kg": self.modal_mass_kg,
-        }
+        return asdict(self)
 
 
 @dataclass(frozen=True, eq=False)
