@@ -19,6 +19,7 @@ from runout.report._html import (
     meta_line,
     table,
 )
+from runout.report._plot_style import log_labels
 
 __all__ = ["write_diagnosis"]
 
@@ -45,6 +46,7 @@ def _figures(diagnosis: Any, directory: Path) -> list[Path]:
         ax.semilogy(f[keep], meas[keep] + 1e-30, lw=0.7, color="0.4", label="record")
         ax.semilogy(f[keep], rec[keep] + 1e-30, lw=0.9, color="#1f77b4", label="reconstructed")
         top = float(max(meas[keep].max(initial=0.0), rec[keep].max(initial=0.0)))
+        log_labels(ax)
         if top > 0:
             ax.set_ylim(top * 1e-5, top * 2.0)
         # up to a little beyond the highest line found (the rest is the noise floor)

@@ -124,6 +124,7 @@ def plot_dynamic_sweep(
     axes[0].set_xlabel(style.axis_label("number of balls", "-"))
     axes[1].set_xlabel(style.axis_label("axial preload", "N"))
     for ax in axes:
+        style.log_labels(ax)
         ax.set_ylabel(style.axis_label("ball-passage line p-p", unit))
         ax.grid(alpha=0.3, which="both")
         ax.legend(fontsize=7)

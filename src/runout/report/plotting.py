@@ -191,7 +191,13 @@ def place_labels(
     from matplotlib.text import Text
 
     fig = ax.figure
-    fig.draw_without_rendering()  # legend positions ("best") and tick labels are settled
+    if getattr(fig, "_runout_fixed_layout", False):
+        # the tight layout has measured the figure (limits, legend and ticks settled); the
+        # limits are read so that any autoscaling still pending is done
+        ax.get_xlim()
+        ax.get_ylim()
+    else:
+        fig.draw_without_rendering()  # legend positions ("best") and tick labels are settled
     renderer = fig.canvas.get_renderer()
     frame = ax.get_window_extent(renderer)
     taken = [
@@ -758,6 +764,7 @@ def plot_lines(result: RunResult, ax: Any = None, top: int = 6) -> Any:
     ax.set_ylabel(style.axis_label("peak-to-peak", unit))
     ax.margins(x=0.06)
     ax.set_yscale("log")
+    style.log_labels(ax)
     if comps:
         ax.set_ylim(floor_m * scale, peak_m * scale * 6.0)  # headroom for labels above the top
         ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
@@ -1012,6 +1019,8 @@ def plot_anderon_spectrum(
     ax.plot([], [], color="C3", lw=2, label=f"band values [Anderon] ({extra})")
     ax.set_xscale("log")
     ax.set_yscale("log")
+    style.log_labels(ax, "x")
+    style.log_labels(ax)
     ax.set_ylim(floor, 3.0 * max([top, *bars]))
     _thin_log_minor(ax, "x")
     _thin_log_minor(ax)
@@ -1088,6 +1097,7 @@ def plot_band_values(
     ax.set_xticks(pos + width * (len(series) - 1) / 2, ticks)
     if log:
         ax.set_yscale("log")
+        style.log_labels(ax)
         ax.set_ylim(min(positive) / 3.0, max(positive) * 8.0)  # room for the values on top
         _thin_log_minor(ax)
     elif positive:
@@ -1394,12 +1404,14 @@ def plot_dynamic_spectrum(result: RunResult, ax: Any = None, f_max: float | None
                 label=name,
             )
         ax.set_yscale("log")
+        style.log_labels(ax)
         ax.set_ylim(floor, peak_m * scale * 6.0)
         ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
         _thin_log_minor(ax)
     else:
         # a spectrum of numerical noise is not a result: say so instead of drawing it
         ax.set_yscale("log")
+        style.log_labels(ax)
         ax.set_ylim(floor, floor * 1e4)
         ax.set_xlim(0.0, top)
         _below_resolution(ax, resolution, "the motion")

@@ -11,6 +11,7 @@ import csv
 import dataclasses
 import json
 import math
+from collections.abc import Sequence
 from concurrent.futures import Future, ThreadPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
@@ -72,21 +73,28 @@ def write_result(
     ]
     directory.mkdir(parents=True, exist_ok=True)
     path = directory / "result.json"
-    path.write_text(json.dumps(result.to_json(), indent=2, allow_nan=False) + "\n")
+    history = directory / "history.csv"
     # the record's CSV is formatted by compiled code that releases the GIL: written on a
     # second thread while the figures are drawn (a record of 2^20 instants: 0.3 s each); so
-    # is the rigid model's order sweep (about a hundred solves)
-    history = directory / "history.csv"
+    # is the rigid model's order sweep (about a hundred solves), started first: the longest
     pool = ThreadPoolExecutor(2, thread_name_prefix="runout-files")
-    pending = pool.submit(
-        write_columns, history, HISTORY_COLUMNS, [result.time, *result.displacement]
-    )
     solution = _roller_solution(result)
     sweep = None if solution is None else pool.submit(_order_sweep, solution)
+    pending: list[Future[Path]] = []
     tables: list[Path] = []
 
     def write_tables() -> list[tuple[str, Any]]:
-        """The tables (this process), and the figures that need what they computed."""
+        """The files of this process, and the figures that need what they computed.
+
+        Run once the drawing processes have their figures: the JSON and the tables are
+        written while they draw, not before they start.
+        """
+        path.write_text(json.dumps(result.to_json(), indent=2, allow_nan=False) + "\n")
+        pending.append(
+            pool.submit(
+                write_columns, history, HISTORY_COLUMNS, [result.time, *result.displacement]
+            )
+        )
         tables.append(_write_lines(result, directory))
         written, swept = _model_tables(result, directory, sweep)
         tables.extend(written)
@@ -99,11 +107,7 @@ def write_result(
         extras.update({name: linear for name in plotting.LINEAR_FIGURES})
         if solution is not None:
             extras.update(dict.fromkeys(_ROLLER_FIGURES[:2], _RollerFigure.of(solution)))
-        first = [
-            (name, extras.get(name))
-            for name in sorted(figures, key=lambda n: n not in _SLOWEST)
-            if name not in _AFTER_TABLES
-        ]
+        first = [(name, extras.get(name)) for name in _longest_first(figures)]
         if workers is None:
             drawn = {name: draw_figure(result, directory, name, extra) for name, extra in first}
             drawn.update(
@@ -116,7 +120,8 @@ def write_result(
             drawn = workers.draw(draw_figure, sent, directory, first, later=write_tables)
     finally:
         pool.shutdown(wait=True)
-    pending.result()  # its error, if any (disk full), is this call's
+    for written in pending:
+        written.result()  # its error, if any (disk full), is this call's
     standard = [drawn[n] for n in figures if n in plotting.STANDARD_FIGURES]
     own = [drawn[n] for n in figures if n not in plotting.STANDARD_FIGURES]
     signal = []
@@ -137,9 +142,33 @@ def write_result(
 #: acceleration, revolutions of the rotating ring (a tachometer).
 SIGNAL_COLUMNS = ["time_s", "a_m_per_s2", "rev"]
 
-#: The slowest figures (0.2-0.35 s each): queued first, so that two drawing processes end
-#: together rather than one drawing the slowest last.
-_SLOWEST = frozenset({"bearing.gif", "anderon_spectrum.png", "lines.png"})
+#: What drawing each figure costs, relative to the time history (CPU of one process drawing
+#: the examples' figures, 2026-11-29: a history about 0.09 s, the 608's lines 0.16-0.2 s); a
+#: figure not named costs 1. The figures are queued longest first, so that two drawing
+#: processes end together rather than one drawing a long figure last (the
+#: longest-processing-time rule).
+_FIGURE_COST = {
+    "bearing.gif": 2.4,
+    "lines.png": 1.9,
+    "anderon_spectrum.png": 1.9,
+    "spectrum.png": 1.6,
+    "balls.png": 1.6,
+    "order_sweep.png": 1.6,
+    "anderon_bands.png": 1.4,
+    "contact_pattern.png": 1.2,
+    "orbit.png": 1.2,
+    "displacement.png": 1.1,
+    "history.png": 1.0,
+    "density_waveform.png": 0.95,
+}
+
+
+def _longest_first(figures: Sequence[str]) -> list[str]:
+    """``figures`` drawn before the tables, longest first (:data:`_FIGURE_COST`)."""
+    chosen = [name for name in figures if name not in _AFTER_TABLES]
+    return sorted(chosen, key=lambda name: -_FIGURE_COST.get(name, 1.0))
+
+
 #: Figures drawn from what the tables computed (the rigid model's order sweep).
 _AFTER_TABLES = frozenset({"order_sweep.png"})
 
