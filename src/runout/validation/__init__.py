@@ -210,8 +210,19 @@ SECTIONS: list[Section] = [
     Section(
         "mcfadden_smith",
         "An inner-race spall's envelope spectrum against McFadden & Smith (1984)",
-        mcfadden_smith.INTRO,
-        [Group("", "", mcfadden_smith.checks)],
+        mcfadden_smith.SECTION_INTRO,
+        [
+            Group(
+                "The analytic spectrum, reproduced through runout's housing and envelope",
+                mcfadden_smith.CHAIN_INTRO,
+                mcfadden_smith.chain_checks,
+            ),
+            Group(
+                "runout's inner-raceway spall against the model",
+                mcfadden_smith.INTRO,
+                mcfadden_smith.checks,
+            ),
+        ],
     ),
 ]
 
