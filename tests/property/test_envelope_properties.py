@@ -83,6 +83,42 @@ def test_kurtogram_finds_the_ringing_band(seed, resonance):
     del t
 
 
+@settings(max_examples=15, deadline=None)
+@given(
+    seed=st.integers(0, 2**32 - 1),
+    resonance=st.floats(1500.0, 3500.0),
+    min_low=st.floats(0.0, 1400.0),
+)
+def test_kurtogram_chooses_no_band_below_the_lines_it_is_read_at(seed, resonance, min_low):
+    """A band starting below ``min_low`` is not chosen (reported as NaN), whatever its
+    kurtosis: here a more impulsive low band (a smooth force pulse with each ring, as a
+    noiseless simulated record holds the impacts' force) beside the resonance's ringing, and
+    the whole record's band, which holds the pulse too."""
+    rng = np.random.default_rng(seed)
+    n = N * 2
+    x = 0.2 * rng.standard_normal(n)
+    tau = np.arange(400) / FS
+    ring = np.exp(-0.05 * 2 * math.pi * resonance * tau) * np.sin(2 * math.pi * resonance * tau)
+    pulse = 5.0 * np.hanning(16)  # impulsive below about 1 kHz only
+    for start in range(300, n - 400, 700):
+        x[start : start + 400] += ring
+        x[start : start + 16] += pulse
+    unrestricted = fast_kurtogram(x, FS, min_bandwidth=200.0)
+    assert unrestricted.band_hz[0] < 1.0  # the pulse's low band is the most impulsive
+    k = fast_kurtogram(x, FS, min_bandwidth=200.0, min_low=min_low)
+    lo, hi = k.band_hz
+    assert lo >= min_low - FS / n, k.band_hz  # the tree's edges are whole bins
+    if min_low > FS / n:
+        assert hi - lo < 0.5 * FS  # not the whole record's band
+    for (level, bands), row in zip(kurtogram_levels(n), k.kurtosis, strict=False):
+        edges = np.arange(bands) * (0.5 * FS / bands)
+        # the tree's bands are whole numbers of bins: their edges to a bin's width
+        below = edges < min_low - FS / n
+        assert np.isnan(row[below]).all(), (level, row)
+    unrestricted = fast_kurtogram(x, FS, min_bandwidth=200.0)
+    assert k.max_kurtosis <= unrestricted.max_kurtosis + 1e-12
+
+
 def test_kurtogram_levels_are_antonis_tree():
     levels = kurtogram_levels(2**14)
     assert levels[:5] == [

@@ -8,7 +8,7 @@ A localized defect (a spall) makes a train of impacts, each ringing a resonance 
 structure at a few kHz; the impacts' rate (the defect frequency) is not a line of the
 acceleration spectrum but of the *envelope* of the band around the resonance. The squared
 envelope spectrum (SES) of the band-passed signal shows it, with its harmonics and the
-sidebands of the modulation by the load zone (J. Antoni and R. B. Randall, "Rolling element
+sidebands of the modulation by the load zone (R. B. Randall and J. Antoni, "Rolling element
 bearing diagnostics — A tutorial", Mechanical Systems and Signal Processing 25, 2011, sec. 3.2
 and 5.1). The band is the one where the signal is most impulsive, measured by the spectral
 kurtosis of its complex envelope and searched over the 1/3-binary tree of bands of the fast
@@ -172,7 +172,7 @@ def squared_envelope_spectrum(
 
     Notes
     -----
-    Antoni and Randall, "Rolling element bearing diagnostics — A tutorial" (MSSP 25, 2011),
+    Randall and Antoni, "Rolling element bearing diagnostics — A tutorial" (MSSP 25, 2011),
     sec. 3.2, eq. (2)-(3) and Fig. 7: the envelope is the modulus of the analytic signal of the
     band-passed record, and the spectrum of its *square* is used (the squared envelope has the
     defect's cyclic frequencies without the extraneous components the modulus adds). Here the
@@ -263,7 +263,8 @@ class Kurtogram:
         Level of each row (0, 1, 1.585, 2, 2.585, ...).
     kurtosis : tuple of ndarray
         Per level, the spectral kurtosis of each of its bands, lowest band first (NaN where a
-        band is narrower than the ``min_bandwidth`` asked).
+        band is narrower than the ``min_bandwidth`` asked or starts below the ``min_low``
+        asked).
     bandwidths : tuple of float
         Band width of each level [Hz].
     band_hz : (float, float)
@@ -287,6 +288,7 @@ def fast_kurtogram(
     sample_rate: float,
     *,
     min_bandwidth: float = 0.0,
+    min_low: float = 0.0,
     max_level: float | None = None,
 ) -> Kurtogram:
     r"""Spectral kurtosis over the bands of Antoni's fast kurtogram, and the most impulsive band.
@@ -300,6 +302,13 @@ def fast_kurtogram(
     min_bandwidth : float
         Narrowest band considered [Hz]: an envelope spectrum only reaches the band's width, so
         the band must be wider than the highest frequency it is read at.
+    min_low : float
+        Lowest lower edge of a band considered [Hz]: a band that holds the frequencies its
+        envelope spectrum is read at holds those lines themselves, not as a modulation of a
+        resonance, and its envelope mixes them (a noiseless simulated record's low band carries
+        the impacts' force directly, as impulsive as the resonance's band). Bands starting
+        below it are not chosen (their kurtosis is reported as NaN): with ``min_low`` > 0 not
+        the whole record's band (level 0) either, which holds them too.
     max_level : float, optional
         Deepest level (default: every level whose bands hold :data:`MIN_BAND_SAMPLES`).
 
@@ -310,7 +319,8 @@ def fast_kurtogram(
     Raises
     ------
     ValueError
-        A signal too short for level 0, or no band at least ``min_bandwidth`` wide.
+        A signal too short for level 0, or no band at least ``min_bandwidth`` wide starting at
+        ``min_low`` or above.
 
     Notes
     -----
@@ -345,15 +355,19 @@ def fast_kurtogram(
         per = half // bands
         block = spectrum[: per * bands].reshape(bands, per)
         k = np.maximum(spectral_kurtosis(sfft.ifft(block, axis=1)), 0.0)
+        low_edges = np.arange(bands) * per * sample_rate / n
+        k = np.where(low_edges >= min_low, k, np.nan)
         rows.append(k)
-        i = int(np.argmax(k))
+        if np.isnan(k).all():
+            continue
+        i = int(np.nanargmax(k))
         if k[i] > best[0]:
             lo = i * per * sample_rate / n
             best = (float(k[i]), level, (lo, (i + 1) * per * sample_rate / n))
     if best[0] == -math.inf:
         raise ValueError(
-            f"no band of the kurtogram is {min_bandwidth:.6g} Hz wide or more (the widest is "
-            f"{0.5 * sample_rate:.6g} Hz)"
+            f"no band of the kurtogram is {min_bandwidth:.6g} Hz wide or more and starts at "
+            f"{min_low:.6g} Hz or above (the widest is {0.5 * sample_rate:.6g} Hz, from 0 Hz)"
         )
     return Kurtogram(
         tuple(lv for lv, _ in levels), tuple(rows), tuple(widths), best[2], best[1], best[0]

@@ -382,7 +382,7 @@ def envelope_block(
     Notes
     -----
     J. Antoni, "Fast computation of the kurtogram for the detection of transient faults", MSSP
-    21, 2007 (the band); J. Antoni and R. B. Randall, "Rolling element bearing diagnostics — A
+    21, 2007 (the band); R. B. Randall and J. Antoni, "Rolling element bearing diagnostics — A
     tutorial", MSSP 25, 2011, sec. 5.1 (the squared envelope spectrum).
     """
     if angle is not None:
@@ -392,7 +392,8 @@ def envelope_block(
     need = (ENVELOPE_HARMONICS + 1) * top
     width = min(need, 0.25 * sample_rate)
     if band is None:
-        kurtogram = fast_kurtogram(acceleration, sample_rate, min_bandwidth=width)
+        # the band lies above the lines it is read at (not around them)
+        kurtogram = fast_kurtogram(acceleration, sample_rate, min_bandwidth=width, min_low=width)
         band, source, kurtosis = kurtogram.band_hz, "kurtogram", float(kurtogram.max_kurtosis)
     else:
         source = "given"

@@ -22,7 +22,7 @@ a shared one 1/2) and half that over the sidebands found. A part is *likely* whe
 fundamental is found and its score reaches :data:`SCORE_LIKELY`; *possible* when any harmonic
 is found; otherwise there is no evidence of it. The thresholds were chosen from the false-alarm
 rate measured on records of Gaussian noise and of smooth vibration (shaft harmonics and noise):
-see the validation page. Antoni and Randall (2011), sec. 5.1-5.2 and Table 1, describe the
+see the validation page. Randall and Antoni (2011), sec. 5.1-5.2 and Table 1, describe the
 signatures used.
 """
 
@@ -490,7 +490,7 @@ def diagnose_envelope(
 
     Notes
     -----
-    Antoni and Randall, "Rolling element bearing diagnostics — A tutorial" (MSSP 25, 2011),
+    Randall and Antoni, "Rolling element bearing diagnostics — A tutorial" (MSSP 25, 2011),
     sec. 5.1 (the squared envelope spectrum of the band chosen by the kurtogram) and Table 1
     (signatures: BPFO unmodulated for a stationary outer race, BPFI with shaft-speed sidebands,
     the ball's 2 x BSF with cage sidebands).
@@ -566,7 +566,8 @@ def diagnose_envelope(
         )
     need_width = (HARMONICS + 1) * top
     if band is None:
-        kurtogram = fast_kurtogram(signal, fs, min_bandwidth=need_width)
+        # the band lies above the lines it is read at (not around them)
+        kurtogram = fast_kurtogram(signal, fs, min_bandwidth=need_width, min_low=need_width)
         band_used = kurtogram.band_hz
         band_source = "kurtogram"
     else:
@@ -728,7 +729,7 @@ def _ball_modulation(candidates: list[Candidate]) -> list[Candidate]:
 
     A spalled ball is carried through the load zone by the cage: its impacts are modulated at
     the cage frequency, which puts lines at FTF and its harmonics in the envelope spectrum
-    beside BDF and its ± FTF sidebands (Antoni and Randall 2011, Table 1). Slip spreads the BDF
+    beside BDF and its ± FTF sidebands (Randall and Antoni 2011, Table 1). Slip spreads the BDF
     lines (BDF is about 10 times FTF, its smear as many times wider) while the FTF lines stay
     sharp; without this rule the cage would outrank the ball. When any line of the ball (a BDF
     harmonic or a BDF ± FTF sideband) is found, the cage's harmonics become the ball's
@@ -803,7 +804,8 @@ def _verdict(candidates: list[Candidate]) -> str:
         return f"{words} likely"
     if possible:
         words = " or ".join(_WORDS[cd.part] for cd in possible)
-        return f"weak evidence of a {words}: not conclusive"
+        article = "an" if words[0] in "aeiou" else "a"
+        return f"weak evidence of {article} {words}: not conclusive"
     return "no defect evidence"
 
 

@@ -145,7 +145,7 @@ def speed_profile(
     :math:`u(t) = c\,\sum_{k=1}^{8} \cos(2\pi f_k t + \phi_k) - \bar u`, with :math:`f_k`
     uniform in [0.01, 0.1] f_r (a slow variation: ten shaft revolutions or more a cycle) and
     :math:`\phi_k` uniform, scaled to rms ε: a band-limited random speed variation as simulated
-    bearing signals use it (J. Antoni and R. B. Randall, "Rolling element bearing diagnostics —
+    bearing signals use it (R. B. Randall and J. Antoni, "Rolling element bearing diagnostics —
     A tutorial", MSSP 25, 2011, sec. 2: speed fluctuations smear the defect lines; order
     tracking removes them).
     """
@@ -324,7 +324,7 @@ def acceleration_signal(
         "cage": abs(freqs.cage),
     }
     # the rotating ring's defect passes the load zone once a revolution, a ball's once a cage
-    # revolution, the stationary ring's never (Antoni and Randall 2011, Table 1)
+    # revolution, the stationary ring's never (Randall and Antoni 2011, Table 1)
     sidebands: dict[str, float | None] = {
         "outer": freqs.rotation if rotating == "outer" else None,
         "inner": freqs.rotation if rotating == "inner" else None,

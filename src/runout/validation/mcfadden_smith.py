@@ -17,7 +17,7 @@ modulation and :math:`E(f) = 1/(\beta + 2\pi i f)` the decay's. Their transmissi
 path from a moving defect to a fixed transducer) is not in this module: runout's housing sees
 the total force on the outer ring along the measuring direction.
 
-runout's envelope spectrum is the *squared* envelope's (Antoni and Randall 2011), so the
+runout's envelope spectrum is the *squared* envelope's (Randall and Antoni 2011), so the
 modulation of its lines is :math:`q^2` and the decay rate of a squared ring is
 :math:`\beta = 2\zeta\omega_n`. :func:`predicted_lines` evaluates the model; :func:`measured_lines`
 reads the same lines from an acceleration record; :func:`checks` compares them on the CWRU 6205
