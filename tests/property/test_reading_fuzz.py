@@ -206,6 +206,27 @@ def test_tampered_study_resumes_or_is_refused(
         (out / name).write_text(kept, encoding="utf-8")
 
 
+def test_a_chunk_with_a_figure_its_model_does_not_give_resumes(study_dir: Path) -> None:
+    """Found by the fuzz above: a chunk whose planar samples carry an axial p-p (one number
+    among the lot's NaN) crashed the histograms ("Too many bins", exit 70). The samples without
+    a value are not binned, and the panel says how many."""
+    out = study_dir / "out"
+    name = "chunks/chunk_00001.json"
+    kept = (out / name).read_text(encoding="utf-8")
+    try:
+        doc = json.loads(kept)
+        doc["runout"]["axial_pp_m"] = [281474976710656.0, None]
+        (out / name).write_text(json.dumps(doc), encoding="utf-8")
+        start = time.perf_counter()
+        result = runner.invoke(
+            app, ["study", str(study_dir / "case.toml"), "--out", str(out), "--resume"]
+        )
+        _check(result, (f"{out}/",), time.perf_counter() - start)
+        assert result.exit_code == 0
+    finally:
+        (out / name).write_text(kept, encoding="utf-8")
+
+
 # --------------------------------------------------------------------------------------------
 # a measured record: runout diagnose
 # --------------------------------------------------------------------------------------------

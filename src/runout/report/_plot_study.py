@@ -183,8 +183,16 @@ def _histogram_panel(
 
     ``law`` is ``"rayleigh"`` (scale by maximum likelihood, sigma^2 = mean(x^2) / 2) or
     ``"normal"`` (sample mean and standard deviation); the law is drawn as its density times
-    the number of samples times the bin width, on the histogram's own scale.
+    the number of samples times the bin width, on the histogram's own scale. Samples without
+    a value (NaN: a figure the sample's model does not give) are not binned; the title says
+    how many.
     """
+    values_m = np.asarray(values_m, dtype=np.float64)
+    finite = np.isfinite(values_m)
+    missing = int(values_m.size - np.count_nonzero(finite))
+    values_m = values_m[finite]
+    if missing:
+        title = f"{_shorten(title, 40)} ({missing} without a value)"
     unit, scale = style.length_scale([*values_m, *([limit_m] if limit_m is not None else [])])
     v = values_m * scale
     spread = float(np.ptp(v)) if v.size else 0.0
@@ -201,7 +209,7 @@ def _histogram_panel(
     if not flat and v.size >= 2:
         mean, std = float(np.mean(v)), float(np.std(v, ddof=1))
         _fitted_law(ax, edges, law, mean, std, float(np.mean(v**2)), v.size, unit)
-    if flat:  # one value for every bearing: say which
+    if flat and values_m.size:  # one value for every bearing: say which
         title = f"{_shorten(title, 48)}: {_fmt(float(values_m[0]), unit, scale)} in every sample"
     _frame_histogram(ax, title, quantity, unit, scale, limit_m, counts)
 
