@@ -362,8 +362,7 @@ def fast_kurtogram(
             continue
         i = int(np.nanargmax(k))
         if k[i] > best[0]:
-            lo = i * per * sample_rate / n
-            best = (float(k[i]), level, (lo, (i + 1) * per * sample_rate / n))
+            best = (float(k[i]), level, (float(low_edges[i]), (i + 1) * per * sample_rate / n))
     if best[0] == -math.inf:
         raise ValueError(
             f"no band of the kurtogram is {min_bandwidth:.6g} Hz wide or more and starts at "

@@ -784,8 +784,9 @@ def _explained(candidates: list[Candidate], df: float) -> list[Candidate]:
             explained = False  # its fundamental is a line of the family
             for e in lines:
                 near = np.abs(family - e.frequency_hz) <= 2.0 * df + 0.002 * e.frequency_hz
-                changed.append(dataclasses.replace(e, shared=True) if near.any() else e)
-                explained |= bool(near.any()) and e.found and (e.harmonic, e.sideband) == (1, 0)
+                hit = bool(near.any())
+                changed.append(dataclasses.replace(e, shared=True) if hit else e)
+                explained |= hit and e.found and (e.harmonic, e.sideband) == (1, 0)
             lines = tuple(changed)
             total = score(lines, cd.modulation)
             assessment = _assess(lines, total, cd.modulation)
